@@ -1,0 +1,71 @@
+// Parameters of feature extraction (fixed per database, stored in the blob)
+// and of recognition (chosen per call). Symbols in comments are the paper's.
+#pragma once
+#include <cstdint>
+
+namespace spinhash {
+
+// How a cloud becomes oriented spin-image features. The database stores the
+// values it was built with; queries are described with the same values.
+struct FeatureParams {
+  float cloud_voxel = 0.08f;        // m: density-equalising voxel before anything else
+  float normal_radius = 0.30f;      // m: PCA neighbourhood for normals
+  float basis_spacing = 0.25f;      // m: voxel size for uniform basis-point sampling
+  float support_radius = 1.0f;      // m: spin image support (paper: 1 m)
+  uint32_t bins_alpha = 10;         // radial bins (paper: 10x10)
+  uint32_t bins_beta = 10;          // elevation bins, beta in [-R, R)
+  float support_angle_deg = 60.0f;  // neighbours whose normal differs more are ignored; >= 180 disables
+  float spin_quant_scale = 1000.0f; // quantised bin = min(255, round(value * scale)), value normalised to sum 1
+};
+
+inline uint32_t spin_dims(const FeatureParams& p) { return p.bins_alpha * p.bins_beta; }  // d
+
+enum class Mode : uint8_t {
+  kBran = 0,  // batch RANSAC over the joint LSH index (section 9)
+  kSran = 1,  // sequential per-model RANSAC (baseline)
+  kSind = 2,  // spin-image indexing by LSH voting, no geometry (baseline)
+};
+
+// Recognition settings. Capacities (max_*) size the workspace; the rest are
+// thresholds and budgets. Defaults are the paper's setting where it gives one.
+struct RecognizerConfig {
+  Mode mode = Mode::kBran;
+  uint64_t seed = 1;                 // deterministic sampling
+
+  // Capacities: inputs above them are refused (points) or thinned (features).
+  uint32_t max_points = 32768;       // raw query points accepted
+  uint32_t max_features = 1024;      // s: query basis points kept
+  uint32_t max_models = 2048;        // m: database models supported by this workspace
+  uint32_t max_spin_dims = 256;      // d: largest spin image (bins_alpha * bins_beta) supported
+
+  // Spin-image pruning (section 5).
+  uint32_t top_w = 50;               // W for BRAN (paper: 50)
+  uint32_t top_w_sran = 5;           // W for SRAN, per model (paper: 5)
+  uint32_t top_w_sind = 1;           // W for SIND (paper: 1)
+  uint32_t max_bucket_scan = 4096;   // LSH entries scanned per query feature, at most
+
+  // Doublets (section 7, Figure 5 and eq. 3).
+  float d_min = 0.5f;                // d_min, m
+  float theta_min_deg = 10.0f;       // theta_min between the two normals
+  float tol_distance = 0.30f;        // |d - d'| allowed, m
+  float tol_angle_deg = 25.0f;       // |a - a'|, |b - b'|, |c - c'| allowed
+  float tol_handedness = 0.5f;       // |t - t'| allowed, t = (n1 x n2) . u  (rejects mirror images)
+
+  // Likelihood (section 8, eqs. 4-7).
+  float sigma = 0.10f;               // sigma, m
+  float delta = 0.20f;               // Delta, m: inlier radius
+  float delta_max = 0.50f;           // Delta_max, m: spread of outliers
+  float eta_max_deg = 35.0f;         // eta_max: normal agreement
+  float spin_lambda = 0.5f;          // p_s = exp(-L1 / lambda), L1 of sum-normalised spin images
+
+  // Work budget (bounded time): whichever runs out first stops recognition.
+  uint32_t max_trials = 400;         // doublet draws (BRAN) or per model (SRAN)
+  uint32_t max_hypotheses = 6000;    // poses verified, all models together
+  uint32_t max_pair_checks = 2000000;// candidate pairs put through the cascade
+
+  // Optional sensor position in input coordinates: normals are turned towards it.
+  bool has_viewpoint = false;
+  double viewpoint[3] = {0.0, 0.0, 0.0};
+};
+
+}  // namespace spinhash

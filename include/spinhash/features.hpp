@@ -1,0 +1,86 @@
+// Oriented spin-image features from a point cloud: the one code path used for
+// database models (host build) and for queries (onboard), so the two can never
+// drift apart. Pipeline: re-centre in double, drop non-finite points, voxel
+// equalise density, PCA normals, consistent orientation, uniform basis points,
+// spin images.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "spinhash/arena.hpp"
+#include "spinhash/config.hpp"
+#include "spinhash/status.hpp"
+
+namespace spinhash {
+
+// Points as float or double xyz triples (exactly one of the two set).
+struct CloudView {
+  const float* xyz_f = nullptr;
+  const double* xyz_d = nullptr;
+  uint32_t count = 0;
+};
+
+// Capacities that size the extractor's share of a workspace.
+struct ExtractorCapacity {
+  uint32_t max_points = 32768;    // raw points accepted
+  uint32_t max_features = 1024;   // basis points kept (deterministically thinned above)
+  uint32_t max_spin_dims = 256;   // bins_alpha * bins_beta supported
+};
+
+// Normal orientation: outward from the cloud centroid, or towards a viewpoint.
+struct OrientationHint {
+  bool has_viewpoint = false;
+  double viewpoint[3] = {0.0, 0.0, 0.0};  // input coordinates
+};
+
+// Features live in the arena; positions are relative to `origin`.
+struct FeatureSet {
+  uint32_t count = 0;
+  uint32_t dims = 0;          // d = bins_alpha * bins_beta
+  float* positions = nullptr; // 3 per feature
+  float* normals = nullptr;   // 3 per feature, unit length
+  float* spins = nullptr;     // dims per feature, normalised to sum 1
+  double origin[3] = {0.0, 0.0, 0.0};
+};
+
+struct ExtractStats {
+  uint32_t points_in = 0;
+  uint32_t points_nonfinite = 0;  // dropped NaN / infinite points
+  uint32_t points_equalised = 0;  // after the density voxel
+  uint32_t points_oriented = 0;   // with a usable normal
+  uint32_t basis_points = 0;      // before thinning to max_features
+  bool features_thinned = false;  // more basis points than max_features
+};
+
+// Buffers reserved once; the same object is reused for every cloud.
+class FeatureExtractor {
+ public:
+  // Carves its buffers from `arena` (counting arenas work too).
+  Status init(const FeatureParams& params, const ExtractorCapacity& cap, Arena& arena) noexcept;
+  Status extract(const CloudView& cloud, const OrientationHint& hint, FeatureSet* out,
+                 ExtractStats* stats) noexcept;
+
+ private:
+  struct Impl;
+  FeatureParams params_{};
+  ExtractorCapacity cap_{};
+  // Buffers (see feature_extractor.cpp for their roles).
+  float* points_ = nullptr;
+  float* equalised_ = nullptr;
+  float* normals_ = nullptr;
+  uint8_t* has_normal_ = nullptr;
+  uint64_t* slot_keys_ = nullptr;
+  uint32_t* slot_first_ = nullptr;
+  uint32_t* slot_count_ = nullptr;
+  uint32_t* slot_order_ = nullptr;  // slots in insertion order
+  uint32_t* point_order_ = nullptr; // point indices grouped by cell
+  uint32_t* point_cell_ = nullptr;
+  float* accum_ = nullptr;          // 4 per slot: sum xyz, count
+  uint32_t slot_capacity_ = 0;
+  uint32_t* basis_ = nullptr;
+  float* out_positions_ = nullptr;
+  float* out_normals_ = nullptr;
+  float* out_spins_ = nullptr;
+};
+
+}  // namespace spinhash

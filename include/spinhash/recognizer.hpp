@@ -1,0 +1,76 @@
+// The recognizer: a validated Database plus a caller-owned workspace in, a
+// ranked list of models with poses out. No heap; every buffer is carved from
+// the workspace at init(); recognize() is bounded by the config's work budget.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "spinhash/config.hpp"
+#include "spinhash/database.hpp"
+#include "spinhash/features.hpp"
+#include "spinhash/status.hpp"
+
+namespace spinhash {
+
+// x_query = rotation * x_model + translation; rotation row-major.
+// translation is in the input's coordinates (georeferenced clouds included).
+struct Pose {
+  float rotation[9];
+  double translation[3];
+};
+
+struct RankedModel {
+  uint32_t model = 0;       // index into the database's model table
+  float score = 0.0f;       // larger is better: log-likelihood (BRAN, SRAN), votes (SIND)
+  Pose pose{};              // best pose found for this model (identity for SIND)
+  bool has_pose = false;
+  uint32_t hypotheses = 0;  // poses verified for this model
+  uint32_t inliers = 0;     // query features within Delta under the best pose
+};
+
+struct RecognitionStats {
+  ExtractStats extract;
+  uint32_t features = 0;          // s: query features used
+  uint32_t salient_features = 0;  // features with candidates that sampling may draw
+  uint64_t candidates = 0;        // candidate model features kept (sum of W_l)
+  uint64_t bucket_entries = 0;    // LSH entries scanned
+  uint32_t trials = 0;            // doublet draws
+  uint64_t pair_checks = 0;       // candidate pairs put through the cascade
+  uint64_t doublets_passed = 0;   // pairs that passed the cascade
+  uint32_t hypotheses = 0;        // poses verified
+  bool budget_exhausted = false;  // the work budget cut recognition short
+  bool bucket_scan_truncated = false;  // some LSH lookups hit max_bucket_scan
+  size_t workspace_used = 0;
+};
+
+struct Result {
+  Status status = Status::kNotOpen;
+  const RankedModel* ranking = nullptr;  // in the workspace; valid until the next call
+  uint32_t ranking_count = 0;            // models that got a score, best first
+  RecognitionStats stats;
+};
+
+// Workspace bytes init() needs for `config` (aligned to kBufferAlignment).
+size_t required_workspace_bytes(const RecognizerConfig& config) noexcept;
+
+class Recognizer {
+ public:
+  Status init(const Database* db, const RecognizerConfig& config, void* workspace,
+              size_t workspace_bytes) noexcept;
+  Result recognize(const float* xyz, uint32_t count) noexcept;
+  Result recognize(const double* xyz, uint32_t count) noexcept;
+  size_t used_bytes() const noexcept { return used_bytes_; }
+  const RecognizerConfig& config() const noexcept { return config_; }
+
+ private:
+  struct Buffers;
+  Result run(const CloudView& cloud) noexcept;
+
+  const Database* db_ = nullptr;
+  RecognizerConfig config_{};
+  size_t used_bytes_ = 0;
+  alignas(16) unsigned char buffers_storage_[512];  // Buffers, placement-constructed
+  bool ready_ = false;
+};
+
+}  // namespace spinhash

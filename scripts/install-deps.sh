@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs what spinhash needs on Debian 12, idempotently: only the packages
+# that are missing are installed. Pass --cross to add the cross toolchains
+# and QEMU (needed by scripts/test.sh for the onboard checks).
+set -euo pipefail
+
+packages=(build-essential cmake doctest-dev libeigen3-dev libassimp-dev libembree-dev
+          libcli11-dev gnuplot-nox)
+if [[ "${1:-}" == "--cross" ]]; then
+  packages+=(g++-aarch64-linux-gnu g++-arm-linux-gnueabihf g++-powerpc-linux-gnu
+             gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-user)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+sudo_cmd=()
+[[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
