@@ -1,0 +1,4 @@
+#pragma once
+namespace spinhash::cli {
+const char* version();
+}  // namespace spinhash::cli
