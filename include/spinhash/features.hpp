@@ -61,26 +61,10 @@ class FeatureExtractor {
                  ExtractStats* stats) noexcept;
 
  private:
-  struct Impl;
+  struct Impl;  // buffers, placed in the arena by init()
   FeatureParams params_{};
   ExtractorCapacity cap_{};
-  // Buffers (see feature_extractor.cpp for their roles).
-  float* points_ = nullptr;
-  float* equalised_ = nullptr;
-  float* normals_ = nullptr;
-  uint8_t* has_normal_ = nullptr;
-  uint64_t* slot_keys_ = nullptr;
-  uint32_t* slot_first_ = nullptr;
-  uint32_t* slot_count_ = nullptr;
-  uint32_t* slot_order_ = nullptr;  // slots in insertion order
-  uint32_t* point_order_ = nullptr; // point indices grouped by cell
-  uint32_t* point_cell_ = nullptr;
-  float* accum_ = nullptr;          // 4 per slot: sum xyz, count
-  uint32_t slot_capacity_ = 0;
-  uint32_t* basis_ = nullptr;
-  float* out_positions_ = nullptr;
-  float* out_normals_ = nullptr;
-  float* out_spins_ = nullptr;
+  Impl* impl_ = nullptr;
 };
 
 }  // namespace spinhash

@@ -69,8 +69,7 @@ class Recognizer {
   const Database* db_ = nullptr;
   RecognizerConfig config_{};
   size_t used_bytes_ = 0;
-  alignas(16) unsigned char buffers_storage_[512];  // Buffers, placement-constructed
-  bool ready_ = false;
+  Buffers* buffers_ = nullptr;  // placed in the workspace by init()
 };
 
 }  // namespace spinhash

@@ -1,0 +1,60 @@
+#include "descriptor/spin_image.hpp"
+
+#include <cmath>
+
+#include "util/fixed_math.hpp"
+
+namespace spinhash {
+
+void spin_vote(const SpinImageParams& sp, float alpha, float beta, float* image) {
+  const float bin_a = sp.radius / static_cast<float>(sp.bins_alpha);
+  const float bin_b = 2.0f * sp.radius / static_cast<float>(sp.bins_beta);
+  // Continuous bin coordinates with bin centres at integers.
+  float fa = clampf(alpha / bin_a - 0.5f, 0.0f, static_cast<float>(sp.bins_alpha - 1u));
+  float fb = clampf((beta + sp.radius) / bin_b - 0.5f, 0.0f, static_cast<float>(sp.bins_beta - 1u));
+  uint32_t i0 = static_cast<uint32_t>(fa), j0 = static_cast<uint32_t>(fb);
+  uint32_t i1 = i0 + 1u < sp.bins_alpha ? i0 + 1u : i0;
+  uint32_t j1 = j0 + 1u < sp.bins_beta ? j0 + 1u : j0;
+  float wa = fa - static_cast<float>(i0), wb = fb - static_cast<float>(j0);
+  image[j0 * sp.bins_alpha + i0] += (1.0f - wa) * (1.0f - wb);
+  image[j0 * sp.bins_alpha + i1] += wa * (1.0f - wb);
+  image[j1 * sp.bins_alpha + i0] += (1.0f - wa) * wb;
+  image[j1 * sp.bins_alpha + i1] += wa * wb;
+}
+
+void normalise_spin(float* image, uint32_t dims) {
+  float sum = 0.0f;
+  for (uint32_t i = 0; i < dims; ++i) sum += image[i];
+  if (!(sum > 0.0f)) return;
+  float inv = 1.0f / sum;
+  for (uint32_t i = 0; i < dims; ++i) image[i] *= inv;
+}
+
+void compute_spin_image(const SpinImageParams& sp, const CellGrid& grid, const float* points,
+                        const float* normals, const uint8_t* has_normal, const float* p,
+                        const float* n, float* image) {
+  const uint32_t dims = sp.bins_alpha * sp.bins_beta;
+  for (uint32_t i = 0; i < dims; ++i) image[i] = 0.0f;
+  grid.for_each_within(p, sp.radius, [&](uint32_t j) {
+    if (sp.use_support_angle) {
+      // Self-occlusion and clutter mostly come from surfaces facing away.
+      const float* nj = normals + 3u * j;
+      if (!has_normal[j] || n[0] * nj[0] + n[1] * nj[1] + n[2] * nj[2] < sp.cos_support_angle) return;
+    }
+    const float* x = points + 3u * j;
+    float dx = x[0] - p[0], dy = x[1] - p[1], dz = x[2] - p[2];
+    float beta = n[0] * dx + n[1] * dy + n[2] * dz;
+    float alpha2 = dx * dx + dy * dy + dz * dz - beta * beta;
+    spin_vote(sp, std::sqrt(alpha2 > 0.0f ? alpha2 : 0.0f), beta, image);
+  });
+  normalise_spin(image, dims);
+}
+
+void quantize_spin(const float* image, uint32_t dims, float scale, uint8_t* out) {
+  for (uint32_t i = 0; i < dims; ++i) {
+    float q = image[i] * scale + 0.5f;
+    out[i] = q >= 255.0f ? 255u : (q > 0.0f ? static_cast<uint8_t>(q) : 0u);
+  }
+}
+
+}  // namespace spinhash

@@ -1,0 +1,136 @@
+// Orchestrates the feature pipeline over buffers carved once from the arena.
+#include <new>
+
+#include "descriptor/spin_image.hpp"
+#include "geometry/cell_grid.hpp"
+#include "geometry/normals.hpp"
+#include "geometry/resample.hpp"
+#include "spinhash/features.hpp"
+#include "spinhash/limits.hpp"
+#include "util/fixed_math.hpp"
+
+namespace spinhash {
+
+struct FeatureExtractor::Impl {
+  CellGrid voxel_grid;      // density voxels, then basis voxels
+  CellGrid neighbour_grid;  // radius searches over the equalised points
+  float* points = nullptr;      // re-centred input, 3 * max_points
+  float* equalised = nullptr;   // 3 * max_points
+  float* normals = nullptr;     // 3 * max_points
+  uint8_t* has_normal = nullptr;
+  uint32_t* basis = nullptr;    // max_points
+  float* out_positions = nullptr;
+  float* out_normals = nullptr;
+  float* out_spins = nullptr;
+};
+
+namespace {
+
+bool params_valid(const FeatureParams& p, const ExtractorCapacity& cap) {
+  auto positive = [](float v) { return v > 0.0f && v < 1e6f; };
+  return positive(p.cloud_voxel) && positive(p.normal_radius) && positive(p.basis_spacing) &&
+         positive(p.support_radius) && p.bins_alpha >= 1u && p.bins_beta >= 1u &&
+         p.bins_alpha <= kMaxSpinBinsPerAxis && p.bins_beta <= kMaxSpinBinsPerAxis &&
+         spin_dims(p) <= cap.max_spin_dims && p.support_angle_deg > 0.0f &&
+         cap.max_points >= 1u && cap.max_points <= kMaxQueryPointsLimit && cap.max_features >= 1u;
+}
+
+SpinImageParams spin_params(const FeatureParams& p) {
+  SpinImageParams sp;
+  sp.radius = p.support_radius;
+  sp.bins_alpha = p.bins_alpha;
+  sp.bins_beta = p.bins_beta;
+  sp.use_support_angle = p.support_angle_deg < 180.0f;
+  sp.cos_support_angle = std::cos(deg_to_rad(p.support_angle_deg));
+  return sp;
+}
+
+}  // namespace
+
+Status FeatureExtractor::init(const FeatureParams& params, const ExtractorCapacity& cap,
+                              Arena& arena) noexcept {
+  if (!params_valid(params, cap)) return Status::kInvalidArgument;
+  params_ = params;
+  cap_ = cap;
+  Impl* impl = arena.alloc<Impl>(1);
+  Impl scratch;  // counting arenas give no memory: carve into a throw-away
+  Impl* target = impl != nullptr ? new (impl) Impl() : &scratch;
+  const uint32_t np = cap.max_points, nf = cap.max_features;
+  target->voxel_grid.carve(arena, np);
+  target->neighbour_grid.carve(arena, np);
+  target->points = arena.alloc<float>(3u * static_cast<size_t>(np));
+  target->equalised = arena.alloc<float>(3u * static_cast<size_t>(np));
+  target->normals = arena.alloc<float>(3u * static_cast<size_t>(np));
+  target->has_normal = arena.alloc<uint8_t>(np);
+  target->basis = arena.alloc<uint32_t>(np);
+  target->out_positions = arena.alloc<float>(3u * static_cast<size_t>(nf));
+  target->out_normals = arena.alloc<float>(3u * static_cast<size_t>(nf));
+  target->out_spins = arena.alloc<float>(static_cast<size_t>(nf) * cap.max_spin_dims);
+  if (arena.overflowed()) return Status::kWorkspaceTooSmall;
+  impl_ = impl;
+  return Status::kOk;
+}
+
+Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& hint,
+                                 FeatureSet* out, ExtractStats* stats) noexcept {
+  if (impl_ == nullptr || out == nullptr || stats == nullptr) return Status::kNotOpen;
+  if ((cloud.xyz_f == nullptr) == (cloud.xyz_d == nullptr) && cloud.count > 0)
+    return Status::kInvalidArgument;
+  *stats = ExtractStats{};
+  *out = FeatureSet{};
+  stats->points_in = cloud.count;
+  if (cloud.count > cap_.max_points) return Status::kTooManyPoints;
+  Impl& m = *impl_;
+
+  uint32_t n = cloud.count == 0 ? 0u : recentre(cloud, out->origin, m.points);
+  stats->points_nonfinite = cloud.count - n;
+  if (n == 0) return Status::kEmptyCloud;
+
+  m.voxel_grid.build(m.points, n, params_.cloud_voxel);
+  uint32_t ne = equalise_density(m.voxel_grid, m.points, m.equalised);
+  stats->points_equalised = ne;
+
+  // One grid serves both radii: the normal radius and the spin support.
+  float cell = params_.support_radius * 0.5f;
+  if (cell < params_.normal_radius) cell = params_.normal_radius;
+  m.neighbour_grid.build(m.equalised, ne, cell);
+  stats->points_oriented =
+      estimate_normals(m.neighbour_grid, m.equalised, ne, params_.normal_radius, m.normals, m.has_normal);
+
+  float reference[3] = {0.0f, 0.0f, 0.0f};
+  if (hint.has_viewpoint) {
+    for (int a = 0; a < 3; ++a) reference[a] = static_cast<float>(hint.viewpoint[a] - out->origin[a]);
+  } else {
+    for (uint32_t i = 0; i < ne; ++i)
+      for (int a = 0; a < 3; ++a) reference[a] += m.equalised[3u * i + a];
+    for (int a = 0; a < 3; ++a) reference[a] /= static_cast<float>(ne);
+  }
+  orient_normals(m.equalised, ne, reference, hint.has_viewpoint, m.normals, m.has_normal);
+
+  m.voxel_grid.build(m.equalised, ne, params_.basis_spacing);
+  uint32_t nb = select_basis_points(m.voxel_grid, m.equalised, m.has_normal, m.basis);
+  stats->basis_points = nb;
+  stats->features_thinned = nb > cap_.max_features;
+  nb = thin_evenly(m.basis, nb, cap_.max_features);
+
+  const SpinImageParams sp = spin_params(params_);
+  const uint32_t dims = spin_dims(params_);
+  for (uint32_t k = 0; k < nb; ++k) {
+    const float* p = m.equalised + 3u * m.basis[k];
+    const float* nrm = m.normals + 3u * m.basis[k];
+    for (int a = 0; a < 3; ++a) {
+      m.out_positions[3u * k + a] = p[a];
+      m.out_normals[3u * k + a] = nrm[a];
+    }
+    compute_spin_image(sp, m.neighbour_grid, m.equalised, m.normals, m.has_normal, p, nrm,
+                       m.out_spins + static_cast<size_t>(k) * dims);
+  }
+  out->count = nb;
+  out->dims = dims;
+  out->positions = m.out_positions;
+  out->normals = m.out_normals;
+  out->spins = m.out_spins;
+  return Status::kOk;
+}
+
+}  // namespace spinhash

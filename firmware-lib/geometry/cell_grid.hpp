@@ -1,0 +1,66 @@
+// Fixed-capacity voxel hash grid over a point array: points grouped by cell
+// (counting sort through an open-addressing table), cells kept in the order
+// they were first seen so every pass over them is deterministic.
+#pragma once
+#include <cmath>
+#include <cstdint>
+
+#include "spinhash/arena.hpp"
+
+namespace spinhash {
+
+class CellGrid {
+ public:
+  // Room for grids over up to max_points points (table load <= 1/2).
+  bool carve(Arena& arena, uint32_t max_points);
+  // Groups points[0, n) (xyz triples, n <= max_points) into cells of edge `cell`.
+  void build(const float* points, uint32_t n, float cell);
+
+  uint32_t cell_count() const { return cell_count_; }
+  float cell_size() const { return cell_; }
+  // i-th cell in first-seen order: its points are order()[first, first + count).
+  uint32_t cell_first(uint32_t i) const { return first_[slots_in_order_[i]]; }
+  uint32_t cell_size_of(uint32_t i) const { return count_[slots_in_order_[i]]; }
+  const uint32_t* order() const { return order_; }
+
+  // Calls f(point_index) for every point within `radius` of q (exact test).
+  template <typename F>
+  void for_each_within(const float* q, float radius, F&& f) const {
+    const int32_t reach = static_cast<int32_t>(std::ceil(radius / cell_));
+    const int32_t cx = coord(q[0]), cy = coord(q[1]), cz = coord(q[2]);
+    const float r2 = radius * radius;
+    for (int32_t dz = -reach; dz <= reach; ++dz)
+      for (int32_t dy = -reach; dy <= reach; ++dy)
+        for (int32_t dx = -reach; dx <= reach; ++dx) {
+          int32_t slot = find(pack(cx + dx, cy + dy, cz + dz));
+          if (slot < 0) continue;
+          const uint32_t* it = order_ + first_[slot];
+          for (uint32_t k = 0; k < count_[slot]; ++k) {
+            const float* p = points_ + 3u * it[k];
+            float ex = p[0] - q[0], ey = p[1] - q[1], ez = p[2] - q[2];
+            if (ex * ex + ey * ey + ez * ez <= r2) f(it[k]);
+          }
+        }
+  }
+
+ private:
+  static constexpr int32_t kCoordBias = 1 << 20;  // 21-bit cell coordinates per axis
+  int32_t coord(float v) const;
+  static uint64_t pack(int32_t x, int32_t y, int32_t z);
+  int32_t find(uint64_t key) const;
+  uint32_t insert(uint64_t key);
+
+  uint64_t* keys_ = nullptr;   // per slot; kEmptyKey when free
+  uint32_t* first_ = nullptr;  // per slot: start in order_
+  uint32_t* count_ = nullptr;  // per slot: points in the cell
+  uint32_t* slots_in_order_ = nullptr;
+  uint32_t* order_ = nullptr;       // point indices grouped by cell
+  uint32_t* point_slot_ = nullptr;  // slot of each point
+  uint32_t capacity_ = 0;           // power of two
+  uint32_t max_points_ = 0;
+  uint32_t cell_count_ = 0;
+  float cell_ = 1.0f;
+  const float* points_ = nullptr;
+};
+
+}  // namespace spinhash

@@ -1,0 +1,70 @@
+#include "geometry/normals.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include "spinhash/limits.hpp"
+
+namespace spinhash {
+namespace {
+
+bool normal_at(const CellGrid& grid, const float* points, const float* q, float radius,
+               float* out) {
+  Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+  uint32_t count = 0;
+  grid.for_each_within(q, radius, [&](uint32_t j) {
+    mean += Eigen::Map<const Eigen::Vector3f>(points + 3u * j);
+    ++count;
+  });
+  if (count < kMinNormalNeighbours) return false;
+  mean /= static_cast<float>(count);
+  Eigen::Matrix3f cov = Eigen::Matrix3f::Zero();
+  grid.for_each_within(q, radius, [&](uint32_t j) {
+    Eigen::Vector3f d = Eigen::Map<const Eigen::Vector3f>(points + 3u * j) - mean;
+    cov.noalias() += d * d.transpose();
+  });
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> solver;
+  solver.computeDirect(cov);  // closed form: fixed cost, no iteration, no heap
+  const Eigen::Vector3f& ev = solver.eigenvalues();  // ascending
+  if (!(ev(2) > 0.0f) || ev(1) < kMinPlanarRatio * ev(2)) return false;
+  Eigen::Vector3f nrm = solver.eigenvectors().col(0);
+  float len = nrm.norm();
+  if (!(len > 0.5f)) return false;
+  nrm /= len;
+  out[0] = nrm.x();
+  out[1] = nrm.y();
+  out[2] = nrm.z();
+  return true;
+}
+
+}  // namespace
+
+uint32_t estimate_normals(const CellGrid& grid, const float* points, uint32_t n, float radius,
+                          float* normals, uint8_t* has_normal) {
+  uint32_t good = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    bool ok = normal_at(grid, points, points + 3u * i, radius, normals + 3u * i);
+    has_normal[i] = ok ? 1u : 0u;
+    good += ok ? 1u : 0u;
+  }
+  return good;
+}
+
+void orient_normals(const float* points, uint32_t n, const float* reference, bool is_viewpoint,
+                    float* normals, const uint8_t* has_normal) {
+  for (uint32_t i = 0; i < n; ++i) {
+    if (!has_normal[i]) continue;
+    const float* p = points + 3u * i;
+    float* nrm = normals + 3u * i;
+    // Away from the centre: (p - c); towards the viewpoint: (v - p).
+    float sx = is_viewpoint ? reference[0] - p[0] : p[0] - reference[0];
+    float sy = is_viewpoint ? reference[1] - p[1] : p[1] - reference[1];
+    float sz = is_viewpoint ? reference[2] - p[2] : p[2] - reference[2];
+    if (nrm[0] * sx + nrm[1] * sy + nrm[2] * sz < 0.0f) {
+      nrm[0] = -nrm[0];
+      nrm[1] = -nrm[1];
+      nrm[2] = -nrm[2];
+    }
+  }
+}
+
+}  // namespace spinhash

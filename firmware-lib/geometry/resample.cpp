@@ -1,0 +1,88 @@
+#include "geometry/resample.hpp"
+
+#include <cmath>
+
+namespace spinhash {
+namespace {
+
+template <typename T>
+uint32_t recentre_typed(const T* xyz, uint32_t n, double origin[3], float* out) {
+  double sum[3] = {0.0, 0.0, 0.0};
+  uint32_t finite = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const T* p = xyz + 3u * i;
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
+    for (int a = 0; a < 3; ++a) sum[a] += static_cast<double>(p[a]);
+    ++finite;
+  }
+  for (int a = 0; a < 3; ++a) origin[a] = finite > 0 ? sum[a] / finite : 0.0;
+  uint32_t k = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const T* p = xyz + 3u * i;
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
+    for (int a = 0; a < 3; ++a) out[3u * k + a] = static_cast<float>(static_cast<double>(p[a]) - origin[a]);
+    ++k;
+  }
+  return k;
+}
+
+}  // namespace
+
+uint32_t recentre(const CloudView& cloud, double origin[3], float* out) {
+  if (cloud.xyz_d != nullptr) return recentre_typed(cloud.xyz_d, cloud.count, origin, out);
+  return recentre_typed(cloud.xyz_f, cloud.count, origin, out);
+}
+
+uint32_t equalise_density(const CellGrid& grid, const float* points, float* out) {
+  const uint32_t* order = grid.order();
+  for (uint32_t c = 0; c < grid.cell_count(); ++c) {
+    float s[3] = {0.0f, 0.0f, 0.0f};
+    uint32_t first = grid.cell_first(c), count = grid.cell_size_of(c);
+    for (uint32_t k = 0; k < count; ++k)
+      for (int a = 0; a < 3; ++a) s[a] += points[3u * order[first + k] + a];
+    for (int a = 0; a < 3; ++a) out[3u * c + a] = s[a] / static_cast<float>(count);
+  }
+  return grid.cell_count();
+}
+
+uint32_t select_basis_points(const CellGrid& grid, const float* points, const uint8_t* has_normal,
+                             uint32_t* out) {
+  const uint32_t* order = grid.order();
+  uint32_t chosen = 0;
+  for (uint32_t c = 0; c < grid.cell_count(); ++c) {
+    uint32_t first = grid.cell_first(c), count = grid.cell_size_of(c);
+    float s[3] = {0.0f, 0.0f, 0.0f};
+    uint32_t oriented = 0;
+    for (uint32_t k = 0; k < count; ++k) {
+      uint32_t i = order[first + k];
+      if (!has_normal[i]) continue;
+      for (int a = 0; a < 3; ++a) s[a] += points[3u * i + a];
+      ++oriented;
+    }
+    if (oriented == 0) continue;
+    for (int a = 0; a < 3; ++a) s[a] /= static_cast<float>(oriented);
+    uint32_t best = 0;
+    float best_d2 = 3.4e38f;
+    for (uint32_t k = 0; k < count; ++k) {
+      uint32_t i = order[first + k];
+      if (!has_normal[i]) continue;
+      const float* p = points + 3u * i;
+      float d2 = (p[0] - s[0]) * (p[0] - s[0]) + (p[1] - s[1]) * (p[1] - s[1]) + (p[2] - s[2]) * (p[2] - s[2]);
+      if (d2 < best_d2) {
+        best_d2 = d2;
+        best = i;
+      }
+    }
+    out[chosen++] = best;
+  }
+  return chosen;
+}
+
+uint32_t thin_evenly(uint32_t* indices, uint32_t n, uint32_t keep) {
+  if (n <= keep) return n;
+  for (uint32_t j = 0; j < keep; ++j)
+    indices[j] = indices[static_cast<uint64_t>(j) * n / keep];  // j*n/keep >= j: in-place safe
+  return keep;
+}
+
+}  // namespace spinhash
