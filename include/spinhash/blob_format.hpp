@@ -86,7 +86,7 @@ struct ModelRecord {
   float grid_origin[3];           // m, model frame, min corner of cell (0,0,0)
   float bbox_min[3];              // m, of the model cloud
   float bbox_max[3];
-  uint8_t reserved[8];            // zero
+  uint8_t reserved[20];           // zero (pads the record to 128 bytes)
 };
 static_assert(sizeof(ModelRecord) == 128, "model record is 128 bytes");
 
@@ -97,7 +97,10 @@ struct LshBit {
 };
 static_assert(sizeof(LshBit) == 4, "lsh bit is 4 bytes");
 
-// Bucket of a K-bit key in table t: mix64(key ^ (t * kTableSalt)) & (lsh_buckets - 1).
+// Key of a spin image in table t: bit k (k = 0..K-1, least significant first) is
+// spin[bits[t*K + k].dim] > bits[t*K + k].threshold.
+// Bucket of that key: mix64(key ^ ((t + 1) * kTableSalt)) & (lsh_buckets - 1),
+// products modulo 2^64 (t + 1 so that table 0 is salted too).
 constexpr uint64_t kTableSalt = 0x9E3779B97F4A7C15ull;
 inline uint64_t mix64(uint64_t x) {  // splitmix64 finaliser
   x ^= x >> 30;

@@ -66,6 +66,7 @@ uint32_t crc32c(const void* data, size_t size, uint32_t crc = 0) noexcept;
 uint64_t fnv1a64(const void* data, size_t size) noexcept;
 // Normal component <-> int16 storage (snorm16).
 inline int16_t encode_normal_component(float v) {
+  if (!(v == v)) return 0;  // NaN: the cast below would be undefined
   float c = v < -1.0f ? -1.0f : (v > 1.0f ? 1.0f : v);
   float s = c * 32767.0f;
   return static_cast<int16_t>(s >= 0.0f ? s + 0.5f : s - 0.5f);

@@ -29,6 +29,7 @@ enum class Status : int32_t {
   kBlobBadFeature = 25,      // non-finite position, bad normal, model id out of range
   kBlobBadIndex = 26,        // LSH or grid entry outside the table it indexes
   kDatabaseTooLarge = 27,    // more models than config.max_models
+  kBlobUnknownSection = 28,  // section id not defined by the format version
   // recognize
   kEmptyCloud = 40,          // no finite points
   kTooManyPoints = 41,       // more points than config.max_points (refused)
