@@ -59,8 +59,9 @@ struct RecognizerConfig {
   float spin_lambda = 0.5f;          // p_s = exp(-L1 / lambda), L1 of sum-normalised spin images
 
   // Work budget (bounded time): whichever runs out first stops recognition.
-  uint32_t max_trials = 400;         // doublet draws (BRAN) or per model (SRAN)
-  uint32_t max_hypotheses = 6000;    // poses verified, all models together
+  uint32_t max_trials = 400;         // BRAN: doublet draws
+  uint32_t sran_trials = 100;        // SRAN: doublet draws per model
+  uint32_t max_hypotheses = 6000;    // poses verified: BRAN all models together, SRAN per model
   uint32_t max_pair_checks = 2000000;// candidate pairs put through the cascade
 
   // Optional sensor position in input coordinates: normals are turned towards it.

@@ -50,6 +50,8 @@ struct Result {
   RecognitionStats stats;
 };
 
+struct RecognizerBuffers;  // the workspace layout (firmware-lib/recognize)
+
 // Workspace bytes init() needs for `config` (aligned to kBufferAlignment).
 size_t required_workspace_bytes(const RecognizerConfig& config) noexcept;
 
@@ -63,13 +65,12 @@ class Recognizer {
   const RecognizerConfig& config() const noexcept { return config_; }
 
  private:
-  struct Buffers;
   Result run(const CloudView& cloud) noexcept;
 
   const Database* db_ = nullptr;
   RecognizerConfig config_{};
   size_t used_bytes_ = 0;
-  Buffers* buffers_ = nullptr;  // placed in the workspace by init()
+  RecognizerBuffers* buffers_ = nullptr;  // placed in the workspace by init()
 };
 
 }  // namespace spinhash

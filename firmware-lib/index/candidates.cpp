@@ -1,0 +1,118 @@
+#include "index/candidates.hpp"
+
+#include <cmath>
+
+#include "spinhash/limits.hpp"
+#include "spinhash/lsh.hpp"
+#include "util/fixed_math.hpp"
+
+namespace spinhash {
+
+void insert_top_w(Candidate* list, uint32_t* count, uint32_t w, Candidate c) {
+  auto before = [](const Candidate& x, const Candidate& y) {
+    return x.distance < y.distance || (x.distance == y.distance && x.feature < y.feature);
+  };
+  uint32_t n = *count;
+  if (n == w && !before(c, list[n - 1u])) return;
+  uint32_t i = n < w ? n : w - 1u;  // slot freed at the end
+  while (i > 0 && before(c, list[i - 1u])) {
+    list[i] = list[i - 1u];
+    --i;
+  }
+  list[i] = c;
+  if (n < w) *count = n + 1u;
+}
+
+bool LshSearcher::carve(Arena& arena, uint32_t max_scan) {
+  max_scan_ = max_scan;
+  capacity_ = next_pow2(2u * (max_scan > 0 ? max_scan : 1u));
+  seen_ = arena.alloc<uint32_t>(capacity_);
+  stamp_ = arena.alloc<uint32_t>(capacity_);
+  if (stamp_ != nullptr)
+    for (uint32_t i = 0; i < capacity_; ++i) stamp_[i] = 0;
+  generation_ = 0;
+  return !arena.overflowed();
+}
+
+bool LshSearcher::mark_seen(uint32_t feature) {
+  uint32_t slot = static_cast<uint32_t>(blob::mix64(feature)) & (capacity_ - 1u);
+  // At most max_scan insertions per generation: load <= 1/2, a free slot exists.
+  for (uint32_t probe = 0; probe < capacity_; ++probe) {
+    if (stamp_[slot] != generation_) {
+      stamp_[slot] = generation_;
+      seen_[slot] = feature;
+      return true;
+    }
+    if (seen_[slot] == feature) return false;
+    slot = (slot + 1u) & (capacity_ - 1u);
+  }
+  return false;
+}
+
+uint32_t LshSearcher::search(const Database& db, const uint8_t* spin, uint32_t w, Candidate* out,
+                             SearchStats* stats) {
+  if (++generation_ == 0) {  // wrapped: stale stamps could alias, so clear once
+    for (uint32_t i = 0; i < capacity_; ++i) stamp_[i] = 0;
+    generation_ = 1;
+  }
+  const blob::Params& p = db.params();
+  const uint32_t dims = db.spin_dims();
+  uint32_t count = 0, scanned = 0;
+  for (uint32_t t = 0; t < p.lsh_tables; ++t) {
+    uint32_t bucket = blob::bucket_of(lsh_key(db.lsh_bits(t), p.lsh_bits, spin), t, p.lsh_buckets);
+    const uint32_t* offsets = db.lsh_offsets(t);
+    const uint32_t* entries = db.lsh_entries() + static_cast<size_t>(t) * p.feature_count;
+    for (uint32_t e = offsets[bucket]; e < offsets[bucket + 1u]; ++e) {
+      if (scanned == max_scan_) {
+        stats->truncated = true;
+        stats->entries_scanned += scanned;
+        return count;
+      }
+      ++scanned;
+      uint32_t f = entries[e];
+      if (!mark_seen(f)) continue;
+      insert_top_w(out, &count, w, Candidate{f, l1_distance(spin, db.spin(f), dims)});
+    }
+  }
+  stats->entries_scanned += scanned;
+  return count;
+}
+
+uint32_t search_model_exhaustive(const Database& db, uint32_t model, const uint8_t* spin, uint32_t w,
+                                 Candidate* out) {
+  const blob::ModelRecord& rec = db.model(model);
+  const uint32_t dims = db.spin_dims();
+  uint32_t count = 0;
+  for (uint32_t f = rec.first_feature; f < rec.first_feature + rec.feature_count; ++f)
+    insert_top_w(out, &count, w, Candidate{f, l1_distance(spin, db.spin(f), dims)});
+  return count;
+}
+
+float candidate_entropy(const Database& db, const Candidate* list, uint32_t n) {
+  if (n == 0) return 0.0f;
+  uint16_t models[kMaxCandidates];
+  if (n > kMaxCandidates) n = kMaxCandidates;
+  for (uint32_t i = 0; i < n; ++i) {  // insertion sort: n <= kMaxCandidates
+    uint16_t m = db.feature_models()[list[i].feature];
+    uint32_t j = i;
+    while (j > 0 && models[j - 1u] > m) {
+      models[j] = models[j - 1u];
+      --j;
+    }
+    models[j] = m;
+  }
+  float entropy = 0.0f;
+  uint32_t run = 1;
+  for (uint32_t i = 1; i <= n; ++i) {
+    if (i < n && models[i] == models[i - 1u]) {
+      ++run;
+      continue;
+    }
+    float pr = static_cast<float>(run) / static_cast<float>(n);
+    entropy -= pr * std::log(pr);
+    run = 1;
+  }
+  return entropy;
+}
+
+}  // namespace spinhash

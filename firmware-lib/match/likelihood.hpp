@@ -1,0 +1,52 @@
+// Likelihood of a pose (section 8, eqs. 4-7) in log form. For every query
+// feature the nearest model feature under the pose (found through the model's
+// grid in the blob, by mapping the query feature into the model frame, which
+// is the same as warping every model feature into the query) contributes
+//   log p_o = -min(r, Delta)^2 / (2 sigma^2)  for r <= Delta_max   (eq. 5)
+//   p_n     = 1 if angle(normals) <= eta_max, else the feature is not a match (eq. 6)
+//   log p_s = -L1(spin images) / lambda                              (p_s of eq. 4)
+// Eq. 5 gives p = 0 beyond Delta_max, so one unexplained feature would make
+// the product of eq. 7 zero for every pose; in log form each feature's term is
+// instead floored at the value of a match at Delta with the most dissimilar
+// spin image (L1 = 2): -Delta^2 / (2 sigma^2) - 2 / lambda.
+#pragma once
+#include <cstdint>
+
+#include "match/oriented_point.hpp"
+#include "spinhash/config.hpp"
+#include "spinhash/database.hpp"
+
+namespace spinhash {
+
+struct QueryFeatures {
+  const float* positions = nullptr;  // 3 per feature, query frame (re-centred)
+  const float* normals = nullptr;
+  const uint8_t* spins = nullptr;    // quantised with the database's scale
+  uint32_t count = 0;
+  uint32_t dims = 0;
+};
+
+struct LikelihoodParams {
+  float inv_two_sigma2 = 0.0f;
+  float delta2 = 0.0f;       // Delta^2
+  float delta_max2 = 0.0f;   // Delta_max^2
+  float cos_eta_max = 0.0f;
+  float spin_weight = 0.0f;  // 1 / (lambda * quant_scale): quantised L1 -> -log p_s
+  float floor = 0.0f;        // per-feature log-likelihood of an unexplained feature
+  uint32_t reach = 1;        // grid cells searched each way
+};
+
+LikelihoodParams make_likelihood_params(const RecognizerConfig& cfg, const Database& db);
+
+struct Verification {
+  float log_likelihood = 0.0f;  // sum over query features, eq. 7
+  uint32_t inliers = 0;         // features matched within Delta
+  bool complete = false;        // false: stopped early, cannot beat `to_beat`
+};
+
+// Scores `pose` of `model`. Stops early once even perfect remaining features
+// (log p <= 0 each) could not lift the sum above `to_beat`.
+Verification verify_pose(const Database& db, uint32_t model, const RigidPose& pose,
+                         const QueryFeatures& query, const LikelihoodParams& lp, float to_beat);
+
+}  // namespace spinhash

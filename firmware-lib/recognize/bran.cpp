@@ -1,0 +1,65 @@
+// Batch RANSAC (section 9): candidates of every query feature from the joint
+// index, saliency-weighted doublet draws, and for each draw every candidate
+// pair of one model (the exhaustive W_k x W_l option) through the cascade.
+#include <cmath>
+
+#include "recognize/search_context.hpp"
+
+namespace spinhash {
+namespace {
+
+// Candidates and saliency weights of every query feature.
+void gather_candidates(SearchContext& ctx, uint32_t w) {
+  RecognizerBuffers& b = ctx.buf;
+  SearchStats ss;
+  float running = 0.0f;
+  for (uint32_t l = 0; l < ctx.query.count; ++l) {
+    Candidate* list = ctx.candidates_of(l);
+    uint32_t n = b.searcher.search(ctx.db, ctx.query.spins + static_cast<size_t>(l) * ctx.query.dims, w,
+                                   list, &ss);
+    b.candidate_count[l] = n;
+    ctx.stats.candidates += n;
+    // exp(-H) = 1 / perplexity: a feature whose candidates name one model is
+    // drawn as often as one spread evenly over e.g. 20 models, 20 times.
+    float weight = n > 0 ? std::exp(-candidate_entropy(ctx.db, list, n)) : 0.0f;
+    ctx.stats.salient_features += n > 0 ? 1u : 0u;
+    running += weight;
+    b.cumulative[l] = running;
+  }
+  ctx.stats.bucket_entries = ss.entries_scanned;
+  ctx.stats.bucket_scan_truncated = ss.truncated;
+}
+
+// Every same-model candidate pair of features (k, l); false once the budget is spent.
+bool enumerate_pairs(SearchContext& ctx, uint32_t k, uint32_t l, const DoubletShape& shape,
+                     const HypothesisCaps& caps) {
+  const Candidate* ck = ctx.candidates_of(k);
+  const Candidate* cl = ctx.candidates_of(l);
+  const uint16_t* models = ctx.db.feature_models();
+  for (uint32_t u = 0; u < ctx.buf.candidate_count[k]; ++u) {
+    const uint16_t mu = models[ck[u].feature];
+    for (uint32_t v = 0; v < ctx.buf.candidate_count[l]; ++v) {
+      if (models[cl[v].feature] != mu) continue;
+      if (!evaluate_pair(ctx, mu, k, l, shape, ck[u].feature, cl[v].feature, caps)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+void run_bran(SearchContext& ctx) {
+  gather_candidates(ctx, ctx.cfg.top_w);
+  if (ctx.stats.salient_features < 2u) return;
+  ctx.cumulative = ctx.buf.cumulative;
+  const HypothesisCaps caps{ctx.cfg.max_hypotheses, 0xFFFFFFFFu};
+  for (uint32_t trial = 0; trial < ctx.cfg.max_trials; ++trial) {
+    ++ctx.stats.trials;
+    uint32_t k = 0, l = 0;
+    DoubletShape shape;
+    if (!draw_stable_doublet(ctx, &k, &l, &shape)) continue;
+    if (!enumerate_pairs(ctx, k, l, shape, caps)) return;
+  }
+}
+
+}  // namespace spinhash

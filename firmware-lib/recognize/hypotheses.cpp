@@ -1,0 +1,85 @@
+// The hypothesis machinery shared by BRAN and SRAN: doublet draws, the
+// Figure 5 cascade, the pose and its likelihood.
+#include "match/pose_from_doublet.hpp"
+#include "recognize/search_context.hpp"
+#include "spinhash/limits.hpp"
+
+namespace spinhash {
+
+OrientedPoint SearchContext::query_point(uint32_t f) const {
+  const float* p = query.positions + 3u * f;
+  const float* n = query.normals + 3u * f;
+  return OrientedPoint{Eigen::Vector3f(p[0], p[1], p[2]), Eigen::Vector3f(n[0], n[1], n[2])};
+}
+
+OrientedPoint SearchContext::model_point(uint32_t f) const {
+  const float* p = db.positions() + 3u * f;
+  const int16_t* n = db.normals() + 3u * f;
+  return OrientedPoint{Eigen::Vector3f(p[0], p[1], p[2]),
+                       Eigen::Vector3f(decode_normal_component(n[0]), decode_normal_component(n[1]),
+                                       decode_normal_component(n[2]))};
+}
+
+namespace {
+
+uint32_t draw_index(SearchContext& ctx) {
+  const uint32_t n = ctx.query.count;
+  if (ctx.cumulative == nullptr) return ctx.rng.below(n);
+  const float total = ctx.cumulative[n - 1u];
+  const float u = ctx.rng.uniform() * total;
+  uint32_t lo = 0, hi = n - 1u;  // first index whose running sum exceeds u
+  while (lo < hi) {              // log2(n) steps
+    uint32_t mid = lo + (hi - lo) / 2u;
+    if (ctx.cumulative[mid] > u) hi = mid; else lo = mid + 1u;
+  }
+  return lo;
+}
+
+}  // namespace
+
+bool draw_stable_doublet(SearchContext& ctx, uint32_t* k, uint32_t* l, DoubletShape* shape) {
+  for (uint32_t attempt = 0; attempt < kMaxStabilityRetries; ++attempt) {
+    uint32_t a = draw_index(ctx), b = draw_index(ctx);
+    if (a == b) continue;
+    if (!doublet_shape(ctx.query_point(a), ctx.query_point(b), shape)) continue;
+    if (!is_stable(*shape, ctx.d_min, ctx.theta_min)) continue;
+    *k = a;
+    *l = b;
+    return true;
+  }
+  return false;
+}
+
+bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l,
+                   const DoubletShape& shape, uint32_t fu, uint32_t fv, const HypothesisCaps& caps) {
+  RecognitionStats& st = ctx.stats;
+  if (st.pair_checks >= ctx.cfg.max_pair_checks) {
+    st.budget_exhausted = true;
+    return false;
+  }
+  ++st.pair_checks;
+  if (fu == fv) return true;
+  OrientedPoint mu = ctx.model_point(fu), mv = ctx.model_point(fv);
+  if (check_doublet(shape, mu, mv, ctx.tolerance) != CascadeStage::kPass) return true;
+  ++st.doublets_passed;
+  RigidPose pose;
+  if (!pose_from_doublet(ctx.query_point(k), ctx.query_point(l), mu, mv, &pose)) return true;
+  ModelBest& best = ctx.buf.best[model];
+  ++st.hypotheses;
+  ++best.hypotheses;
+  const float to_beat = best.has_score ? best.score : -3.0e38f;
+  Verification v = verify_pose(ctx.db, model, pose, ctx.query, ctx.likelihood, to_beat);
+  if (v.complete && (!best.has_score || v.log_likelihood > best.score)) {
+    best.score = v.log_likelihood;
+    best.pose = pose;
+    best.inliers = v.inliers;
+    best.has_score = true;
+  }
+  if (st.hypotheses >= caps.total || best.hypotheses >= caps.per_model) {
+    st.budget_exhausted = true;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace spinhash

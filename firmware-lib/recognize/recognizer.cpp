@@ -1,0 +1,196 @@
+// Workspace carving, the recognize() pipeline and the final ranking.
+#include <cmath>
+#include <new>
+
+#include "descriptor/spin_image.hpp"
+#include "recognize/search_context.hpp"
+#include "spinhash/limits.hpp"
+#include "spinhash/recognizer.hpp"
+#include "util/fixed_math.hpp"
+#include "util/heap_sort.hpp"
+
+namespace spinhash {
+namespace {
+
+bool config_valid(const RecognizerConfig& c) {
+  auto in = [](float v, float lo, float hi) { return v >= lo && v <= hi; };  // false for NaN
+  return c.max_points >= 1u && c.max_points <= kMaxQueryPointsLimit && c.max_features >= 2u &&
+         c.max_features <= kMaxQueryFeaturesLimit && c.max_models >= 1u && c.max_models <= kMaxModels &&
+         c.max_spin_dims >= 1u && c.max_spin_dims <= kMaxSpinDims && c.top_w >= 1u &&
+         c.top_w <= kMaxCandidates && c.top_w_sran >= 1u && c.top_w_sran <= kMaxCandidates &&
+         c.top_w_sind >= 1u && c.top_w_sind <= kMaxCandidates && c.max_bucket_scan >= 1u &&
+         c.max_bucket_scan <= (1u << 24) && in(c.d_min, 0.0f, 100.0f) && in(c.theta_min_deg, 0.0f, 180.0f) &&
+         in(c.tol_distance, 0.0f, 100.0f) && in(c.tol_angle_deg, 0.0f, 180.0f) &&
+         in(c.tol_handedness, 0.0f, 2.0f) && in(c.sigma, 1e-4f, 100.0f) && in(c.delta, 1e-4f, 100.0f) &&
+         in(c.delta_max, c.delta, 100.0f) && in(c.eta_max_deg, 0.0f, 180.0f) &&
+         in(c.spin_lambda, 1e-3f, 1e3f) &&
+         (!c.has_viewpoint || (std::isfinite(c.viewpoint[0]) && std::isfinite(c.viewpoint[1]) &&
+                               std::isfinite(c.viewpoint[2])));
+}
+
+uint32_t candidate_stride(const RecognizerConfig& c) {
+  uint32_t w = c.top_w > c.top_w_sran ? c.top_w : c.top_w_sran;
+  return w > c.top_w_sind ? w : c.top_w_sind;
+}
+
+// Carves every buffer of `b` for `cfg` from `arena`; the single source of the
+// workspace layout, run in counting mode by required_workspace_bytes().
+Status carve(Arena& arena, const RecognizerConfig& cfg, const FeatureParams& fp, RecognizerBuffers& b) {
+  ExtractorCapacity cap;
+  cap.max_points = cfg.max_points;
+  cap.max_features = cfg.max_features;
+  cap.max_spin_dims = cfg.max_spin_dims;
+  Status s = b.extractor.init(fp, cap, arena);
+  if (s != Status::kOk && s != Status::kWorkspaceTooSmall) return s;
+  b.searcher.carve(arena, cfg.max_bucket_scan);
+  b.candidate_stride = candidate_stride(cfg);
+  const size_t nf = cfg.max_features;
+  b.query_spins = arena.alloc<uint8_t>(nf * cfg.max_spin_dims);
+  b.candidates = arena.alloc<Candidate>(nf * b.candidate_stride);
+  b.candidate_count = arena.alloc<uint32_t>(nf);
+  b.cumulative = arena.alloc<float>(nf);
+  b.best = arena.alloc<ModelBest>(cfg.max_models);
+  b.ranking = arena.alloc<RankedModel>(cfg.max_models);
+  return arena.overflowed() ? Status::kWorkspaceTooSmall : Status::kOk;
+}
+
+// The workspace size planning uses a feature config that passes validation;
+// buffer sizes depend only on the capacities in cfg.
+FeatureParams sizing_params(const RecognizerConfig& cfg) {
+  FeatureParams fp;
+  fp.bins_alpha = 1;
+  fp.bins_beta = cfg.max_spin_dims <= kMaxSpinBinsPerAxis ? cfg.max_spin_dims : 1u;
+  return fp;
+}
+
+Pose to_public_pose(const RigidPose& p, const double origin[3]) {
+  Pose out;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) out.rotation[3 * r + c] = p.rotation(r, c);
+  for (int a = 0; a < 3; ++a) out.translation[a] = static_cast<double>(p.translation[a]) + origin[a];
+  return out;
+}
+
+void reset(ModelBest& best) {
+  best.pose.rotation.setIdentity();
+  best.pose.translation.setZero();
+  best.score = 0.0f;
+  best.hypotheses = 0;
+  best.inliers = 0;
+  best.has_score = false;
+}
+
+Pose identity_pose() {
+  Pose p{};
+  p.rotation[0] = p.rotation[4] = p.rotation[8] = 1.0f;
+  return p;
+}
+
+uint32_t rank_models(const Database& db, RecognizerBuffers& b, const double origin[3]) {
+  uint32_t n = 0;
+  for (uint32_t m = 0; m < db.model_count(); ++m) {
+    const ModelBest& best = b.best[m];
+    if (!best.has_score) continue;
+    RankedModel& r = b.ranking[n++];
+    r.model = m;
+    r.score = best.score;
+    r.has_pose = best.hypotheses > 0;
+    r.pose = r.has_pose ? to_public_pose(best.pose, origin) : identity_pose();
+    r.hypotheses = best.hypotheses;
+    r.inliers = best.inliers;
+  }
+  // Best first; equal scores by model index, so the order is fully determined.
+  heap_sort(b.ranking, n, [](const RankedModel& x, const RankedModel& y) {
+    return x.score > y.score || (x.score == y.score && x.model < y.model);
+  });
+  return n;
+}
+
+}  // namespace
+
+size_t required_workspace_bytes(const RecognizerConfig& config) noexcept {
+  if (!config_valid(config)) return 0;
+  Arena counter;
+  RecognizerBuffers scratch;
+  counter.alloc<RecognizerBuffers>(1);
+  carve(counter, config, sizing_params(config), scratch);
+  return counter.used() + kBufferAlignment;  // slack so a caller's size rounding never bites
+}
+
+Status Recognizer::init(const Database* db, const RecognizerConfig& config, void* workspace,
+                        size_t workspace_bytes) noexcept {
+  buffers_ = nullptr;
+  db_ = nullptr;
+  if (db == nullptr || !db->is_open() || workspace == nullptr || !config_valid(config))
+    return Status::kInvalidArgument;
+  if (reinterpret_cast<uintptr_t>(workspace) % kBufferAlignment != 0) return Status::kMisalignedBuffer;
+  if (db->model_count() > config.max_models) return Status::kDatabaseTooLarge;
+  if (db->spin_dims() > config.max_spin_dims) return Status::kInvalidArgument;
+  Arena arena(workspace, workspace_bytes);
+  RecognizerBuffers* b = arena.alloc<RecognizerBuffers>(1);
+  if (b == nullptr) return Status::kWorkspaceTooSmall;
+  new (b) RecognizerBuffers();
+  Status s = carve(arena, config, db->feature_params(), *b);
+  if (s != Status::kOk) return s;
+  db_ = db;
+  config_ = config;
+  used_bytes_ = arena.used();
+  buffers_ = b;
+  return Status::kOk;
+}
+
+Result Recognizer::recognize(const float* xyz, uint32_t count) noexcept {
+  CloudView cloud;
+  cloud.xyz_f = xyz;
+  cloud.count = count;
+  return run(cloud);
+}
+
+Result Recognizer::recognize(const double* xyz, uint32_t count) noexcept {
+  CloudView cloud;
+  cloud.xyz_d = xyz;
+  cloud.count = count;
+  return run(cloud);
+}
+
+Result Recognizer::run(const CloudView& cloud) noexcept {
+  Result result;
+  if (buffers_ == nullptr) return result;  // kNotOpen
+  if (cloud.count > 0 && cloud.xyz_f == nullptr && cloud.xyz_d == nullptr) {
+    result.status = Status::kInvalidArgument;
+    return result;
+  }
+  RecognizerBuffers& b = *buffers_;
+  result.stats.workspace_used = used_bytes_;
+  OrientationHint hint;
+  hint.has_viewpoint = config_.has_viewpoint;
+  for (int a = 0; a < 3; ++a) hint.viewpoint[a] = config_.viewpoint[a];
+  FeatureSet fs;
+  result.status = b.extractor.extract(cloud, hint, &fs, &result.stats.extract);
+  if (result.status != Status::kOk) return result;
+  result.stats.features = fs.count;
+  if (fs.count < 2u) {
+    result.status = Status::kNotEnoughFeatures;
+    return result;
+  }
+  const float scale = db_->params().spin_quant_scale;
+  for (uint32_t f = 0; f < fs.count; ++f)
+    quantize_spin(fs.spins + static_cast<size_t>(f) * fs.dims, fs.dims, scale,
+                  b.query_spins + static_cast<size_t>(f) * fs.dims);
+  for (uint32_t m = 0; m < db_->model_count(); ++m) reset(b.best[m]);
+
+  SearchContext ctx{*db_, config_, b, QueryFeatures{fs.positions, fs.normals, b.query_spins, fs.count, fs.dims},
+                    make_likelihood_params(config_, *db_),
+                    DoubletTolerance{config_.tol_distance, deg_to_rad(config_.tol_angle_deg), config_.tol_handedness},
+                    config_.d_min, deg_to_rad(config_.theta_min_deg), result.stats, Pcg32(config_.seed)};
+  switch (config_.mode) {
+    case Mode::kBran: run_bran(ctx); break;
+    case Mode::kSran: run_sran(ctx); break;
+    case Mode::kSind: run_sind(ctx); break;
+  }
+  result.ranking = b.ranking;
+  result.ranking_count = rank_models(*db_, b, fs.origin);
+  return result;
+}
+
+}  // namespace spinhash
