@@ -1,0 +1,59 @@
+// Internal stages of Database::open. Each stage may assume that every stage
+// before it succeeded (that is what makes the later reads safe), and returns
+// the first failure it finds. Order: header -> sections -> params -> models
+// -> features -> lsh.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "spinhash/blob_format.hpp"
+#include "spinhash/status.hpp"
+
+namespace spinhash {
+namespace blob_check {
+
+constexpr uint32_t kSlotCount = blob::kSectionIdCount + 1;  // indexed by SectionId; slot 0 unused
+
+// Payload of every section, located and checksummed by check_sections.
+struct Sections {
+  const uint8_t* data[kSlotCount];
+  uint64_t size[kSlotCount];
+  bool present[kSlotCount];
+};
+
+template <typename T>
+inline const T* section_as(const Sections& s, uint32_t id) {
+  // Offsets are multiples of 64 from a 64-aligned base, so T is aligned.
+  return reinterpret_cast<const T*>(s.data[id]);
+}
+
+inline const blob::Params& params_of(const Sections& s) {
+  return *section_as<blob::Params>(s, blob::kParams);
+}
+
+// Header fields, total size, section table bounds and the header CRC.
+Status check_header(const uint8_t* base, size_t size);
+// Every table entry (id, alignment, bounds, overlap, CRC) and presence of all ids.
+Status check_sections(const uint8_t* base, Sections* out);
+// Params size, counts, section sizes, float ranges, config fingerprint.
+Status check_params(const blob::Header& header, const Sections& s);
+// Model records: names, feature ranges, grids and their offsets.
+Status check_models(const Sections& s);
+// Per-feature positions, normals and model ids.
+Status check_features(const Sections& s);
+// LSH bits, per-table bucket offsets and entries.
+Status check_lsh(const Sections& s);
+
+// a * b into *out unless it overflows 64 bits.
+inline bool mul_u64(uint64_t a, uint64_t b, uint64_t* out) {
+  if (a != 0u && b > UINT64_MAX / a) return false;
+  *out = a * b;
+  return true;
+}
+
+inline uint32_t byteswap32(uint32_t v) {
+  return (v >> 24) | ((v >> 8) & 0x0000FF00u) | ((v << 8) & 0x00FF0000u) | (v << 24);
+}
+
+}  // namespace blob_check
+}  // namespace spinhash

@@ -1,0 +1,93 @@
+// Stage 4 of Database::open: the model table. Models own consecutive,
+// non-empty feature ranges that tile [0, feature_count), and consecutive,
+// non-overlapping grid-offset ranges, so this stage (and every later per-model
+// loop) costs time proportional to the blob size.
+#include <cmath>
+
+#include "blob/database_checks.hpp"
+#include "spinhash/database.hpp"
+
+namespace spinhash {
+namespace blob_check {
+namespace {
+
+bool name_ok(const char (&name)[kMaxModelNameBytes]) {
+  if (name[0] == '\0') return false;
+  for (uint32_t k = 1; k < kMaxModelNameBytes; ++k) {
+    if (name[k] == '\0') return true;
+  }
+  return false;
+}
+
+bool all_finite(const float* v, uint32_t n) {
+  for (uint32_t k = 0; k < n; ++k) {
+    if (!std::isfinite(v[k])) return false;
+  }
+  return true;
+}
+
+bool geometry_ok(const blob::ModelRecord& m) {
+  if (!all_finite(m.grid_origin, 3u) || !all_finite(m.bbox_min, 3u) ||
+      !all_finite(m.bbox_max, 3u)) {
+    return false;
+  }
+  for (uint32_t k = 0; k < 3u; ++k) {
+    if (m.bbox_min[k] > m.bbox_max[k]) return false;
+  }
+  return true;
+}
+
+// Cells of the model's grid, or 0 if a dimension is 0 or the product is too large.
+uint64_t grid_cells(const blob::ModelRecord& m) {
+  uint64_t cells = 1;
+  for (uint32_t k = 0; k < 3u; ++k) {
+    const uint32_t d = m.grid_dims[k];
+    if (d == 0u || d > kMaxGridCellsPerModel) return 0u;
+    cells *= d;  // <= 2^20 * 2^20 before the next check: no overflow
+    if (cells > kMaxGridCellsPerModel) return 0u;
+  }
+  return cells;
+}
+
+// Offsets of one model: start at 0, never decrease, end at its feature count.
+bool grid_offsets_ok(const uint32_t* off, uint64_t cells, uint32_t feature_count) {
+  if (off[0] != 0u || off[cells] != feature_count) return false;
+  for (uint64_t c = 0; c < cells; ++c) {
+    if (off[c + 1u] < off[c]) return false;
+  }
+  return true;
+}
+
+// One record; *next_feature and *next_grid advance past what it owns.
+bool model_ok(const blob::ModelRecord& m, const uint32_t* grid, uint64_t grid_count,
+              uint64_t* next_feature, uint64_t* next_grid) {
+  if (!name_ok(m.name) || !geometry_ok(m)) return false;
+  if (m.first_feature != *next_feature || m.feature_count == 0u) return false;
+  const uint64_t cells = grid_cells(m);
+  if (cells == 0u || m.grid_offset_base < *next_grid) return false;
+  const uint64_t grid_end = static_cast<uint64_t>(m.grid_offset_base) + cells + 1u;
+  if (grid_end > grid_count) return false;
+  if (!grid_offsets_ok(grid + m.grid_offset_base, cells, m.feature_count)) return false;
+  *next_feature += m.feature_count;
+  *next_grid = grid_end;
+  return true;
+}
+
+}  // namespace
+
+Status check_models(const Sections& s) {
+  const blob::Params& p = params_of(s);
+  const blob::ModelRecord* models = section_as<blob::ModelRecord>(s, blob::kModels);
+  const uint32_t* grid = section_as<uint32_t>(s, blob::kGridOffsets);
+  uint64_t next_feature = 0;
+  uint64_t next_grid = 0;
+  for (uint32_t i = 0; i < p.model_count && i < kMaxModels; ++i) {
+    if (!model_ok(models[i], grid, p.grid_offset_count, &next_feature, &next_grid)) {
+      return Status::kBlobBadModelTable;
+    }
+  }
+  return next_feature == p.feature_count ? Status::kOk : Status::kBlobBadModelTable;
+}
+
+}  // namespace blob_check
+}  // namespace spinhash
