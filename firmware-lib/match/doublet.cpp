@@ -1,5 +1,6 @@
 #include "match/doublet.hpp"
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "util/fixed_math.hpp"

@@ -1,5 +1,6 @@
 #include "match/pose_from_doublet.hpp"
 
+#include <Eigen/LU>
 #include <Eigen/SVD>
 
 namespace spinhash {

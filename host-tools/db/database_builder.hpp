@@ -1,0 +1,46 @@
+// Builds database content from model point clouds with the core's own feature
+// code: features -> quantisation scale -> per-model grids -> LSH tables.
+// Pure C++ (no Assimp/Embree), so the core tests can build blobs on a target.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "blob/blob_content.hpp"
+#include "spinhash/config.hpp"
+
+namespace spinhash {
+namespace host {
+
+struct ModelCloud {
+  std::string name;          // <= kMaxModelNameBytes - 1 bytes
+  std::vector<double> xyz;   // model frame, metres
+};
+
+struct BuildOptions {
+  FeatureParams features;              // spin_quant_scale is chosen from the data
+  uint32_t lsh_tables = 8;             // L
+  uint32_t lsh_bits = 24;              // K
+  float quant_percentile = 0.999f;     // bin value mapped to 255
+  float grid_cell = 0.5f;              // m, per-model feature grid (>= Delta_max keeps lookups to 27 cells)
+  uint32_t max_points_per_model = 1u << 21;
+  uint32_t max_features_per_model = 1u << 14;
+  uint64_t seed = 1;                   // LSH bit sampling
+};
+
+struct BuildReport {
+  uint32_t features = 0;
+  std::vector<uint32_t> features_per_model;
+  uint32_t max_bucket = 0;  // largest LSH bucket
+  double mean_bucket = 0.0; // mean non-empty bucket size
+};
+
+// Progress callback: (models done, models total).
+using BuildProgress = void (*)(uint32_t done, uint32_t total, void* user);
+
+bool build_database(const std::vector<ModelCloud>& models, const BuildOptions& opt, BlobContent* out,
+                    BuildReport* report, std::string* error, BuildProgress progress = nullptr,
+                    void* user = nullptr);
+
+}  // namespace host
+}  // namespace spinhash

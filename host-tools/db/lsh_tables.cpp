@@ -1,0 +1,84 @@
+#include "db/lsh_tables.hpp"
+
+#include <random>
+
+#include "spinhash/lsh.hpp"
+
+namespace spinhash {
+namespace host {
+namespace {
+
+// Per-dimension range C_i: thresholds 0..C_i-1 make P(bit differs) = |q1 - q2| / C_i.
+std::vector<uint32_t> dimension_ranges(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features) {
+  std::vector<uint32_t> range(dims, 1u);
+  for (uint32_t f = 0; f < features; ++f)
+    for (uint32_t d = 0; d < dims; ++d) {
+      uint32_t v = spins[static_cast<size_t>(f) * dims + d];
+      if (v > range[d]) range[d] = v;
+    }
+  return range;
+}
+
+// Draws a value in [0, n) from 64 random bits (same on every standard library).
+uint32_t draw_below(std::mt19937_64& rng, uint64_t n) { return static_cast<uint32_t>(rng() % n); }
+
+std::vector<blob::LshBit> sample_bits(const std::vector<uint32_t>& range, uint32_t count, uint64_t seed) {
+  std::vector<uint64_t> cumulative(range.size());
+  uint64_t total = 0;
+  for (size_t d = 0; d < range.size(); ++d) cumulative[d] = (total += range[d]);
+  std::mt19937_64 rng(seed);
+  std::vector<blob::LshBit> bits(count);
+  for (auto& bit : bits) {
+    // A point uniform on [0, d_c): its dimension is drawn with probability
+    // C_i / d_c and its offset inside that dimension is the threshold.
+    uint64_t u = draw_below(rng, total);
+    size_t d = 0;
+    while (cumulative[d] <= u) ++d;
+    bit.dim = static_cast<uint16_t>(d);
+    bit.threshold = static_cast<uint16_t>(u - (cumulative[d] - range[d]));
+  }
+  return bits;
+}
+
+uint32_t bucket_count_for(uint32_t features) {
+  uint32_t b = 1;
+  while (b < features / 2u && b < (1u << 28)) b <<= 1u;  // about two entries per bucket
+  return b;
+}
+
+}  // namespace
+
+LshTables build_lsh_tables(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features,
+                           uint32_t tables, uint32_t bits_per_key, uint64_t seed) {
+  LshTables t;
+  std::vector<uint32_t> range = dimension_ranges(spins, dims, features);
+  for (uint32_t r : range) t.d_c += static_cast<float>(r);
+  t.bits = sample_bits(range, tables * bits_per_key, seed);
+  t.buckets = bucket_count_for(features);
+  t.offsets.assign(static_cast<size_t>(tables) * (t.buckets + 1u), 0u);
+  t.entries.resize(static_cast<size_t>(tables) * features);
+  std::vector<uint32_t> bucket(features);
+  uint64_t nonempty = 0;
+  for (uint32_t tab = 0; tab < tables; ++tab) {
+    uint32_t* off = t.offsets.data() + static_cast<size_t>(tab) * (t.buckets + 1u);
+    const blob::LshBit* bits = t.bits.data() + static_cast<size_t>(tab) * bits_per_key;
+    for (uint32_t f = 0; f < features; ++f) {
+      uint64_t key = lsh_key(bits, bits_per_key, spins.data() + static_cast<size_t>(f) * dims);
+      bucket[f] = blob::bucket_of(key, tab, t.buckets);
+      ++off[bucket[f] + 1u];
+    }
+    for (uint32_t b = 0; b < t.buckets; ++b) {
+      if (off[b + 1u] > t.max_bucket) t.max_bucket = off[b + 1u];
+      nonempty += off[b + 1u] > 0 ? 1u : 0u;
+      off[b + 1u] += off[b];
+    }
+    std::vector<uint32_t> cursor(off, off + t.buckets);
+    uint32_t* entries = t.entries.data() + static_cast<size_t>(tab) * features;
+    for (uint32_t f = 0; f < features; ++f) entries[cursor[bucket[f]]++] = f;  // ascending ids per bucket
+  }
+  t.mean_bucket = nonempty > 0 ? static_cast<double>(tables) * features / static_cast<double>(nonempty) : 0.0;
+  return t;
+}
+
+}  // namespace host
+}  // namespace spinhash

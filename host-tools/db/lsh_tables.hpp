@@ -1,0 +1,26 @@
+// LSH tables over quantised spin images (eq. 2): bit sampling with dims
+// drawn in proportion to their range and thresholds uniform within it.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "spinhash/blob_format.hpp"
+
+namespace spinhash {
+namespace host {
+
+struct LshTables {
+  std::vector<blob::LshBit> bits;   // tables * bits_per_key
+  std::vector<uint32_t> offsets;    // tables * (buckets + 1)
+  std::vector<uint32_t> entries;    // tables * features
+  uint32_t buckets = 0;
+  float d_c = 0.0f;                 // sum of per-dimension ranges
+  uint32_t max_bucket = 0;
+  double mean_bucket = 0.0;
+};
+
+LshTables build_lsh_tables(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features,
+                           uint32_t tables, uint32_t bits_per_key, uint64_t seed);
+
+}  // namespace host
+}  // namespace spinhash
