@@ -1,0 +1,61 @@
+#include "blob/blob_swap.hpp"
+
+#include "blob/byte_order.hpp"
+
+namespace spinhash {
+namespace host {
+
+void swap_fields(blob::Header* h, bool swap) {
+  swap_in_place(&h->version, swap);
+  swap_in_place(&h->byte_order, swap);
+  swap_in_place(&h->total_size, swap);
+  swap_in_place(&h->config_fingerprint, swap);
+  swap_in_place(&h->section_count, swap);
+  swap_in_place(&h->header_crc, swap);
+}
+
+void swap_fields(blob::SectionEntry* e, bool swap) {
+  swap_in_place(&e->id, swap);
+  swap_in_place(&e->reserved, swap);
+  swap_in_place(&e->offset, swap);
+  swap_in_place(&e->size, swap);
+  swap_in_place(&e->crc, swap);
+  swap_in_place(&e->reserved2, swap);
+}
+
+void swap_fields(blob::Params* p, bool swap) {
+  swap_in_place(&p->model_count, swap);
+  swap_in_place(&p->feature_count, swap);
+  swap_in_place(&p->bins_alpha, swap);
+  swap_in_place(&p->bins_beta, swap);
+  swap_in_place(&p->lsh_tables, swap);
+  swap_in_place(&p->lsh_bits, swap);
+  swap_in_place(&p->lsh_buckets, swap);
+  swap_in_place(&p->grid_offset_count, swap);
+  swap_in_place(&p->cloud_voxel, swap);
+  swap_in_place(&p->normal_radius, swap);
+  swap_in_place(&p->basis_spacing, swap);
+  swap_in_place(&p->support_radius, swap);
+  swap_in_place(&p->support_angle_deg, swap);
+  swap_in_place(&p->spin_quant_scale, swap);
+  swap_in_place(&p->lsh_dc, swap);
+  swap_in_place(&p->grid_cell, swap);
+}
+
+void swap_fields(blob::ModelRecord* m, bool swap) {
+  swap_in_place(&m->first_feature, swap);
+  swap_in_place(&m->feature_count, swap);
+  swap_array_in_place(m->grid_dims, swap);
+  swap_in_place(&m->grid_offset_base, swap);
+  swap_array_in_place(m->grid_origin, swap);
+  swap_array_in_place(m->bbox_min, swap);
+  swap_array_in_place(m->bbox_max, swap);
+}
+
+void swap_fields(blob::LshBit* b, bool swap) {
+  swap_in_place(&b->dim, swap);
+  swap_in_place(&b->threshold, swap);
+}
+
+}  // namespace host
+}  // namespace spinhash

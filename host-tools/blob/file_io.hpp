@@ -1,0 +1,23 @@
+// Whole-file reads into 64-byte-aligned memory and crash-safe replacement of
+// a file (POSIX: the blob tools run on Linux hosts and Linux targets).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "blob/aligned_bytes.hpp"
+
+namespace spinhash {
+namespace host {
+
+// Reads the whole regular file. On failure *out is emptied and *error says why.
+bool read_file(const std::string& path, AlignedBytes* out, std::string* error);
+
+// Writes to a temporary file next to `path`, flushes it to disk, then renames
+// it over `path`: readers see the old file or the new one, never a mix. On
+// failure the temporary is removed and an existing `path` is left untouched.
+bool write_file_atomically(const std::string& path, const std::vector<uint8_t>& bytes,
+                           std::string* error);
+
+}  // namespace host
+}  // namespace spinhash

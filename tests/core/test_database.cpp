@@ -1,0 +1,593 @@
+// Database::open: one valid blob, then one corruption per check, each sealed
+// again (CRCs, fingerprint) so that the check under test is the one that fires.
+// No file I/O and no assumption about the host byte order (runs under QEMU).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include "blob/blob_writer.hpp"
+#include "blob/tiny_blob.hpp"
+#include "support/blob_patch.hpp"
+
+using spinhash::Database;
+using spinhash::Status;
+using spinhash::test::BlobPatch;
+namespace blob = spinhash::blob;
+namespace host = spinhash::host;
+
+namespace {
+
+constexpr uint32_t kModels = 3;
+constexpr uint32_t kFeaturesPerModel = 20;
+constexpr uint64_t kSeed = 7;
+
+const host::BlobContent& tiny() {
+  static const host::BlobContent content =
+      host::make_tiny_blob_content(kModels, kFeaturesPerModel, kSeed);
+  return content;
+}
+
+const std::vector<uint8_t>& tiny_blob() {
+  static const std::vector<uint8_t> bytes = spinhash::test::write_native(tiny());
+  return bytes;
+}
+
+BlobPatch fresh() { return BlobPatch(tiny_blob()); }
+
+template <typename T>
+bool same(const T* a, const std::vector<T>& b) {
+  return std::memcmp(a, b.data(), b.size() * sizeof(T)) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("crc32c and fnv1a64 match their published check values") {
+  const char* digits = "123456789";
+  CHECK(spinhash::crc32c(digits, 9) == 0xE3069283u);
+  CHECK(spinhash::crc32c(digits + 4, 5, spinhash::crc32c(digits, 4)) == 0xE3069283u);
+  CHECK(spinhash::crc32c(digits, 0) == 0u);
+  CHECK(spinhash::fnv1a64("", 0) == 0xCBF29CE484222325ull);
+  CHECK(spinhash::fnv1a64("a", 1) == 0xAF63DC4C8601EC8Cull);
+}
+
+TEST_CASE("a valid blob opens and its accessors return the written values") {
+  const host::BlobContent& c = tiny();
+  BlobPatch b = fresh();
+  Database db;
+  REQUIRE(b.open(&db) == Status::kOk);
+  REQUIRE(db.is_open());
+  CHECK(db.header().total_size == b.size());
+  CHECK(db.model_count() == kModels);
+  CHECK(db.feature_count() == kModels * kFeaturesPerModel);
+  CHECK(db.spin_dims() == c.params.bins_alpha * c.params.bins_beta);
+  CHECK(std::memcmp(&db.params(), &c.params, sizeof(blob::Params)) == 0);
+  for (uint32_t i = 0; i < kModels; ++i) {
+    CHECK(std::memcmp(&db.model(i), &c.models[i], sizeof(blob::ModelRecord)) == 0);
+  }
+  CHECK(same(db.positions(), c.positions));
+  CHECK(same(db.normals(), c.normals));
+  CHECK(same(db.feature_models(), c.feature_models));
+  CHECK(same(db.spin(0), c.spins));
+  CHECK(db.spin(1) == db.spin(0) + db.spin_dims());
+  CHECK(same(db.grid_offsets(), c.grid_offsets));
+  CHECK(same(db.lsh_bits(0), c.lsh_bits));
+  CHECK(db.lsh_bits(1) == db.lsh_bits(0) + c.params.lsh_bits);
+  CHECK(same(db.lsh_offsets(0), c.lsh_offsets));
+  CHECK(db.lsh_offsets(1) == db.lsh_offsets(0) + c.params.lsh_buckets + 1u);
+  CHECK(same(db.lsh_entries(), c.lsh_entries));
+}
+
+TEST_CASE("feature_params and find_model") {
+  BlobPatch b = fresh();
+  Database db;
+  REQUIRE(b.open(&db) == Status::kOk);
+  const spinhash::FeatureParams f = db.feature_params();
+  CHECK(f.support_radius == tiny().params.support_radius);
+  CHECK(f.bins_alpha == tiny().params.bins_alpha);
+  CHECK(f.spin_quant_scale == tiny().params.spin_quant_scale);
+  CHECK(db.find_model("tiny_0") == 0);
+  CHECK(db.find_model("tiny_2") == 2);
+  CHECK(db.find_model("tiny_") == -1);
+  CHECK(db.find_model("tiny_22") == -1);
+  CHECK(db.find_model("") == -1);
+  CHECK(db.find_model(nullptr) == -1);
+  const std::string long_name(100, 'x');
+  CHECK(db.find_model(long_name.c_str()) == -1);
+  CHECK(Database().find_model("tiny_0") == -1);
+}
+
+TEST_CASE("the opposite byte order is written swapped and refused with kBlobWrongByteOrder") {
+  const host::ByteOrder other = host::opposite_byte_order(host::ByteOrder::kNative);
+  std::vector<uint8_t> bytes;
+  std::string error;
+  REQUIRE(host::serialize_blob(tiny(), other, &bytes, &error));
+  CHECK(error.empty());
+  BlobPatch b(bytes);
+  REQUIRE(b.size() == tiny_blob().size());
+  CHECK(std::memcmp(b.header().magic, blob::kMagic, 8) == 0);
+  CHECK(host::byteswap_scalar(b.header().byte_order) == blob::kByteOrderMark);
+  CHECK(host::byteswap_scalar(b.header().total_size) == b.size());
+  // Section CRCs are over the bytes as written, stored in the blob's order.
+  for (uint32_t i = 0; i < blob::kSectionIdCount; ++i) {
+    const blob::SectionEntry& e = b.entry(i);
+    const uint64_t offset = host::byteswap_scalar(e.offset);
+    const uint64_t size = host::byteswap_scalar(e.size);
+    CHECK(host::byteswap_scalar(e.crc) == spinhash::crc32c(b.data() + offset, size));
+  }
+  CHECK(b.open() == Status::kBlobWrongByteOrder);
+}
+
+TEST_CASE("null pointer, zero size or null out are invalid arguments") {
+  BlobPatch b = fresh();
+  Database db;
+  CHECK(Database::open(nullptr, b.size(), &db) == Status::kInvalidArgument);
+  CHECK(Database::open(b.data(), 0, &db) == Status::kInvalidArgument);
+  CHECK(Database::open(b.data(), b.size(), nullptr) == Status::kInvalidArgument);
+  CHECK_FALSE(db.is_open());
+}
+
+TEST_CASE("an unaligned base pointer is refused with kMisalignedBuffer") {
+  const std::vector<uint8_t>& bytes = tiny_blob();
+  host::AlignedBytes buffer(bytes.size() + blob::kSectionAlignment);
+  for (size_t shift : {size_t{1}, size_t{4}, size_t{8}, size_t{32}}) {
+    std::memcpy(buffer.data() + shift, bytes.data(), bytes.size());
+    Database db;
+    CHECK(Database::open(buffer.data() + shift, bytes.size(), &db) == Status::kMisalignedBuffer);
+  }
+}
+
+TEST_CASE("truncated blobs are refused with kBlobTruncated") {
+  BlobPatch b = fresh();
+  for (size_t length : {size_t{1}, size_t{63}, size_t{64}, size_t{100}, size_t{384},
+                        b.size() / 2, b.size() - 1}) {
+    CAPTURE(length);
+    CHECK(b.open_prefix(length) == Status::kBlobTruncated);
+  }
+}
+
+TEST_CASE("a truncated blob whose header was shortened too loses a section: out of bounds") {
+  BlobPatch b = fresh();
+  b.header().total_size -= 4;
+  b.reseal_header();
+  CHECK(b.open_prefix(b.size() - 4) == Status::kBlobSectionOutOfBounds);
+}
+
+TEST_CASE("bytes beyond the declared total size are refused with kBlobSizeMismatch") {
+  std::vector<uint8_t> longer = tiny_blob();
+  longer.resize(longer.size() + 64, 0);
+  BlobPatch b(longer);
+  CHECK(b.open() == Status::kBlobSizeMismatch);
+}
+
+TEST_CASE("wrong magic or an unknown byte-order mark is kBlobBadMagic") {
+  BlobPatch b = fresh();
+  b.header().magic[7] = 'X';
+  CHECK(b.open() == Status::kBlobBadMagic);
+  BlobPatch c = fresh();
+  c.header().byte_order = 0x01020305u;
+  CHECK(c.open() == Status::kBlobBadMagic);
+}
+
+TEST_CASE("a byte-swapped byte-order mark alone is kBlobWrongByteOrder") {
+  BlobPatch b = fresh();
+  b.header().byte_order = host::byteswap_scalar(blob::kByteOrderMark);
+  CHECK(b.open() == Status::kBlobWrongByteOrder);
+}
+
+TEST_CASE("version 2 is kBlobUnsupportedVersion") {
+  BlobPatch b = fresh();
+  b.header().version = 2;
+  b.reseal_header();
+  CHECK(b.open() == Status::kBlobUnsupportedVersion);
+}
+
+TEST_CASE("a flipped header CRC or table byte is kBlobHeaderChecksum") {
+  BlobPatch b = fresh();
+  b.header().header_crc ^= 1u;
+  CHECK(b.open() == Status::kBlobHeaderChecksum);
+  BlobPatch c = fresh();
+  c.entry(3).reserved ^= 0x10u;
+  CHECK(c.open() == Status::kBlobHeaderChecksum);
+  BlobPatch d = fresh();
+  d.header().reserved[0] ^= 1u;  // reserved bytes are not checked, but they are covered
+  CHECK(d.open() == Status::kBlobHeaderChecksum);
+}
+
+TEST_CASE("section count zero or above kMaxSections is kBlobCountOverflow") {
+  for (uint32_t count : {0u, spinhash::kMaxSections + 1u, 0xFFFFFFFFu}) {
+    BlobPatch b = fresh();
+    b.header().section_count = count;
+    b.reseal_header();
+    CHECK(b.open() == Status::kBlobCountOverflow);
+  }
+}
+
+TEST_CASE("a section table beyond the end is kBlobTruncated") {
+  BlobPatch b = fresh();
+  const size_t length = 200;  // header fits, 10-entry table does not
+  b.header().total_size = length;
+  CHECK(b.open_prefix(length) == Status::kBlobTruncated);
+}
+
+TEST_CASE("a flipped section byte is kBlobSectionChecksum") {
+  for (uint32_t id = 1; id <= blob::kSectionIdCount; ++id) {
+    CAPTURE(id);
+    BlobPatch b = fresh();
+    b.payload(id)[b.entry_of(id).size - 1] ^= 0x01u;
+    CHECK(b.open() == Status::kBlobSectionChecksum);
+  }
+}
+
+TEST_CASE("an unknown section id is kBlobUnknownSection") {
+  for (uint32_t id : {0u, blob::kSectionIdCount + 1u}) {
+    BlobPatch b = fresh();
+    b.entry(4).id = id;
+    b.reseal_header();
+    CHECK(b.open() == Status::kBlobUnknownSection);
+  }
+}
+
+TEST_CASE("a duplicated section id is kBlobDuplicateSection") {
+  BlobPatch b = fresh();
+  b.entry(9).id = b.entry(8).id;
+  b.reseal_header();
+  CHECK(b.open() == Status::kBlobDuplicateSection);
+}
+
+TEST_CASE("an offset that is not a multiple of 64 is kBlobSectionMisaligned") {
+  BlobPatch b = fresh();
+  b.entry_of(blob::kFeatNormals).offset += 4;
+  b.reseal();
+  CHECK(b.open() == Status::kBlobSectionMisaligned);
+}
+
+TEST_CASE("an offset beyond the end or an overflowing size is kBlobSectionOutOfBounds") {
+  BlobPatch b = fresh();
+  b.entry_of(blob::kFeatSpins).offset = (b.size() / 64u + 1u) * 64u;  // aligned, past the end
+  b.reseal_header();
+  CHECK(b.open() == Status::kBlobSectionOutOfBounds);
+  BlobPatch c = fresh();
+  c.entry_of(blob::kFeatSpins).size = 0xFFFFFFFFFFFFFFC0ull;  // offset + size wraps
+  c.reseal_header();
+  CHECK(c.open() == Status::kBlobSectionOutOfBounds);
+  BlobPatch d = fresh();
+  d.entry_of(blob::kLshEntries).size += 4;
+  d.reseal_header();
+  CHECK(d.open() == Status::kBlobSectionOutOfBounds);
+}
+
+TEST_CASE("overlapping sections are kBlobSectionOverlap") {
+  BlobPatch b = fresh();
+  b.entry_of(blob::kFeatNormals).offset = b.entry_of(blob::kFeatPositions).offset;
+  b.reseal();
+  CHECK(b.open() == Status::kBlobSectionOverlap);
+  BlobPatch c = fresh();  // inside the section table
+  c.entry_of(blob::kFeatModels).offset = 256;
+  c.reseal();
+  CHECK(c.open() == Status::kBlobSectionOverlap);
+  BlobPatch d = fresh();  // a size that runs into the next section
+  d.entry_of(blob::kParams).size += 64;
+  d.reseal();
+  CHECK(d.open() == Status::kBlobSectionOverlap);
+}
+
+TEST_CASE("a missing section is kBlobMissingSection") {
+  BlobPatch b = fresh();
+  b.header().section_count = blob::kSectionIdCount - 1u;  // drops the last entry
+  b.reseal_header();
+  CHECK(b.open() == Status::kBlobMissingSection);
+}
+
+TEST_CASE("a params section of the wrong size is kBlobSizeMismatch") {
+  BlobPatch b = fresh();
+  b.entry_of(blob::kParams).size = sizeof(blob::Params) - 4u;
+  b.reseal();
+  CHECK(b.open() == Status::kBlobSizeMismatch);
+}
+
+TEST_CASE("counts outside their limits are kBlobCountOverflow, odd bucket counts kBlobBadParameter") {
+  struct Case {
+    const char* what;
+    void (*patch)(blob::Params&);
+    Status expected;
+  };
+  const Case cases[] = {
+      {"no models", [](blob::Params& p) { p.model_count = 0; }, Status::kBlobCountOverflow},
+      {"65536 models", [](blob::Params& p) { p.model_count = 65536; }, Status::kBlobCountOverflow},
+      {"no features", [](blob::Params& p) { p.feature_count = 0; }, Status::kBlobCountOverflow},
+      {"2^31 features", [](blob::Params& p) { p.feature_count = 0x80000000u; }, Status::kBlobCountOverflow},
+      {"33 bins", [](blob::Params& p) { p.bins_beta = 33; }, Status::kBlobCountOverflow},
+      {"no bins", [](blob::Params& p) { p.bins_alpha = 0; }, Status::kBlobCountOverflow},
+      {"65 tables", [](blob::Params& p) { p.lsh_tables = 65; }, Status::kBlobCountOverflow},
+      {"no bits", [](blob::Params& p) { p.lsh_bits = 0; }, Status::kBlobCountOverflow},
+      {"65 bits", [](blob::Params& p) { p.lsh_bits = 65; }, Status::kBlobCountOverflow},
+      {"2^29 buckets", [](blob::Params& p) { p.lsh_buckets = 1u << 29; }, Status::kBlobCountOverflow},
+      {"no buckets", [](blob::Params& p) { p.lsh_buckets = 0; }, Status::kBlobCountOverflow},
+      {"12 buckets", [](blob::Params& p) { p.lsh_buckets = 12; }, Status::kBlobBadParameter},
+      {"no grid offsets", [](blob::Params& p) { p.grid_offset_count = 0; }, Status::kBlobCountOverflow},
+  };
+  for (const Case& k : cases) {
+    CAPTURE(k.what);
+    BlobPatch b = fresh();
+    k.patch(b.params());
+    b.reseal();
+    CHECK(b.open() == k.expected);
+  }
+}
+
+TEST_CASE("counts whose 32-bit products would wrap to the section size are kBlobSizeMismatch") {
+  // 12 * 0x15555556 = 2^32 + 8: a 32-bit product would match a positions section of 8 bytes.
+  BlobPatch b = fresh();
+  b.params().feature_count = 0x15555556u;
+  b.entry_of(blob::kFeatPositions).size = 8;
+  b.reseal();
+  CHECK(b.open() == Status::kBlobSizeMismatch);
+  // 64 tables * (2^28 + 1) offsets * 4 bytes = 2^36 + 256 bytes.
+  BlobPatch c = fresh();
+  c.params().lsh_tables = 64;
+  c.params().lsh_buckets = 1u << 28;
+  c.entry_of(blob::kLshOffsets).size = 256;
+  c.reseal();
+  CHECK(c.open() == Status::kBlobSizeMismatch);
+}
+
+TEST_CASE("a section size that disagrees with its counts is kBlobSizeMismatch") {
+  BlobPatch b = fresh();
+  b.params().grid_offset_count += 1;
+  b.reseal();
+  CHECK(b.open() == Status::kBlobSizeMismatch);
+  BlobPatch c = fresh();
+  c.entry_of(blob::kLshEntries).size -= 4;
+  c.reseal();
+  CHECK(c.open() == Status::kBlobSizeMismatch);
+}
+
+TEST_CASE("non-finite or out-of-range float params are kBlobBadParameter") {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  struct Case {
+    const char* what;
+    float blob::Params::*field;
+    float value;
+  };
+  const Case cases[] = {
+      {"NaN support radius", &blob::Params::support_radius, nan},
+      {"zero support radius", &blob::Params::support_radius, 0.0f},
+      {"infinite voxel", &blob::Params::cloud_voxel, inf},
+      {"negative basis spacing", &blob::Params::basis_spacing, -0.25f},
+      {"zero normal radius", &blob::Params::normal_radius, 0.0f},
+      {"zero support angle", &blob::Params::support_angle_deg, 0.0f},
+      {"support angle 361", &blob::Params::support_angle_deg, 361.0f},
+      {"zero quantisation scale", &blob::Params::spin_quant_scale, 0.0f},
+      {"NaN d_c", &blob::Params::lsh_dc, nan},
+      {"negative d_c", &blob::Params::lsh_dc, -1.0f},
+      {"zero grid cell", &blob::Params::grid_cell, 0.0f},
+  };
+  for (const Case& k : cases) {
+    CAPTURE(k.what);
+    BlobPatch b = fresh();
+    b.params().*k.field = k.value;
+    b.reseal();
+    CHECK(b.open() == Status::kBlobBadParameter);
+  }
+  BlobPatch ok = fresh();
+  ok.params().support_angle_deg = 360.0f;
+  ok.reseal();
+  CHECK(ok.open() == Status::kOk);
+}
+
+TEST_CASE("a config fingerprint that does not match the params is kBlobBadParameter") {
+  BlobPatch b = fresh();
+  b.header().config_fingerprint ^= 1u;
+  b.reseal_header();
+  CHECK(b.open() == Status::kBlobBadParameter);
+  BlobPatch c = fresh();
+  c.params().reserved[5] = 1;  // reserved, but fingerprinted
+  c.reseal(false);
+  CHECK(c.open() == Status::kBlobBadParameter);
+}
+
+TEST_CASE("bad model names are kBlobBadModelTable") {
+  BlobPatch b = fresh();
+  std::memset(b.model(1).name, 'a', spinhash::kMaxModelNameBytes);  // no NUL
+  b.reseal();
+  CHECK(b.open() == Status::kBlobBadModelTable);
+  BlobPatch c = fresh();
+  c.model(0).name[0] = '\0';
+  c.reseal();
+  CHECK(c.open() == Status::kBlobBadModelTable);
+  BlobPatch ok = fresh();  // 47 characters and the NUL fill the field exactly
+  std::memset(ok.model(2).name, 'z', spinhash::kMaxModelNameBytes - 1u);
+  ok.reseal();
+  Database db;
+  CHECK(ok.open(&db) == Status::kOk);
+  CHECK(db.find_model(std::string(spinhash::kMaxModelNameBytes - 1u, 'z').c_str()) == 2);
+}
+
+TEST_CASE("feature ranges that do not tile the features are kBlobBadModelTable") {
+  struct Case {
+    const char* what;
+    void (*patch)(BlobPatch&);
+  };
+  const Case cases[] = {
+      {"gap", [](BlobPatch& b) { b.model(1).first_feature += 1; }},
+      {"empty", [](BlobPatch& b) { b.model(2).feature_count = 0; }},
+      {"short of the end", [](BlobPatch& b) { b.model(2).feature_count -= 1; }},
+      {"past the end", [](BlobPatch& b) { b.model(2).feature_count += 1; }},
+      {"out of order", [](BlobPatch& b) { std::swap(b.model(0), b.model(1)); }},
+  };
+  for (const Case& k : cases) {
+    CAPTURE(k.what);
+    BlobPatch b = fresh();
+    k.patch(b);
+    b.reseal();
+    CHECK(b.open() == Status::kBlobBadModelTable);
+  }
+}
+
+TEST_CASE("bad grids are kBlobBadModelTable") {
+  // Model 1 of the tiny blob has a 2 x 2 x 1 grid: offsets [0, a, b, c, 20].
+  struct Case {
+    const char* what;
+    void (*patch)(BlobPatch&);
+  };
+  const Case cases[] = {
+      {"zero dimension", [](BlobPatch& b) { b.model(0).grid_dims[2] = 0; }},
+      {"too many cells", [](BlobPatch& b) {
+         b.model(2).grid_dims[0] = 1u << 10;
+         b.model(2).grid_dims[1] = 1u << 10;
+         b.model(2).grid_dims[2] = 2;
+       }},
+      {"dims whose product wraps 32 bits", [](BlobPatch& b) {
+         b.model(2).grid_dims[0] = 1u << 16;
+         b.model(2).grid_dims[1] = 1u << 16;
+       }},
+      {"offsets past the section", [](BlobPatch& b) { b.model(2).grid_offset_base += 1; }},
+      {"ranges overlapping", [](BlobPatch& b) { b.model(1).grid_offset_base -= 1; }},
+      {"non-monotonic", [](BlobPatch& b) {
+         uint32_t* off = b.section<uint32_t>(blob::kGridOffsets) + b.model(1).grid_offset_base;
+         off[1] = kFeaturesPerModel;
+         off[2] = 0;
+       }},
+      {"not starting at 0", [](BlobPatch& b) {
+         b.section<uint32_t>(blob::kGridOffsets)[b.model(0).grid_offset_base] = 1;
+       }},
+      {"not ending at the feature count", [](BlobPatch& b) {
+         uint32_t* off = b.section<uint32_t>(blob::kGridOffsets) + b.model(1).grid_offset_base;
+         off[4] = kFeaturesPerModel - 1u;
+       }},
+      {"NaN origin", [](BlobPatch& b) { b.model(0).grid_origin[1] = std::nanf(""); }},
+      {"infinite bbox", [](BlobPatch& b) { b.model(0).bbox_max[0] = INFINITY; }},
+      {"inverted bbox", [](BlobPatch& b) { b.model(0).bbox_min[2] = b.model(0).bbox_max[2] + 1.0f; }},
+  };
+  for (const Case& k : cases) {
+    CAPTURE(k.what);
+    BlobPatch b = fresh();
+    k.patch(b);
+    b.reseal();
+    CHECK(b.open() == Status::kBlobBadModelTable);
+  }
+}
+
+TEST_CASE("bad features are kBlobBadFeature") {
+  struct Case {
+    const char* what;
+    void (*patch)(BlobPatch&);
+  };
+  const Case cases[] = {
+      {"NaN position", [](BlobPatch& b) { b.section<float>(blob::kFeatPositions)[3 * 5 + 1] = std::nanf(""); }},
+      {"infinite position", [](BlobPatch& b) { b.section<float>(blob::kFeatPositions)[0] = -INFINITY; }},
+      {"zero normal", [](BlobPatch& b) {
+         int16_t* n = b.section<int16_t>(blob::kFeatNormals) + 3 * 7;
+         n[0] = n[1] = n[2] = 0;
+       }},
+      {"long normal", [](BlobPatch& b) {
+         int16_t* n = b.section<int16_t>(blob::kFeatNormals) + 3 * 59;
+         n[0] = n[1] = n[2] = 32767;
+       }},
+      {"model id out of range", [](BlobPatch& b) { b.section<uint16_t>(blob::kFeatModels)[59] = kModels; }},
+      {"model id of another model", [](BlobPatch& b) { b.section<uint16_t>(blob::kFeatModels)[20] = 0; }},
+  };
+  for (const Case& k : cases) {
+    CAPTURE(k.what);
+    BlobPatch b = fresh();
+    k.patch(b);
+    b.reseal();
+    CHECK(b.open() == Status::kBlobBadFeature);
+  }
+}
+
+TEST_CASE("bad LSH bits, offsets or entries are kBlobBadIndex") {
+  struct Case {
+    const char* what;
+    void (*patch)(BlobPatch&);
+  };
+  const Case cases[] = {
+      {"entry = feature_count", [](BlobPatch& b) {
+         b.section<uint32_t>(blob::kLshEntries)[kModels * kFeaturesPerModel + 3] = kModels * kFeaturesPerModel;
+       }},
+      {"entry huge", [](BlobPatch& b) { b.section<uint32_t>(blob::kLshEntries)[0] = 0xFFFFFFFFu; }},
+      {"bit dimension = spin dims", [](BlobPatch& b) {
+         b.section<blob::LshBit>(blob::kLshBits)[4].dim = static_cast<uint16_t>(b.params().bins_alpha * b.params().bins_beta);
+       }},
+      {"threshold 256", [](BlobPatch& b) { b.section<blob::LshBit>(blob::kLshBits)[0].threshold = 256; }},
+      {"offsets not starting at 0", [](BlobPatch& b) {
+         b.section<uint32_t>(blob::kLshOffsets)[b.params().lsh_buckets + 1u] = 1;  // table 1
+       }},
+      {"offsets not ending at feature_count", [](BlobPatch& b) {
+         b.section<uint32_t>(blob::kLshOffsets)[b.params().lsh_buckets] += 1;
+       }},
+      {"offsets decreasing", [](BlobPatch& b) {
+         uint32_t* off = b.section<uint32_t>(blob::kLshOffsets);
+         off[1] = off[b.params().lsh_buckets];
+         off[2] = 0;
+       }},
+  };
+  for (const Case& k : cases) {
+    CAPTURE(k.what);
+    BlobPatch b = fresh();
+    k.patch(b);
+    b.reseal();
+    CHECK(b.open() == Status::kBlobBadIndex);
+  }
+}
+
+TEST_CASE("a failed open leaves the output untouched") {
+  BlobPatch good = fresh();
+  Database db;
+  REQUIRE(good.open(&db) == Status::kOk);
+  const float* positions = db.positions();
+  BlobPatch bad = fresh();
+  bad.section<float>(blob::kFeatPositions)[0] = std::nanf("");
+  bad.reseal();
+  CHECK(bad.open(&db) == Status::kBlobBadFeature);
+  CHECK(db.positions() == positions);
+  CHECK(db.model_count() == kModels);
+}
+
+TEST_CASE("the writer refuses inconsistent content and says why") {
+  std::vector<uint8_t> out{1, 2, 3};
+  std::string error;
+  host::BlobContent short_normals = tiny();
+  short_normals.normals.pop_back();
+  CHECK_FALSE(host::serialize_blob(short_normals, host::ByteOrder::kNative, &out, &error));
+  CHECK(out.empty());
+  CHECK(error.find("normals") != std::string::npos);
+
+  host::BlobContent nan_position = tiny();
+  nan_position.positions[4] = std::nanf("");
+  CHECK_FALSE(host::serialize_blob(nan_position, host::ByteOrder::kBig, &out, &error));
+  CHECK(error.find(spinhash::status_name(Status::kBlobBadFeature)) != std::string::npos);
+
+  host::BlobContent ok = tiny();
+  ok.params.reserved[0] = 9;  // reserved bytes are written as zero
+  std::memset(ok.models[0].name + 7, 'q', 8);  // after the NUL: zeroed too
+  REQUIRE(host::serialize_blob(ok, host::ByteOrder::kNative, &out, &error));
+  CHECK(out == tiny_blob());
+}
+
+TEST_CASE("tiny blob content is deterministic and its LSH buckets agree with bucket_of") {
+  const host::BlobContent a = host::make_tiny_blob_content(4, 9, 123);
+  const host::BlobContent b = host::make_tiny_blob_content(4, 9, 123);
+  CHECK(a.positions == b.positions);
+  CHECK(a.lsh_entries == b.lsh_entries);
+  const blob::Params& p = a.params;
+  const uint32_t dims = p.bins_alpha * p.bins_beta;
+  for (uint32_t t = 0; t < p.lsh_tables; ++t) {
+    const uint32_t* off = &a.lsh_offsets[t * (p.lsh_buckets + 1u)];
+    for (uint32_t bucket = 0; bucket < p.lsh_buckets; ++bucket) {
+      for (uint32_t j = off[bucket]; j < off[bucket + 1u]; ++j) {
+        const uint32_t f = a.lsh_entries[t * p.feature_count + j];
+        uint64_t key = 0;
+        for (uint32_t k = 0; k < p.lsh_bits; ++k) {
+          const blob::LshBit& bit = a.lsh_bits[t * p.lsh_bits + k];
+          if (a.spins[f * dims + bit.dim] > bit.threshold) key |= uint64_t{1} << k;
+        }
+        CHECK(blob::bucket_of(key, t, p.lsh_buckets) == bucket);
+      }
+    }
+  }
+}
