@@ -28,12 +28,12 @@ ModelGrid build_model_grid(const std::vector<float>& positions, uint32_t count, 
   };
   const uint32_t cells = g.dims[0] * g.dims[1] * g.dims[2];
   g.offsets.assign(cells + 1u, 0u);
-  std::vector<uint32_t> cell(count);
-  for (uint32_t i = 0; i < count; ++i) ++g.offsets[(cell[i] = cell_of(i)) + 1u];
+  std::vector<uint32_t> cell_index(count);
+  for (uint32_t i = 0; i < count; ++i) ++g.offsets[(cell_index[i] = cell_of(i)) + 1u];
   for (uint32_t c = 0; c < cells; ++c) g.offsets[c + 1u] += g.offsets[c];
   g.order.resize(count);
   std::vector<uint32_t> cursor(g.offsets.begin(), g.offsets.end() - 1);
-  for (uint32_t i = 0; i < count; ++i) g.order[cursor[cell[i]]++] = i;
+  for (uint32_t i = 0; i < count; ++i) g.order[cursor[cell_index[i]]++] = i;
   return g;
 }
 

@@ -1,0 +1,78 @@
+#include "support/toy_database.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "blob/blob_writer.hpp"
+#include "support/geometry_fixtures.hpp"
+
+namespace spinhash {
+namespace test {
+namespace {
+
+struct Box {
+  float cx, cy, cz, sx, sy, sz;
+};
+
+// Each toy is a hull plus a cabin or turret box; sizes differ by 0.3-1 m.
+const Box kToyParts[kToyModels][2] = {
+    {{0, 0, 0.75f, 4.5f, 1.8f, 0.9f}, {-0.3f, 0, 1.45f, 2.2f, 1.6f, 0.6f}},   // sedan-like
+    {{0, 0, 0.9f, 5.0f, 2.0f, 1.2f}, {1.2f, 0, 1.8f, 1.6f, 1.9f, 0.8f}},       // pickup-like
+    {{0, 0, 1.0f, 6.5f, 2.4f, 1.4f}, {-2.0f, 0, 2.1f, 1.8f, 2.3f, 1.0f}},      // truck-like
+    {{0, 0, 0.8f, 6.0f, 3.0f, 1.0f}, {0.4f, 0, 1.6f, 2.4f, 2.0f, 0.7f}},       // tank-like
+    {{0, 0, 1.1f, 4.8f, 2.0f, 1.6f}, {2.0f, 0, 0.7f, 0.8f, 1.9f, 0.8f}},       // van-like
+    {{0, 0, 0.7f, 3.8f, 1.7f, 0.8f}, {0.2f, 0, 1.3f, 1.5f, 1.5f, 0.5f}},       // small car
+};
+
+}  // namespace
+
+std::vector<double> toy_vehicle_points(uint32_t index, float spacing) {
+  std::vector<double> out;
+  for (const Box& b : kToyParts[index]) {
+    std::vector<float> s = box_surface(b.sx, b.sy, b.sz, spacing);
+    for (size_t i = 0; i < s.size(); i += 3) {
+      out.push_back(s[i] + b.cx);
+      out.push_back(s[i + 1] + b.cy);
+      out.push_back(s[i + 2] + b.cz);
+    }
+  }
+  return out;
+}
+
+bool make_toy_database(ToyDatabase* out) {
+  std::vector<host::ModelCloud> clouds;
+  for (uint32_t i = 0; i < kToyModels; ++i)
+    clouds.push_back(host::ModelCloud{"toy-" + std::to_string(i), toy_vehicle_points(i, 0.05f)});
+  host::BuildOptions opt;
+  host::BlobContent content;
+  host::BuildReport report;
+  std::string error;
+  if (!host::build_database(clouds, opt, &content, &report, &error)) return false;
+  std::vector<uint8_t> bytes;
+  if (!host::serialize_blob(content, host::ByteOrder::kNative, &bytes, &error)) return false;
+  out->bytes = host::AlignedBytes::copy_of(bytes);
+  return Database::open(out->bytes.data(), out->bytes.size(), &out->db) == Status::kOk;
+}
+
+std::vector<double> toy_query(const std::vector<double>& model, double yaw, const double t[3], double noise,
+                              uint64_t seed) {
+  std::vector<double> out;
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  uint64_t state = seed * 6364136223846793005ull + 1442695040888963407ull;
+  auto uniform = [&state]() {  // deterministic, standard-library independent
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) * (1.0 / 9007199254740992.0);
+  };
+  for (size_t i = 0; i < model.size(); i += 3) {
+    double x = model[i], y = model[i + 1], z = model[i + 2];
+    if (x < -2.5 || y < -0.5 || z < 0.2) continue;  // seen from the front-left, above: about 2 sides + top
+    double n = noise * (uniform() + uniform() + uniform() - 1.5) * 2.0;  // roughly Gaussian, sd ~ noise
+    out.push_back(c * x - s * y + t[0] + n * 0.3);
+    out.push_back(s * x + c * y + t[1] + n * 0.3);
+    out.push_back(z + t[2] + n);
+  }
+  return out;
+}
+
+}  // namespace test
+}  // namespace spinhash

@@ -1,0 +1,32 @@
+// A small database of box-built toy vehicles, made in-process (no files), so
+// recognition can be tested end to end on every target.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "blob/aligned_bytes.hpp"
+#include "db/database_builder.hpp"
+#include "spinhash/database.hpp"
+
+namespace spinhash {
+namespace test {
+
+// Surface points of toy vehicle `index` (0..kToyModels-1) in its model frame.
+std::vector<double> toy_vehicle_points(uint32_t index, float spacing);
+constexpr uint32_t kToyModels = 6;
+
+struct ToyDatabase {
+  host::AlignedBytes bytes;
+  Database db;
+};
+// Builds, serialises (native byte order) and opens the toy database.
+bool make_toy_database(ToyDatabase* out);
+
+// A partial, moved, noisy view of points: keeps those facing direction `view`
+// side (x . view > -keep_depth), applies rotation about z by yaw and the
+// translation, adds deterministic noise of `noise` m.
+std::vector<double> toy_query(const std::vector<double>& model, double yaw, const double t[3], double noise,
+                              uint64_t seed);
+
+}  // namespace test
+}  // namespace spinhash
