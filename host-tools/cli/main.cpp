@@ -1,3 +1,25 @@
-// Placeholder until the command line lands (issue 2).
-#include <cstdio>
-int main() { std::fprintf(stderr, "spinhash: not built yet\n"); return 2; }
+// spinhash: build, inspect and verify recognition databases, simulate scans,
+// and recognise vehicles in point clouds (contract: docs/cli.md).
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/version.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"spinhash: 3D vehicle recognition in airborne lidar (spin images, LSH, batch RANSAC)"};
+  app.set_version_flag("--version", spinhash::cli::version());
+  app.require_subcommand(1);
+  int exit_code = spinhash::cli::kExitOk;
+  spinhash::cli::add_build_command(app, &exit_code);
+  spinhash::cli::add_info_command(app, &exit_code);
+  spinhash::cli::add_verify_command(app, &exit_code);
+  spinhash::cli::add_scan_command(app, &exit_code);
+  spinhash::cli::add_recognize_command(app, &exit_code);
+  spinhash::cli::add_generate_command(app, &exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  return exit_code;
+}

@@ -1,0 +1,45 @@
+// spinhash build -o DB.shdb [options] MESH_OR_DIR...
+#include <cstdio>
+#include <memory>
+
+#include "cli/build_database_file.hpp"
+#include "cli/commands.hpp"
+
+namespace spinhash::cli {
+namespace {
+
+struct BuildArgs {
+  std::string output;
+  std::vector<std::string> inputs;
+  BuildSettings settings;
+};
+
+int run_build(const BuildArgs& a) {
+  std::string error;
+  std::vector<ModelMesh> meshes;
+  BuildSummary summary;
+  if (!load_model_meshes(a.inputs, &meshes, &error, a.settings.quiet) ||
+      !build_database_file(meshes, a.settings, a.output, &summary, &error)) {
+    std::fprintf(stderr, "spinhash build: %s\n", error.c_str());
+    return kExitError;
+  }
+  std::fprintf(stderr,
+               "spinhash build: %s: %u models, %u features, %llu bytes (%.1f bytes/feature), "
+               "largest LSH bucket %u, %.1f s\n",
+               a.output.c_str(), summary.models, summary.features, static_cast<unsigned long long>(summary.bytes),
+               static_cast<double>(summary.bytes) / summary.features, summary.report.max_bucket, summary.seconds);
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_build_command(CLI::App& app, int* exit_code) {
+  auto args = std::make_shared<BuildArgs>();
+  CLI::App* cmd = app.add_subcommand("build", "build a database blob from meshes (model name = file stem)");
+  cmd->add_option("-o,--output", args->output, "database file to write (atomically)")->required();
+  cmd->add_option("inputs", args->inputs, "mesh files or directories of meshes")->required();
+  add_build_flags(cmd, &args->settings);
+  cmd->callback([args, exit_code]() { *exit_code = run_build(*args); });
+}
+
+}  // namespace spinhash::cli

@@ -1,0 +1,45 @@
+#include "cli/recognizer_flags.hpp"
+
+#include <map>
+
+#include "spinhash/limits.hpp"
+
+namespace spinhash::cli {
+
+const char* mode_name(Mode m) {
+  switch (m) {
+    case Mode::kBran: return "bran";
+    case Mode::kSran: return "sran";
+    case Mode::kSind: return "sind";
+  }
+  return "?";
+}
+
+void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
+  std::map<std::string, Mode> modes{{"bran", Mode::kBran}, {"sran", Mode::kSran}, {"sind", Mode::kSind}};
+  cmd->add_option("--mode", c->mode, "bran (batch RANSAC), sran (per-model RANSAC) or sind (LSH voting)")
+      ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case));
+  cmd->add_option("--seed", c->seed, "sampling seed")->capture_default_str();
+  cmd->add_option("--max-points", c->max_points, "largest cloud accepted")
+      ->check(CLI::Range(1u, kMaxQueryPointsLimit))->capture_default_str();
+  cmd->add_option("--max-features", c->max_features, "query basis points kept")
+      ->check(CLI::Range(2u, kMaxQueryFeaturesLimit))->capture_default_str();
+  cmd->add_option("--max-models", c->max_models, "models the workspace supports")
+      ->check(CLI::Range(1u, kMaxModels))->capture_default_str();
+  cmd->add_option("-W,--top-w", c->top_w, "W: candidates per query feature (BRAN)")
+      ->check(CLI::Range(1u, kMaxCandidates))->capture_default_str();
+  cmd->add_option("--top-w-sran", c->top_w_sran, "W per model (SRAN)")->check(CLI::Range(1u, kMaxCandidates))->capture_default_str();
+  cmd->add_option("--top-w-sind", c->top_w_sind, "W (SIND)")->check(CLI::Range(1u, kMaxCandidates))->capture_default_str();
+  cmd->add_option("--trials", c->max_trials, "doublet draws (BRAN)")->capture_default_str();
+  cmd->add_option("--sran-trials", c->sran_trials, "doublet draws per model (SRAN)")->capture_default_str();
+  cmd->add_option("--max-hypotheses", c->max_hypotheses, "poses verified (BRAN total, SRAN per model)")->capture_default_str();
+  cmd->add_option("--max-pair-checks", c->max_pair_checks, "candidate pairs through the cascade")->capture_default_str();
+  cmd->add_option("--sigma", c->sigma, "sigma of eq. 5, m")->capture_default_str();
+  cmd->add_option("--delta", c->delta, "Delta of eq. 5, m")->capture_default_str();
+  cmd->add_option("--delta-max", c->delta_max, "Delta_max of eq. 5, m")->capture_default_str();
+  cmd->add_option("--eta-max", c->eta_max_deg, "eta_max of eq. 6, degrees")->capture_default_str();
+  cmd->add_option("--d-min", c->d_min, "d_min of eq. 3, m")->capture_default_str();
+  cmd->add_option("--theta-min", c->theta_min_deg, "theta_min of eq. 3, degrees")->capture_default_str();
+}
+
+}  // namespace spinhash::cli

@@ -1,0 +1,60 @@
+#include "cli/result_json.hpp"
+
+#include "cli/json_line.hpp"
+#include "cli/recognition_session.hpp"
+
+namespace spinhash::cli {
+
+const char* status_word(Status s) {
+  switch (s) {
+    case Status::kOk: return "ok";
+    case Status::kEmptyCloud: return "empty_cloud";
+    case Status::kTooManyPoints: return "too_many_points";
+    case Status::kNotEnoughFeatures: return "not_enough_features";
+    case Status::kInvalidArgument: return "invalid_argument";
+    case Status::kWorkspaceTooSmall: return "workspace_too_small";
+    default: return "error";
+  }
+}
+
+namespace {
+
+std::string pose_json(const Pose& p) {
+  std::string s = "[";
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) s += json_number(static_cast<double>(p.rotation[3 * r + c])) + ",";
+    s += json_number(p.translation[r], 15) + ",";  // georeferenced: keep millimetres at 10^7 m
+  }
+  return s + "0,0,0,1]";
+}
+
+std::string stats_json(const RecognitionStats& st) {
+  return "{\"points\":" + std::to_string(st.extract.points_in) +
+         ",\"points_dropped\":" + std::to_string(st.extract.points_nonfinite) +
+         ",\"features\":" + std::to_string(st.features) + ",\"candidates\":" + std::to_string(st.candidates) +
+         ",\"trials\":" + std::to_string(st.trials) + ",\"doublets_tried\":" + std::to_string(st.pair_checks) +
+         ",\"doublets_passed\":" + std::to_string(st.doublets_passed) +
+         ",\"budget_exhausted\":" + (st.budget_exhausted ? "true" : "false") + "}";
+}
+
+}  // namespace
+
+std::string result_json(const std::string& query, const Database& db, const Result& r, uint32_t top,
+                        double time_ms) {
+  std::string s = "{\"query\":" + json_string(query) + ",\"status\":" + json_string(status_word(r.status));
+  if (r.status != Status::kOk) s += ",\"error\":" + json_string(status_name(r.status));
+  s += ",\"ranking\":[";
+  uint32_t n = top == 0 || top > r.ranking_count ? r.ranking_count : top;
+  for (uint32_t i = 0; i < n; ++i) {
+    if (i > 0) s += ",";
+    s += "{\"model\":" + json_string(model_name(db, r.ranking[i].model)) +
+         ",\"score\":" + json_number(static_cast<double>(r.ranking[i].score), 7) + "}";
+  }
+  s += "],\"pose\":";
+  s += r.ranking_count > 0 && r.ranking[0].has_pose ? pose_json(r.ranking[0].pose) : std::string("null");
+  s += ",\"time_ms\":" + json_number(time_ms, 4) + ",\"hypotheses\":" + std::to_string(r.stats.hypotheses);
+  s += ",\"stats\":" + stats_json(r.stats) + "}";
+  return s;
+}
+
+}  // namespace spinhash::cli
