@@ -79,11 +79,13 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   *stats = ExtractStats{};
   *out = FeatureSet{};
   stats->points_in = cloud.count;
-  if (cloud.count > cap_.max_points) return Status::kTooManyPoints;
+  if (cloud.count > cap_.max_points && !cap_.thin_excess) return Status::kTooManyPoints;
   Impl& m = *impl_;
+  const uint32_t keep = cloud.count > cap_.max_points ? cap_.max_points : cloud.count;
+  stats->points_thinned = cloud.count - keep;
 
-  uint32_t n = cloud.count == 0 ? 0u : recentre(cloud, out->origin, m.points);
-  stats->points_nonfinite = cloud.count - n;
+  uint32_t n = recentre(cloud, keep, out->origin, m.points);
+  stats->points_nonfinite = keep - n;
   if (n == 0) return Status::kEmptyCloud;
 
   m.voxel_grid.build(m.points, n, params_.cloud_voxel);

@@ -5,20 +5,25 @@
 namespace spinhash {
 namespace {
 
+// i-th of `keep` points spread evenly over n (all of them when keep == n).
+inline uint32_t pick(uint32_t i, uint32_t n, uint32_t keep) {
+  return static_cast<uint32_t>(static_cast<uint64_t>(i) * n / keep);
+}
+
 template <typename T>
-uint32_t recentre_typed(const T* xyz, uint32_t n, double origin[3], float* out) {
+uint32_t recentre_typed(const T* xyz, uint32_t n, uint32_t keep, double origin[3], float* out) {
   double sum[3] = {0.0, 0.0, 0.0};
   uint32_t finite = 0;
-  for (uint32_t i = 0; i < n; ++i) {
-    const T* p = xyz + 3u * i;
+  for (uint32_t i = 0; i < keep; ++i) {
+    const T* p = xyz + 3u * pick(i, n, keep);
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
     for (int a = 0; a < 3; ++a) sum[a] += static_cast<double>(p[a]);
     ++finite;
   }
   for (int a = 0; a < 3; ++a) origin[a] = finite > 0 ? sum[a] / finite : 0.0;
   uint32_t k = 0;
-  for (uint32_t i = 0; i < n; ++i) {
-    const T* p = xyz + 3u * i;
+  for (uint32_t i = 0; i < keep; ++i) {
+    const T* p = xyz + 3u * pick(i, n, keep);
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
     for (int a = 0; a < 3; ++a) out[3u * k + a] = static_cast<float>(static_cast<double>(p[a]) - origin[a]);
     ++k;
@@ -28,9 +33,11 @@ uint32_t recentre_typed(const T* xyz, uint32_t n, double origin[3], float* out) 
 
 }  // namespace
 
-uint32_t recentre(const CloudView& cloud, double origin[3], float* out) {
-  if (cloud.xyz_d != nullptr) return recentre_typed(cloud.xyz_d, cloud.count, origin, out);
-  return recentre_typed(cloud.xyz_f, cloud.count, origin, out);
+uint32_t recentre(const CloudView& cloud, uint32_t keep, double origin[3], float* out) {
+  if (keep > cloud.count) keep = cloud.count;
+  if (keep == 0) return 0;
+  if (cloud.xyz_d != nullptr) return recentre_typed(cloud.xyz_d, cloud.count, keep, origin, out);
+  return recentre_typed(cloud.xyz_f, cloud.count, keep, origin, out);
 }
 
 uint32_t equalise_density(const CellGrid& grid, const float* points, float* out) {

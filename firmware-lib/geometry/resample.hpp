@@ -9,9 +9,11 @@
 namespace spinhash {
 
 // Mean of the finite points in double (airborne clouds are georeferenced:
-// UTM northings near 4e6 m leave float a 0.25 m step). Writes the finite
-// points minus that mean as float into out; returns how many were finite.
-uint32_t recentre(const CloudView& cloud, double origin[3], float* out);
+// UTM northings near 4e6 m leave float a 0.25 m step). Takes `keep` points
+// spread evenly over the cloud (deterministic thinning; all when keep >=
+// count), writes the finite ones minus that mean as float into out and
+// returns how many were finite.
+uint32_t recentre(const CloudView& cloud, uint32_t keep, double origin[3], float* out);
 
 // One point per occupied cell of `grid` (built over `points`): the cell centroid.
 uint32_t equalise_density(const CellGrid& grid, const float* points, float* out);

@@ -57,24 +57,25 @@ uint32_t LshSearcher::search(const Database& db, const uint8_t* spin, uint32_t w
   }
   const blob::Params& p = db.params();
   const uint32_t dims = db.spin_dims();
-  uint32_t count = 0, scanned = 0;
+  // Every table gets an equal share of the scan bound; a bucket larger than
+  // its share (a very common descriptor, e.g. a flat patch) is sampled with
+  // a fixed stride, so one crowded table cannot starve the others.
+  const uint32_t share = max_scan_ / p.lsh_tables > 0 ? max_scan_ / p.lsh_tables : 1u;
+  uint32_t count = 0;
   for (uint32_t t = 0; t < p.lsh_tables; ++t) {
     uint32_t bucket = blob::bucket_of(lsh_key(db.lsh_bits(t), p.lsh_bits, spin), t, p.lsh_buckets);
     const uint32_t* offsets = db.lsh_offsets(t);
     const uint32_t* entries = db.lsh_entries() + static_cast<size_t>(t) * p.feature_count;
-    for (uint32_t e = offsets[bucket]; e < offsets[bucket + 1u]; ++e) {
-      if (scanned == max_scan_) {
-        stats->truncated = true;
-        stats->entries_scanned += scanned;
-        return count;
-      }
-      ++scanned;
-      uint32_t f = entries[e];
+    const uint32_t first = offsets[bucket], size = offsets[bucket + 1u] - first;
+    const uint32_t take = size < share ? size : share;
+    stats->truncated = stats->truncated || take < size;
+    stats->entries_scanned += take;
+    for (uint32_t e = 0; e < take; ++e) {
+      uint32_t f = entries[first + static_cast<uint32_t>(static_cast<uint64_t>(e) * size / take)];
       if (!mark_seen(f)) continue;
       insert_top_w(out, &count, w, Candidate{f, l1_distance(spin, db.spin(f), dims)});
     }
   }
-  stats->entries_scanned += scanned;
   return count;
 }
 

@@ -10,7 +10,7 @@
 namespace spinhash::cli {
 namespace {
 
-void report_progress(uint32_t done, uint32_t total, void* user) { static_cast<Progress*>(user)->tick(done); }
+void report_progress(uint32_t done, uint32_t /*total*/, void* user) { static_cast<Progress*>(user)->tick(done); }
 
 }  // namespace
 
@@ -29,6 +29,8 @@ void add_build_flags(CLI::App* cmd, BuildSettings* s) {
       ->check(CLI::Range(1u, kMaxLshTables))->capture_default_str();
   cmd->add_option("--lsh-bits", s->options.lsh_bits, "K, bits per LSH key")
       ->check(CLI::Range(1u, kMaxLshBits))->capture_default_str();
+  cmd->add_option("--lsh-range-quantile", s->options.lsh_range_quantile, "quantile of each dimension used as its LSH range C_i")
+      ->check(CLI::Range(0.5, 1.0))->capture_default_str();
   cmd->add_option("--seed", s->options.seed, "LSH sampling seed")->capture_default_str();
   cmd->add_option("--scan-spacing", s->scan_spacing, "model scan ray spacing at the object, m")
       ->check(CLI::Range(0.005, 1.0))->capture_default_str();

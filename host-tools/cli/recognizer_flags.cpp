@@ -30,6 +30,7 @@ void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
       ->check(CLI::Range(1u, kMaxCandidates))->capture_default_str();
   cmd->add_option("--top-w-sran", c->top_w_sran, "W per model (SRAN)")->check(CLI::Range(1u, kMaxCandidates))->capture_default_str();
   cmd->add_option("--top-w-sind", c->top_w_sind, "W (SIND)")->check(CLI::Range(1u, kMaxCandidates))->capture_default_str();
+  cmd->add_option("--max-bucket-scan", c->max_bucket_scan, "LSH entries scanned per query feature")->capture_default_str();
   cmd->add_option("--trials", c->max_trials, "doublet draws (BRAN)")->capture_default_str();
   cmd->add_option("--sran-trials", c->sran_trials, "doublet draws per model (SRAN)")->capture_default_str();
   cmd->add_option("--max-hypotheses", c->max_hypotheses, "poses verified (BRAN total, SRAN per model)")->capture_default_str();

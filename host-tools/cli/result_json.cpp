@@ -30,7 +30,8 @@ std::string pose_json(const Pose& p) {
 
 std::string stats_json(const RecognitionStats& st) {
   return "{\"points\":" + std::to_string(st.extract.points_in) +
-         ",\"points_dropped\":" + std::to_string(st.extract.points_nonfinite) +
+         ",\"points_thinned\":" + std::to_string(st.extract.points_thinned) +
+         ",\"points_nonfinite\":" + std::to_string(st.extract.points_nonfinite) +
          ",\"features\":" + std::to_string(st.features) + ",\"candidates\":" + std::to_string(st.candidates) +
          ",\"trials\":" + std::to_string(st.trials) + ",\"doublets_tried\":" + std::to_string(st.pair_checks) +
          ",\"doublets_passed\":" + std::to_string(st.doublets_passed) +

@@ -139,7 +139,8 @@ bool build_database(const std::vector<ModelCloud>& models, const BuildOptions& o
     report->features_per_model.push_back(feats[i].count);
   }
   const uint32_t total = static_cast<uint32_t>(c.feature_models.size());
-  LshTables lsh = build_lsh_tables(c.spins, dims, total, opt.lsh_tables, opt.lsh_bits, opt.seed);
+  LshTables lsh = build_lsh_tables(c.spins, dims, total, opt.lsh_tables, opt.lsh_bits, opt.lsh_range_quantile,
+                                   opt.seed);
   c.lsh_bits = std::move(lsh.bits);
   c.lsh_offsets = std::move(lsh.offsets);
   c.lsh_entries = std::move(lsh.entries);

@@ -1,5 +1,6 @@
 #include "db/lsh_tables.hpp"
 
+#include <algorithm>
 #include <random>
 
 #include "spinhash/lsh.hpp"
@@ -8,14 +9,24 @@ namespace spinhash {
 namespace host {
 namespace {
 
-// Per-dimension range C_i: thresholds 0..C_i-1 make P(bit differs) = |q1 - q2| / C_i.
-std::vector<uint32_t> dimension_ranges(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features) {
+// Per-dimension range C_i, the `quantile` of the dimension's values (at least 1):
+// thresholds 0..C_i-1 make P(bit differs) = |min(q1, C_i) - min(q2, C_i)| / C_i,
+// so eq. 2 holds exactly for the clamped images. Clamping at a high quantile
+// instead of the maximum keeps d_c near the distances that matter: spin images
+// are sparse and heavy-tailed, and d_c = sum of maxima makes every key collide.
+std::vector<uint32_t> dimension_ranges(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features,
+                                       float quantile) {
   std::vector<uint32_t> range(dims, 1u);
-  for (uint32_t f = 0; f < features; ++f)
-    for (uint32_t d = 0; d < dims; ++d) {
-      uint32_t v = spins[static_cast<size_t>(f) * dims + d];
-      if (v > range[d]) range[d] = v;
-    }
+  std::vector<uint32_t> histogram(256);
+  const uint64_t rank = static_cast<uint64_t>(quantile * static_cast<float>(features));
+  for (uint32_t d = 0; d < dims; ++d) {
+    std::fill(histogram.begin(), histogram.end(), 0u);
+    for (uint32_t f = 0; f < features; ++f) ++histogram[spins[static_cast<size_t>(f) * dims + d]];
+    uint64_t seen = 0;
+    uint32_t v = 0;
+    while (v < 255u && (seen += histogram[v]) <= rank) ++v;
+    range[d] = std::max(1u, v);
+  }
   return range;
 }
 
@@ -49,9 +60,9 @@ uint32_t bucket_count_for(uint32_t features) {
 }  // namespace
 
 LshTables build_lsh_tables(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features,
-                           uint32_t tables, uint32_t bits_per_key, uint64_t seed) {
+                           uint32_t tables, uint32_t bits_per_key, float range_quantile, uint64_t seed) {
   LshTables t;
-  std::vector<uint32_t> range = dimension_ranges(spins, dims, features);
+  std::vector<uint32_t> range = dimension_ranges(spins, dims, features, range_quantile);
   for (uint32_t r : range) t.d_c += static_cast<float>(r);
   t.bits = sample_bits(range, tables * bits_per_key, seed);
   t.buckets = bucket_count_for(features);

@@ -20,7 +20,7 @@ struct LshTables {
 };
 
 LshTables build_lsh_tables(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features,
-                           uint32_t tables, uint32_t bits_per_key, uint64_t seed);
+                           uint32_t tables, uint32_t bits_per_key, float range_quantile, uint64_t seed);
 
 }  // namespace host
 }  // namespace spinhash

@@ -33,7 +33,8 @@ struct RecognizerConfig {
   uint64_t seed = 1;                 // deterministic sampling
 
   // Capacities: inputs above them are refused (points) or thinned (features).
-  uint32_t max_points = 32768;       // raw query points accepted
+  uint32_t max_points = 32768;       // raw query points used (more: thinned evenly, or refused)
+  bool thin_large_clouds = true;     // false: a cloud above max_points is refused (kTooManyPoints)
   uint32_t max_features = 1024;      // s: query basis points kept
   uint32_t max_models = 2048;        // m: database models supported by this workspace
   uint32_t max_spin_dims = 256;      // d: largest spin image (bins_alpha * bins_beta) supported
