@@ -9,19 +9,21 @@ namespace {
 
 bool normal_at(const CellGrid& grid, const float* points, const float* q, float radius,
                float* out) {
-  Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+  // One pass: sums of offsets from q and of their outer products (offsets
+  // from q, not from the origin, keep the float sums well conditioned).
+  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+  Eigen::Matrix3f outer = Eigen::Matrix3f::Zero();
+  const Eigen::Map<const Eigen::Vector3f> centre(q);
   uint32_t count = 0;
   grid.for_each_within(q, radius, [&](uint32_t j) {
-    mean += Eigen::Map<const Eigen::Vector3f>(points + 3u * j);
+    Eigen::Vector3f d = Eigen::Map<const Eigen::Vector3f>(points + 3u * j) - centre;
+    sum += d;
+    outer.noalias() += d * d.transpose();
     ++count;
   });
   if (count < kMinNormalNeighbours) return false;
-  mean /= static_cast<float>(count);
-  Eigen::Matrix3f cov = Eigen::Matrix3f::Zero();
-  grid.for_each_within(q, radius, [&](uint32_t j) {
-    Eigen::Vector3f d = Eigen::Map<const Eigen::Vector3f>(points + 3u * j) - mean;
-    cov.noalias() += d * d.transpose();
-  });
+  const Eigen::Vector3f mean = sum / static_cast<float>(count);
+  const Eigen::Matrix3f cov = outer / static_cast<float>(count) - mean * mean.transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> solver;
   solver.computeDirect(cov);  // closed form: fixed cost, no iteration, no heap
   const Eigen::Vector3f& ev = solver.eigenvalues();  // ascending

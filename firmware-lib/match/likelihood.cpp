@@ -69,18 +69,38 @@ LikelihoodParams make_likelihood_params(const RecognizerConfig& cfg, const Datab
   return lp;
 }
 
+namespace {
+
+// A stride coprime with n visits 0..n-1 once each, spread over the query.
+uint32_t spread_stride(uint32_t n) {
+  const uint32_t kCandidates[] = {7919u, 104729u, 1299709u, 15485863u};  // primes
+  for (uint32_t p : kCandidates)
+    if (n % p != 0u) return p % n;
+  return 1u;
+}
+
+}  // namespace
+
 Verification verify_pose(const Database& db, uint32_t model, const RigidPose& pose,
-                         const QueryFeatures& query, const LikelihoodParams& lp, float to_beat) {
+                         const QueryFeatures& query, const LikelihoodParams& lp, float to_beat,
+                         bool preemptive) {
   Verification v;
   const blob::ModelRecord& rec = db.model(model);
   const Eigen::Matrix3f rt = pose.rotation.transpose();
-  for (uint32_t l = 0; l < query.count; ++l) {
+  const uint32_t n = query.count;
+  const uint32_t stride = n > 1u ? spread_stride(n) : 1u;
+  const float best_mean = to_beat / static_cast<float>(n > 0u ? n : 1u);
+  uint32_t l = 0;
+  for (uint32_t i = 0; i < n; ++i, l = (l + stride) % n) {
     if (v.log_likelihood < to_beat) return v;  // remaining terms are <= 0
+    if (preemptive && i == kPreemptiveFeatures && i < n &&
+        v.log_likelihood / static_cast<float>(i) < best_mean - kPreemptiveSlack)
+      return v;
     Eigen::Vector3f qp(query.positions[3u * l], query.positions[3u * l + 1u], query.positions[3u * l + 2u]);
     Eigen::Vector3f qn(query.normals[3u * l], query.normals[3u * l + 1u], query.normals[3u * l + 2u]);
     Eigen::Vector3f x = rt * (qp - pose.translation);
-    Eigen::Vector3f n = rt * qn;
-    Nearest near = nearest_model_feature(db, rec, x, n, lp);
+    Eigen::Vector3f nm = rt * qn;
+    Nearest near = nearest_model_feature(db, rec, x, nm, lp);
     if (near.feature < 0) {
       v.log_likelihood += lp.floor;
       continue;

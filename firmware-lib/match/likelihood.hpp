@@ -26,6 +26,14 @@ struct QueryFeatures {
   uint32_t dims = 0;
 };
 
+// Preemptive verification: a hypothesis is first scored on this many query
+// features (spread evenly over the query) and dropped if their mean term is
+// more than kPreemptiveSlack (log units) below the model's best mean so far.
+// Terms lie in [floor, 0] with a spread near 2, so over 64 features the mean
+// of a pose as good as the best rarely falls 1.0 below it.
+constexpr uint32_t kPreemptiveFeatures = 64;
+constexpr float kPreemptiveSlack = 1.0f;
+
 struct LikelihoodParams {
   float inv_two_sigma2 = 0.0f;
   float delta2 = 0.0f;       // Delta^2
@@ -44,9 +52,12 @@ struct Verification {
   bool complete = false;        // false: stopped early, cannot beat `to_beat`
 };
 
-// Scores `pose` of `model`. Stops early once even perfect remaining features
-// (log p <= 0 each) could not lift the sum above `to_beat`.
+// Scores `pose` of `model`, visiting query features in an evenly spread
+// order. Stops early once even perfect remaining features (log p <= 0 each)
+// could not lift the sum above `to_beat`, or, when `preemptive`, once the
+// first kPreemptiveFeatures say the pose is clearly worse than `to_beat`.
 Verification verify_pose(const Database& db, uint32_t model, const RigidPose& pose,
-                         const QueryFeatures& query, const LikelihoodParams& lp, float to_beat);
+                         const QueryFeatures& query, const LikelihoodParams& lp, float to_beat,
+                         bool preemptive);
 
 }  // namespace spinhash

@@ -68,7 +68,7 @@ bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l,
   ++st.hypotheses;
   ++best.hypotheses;
   const float to_beat = best.has_score ? best.score : -3.0e38f;
-  Verification v = verify_pose(ctx.db, model, pose, ctx.query, ctx.likelihood, to_beat);
+  Verification v = verify_pose(ctx.db, model, pose, ctx.query, ctx.likelihood, to_beat, best.has_score);
   if (v.complete && (!best.has_score || v.log_likelihood > best.score)) {
     best.score = v.log_likelihood;
     best.pose = pose;

@@ -23,7 +23,7 @@ bool config_valid(const RecognizerConfig& c) {
          in(c.tol_distance, 0.0f, 100.0f) && in(c.tol_angle_deg, 0.0f, 180.0f) &&
          in(c.tol_handedness, 0.0f, 2.0f) && in(c.sigma, 1e-4f, 100.0f) && in(c.delta, 1e-4f, 100.0f) &&
          in(c.delta_max, c.delta, 100.0f) && in(c.eta_max_deg, 0.0f, 180.0f) &&
-         in(c.spin_lambda, 1e-3f, 1e3f) &&
+         in(c.spin_lambda, 1e-3f, 1e3f) && in(c.query_basis_spacing, 0.0f, 100.0f) &&
          (!c.has_viewpoint || (std::isfinite(c.viewpoint[0]) && std::isfinite(c.viewpoint[1]) &&
                                std::isfinite(c.viewpoint[2])));
 }
@@ -131,7 +131,9 @@ Status Recognizer::init(const Database* db, const RecognizerConfig& config, void
   RecognizerBuffers* b = arena.alloc<RecognizerBuffers>(1);
   if (b == nullptr) return Status::kWorkspaceTooSmall;
   new (b) RecognizerBuffers();
-  Status s = carve(arena, config, db->feature_params(), *b);
+  FeatureParams fp = db->feature_params();
+  if (config.query_basis_spacing > 0.0f) fp.basis_spacing = config.query_basis_spacing;
+  Status s = carve(arena, config, fp, *b);
   if (s != Status::kOk) return s;
   db_ = db;
   config_ = config;

@@ -26,6 +26,10 @@ void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
       ->check(CLI::Range(2u, kMaxQueryFeaturesLimit))->capture_default_str();
   cmd->add_option("--max-models", c->max_models, "models the workspace supports")
       ->check(CLI::Range(1u, kMaxModels))->capture_default_str();
+  cmd->add_option("--query-spacing", c->query_basis_spacing, "query basis point spacing, m (0: the database's)")
+      ->capture_default_str();
+  cmd->add_option("--tol-angle", c->tol_angle_deg, "doublet angle tolerance, degrees")->capture_default_str();
+  cmd->add_option("--tol-distance", c->tol_distance, "doublet distance tolerance, m")->capture_default_str();
   cmd->add_option("-W,--top-w", c->top_w, "W: candidates per query feature (BRAN)")
       ->check(CLI::Range(1u, kMaxCandidates))->capture_default_str();
   cmd->add_option("--top-w-sran", c->top_w_sran, "W per model (SRAN)")->check(CLI::Range(1u, kMaxCandidates))->capture_default_str();

@@ -38,6 +38,7 @@ struct RecognizerConfig {
   uint32_t max_features = 1024;      // s: query basis points kept
   uint32_t max_models = 2048;        // m: database models supported by this workspace
   uint32_t max_spin_dims = 256;      // d: largest spin image (bins_alpha * bins_beta) supported
+  float query_basis_spacing = 0.0f;  // m between query basis points; 0: the database's spacing
 
   // Spin-image pruning (section 5).
   uint32_t top_w = 50;               // W for BRAN (paper: 50)
