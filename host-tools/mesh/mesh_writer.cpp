@@ -2,7 +2,9 @@
 
 #include "mesh/atomic_file.hpp"
 
+#include <cctype>
 #include <cstdint>
+#include <filesystem>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -89,6 +91,15 @@ bool write_obj(const std::string& path, const Mesh& mesh, std::string* error) {
 
 bool write_mesh_ply(const std::string& path, const Mesh& mesh, std::string* error) {
   return write_encoded(path, mesh, ply_bytes, error);
+}
+
+bool write_mesh(const std::string& path, const Mesh& mesh, std::string* error) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".obj") return write_obj(path, mesh, error);
+  if (extension == ".ply") return write_mesh_ply(path, mesh, error);
+  if (error) *error = "cannot write " + path + ": unknown mesh extension (use .obj or .ply)";
+  return false;
 }
 
 }  // namespace spinhash::host

@@ -10,5 +10,7 @@ namespace spinhash::host {
 
 bool write_obj(const std::string& path, const Mesh& mesh, std::string* error);
 bool write_mesh_ply(const std::string& path, const Mesh& mesh, std::string* error);
+// By extension: ".obj" or ".ply" (case-insensitive); anything else is an error.
+bool write_mesh(const std::string& path, const Mesh& mesh, std::string* error);
 
 }  // namespace spinhash::host

@@ -29,6 +29,7 @@ constexpr double kRailWidth = 0.05;
 constexpr double kRailHeight = 0.06;
 constexpr double kRailLengthFraction = 0.85;
 constexpr double kCrossBarWidth = 0.05;
+constexpr double kCrossBarSpread = 0.6;  // bars at +-this fraction of the rail half length
 // Mirrors (m): size and position relative to the windscreen base.
 constexpr double kMirrorLength = 0.10;
 constexpr double kMirrorReach = 0.18;
@@ -114,7 +115,7 @@ void add_roof_rack(Mesh* mesh, const VehicleSpec& s, const Cabin& c) {
     add_box(mesh, {mid - half, side * y - 0.5 * kRailWidth, z0},
             {mid + half, side * y + 0.5 * kRailWidth, z1});
   }
-  for (double x : {mid - 0.6 * half, mid + 0.6 * half}) {
+  for (double x : {mid - kCrossBarSpread * half, mid + kCrossBarSpread * half}) {
     add_box(mesh, {x - 0.5 * kCrossBarWidth, -y, z1 - kOverlap},
             {x + 0.5 * kCrossBarWidth, y, z1 + kCrossBarWidth});
   }

@@ -70,6 +70,10 @@ TEST_CASE("written OBJ and PLY meshes load back identical in shape") {
     CHECK(loaded.signed_volume() == doctest::Approx(van.signed_volume()).epsilon(1e-6));
     CHECK(loaded.bounding_box().lo.isApprox(van.bounding_box().lo, 1e-6));
   }
+  REQUIRE_MESSAGE(sh::write_mesh(dir.file("VAN2.PLY"), van, &error), error);
+  CHECK(sh::test::read_bytes(dir.file("VAN2.PLY")).rfind("ply\nformat binary_little_endian", 0) == 0);
+  CHECK_FALSE(sh::write_mesh(dir.file("van.stl"), van, &error));
+  CHECK(error.find("extension") != std::string::npos);
   CHECK_FALSE(sh::write_obj(dir.file("missing-dir/x.obj"), van, &error));
   CHECK(error.find("cannot create") != std::string::npos);
   sh::Mesh broken = van;
