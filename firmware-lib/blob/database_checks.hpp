@@ -12,6 +12,20 @@
 namespace spinhash {
 namespace blob_check {
 
+// The field offsets docs/blob-format.md promises; a compiler that pads
+// differently must fail here rather than misread blobs.
+static_assert(offsetof(blob::Header, total_size) == 16 && offsetof(blob::Header, section_count) == 32 &&
+                  offsetof(blob::Header, header_crc) == 36,
+              "header layout");
+static_assert(offsetof(blob::SectionEntry, offset) == 8 && offsetof(blob::SectionEntry, crc) == 24,
+              "section entry layout");
+static_assert(offsetof(blob::Params, cloud_voxel) == 32 && offsetof(blob::Params, reserved) == 64,
+              "params layout");
+static_assert(offsetof(blob::ModelRecord, first_feature) == 48 &&
+                  offsetof(blob::ModelRecord, grid_offset_base) == 68 &&
+                  offsetof(blob::ModelRecord, bbox_max) == 96 && offsetof(blob::ModelRecord, reserved) == 108,
+              "model record layout");
+
 constexpr uint32_t kSlotCount = blob::kSectionIdCount + 1;  // indexed by SectionId; slot 0 unused
 
 // Payload of every section, located and checksummed by check_sections.

@@ -1,0 +1,70 @@
+#include "cloud/cloud_writer.hpp"
+
+#include "mesh/atomic_file.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+
+namespace spinhash::host {
+namespace {
+
+constexpr int kAxes = 3;
+constexpr std::size_t kLineBufferBytes = 128;
+
+void append_double_le(std::string* out, double value) {
+  uint64_t bits = 0;
+  std::memcpy(&bits, &value, sizeof bits);
+  for (int shift = 0; shift < 64; shift += 8) out->push_back(static_cast<char>(bits >> shift));
+}
+
+std::string ply_bytes(const std::vector<double>& xyz, bool binary) {
+  const std::size_t points = xyz.size() / kAxes;
+  std::string out = std::string("ply\nformat ") +
+                    (binary ? "binary_little_endian" : "ascii") +
+                    " 1.0\ncomment spinhash point cloud\nelement vertex " +
+                    std::to_string(points) +
+                    "\nproperty double x\nproperty double y\nproperty double z\nend_header\n";
+  if (binary) {
+    out.reserve(out.size() + points * kAxes * sizeof(double));
+    for (double v : xyz) append_double_le(&out, v);
+    return out;
+  }
+  char line[kLineBufferBytes];
+  for (std::size_t i = 0; i < points; ++i) {
+    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", xyz[kAxes * i],
+                  xyz[kAxes * i + 1], xyz[kAxes * i + 2]);
+    out += line;
+  }
+  return out;
+}
+
+}  // namespace
+
+bool write_ply(const std::string& path, const std::vector<double>& xyz, bool binary,
+               std::string* error) {
+  if (xyz.size() % kAxes != 0) {
+    if (error) *error = "cannot write " + path + ": coordinate count is not a multiple of 3";
+    return false;
+  }
+  try {
+    return write_file_atomically(path, ply_bytes(xyz, binary), error);
+  } catch (const std::exception& e) {
+    if (error) *error = "cannot write " + path + ": " + e.what();
+    return false;
+  }
+}
+
+bool write_pose(const std::string& path, const Eigen::Matrix4d& pose, std::string* error) {
+  std::string text;
+  char line[kLineBufferBytes];
+  for (int r = 0; r < 4; ++r) {
+    std::snprintf(line, sizeof line, "%.17g %.17g %.17g %.17g\n", pose(r, 0), pose(r, 1),
+                  pose(r, 2), pose(r, 3));
+    text += line;
+  }
+  return write_file_atomically(path, text, error);
+}
+
+}  // namespace spinhash::host

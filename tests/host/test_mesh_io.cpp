@@ -1,0 +1,169 @@
+#include "geometry_test_support.hpp"
+#include "mesh/mesh_loader.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "mesh/vehicle_generator.hpp"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <random>
+
+namespace sh = spinhash::host;
+using sh::test::TempDir;
+using sh::test::write_bytes;
+
+namespace {
+
+constexpr const char* kUnitCubeObj =
+    "# unit cube, quads\n"
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+
+// One triangle (0,0,0) (1,0,0) (0,1,0) under a node translated by (10,20,30):
+// PreTransformVertices must apply the node transform.
+constexpr const char* kTranslatedTriangleGltf = R"({
+  "asset": {"version": "2.0"},
+  "scene": 0,
+  "scenes": [{"nodes": [0]}],
+  "nodes": [{"mesh": 0, "translation": [10, 20, 30]}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+  "buffers": [{"byteLength": 36,
+    "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                 "min": [0, 0, 0], "max": [1, 1, 0]}]
+})";
+
+}  // namespace
+
+TEST_CASE("a unit cube OBJ loads as 12 triangles of area 6") {
+  TempDir dir("mesh");
+  const std::string path = dir.file("unit-cube.obj");
+  write_bytes(path, kUnitCubeObj);
+  sh::Mesh mesh;
+  std::string error;
+  REQUIRE_MESSAGE(sh::load_mesh(path, &mesh, &error), error);
+  CHECK(mesh.name == "unit-cube");
+  CHECK(mesh.triangle_count() == 12);
+  CHECK(mesh.vertex_count() == 8);
+  CHECK(mesh.surface_area() == doctest::Approx(6.0));
+  CHECK(mesh.signed_volume() == doctest::Approx(1.0));
+  CHECK(mesh.bounding_box().size().isApprox(Eigen::Vector3d(1, 1, 1)));
+}
+
+TEST_CASE("written OBJ and PLY meshes load back identical in shape") {
+  TempDir dir("mesh");
+  const sh::Mesh van = sh::generate_vehicle(sh::Family::kVan, 2, 99);
+  std::string error;
+  for (const std::string name : {"van.obj", "van.ply"}) {
+    CAPTURE(name);
+    const std::string path = dir.file(name);
+    const bool written = name.back() == 'j' ? sh::write_obj(path, van, &error)
+                                            : sh::write_mesh_ply(path, van, &error);
+    REQUIRE_MESSAGE(written, error);
+    CHECK_FALSE(std::filesystem::exists(path + ".tmp"));
+    sh::Mesh loaded;
+    REQUIRE_MESSAGE(sh::load_mesh(path, &loaded, &error), error);
+    CHECK(loaded.name == "van");
+    CHECK(loaded.triangle_count() == van.triangle_count());
+    CHECK(loaded.surface_area() == doctest::Approx(van.surface_area()).epsilon(1e-6));
+    CHECK(loaded.signed_volume() == doctest::Approx(van.signed_volume()).epsilon(1e-6));
+    CHECK(loaded.bounding_box().lo.isApprox(van.bounding_box().lo, 1e-6));
+  }
+  REQUIRE_MESSAGE(sh::write_mesh(dir.file("VAN2.PLY"), van, &error), error);
+  CHECK(sh::test::read_bytes(dir.file("VAN2.PLY")).rfind("ply\nformat binary_little_endian", 0) == 0);
+  CHECK_FALSE(sh::write_mesh(dir.file("van.stl"), van, &error));
+  CHECK(error.find("extension") != std::string::npos);
+  CHECK_FALSE(sh::write_obj(dir.file("missing-dir/x.obj"), van, &error));
+  CHECK(error.find("cannot create") != std::string::npos);
+  sh::Mesh broken = van;
+  broken.triangles.push_back(100000);
+  CHECK_FALSE(sh::write_obj(dir.file("broken.obj"), broken, &error));
+}
+
+TEST_CASE("node transforms are applied (glTF)") {
+  TempDir dir("mesh");
+  const std::string path = dir.file("moved.gltf");
+  write_bytes(path, kTranslatedTriangleGltf);
+  sh::Mesh mesh;
+  std::string error;
+  REQUIRE_MESSAGE(sh::load_mesh(path, &mesh, &error), error);
+  CHECK(mesh.triangle_count() == 1);
+  CHECK(mesh.surface_area() == doctest::Approx(0.5));
+  CHECK(mesh.bounding_box().lo.isApprox(Eigen::Vector3d(10, 20, 30)));
+}
+
+TEST_CASE("point and line primitives are dropped with their vertices") {
+  TempDir dir("mesh");
+  const std::string path = dir.file("mixed.obj");
+  write_bytes(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nv 6 6 6\nf 1 2 3\nl 4 5\np 4\n");
+  sh::Mesh mesh;
+  std::string error;
+  REQUIRE_MESSAGE(sh::load_mesh(path, &mesh, &error), error);
+  CHECK(mesh.triangle_count() == 1);
+  CHECK(mesh.vertex_count() == 3);
+  CHECK(mesh.bounding_box().hi.maxCoeff() == doctest::Approx(1.0));
+}
+
+TEST_CASE("bad mesh files fail with a clear error") {
+  TempDir dir("mesh");
+  sh::Mesh mesh;
+  std::string error;
+  CHECK_FALSE(sh::load_mesh(dir.file("nope.obj"), &mesh, &error));
+  CHECK(error.find("not found") != std::string::npos);
+  CHECK_FALSE(sh::load_mesh(dir.path().string(), &mesh, &error));
+  CHECK(error.find("directory") != std::string::npos);
+  CHECK_FALSE(sh::load_mesh(dir.file("x.obj"), nullptr, &error));
+
+  write_bytes(dir.file("lines.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\n");
+  CHECK_FALSE(sh::load_mesh(dir.file("lines.obj"), &mesh, &error));
+  CHECK_MESSAGE(error.find("no triangles") != std::string::npos, error);
+
+  write_bytes(dir.file("flat.obj"), "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+  CHECK_FALSE(sh::load_mesh(dir.file("flat.obj"), &mesh, &error));
+  CHECK_MESSAGE(error.find("degenerate") != std::string::npos, error);
+
+  write_bytes(dir.file("nan.ply"),
+              "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+              "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+              "end_header\nnan 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  CHECK_FALSE(sh::load_mesh(dir.file("nan.ply"), &mesh, &error));
+  CHECK_MESSAGE(error.find("non-finite") != std::string::npos, error);
+
+  // Random bytes under mesh extensions: an error, never a crash.
+  std::mt19937 bytes_rng(7);
+  for (const std::string ext : {".obj", ".stl", ".ply", ".off", ".dae", ".gltf", ".3ds"}) {
+    std::string garbage(2048, '\0');
+    for (char& c : garbage) c = static_cast<char>(bytes_rng());
+    const std::string path = dir.file("garbage" + ext);
+    write_bytes(path, garbage);
+    error.clear();
+    CHECK_FALSE(sh::load_mesh(path, &mesh, &error));
+    CHECK(!error.empty());
+  }
+  write_bytes(dir.file("empty.obj"), "");
+  CHECK_FALSE(sh::load_mesh(dir.file("empty.obj"), &mesh, &error));
+}
+
+TEST_CASE("list_mesh_files: a file, a directory of supported files, errors") {
+  TempDir dir("mesh");
+  for (const std::string name : {"b.stl", "a.obj", "c.txt", ".hidden.obj", "d.PLY", "e"}) {
+    write_bytes(dir.file(name), "x");
+  }
+  std::filesystem::create_directory(dir.path() / "sub.obj");
+  std::string error;
+  const std::vector<std::string> files = sh::list_mesh_files(dir.path().string(), &error);
+  REQUIRE(files.size() == 3);
+  CHECK(std::filesystem::path(files[0]).filename() == "a.obj");
+  CHECK(std::filesystem::path(files[1]).filename() == "b.stl");
+  CHECK(std::filesystem::path(files[2]).filename() == "d.PLY");
+
+  const std::vector<std::string> one = sh::list_mesh_files(dir.file("c.txt"), &error);
+  REQUIRE(one.size() == 1);
+  CHECK(one[0] == dir.file("c.txt"));
+
+  CHECK(sh::list_mesh_files(dir.file("absent"), &error).empty());
+  CHECK(error.find("not found") != std::string::npos);
+  CHECK(sh::list_mesh_files((dir.path() / "sub.obj").string(), &error).empty());
+  CHECK(error.find("no mesh files") != std::string::npos);
+}
