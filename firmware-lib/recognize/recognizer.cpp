@@ -24,6 +24,7 @@ bool config_valid(const RecognizerConfig& c) {
          in(c.tol_handedness, 0.0f, 2.0f) && in(c.sigma, 1e-4f, 100.0f) && in(c.delta, 1e-4f, 100.0f) &&
          in(c.delta_max, c.delta, 100.0f) && in(c.eta_max_deg, 0.0f, 180.0f) &&
          in(c.spin_lambda, 1e-3f, 1e3f) && in(c.query_basis_spacing, 0.0f, 100.0f) &&
+         in(c.min_inlier_fraction, 0.0f, 1.0f) &&
          (!c.has_viewpoint || (std::isfinite(c.viewpoint[0]) && std::isfinite(c.viewpoint[1]) &&
                                std::isfinite(c.viewpoint[2])));
 }
@@ -193,6 +194,9 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
   }
   result.ranking = b.ranking;
   result.ranking_count = rank_models(*db_, b, fs.origin);
+  result.confident = result.ranking_count > 0 && result.ranking[0].has_pose &&
+                     static_cast<float>(result.ranking[0].inliers) >=
+                         config_.min_inlier_fraction * static_cast<float>(fs.count);
   return result;
 }
 

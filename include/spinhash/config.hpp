@@ -60,6 +60,10 @@ struct RecognizerConfig {
   float eta_max_deg = 35.0f;         // eta_max: normal agreement
   float spin_lambda = 0.5f;          // p_s = exp(-L1 / lambda), L1 of sum-normalised spin images
 
+  // "No confident match": the best model must explain at least this share of
+  // the query features within Delta (an object not in the database doesn't).
+  float min_inlier_fraction = 0.25f;
+
   // Work budget (bounded time): whichever runs out first stops recognition.
   uint32_t max_trials = 400;         // BRAN: doublet draws
   uint32_t sran_trials = 100;        // SRAN: doublet draws per model

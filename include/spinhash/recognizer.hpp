@@ -47,6 +47,7 @@ struct Result {
   Status status = Status::kNotOpen;
   const RankedModel* ranking = nullptr;  // in the workspace; valid until the next call
   uint32_t ranking_count = 0;            // models that got a score, best first
+  bool confident = false;                // the best model explains >= min_inlier_fraction of the features
   RecognitionStats stats;
 };
 

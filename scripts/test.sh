@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The whole test suite, as CI runs it (.ci/run): installs what is missing,
+# builds, runs the host suites with ctest, then every onboard and hardening
+# stage that scripts/ provides (cross targets under QEMU, sanitizers, fuzzing).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+jobs=$(nproc 2>/dev/null || echo 2)
+
+scripts/install-deps.sh --cross
+
+echo "== host build and tests"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$jobs"
+ctest --test-dir build --output-on-failure -j"$jobs"
+
+# Further stages, each a script that exits non-zero on failure.
+for stage in scripts/stages/*.sh; do
+  [[ -e "$stage" ]] || continue
+  echo "== $(basename "$stage" .sh)"
+  bash "$stage"
+done
+echo "== all test stages passed"
