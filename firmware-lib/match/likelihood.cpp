@@ -9,53 +9,79 @@ namespace {
 
 constexpr float kMaxNormalisedL1 = 2.0f;  // L1 between two sum-1 histograms
 
-struct Nearest {
-  int64_t feature = -1;
-  float dist2 = 0.0f;
-};
+}  // namespace
 
-// Nearest model feature to x (model frame) within Delta_max whose normal agrees.
-Nearest nearest_model_feature(const Database& db, const blob::ModelRecord& rec,
-                              const Eigen::Vector3f& x, const Eigen::Vector3f& n,
-                              const LikelihoodParams& lp) {
-  Nearest best;
-  best.dist2 = lp.delta_max2;
-  const float cell = db.params().grid_cell;
-  int32_t c[3];
-  for (int a = 0; a < 3; ++a) c[a] = static_cast<int32_t>(std::floor((x[a] - rec.grid_origin[a]) / cell));
-  const int32_t r = static_cast<int32_t>(lp.reach);
-  const int32_t dx = static_cast<int32_t>(rec.grid_dims[0]), dy = static_cast<int32_t>(rec.grid_dims[1]),
-                dz = static_cast<int32_t>(rec.grid_dims[2]);
+namespace {
+
+// Squared distance from coordinate v to cell c's extent [c, c + 1) * cell (0 inside).
+inline float axis_gap2(float v, int32_t c, float cell) {
+  float lo = static_cast<float>(c) * cell, hi = lo + cell;
+  float g = v < lo ? lo - v : (v > hi ? v - hi : 0.0f);
+  return g * g;
+}
+
+// Features of one grid cell against x: updates best (nearest within best.dist2 with agreeing normal).
+void scan_cell(const Database& db, const blob::ModelRecord& rec, uint32_t cell_index, const Eigen::Vector3f& x,
+               const Eigen::Vector3f& n, float cos_eta_max, NearestFeature* best) {
   const uint32_t* offsets = db.grid_offsets() + rec.grid_offset_base;
+  const uint32_t end = rec.first_feature + offsets[cell_index + 1u];
   const float* pos = db.positions();
   const int16_t* nrm = db.normals();
-  for (int32_t z = c[2] - r; z <= c[2] + r; ++z) {
-    if (z < 0 || z >= dz) continue;
-    for (int32_t y = c[1] - r; y <= c[1] + r; ++y) {
-      if (y < 0 || y >= dy) continue;
-      for (int32_t xx = c[0] - r; xx <= c[0] + r; ++xx) {
-        if (xx < 0 || xx >= dx) continue;
-        uint32_t cell_index = static_cast<uint32_t>(xx + dx * (y + dy * z));
-        uint32_t end = rec.first_feature + offsets[cell_index + 1u];
-        for (uint32_t f = rec.first_feature + offsets[cell_index]; f < end; ++f) {
-          const float* p = pos + 3u * f;
-          float ex = p[0] - x[0], ey = p[1] - x[1], ez = p[2] - x[2];
-          float d2 = ex * ex + ey * ey + ez * ez;
-          if (d2 >= best.dist2) continue;
-          const int16_t* m = nrm + 3u * f;
-          float dot = (static_cast<float>(m[0]) * n[0] + static_cast<float>(m[1]) * n[1] +
-                       static_cast<float>(m[2]) * n[2]) * (1.0f / 32767.0f);
-          if (dot < lp.cos_eta_max) continue;
-          best.dist2 = d2;
-          best.feature = f;
-        }
+  for (uint32_t f = rec.first_feature + offsets[cell_index]; f < end; ++f) {
+    const float* p = pos + 3u * f;
+    float ex = p[0] - x[0], ey = p[1] - x[1], ez = p[2] - x[2];
+    float d2 = ex * ex + ey * ey + ez * ez;
+    if (d2 >= best->dist2) continue;
+    const int16_t* m = nrm + 3u * f;
+    float dot = (static_cast<float>(m[0]) * n[0] + static_cast<float>(m[1]) * n[1] +
+                 static_cast<float>(m[2]) * n[2]) * (1.0f / 32767.0f);
+    if (dot < cos_eta_max) continue;
+    best->dist2 = d2;
+    best->feature = f;
+  }
+}
+
+}  // namespace
+
+NearestFeature find_nearest_model_feature(const Database& db, const blob::ModelRecord& rec,
+                                          const Eigen::Vector3f& x, const Eigen::Vector3f& n,
+                                          const LikelihoodParams& lp) {
+  NearestFeature best;
+  best.dist2 = lp.delta_max2;
+  const float cell = db.params().grid_cell;
+  const int32_t r = static_cast<int32_t>(lp.reach);
+  int32_t centre[3], lo[3], hi[3];
+  float gap[3][2 * kMaxGridReach + 1];  // squared distance from x to each cell slab, per axis
+  for (int a = 0; a < 3; ++a) {
+    const float local = x[a] - rec.grid_origin[a];
+    const int32_t dim = static_cast<int32_t>(rec.grid_dims[a]);
+    centre[a] = static_cast<int32_t>(std::floor(local / cell));
+    lo[a] = centre[a] - r < 0 ? 0 : centre[a] - r;
+    hi[a] = centre[a] + r >= dim ? dim - 1 : centre[a] + r;
+    if (lo[a] > hi[a]) return best;  // x is farther than Delta_max from the model's grid
+    for (int32_t k = lo[a]; k <= hi[a]; ++k) gap[a][k - lo[a]] = axis_gap2(local, k, cell);
+  }
+  const int32_t dx = static_cast<int32_t>(rec.grid_dims[0]), dy = static_cast<int32_t>(rec.grid_dims[1]);
+  auto index = [&](int32_t i, int32_t j, int32_t k) { return static_cast<uint32_t>(i + dx * (j + dy * k)); };
+  const bool centre_inside = centre[0] >= lo[0] && centre[0] <= hi[0] && centre[1] >= lo[1] &&
+                             centre[1] <= hi[1] && centre[2] >= lo[2] && centre[2] <= hi[2];
+  // The cell holding x first: a near match there lets most neighbours be skipped.
+  if (centre_inside) scan_cell(db, rec, index(centre[0], centre[1], centre[2]), x, n, lp.cos_eta_max, &best);
+  for (int32_t k = lo[2]; k <= hi[2]; ++k) {
+    const float gz = gap[2][k - lo[2]];
+    if (gz >= best.dist2) continue;
+    for (int32_t j = lo[1]; j <= hi[1]; ++j) {
+      const float gyz = gz + gap[1][j - lo[1]];
+      if (gyz >= best.dist2) continue;
+      for (int32_t i = lo[0]; i <= hi[0]; ++i) {
+        if (gyz + gap[0][i - lo[0]] >= best.dist2) continue;  // the whole cell is farther
+        if (centre_inside && i == centre[0] && j == centre[1] && k == centre[2]) continue;
+        scan_cell(db, rec, index(i, j, k), x, n, lp.cos_eta_max, &best);
       }
     }
   }
   return best;
 }
-
-}  // namespace
 
 LikelihoodParams make_likelihood_params(const RecognizerConfig& cfg, const Database& db) {
   LikelihoodParams lp;
@@ -65,7 +91,8 @@ LikelihoodParams make_likelihood_params(const RecognizerConfig& cfg, const Datab
   lp.cos_eta_max = std::cos(deg_to_rad(cfg.eta_max_deg));
   lp.spin_weight = 1.0f / (cfg.spin_lambda * db.params().spin_quant_scale);
   lp.floor = -lp.delta2 * lp.inv_two_sigma2 - kMaxNormalisedL1 / cfg.spin_lambda;
-  lp.reach = static_cast<uint32_t>(std::ceil(cfg.delta_max / db.params().grid_cell));
+  const float reach = std::ceil(cfg.delta_max / db.params().grid_cell);
+  lp.reach = reach < static_cast<float>(kMaxGridReach) ? static_cast<uint32_t>(reach) : kMaxGridReach;
   return lp;
 }
 
@@ -88,19 +115,22 @@ Verification verify_pose(const Database& db, uint32_t model, const RigidPose& po
   const blob::ModelRecord& rec = db.model(model);
   const Eigen::Matrix3f rt = pose.rotation.transpose();
   const uint32_t n = query.count;
+  const uint32_t used = query.verify_count < n ? query.verify_count : n;
   const uint32_t stride = n > 1u ? spread_stride(n) : 1u;
-  const float best_mean = to_beat / static_cast<float>(n > 0u ? n : 1u);
+  const float best_mean = to_beat / static_cast<float>(used > 0u ? used : 1u);
   uint32_t l = 0;
-  for (uint32_t i = 0; i < n; ++i, l = (l + stride) % n) {
+  for (uint32_t i = 0; i < used; ++i, l = (l + stride) % n) {
     if (v.log_likelihood < to_beat) return v;  // remaining terms are <= 0
-    if (preemptive && i == kPreemptiveFeatures && i < n &&
-        v.log_likelihood / static_cast<float>(i) < best_mean - kPreemptiveSlack)
+    if (preemptive && ((i == kPreemptiveFirst && v.log_likelihood / static_cast<float>(i) <
+                                                    best_mean - kPreemptiveSlackFirst) ||
+                       (i == kPreemptiveSecond && v.log_likelihood / static_cast<float>(i) <
+                                                     best_mean - kPreemptiveSlackSecond)))
       return v;
     Eigen::Vector3f qp(query.positions[3u * l], query.positions[3u * l + 1u], query.positions[3u * l + 2u]);
     Eigen::Vector3f qn(query.normals[3u * l], query.normals[3u * l + 1u], query.normals[3u * l + 2u]);
     Eigen::Vector3f x = rt * (qp - pose.translation);
     Eigen::Vector3f nm = rt * qn;
-    Nearest near = nearest_model_feature(db, rec, x, nm, lp);
+    NearestFeature near = find_nearest_model_feature(db, rec, x, nm, lp);
     if (near.feature < 0) {
       v.log_likelihood += lp.floor;
       continue;

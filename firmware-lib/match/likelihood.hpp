@@ -24,15 +24,23 @@ struct QueryFeatures {
   const uint8_t* spins = nullptr;    // quantised with the database's scale
   uint32_t count = 0;
   uint32_t dims = 0;
+  uint32_t verify_count = 0;  // features verify_pose scores (evenly spread), <= count
 };
 
 // Preemptive verification: a hypothesis is first scored on this many query
 // features (spread evenly over the query) and dropped if their mean term is
-// more than kPreemptiveSlack (log units) below the model's best mean so far.
+// more than a slack (log units) below the model's best mean so far.
 // Terms lie in [floor, 0] with a spread near 2, so over 64 features the mean
 // of a pose as good as the best rarely falls 1.0 below it.
-constexpr uint32_t kPreemptiveFeatures = 64;
-constexpr float kPreemptiveSlack = 1.0f;
+// Checked twice: a cheap early look, then a steadier one.
+constexpr uint32_t kPreemptiveFirst = 32;
+constexpr float kPreemptiveSlackFirst = 1.5f;
+constexpr uint32_t kPreemptiveSecond = 96;
+constexpr float kPreemptiveSlackSecond = 0.8f;
+
+// Grid cells searched each way around a point, at most: Delta_max may span up
+// to this many model-grid cells (a larger Delta_max is searched only this far).
+constexpr uint32_t kMaxGridReach = 4;
 
 struct LikelihoodParams {
   float inv_two_sigma2 = 0.0f;
@@ -46,16 +54,26 @@ struct LikelihoodParams {
 
 LikelihoodParams make_likelihood_params(const RecognizerConfig& cfg, const Database& db);
 
+// Nearest model feature to x (model frame) within Delta_max whose normal n
+// agrees within eta_max; feature < 0 when none.
+struct NearestFeature {
+  int64_t feature = -1;
+  float dist2 = 0.0f;
+};
+NearestFeature find_nearest_model_feature(const Database& db, const blob::ModelRecord& rec,
+                                          const Eigen::Vector3f& x, const Eigen::Vector3f& n,
+                                          const LikelihoodParams& lp);
+
 struct Verification {
   float log_likelihood = 0.0f;  // sum over query features, eq. 7
   uint32_t inliers = 0;         // features matched within Delta
   bool complete = false;        // false: stopped early, cannot beat `to_beat`
 };
 
-// Scores `pose` of `model`, visiting query features in an evenly spread
-// order. Stops early once even perfect remaining features (log p <= 0 each)
+// Scores `pose` of `model` on query.verify_count features visited in an
+// evenly spread order (all of them when verify_count == count). Stops early once even perfect remaining features (log p <= 0 each)
 // could not lift the sum above `to_beat`, or, when `preemptive`, once the
-// first kPreemptiveFeatures say the pose is clearly worse than `to_beat`.
+// first few dozen features say the pose is clearly worse than `to_beat`.
 Verification verify_pose(const Database& db, uint32_t model, const RigidPose& pose,
                          const QueryFeatures& query, const LikelihoodParams& lp, float to_beat,
                          bool preemptive);

@@ -24,7 +24,7 @@ bool config_valid(const RecognizerConfig& c) {
          in(c.tol_handedness, 0.0f, 2.0f) && in(c.sigma, 1e-4f, 100.0f) && in(c.delta, 1e-4f, 100.0f) &&
          in(c.delta_max, c.delta, 100.0f) && in(c.eta_max_deg, 0.0f, 180.0f) &&
          in(c.spin_lambda, 1e-3f, 1e3f) && in(c.query_basis_spacing, 0.0f, 100.0f) &&
-         in(c.min_inlier_fraction, 0.0f, 1.0f) &&
+         in(c.min_inlier_fraction, 0.0f, 1.0f) && c.verify_features >= 1u &&
          (!c.has_viewpoint || (std::isfinite(c.viewpoint[0]) && std::isfinite(c.viewpoint[1]) &&
                                std::isfinite(c.viewpoint[2])));
 }
@@ -80,6 +80,7 @@ void reset(ModelBest& best) {
   best.hypotheses = 0;
   best.inliers = 0;
   best.has_score = false;
+  best.final_score = false;
 }
 
 Pose identity_pose() {
@@ -183,7 +184,8 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
                   b.query_spins + static_cast<size_t>(f) * fs.dims);
   for (uint32_t m = 0; m < db_->model_count(); ++m) reset(b.best[m]);
 
-  SearchContext ctx{*db_, config_, b, QueryFeatures{fs.positions, fs.normals, b.query_spins, fs.count, fs.dims},
+  SearchContext ctx{*db_, config_, b, QueryFeatures{fs.positions, fs.normals, b.query_spins, fs.count, fs.dims,
+                                  config_.verify_features < fs.count ? config_.verify_features : fs.count},
                     make_likelihood_params(config_, *db_),
                     DoubletTolerance{config_.tol_distance, deg_to_rad(config_.tol_angle_deg), config_.tol_handedness},
                     config_.d_min, deg_to_rad(config_.theta_min_deg), result.stats, Pcg32(config_.seed)};
@@ -192,6 +194,7 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
     case Mode::kSran: run_sran(ctx); break;
     case Mode::kSind: run_sind(ctx); break;
   }
+  if (config_.mode != Mode::kSind) finalise_scores(ctx, config_.refine_poses);
   result.ranking = b.ranking;
   result.ranking_count = rank_models(*db_, b, fs.origin);
   result.confident = result.ranking_count > 0 && result.ranking[0].has_pose &&

@@ -18,6 +18,7 @@ struct ModelBest {
   uint32_t hypotheses;
   uint32_t inliers;
   bool has_score;
+  bool final_score;  // rescored on every query feature
 };
 
 struct RecognizerBuffers {
@@ -69,6 +70,9 @@ bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l,
                    const DoubletShape& shape, uint32_t fu, uint32_t fv, const HypothesisCaps& caps);
 
 void run_bran(SearchContext& ctx);
+// Rescores the leading models on all query features (refining their poses
+// when asked) and puts every score on the all-features scale (BRAN, SRAN).
+void finalise_scores(SearchContext& ctx, bool refine);
 void run_sran(SearchContext& ctx);
 void run_sind(SearchContext& ctx);
 

@@ -29,6 +29,8 @@ void add_build_flags(CLI::App* cmd, BuildSettings* s) {
       ->check(CLI::Range(1u, kMaxLshTables))->capture_default_str();
   cmd->add_option("--lsh-bits", s->options.lsh_bits, "K, bits per LSH key")
       ->check(CLI::Range(1u, kMaxLshBits))->capture_default_str();
+  cmd->add_option("--grid-cell", s->options.grid_cell, "cell of the per-model feature grids, m")
+      ->check(CLI::Range(0.05, 10.0))->capture_default_str();
   cmd->add_option("--lsh-range-quantile", s->options.lsh_range_quantile, "quantile of each dimension used as its LSH range C_i")
       ->check(CLI::Range(0.5, 1.0))->capture_default_str();
   cmd->add_option("--seed", s->options.seed, "LSH sampling seed")->capture_default_str();

@@ -28,6 +28,8 @@ void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
       ->check(CLI::Range(1u, kMaxModels))->capture_default_str();
   cmd->add_option("--query-spacing", c->query_basis_spacing, "query basis point spacing, m (0: the database's)")
       ->capture_default_str();
+  cmd->add_option("--verify-features", c->verify_features, "query features scored per hypothesis")->capture_default_str();
+  cmd->add_flag("!--no-refine", c->refine_poses, "skip the least-squares pose refinement");
   cmd->add_option("--tol-angle", c->tol_angle_deg, "doublet angle tolerance, degrees")->capture_default_str();
   cmd->add_option("--tol-distance", c->tol_distance, "doublet distance tolerance, m")->capture_default_str();
   cmd->add_option("-W,--top-w", c->top_w, "W: candidates per query feature (BRAN)")

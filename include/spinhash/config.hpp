@@ -9,7 +9,7 @@ namespace spinhash {
 // values it was built with; queries are described with the same values.
 struct FeatureParams {
   float cloud_voxel = 0.08f;        // m: density-equalising voxel before anything else
-  float normal_radius = 0.30f;      // m: PCA neighbourhood for normals
+  float normal_radius = 0.40f;      // m: PCA neighbourhood for normals (wide enough for 10 cm noise)
   float basis_spacing = 0.25f;      // m: voxel size for uniform basis-point sampling
   float support_radius = 1.0f;      // m: spin image support (paper: 1 m)
   uint32_t bins_alpha = 10;         // radial bins (paper: 10x10)
@@ -44,7 +44,7 @@ struct RecognizerConfig {
   uint32_t top_w = 50;               // W for BRAN (paper: 50)
   uint32_t top_w_sran = 5;           // W for SRAN, per model (paper: 5)
   uint32_t top_w_sind = 1;           // W for SIND (paper: 1)
-  uint32_t max_bucket_scan = 4096;   // LSH entries scanned per query feature, at most
+  uint32_t max_bucket_scan = 1024;   // LSH entries scanned per query feature, at most (shared by the L tables)
 
   // Doublets (section 7, Figure 5 and eq. 3).
   float d_min = 0.5f;                // d_min, m
@@ -54,18 +54,27 @@ struct RecognizerConfig {
   float tol_handedness = 0.5f;       // |t - t'| allowed, t = (n1 x n2) . u  (rejects mirror images)
 
   // Likelihood (section 8, eqs. 4-7).
-  float sigma = 0.10f;               // sigma, m
-  float delta = 0.20f;               // Delta, m: inlier radius
-  float delta_max = 0.50f;           // Delta_max, m: spread of outliers
+  float sigma = 0.15f;               // sigma, m: sensor noise plus basis-point sampling offset
+  float delta = 0.30f;               // Delta, m: inlier radius
+  float delta_max = 0.60f;           // Delta_max, m: spread of outliers
   float eta_max_deg = 35.0f;         // eta_max: normal agreement
   float spin_lambda = 0.5f;          // p_s = exp(-L1 / lambda), L1 of sum-normalised spin images
+
+  // Hypotheses are scored on at most this many query features (evenly
+  // spread; the paper's "all or a percentage of all query features"); the
+  // leading models are then rescored on all of them.
+  uint32_t verify_features = 256;
+
+  // Least-squares refinement of the best few models' poses over their
+  // inliers after the hypothesis loop (not in the paper; BRAN and SRAN).
+  bool refine_poses = true;
 
   // "No confident match": the best model must explain at least this share of
   // the query features within Delta (an object not in the database doesn't).
   float min_inlier_fraction = 0.25f;
 
   // Work budget (bounded time): whichever runs out first stops recognition.
-  uint32_t max_trials = 400;         // BRAN: doublet draws
+  uint32_t max_trials = 800;         // BRAN: doublet draws
   uint32_t sran_trials = 100;        // SRAN: doublet draws per model
   uint32_t max_hypotheses = 6000;    // poses verified: BRAN all models together, SRAN per model
   uint32_t max_pair_checks = 2000000;// candidate pairs put through the cascade

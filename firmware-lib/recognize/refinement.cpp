@@ -1,0 +1,70 @@
+// After the hypothesis loop, which scores poses on a subset of the query
+// features: the leading models' best poses are rescored on every feature and
+// (optionally) refined by least squares over their inliers
+// (match/refine_pose.hpp), keeping a refined pose where its likelihood is
+// higher; every other model's subset score is extrapolated to all features
+// so the whole ranking is on one scale. Bounded: kRefinedModels models x
+// (1 + kRefineIterations) full verifications.
+#include "match/refine_pose.hpp"
+#include "recognize/search_context.hpp"
+
+namespace spinhash {
+namespace {
+
+constexpr uint32_t kRefinedModels = 8;
+constexpr uint32_t kRefineIterations = 3;
+
+// Indices of the (up to) kRefinedModels best-scoring models, best first.
+uint32_t leading_models(const SearchContext& ctx, uint32_t* out) {
+  uint32_t n = 0;
+  for (uint32_t m = 0; m < ctx.db.model_count(); ++m) {
+    const ModelBest& b = ctx.buf.best[m];
+    if (!b.has_score || b.hypotheses == 0) continue;
+    uint32_t i = n < kRefinedModels ? n++ : kRefinedModels;
+    while (i > 0 && ctx.buf.best[out[i - 1u]].score < b.score) {  // insertion into a short sorted list
+      if (i < kRefinedModels) out[i] = out[i - 1u];
+      --i;
+    }
+    if (i < kRefinedModels) out[i] = m;
+  }
+  return n;
+}
+
+void finalise_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, bool refine) {
+  ModelBest& best = ctx.buf.best[model];
+  Verification full = verify_pose(ctx.db, model, best.pose, all, ctx.likelihood, -3.0e38f, false);
+  best.score = full.log_likelihood;
+  best.inliers = full.inliers;
+  best.final_score = true;
+  for (uint32_t it = 0; refine && it < kRefineIterations; ++it) {
+    RigidPose pose = best.pose;
+    if (!refine_pose(ctx.db, model, all, ctx.likelihood, &pose)) return;
+    Verification v = verify_pose(ctx.db, model, pose, all, ctx.likelihood, -3.0e38f, false);
+    ++ctx.stats.refinements;
+    if (!(v.log_likelihood > best.score)) return;
+    best.score = v.log_likelihood;
+    best.pose = pose;
+    best.inliers = v.inliers;
+  }
+}
+
+}  // namespace
+
+void finalise_scores(SearchContext& ctx, bool refine) {
+  uint32_t models[kRefinedModels];
+  const uint32_t n = leading_models(ctx, models);
+  QueryFeatures all = ctx.query;
+  all.verify_count = all.count;
+  for (uint32_t i = 0; i < n; ++i) finalise_model(ctx, models[i], all, refine);
+  // Subset scores of the others, scaled to all features (and kept below the finalised ones).
+  const float scale = static_cast<float>(all.count) / static_cast<float>(ctx.query.verify_count);
+  for (uint32_t m = 0; m < ctx.db.model_count(); ++m) {
+    ModelBest& b = ctx.buf.best[m];
+    if (b.has_score && b.hypotheses > 0 && !b.final_score) {
+      b.score *= scale;
+      b.inliers = static_cast<uint32_t>(static_cast<float>(b.inliers) * scale);
+    }
+  }
+}
+
+}  // namespace spinhash
