@@ -1,0 +1,197 @@
+// The C99 API (include/spinhash/spinhash.h) over the C++ core: the C++
+// objects are placed in the caller's opaque storage; nothing is allocated.
+#include "spinhash/spinhash.h"
+
+#include <new>
+
+#include "c_api/config_bridge.hpp"
+#include "c_api/log.hpp"
+#include "spinhash/limits.hpp"
+#include "spinhash/recognizer.hpp"
+
+namespace spinhash {
+namespace {
+
+// What a spinhash_recognizer holds: the recognizer and the C database it reads
+// (so results can name their models).
+struct RecognizerSlot {
+  Recognizer recognizer;
+  const spinhash_database* database;
+};
+
+static_assert(sizeof(Database) <= SPINHASH_DATABASE_STORAGE_BYTES, "raise SPINHASH_DATABASE_STORAGE_BYTES");
+static_assert(sizeof(RecognizerSlot) <= SPINHASH_RECOGNIZER_STORAGE_BYTES,
+              "raise SPINHASH_RECOGNIZER_STORAGE_BYTES");
+static_assert(alignof(Database) <= alignof(spinhash_database), "database storage under-aligned");
+static_assert(alignof(RecognizerSlot) <= alignof(spinhash_recognizer), "recognizer storage under-aligned");
+static_assert(alignof(spinhash_database) == SPINHASH_STORAGE_ALIGNMENT, "storage alignment macro is stale");
+static_assert(SPINHASH_BUFFER_ALIGNMENT == kBufferAlignment, "buffer alignment macro is stale");
+
+// The C enum must mirror Status value for value (append-only on both sides).
+constexpr bool same(spinhash_status c, Status s) { return static_cast<int32_t>(c) == static_cast<int32_t>(s); }
+static_assert(same(SPINHASH_OK, Status::kOk) && same(SPINHASH_INVALID_ARGUMENT, Status::kInvalidArgument) &&
+                  same(SPINHASH_WORKSPACE_TOO_SMALL, Status::kWorkspaceTooSmall) &&
+                  same(SPINHASH_MISALIGNED_BUFFER, Status::kMisalignedBuffer) &&
+                  same(SPINHASH_BLOB_TRUNCATED, Status::kBlobTruncated) &&
+                  same(SPINHASH_BLOB_BAD_MAGIC, Status::kBlobBadMagic) &&
+                  same(SPINHASH_BLOB_UNSUPPORTED_VERSION, Status::kBlobUnsupportedVersion) &&
+                  same(SPINHASH_BLOB_WRONG_BYTE_ORDER, Status::kBlobWrongByteOrder) &&
+                  same(SPINHASH_BLOB_HEADER_CHECKSUM, Status::kBlobHeaderChecksum) &&
+                  same(SPINHASH_BLOB_SECTION_CHECKSUM, Status::kBlobSectionChecksum) &&
+                  same(SPINHASH_BLOB_SECTION_OUT_OF_BOUNDS, Status::kBlobSectionOutOfBounds) &&
+                  same(SPINHASH_BLOB_SECTION_OVERLAP, Status::kBlobSectionOverlap) &&
+                  same(SPINHASH_BLOB_SECTION_MISALIGNED, Status::kBlobSectionMisaligned) &&
+                  same(SPINHASH_BLOB_MISSING_SECTION, Status::kBlobMissingSection) &&
+                  same(SPINHASH_BLOB_DUPLICATE_SECTION, Status::kBlobDuplicateSection) &&
+                  same(SPINHASH_BLOB_COUNT_OVERFLOW, Status::kBlobCountOverflow) &&
+                  same(SPINHASH_BLOB_SIZE_MISMATCH, Status::kBlobSizeMismatch) &&
+                  same(SPINHASH_BLOB_BAD_PARAMETER, Status::kBlobBadParameter) &&
+                  same(SPINHASH_BLOB_BAD_MODEL_TABLE, Status::kBlobBadModelTable) &&
+                  same(SPINHASH_BLOB_BAD_FEATURE, Status::kBlobBadFeature) &&
+                  same(SPINHASH_BLOB_BAD_INDEX, Status::kBlobBadIndex) &&
+                  same(SPINHASH_DATABASE_TOO_LARGE, Status::kDatabaseTooLarge) &&
+                  same(SPINHASH_BLOB_UNKNOWN_SECTION, Status::kBlobUnknownSection) &&
+                  same(SPINHASH_EMPTY_CLOUD, Status::kEmptyCloud) &&
+                  same(SPINHASH_TOO_MANY_POINTS, Status::kTooManyPoints) &&
+                  same(SPINHASH_NOT_ENOUGH_FEATURES, Status::kNotEnoughFeatures) &&
+                  same(SPINHASH_NOT_OPEN, Status::kNotOpen),
+              "spinhash_status and spinhash::Status disagree");
+
+spinhash_status to_c(Status s) { return static_cast<spinhash_status>(static_cast<int32_t>(s)); }
+
+const Database* view(const spinhash_database* db) {
+  const Database* d = db == nullptr ? nullptr : reinterpret_cast<const Database*>(db->bytes);
+  return d != nullptr && d->is_open() ? d : nullptr;
+}
+
+RecognizerSlot* slot(spinhash_recognizer* rec) {
+  return rec == nullptr ? nullptr : reinterpret_cast<RecognizerSlot*>(rec->bytes);
+}
+
+void copy_stats(const RecognitionStats& s, spinhash_stats* out) {
+  out->points_in = s.extract.points_in;
+  out->points_thinned = s.extract.points_thinned;
+  out->points_nonfinite = s.extract.points_nonfinite;
+  out->features = s.features;
+  out->salient_features = s.salient_features;
+  out->trials = s.trials;
+  out->hypotheses = s.hypotheses;
+  out->budget_exhausted = s.budget_exhausted ? 1u : 0u;
+  out->bucket_scan_truncated = s.bucket_scan_truncated ? 1u : 0u;
+  out->features_thinned = s.extract.features_thinned ? 1u : 0u;
+  out->candidates = s.candidates;
+  out->bucket_entries = s.bucket_entries;
+  out->pair_checks = s.pair_checks;
+  out->doublets_passed = s.doublets_passed;
+  out->workspace_used = s.workspace_used;
+}
+
+spinhash_status finish(const RecognizerSlot& sl, const Result& r, spinhash_result* out) {
+  *out = spinhash_result{};
+  out->status = static_cast<int32_t>(r.status);
+  out->ranking_count = r.status == Status::kOk ? r.ranking_count : 0u;
+  out->confident = r.confident ? 1u : 0u;
+  copy_stats(r.stats, &out->stats);
+  out->ranking_ = r.ranking;
+  out->database_ = sl.database;
+  if (r.status != Status::kOk) log_message(LogLevel::kWarning, SPINHASH_LOG_TEXT("recognize: "), status_name(r.status));
+  return to_c(r.status);
+}
+
+template <typename T>
+spinhash_status recognize(spinhash_recognizer* rec, const T* xyz, uint32_t count, spinhash_result* out) {
+  if (out == nullptr) return SPINHASH_INVALID_ARGUMENT;
+  *out = spinhash_result{};
+  RecognizerSlot* sl = slot(rec);
+  if (sl == nullptr || sl->database == nullptr) {
+    out->status = SPINHASH_NOT_OPEN;
+    return SPINHASH_NOT_OPEN;
+  }
+  return finish(*sl, sl->recognizer.recognize(xyz, count), out);
+}
+
+}  // namespace
+}  // namespace spinhash
+
+using namespace spinhash;
+
+extern "C" {
+
+const char* spinhash_status_name(int32_t status) SPINHASH_NOEXCEPT { return status_name(static_cast<Status>(status)); }
+
+void spinhash_default_config(spinhash_config* config) SPINHASH_NOEXCEPT {
+  if (config != nullptr) to_c_config(RecognizerConfig{}, config);
+}
+
+size_t spinhash_workspace_bytes(const spinhash_config* config) SPINHASH_NOEXCEPT {
+  RecognizerConfig cfg;
+  if (config == nullptr || !from_c_config(*config, &cfg)) return 0;
+  return required_workspace_bytes(cfg);
+}
+
+spinhash_status spinhash_database_open(spinhash_database* db, const void* bytes, size_t size) SPINHASH_NOEXCEPT {
+  if (db == nullptr) return SPINHASH_INVALID_ARGUMENT;
+  Database* d = new (db->bytes) Database();  // closed until open succeeds
+  Status s = Database::open(bytes, size, d);
+  if (s != Status::kOk) log_message(LogLevel::kError, SPINHASH_LOG_TEXT("database open: "), status_name(s));
+  return to_c(s);
+}
+
+uint32_t spinhash_database_model_count(const spinhash_database* db) SPINHASH_NOEXCEPT {
+  const Database* d = view(db);
+  return d == nullptr ? 0u : d->model_count();
+}
+
+const char* spinhash_database_model_name(const spinhash_database* db, uint32_t index) SPINHASH_NOEXCEPT {
+  const Database* d = view(db);
+  if (d == nullptr || index >= d->model_count()) return nullptr;
+  return d->model(index).name;  // NUL-terminated: checked by Database::open
+}
+
+spinhash_status spinhash_recognizer_init(spinhash_recognizer* rec, const spinhash_database* db,
+                                         const spinhash_config* config, void* workspace,
+                                         size_t workspace_bytes) SPINHASH_NOEXCEPT {
+  if (rec == nullptr) return SPINHASH_INVALID_ARGUMENT;
+  RecognizerSlot* sl = new (rec->bytes) RecognizerSlot{Recognizer(), nullptr};
+  RecognizerConfig cfg;
+  if (config == nullptr || !from_c_config(*config, &cfg)) return SPINHASH_INVALID_ARGUMENT;
+  Status s = sl->recognizer.init(view(db), cfg, workspace, workspace_bytes);
+  if (s != Status::kOk) {
+    log_message(LogLevel::kError, SPINHASH_LOG_TEXT("recognizer init: "), status_name(s));
+    return to_c(s);
+  }
+  sl->database = db;
+  return SPINHASH_OK;
+}
+
+spinhash_status spinhash_recognize_f32(spinhash_recognizer* rec, const float* xyz, uint32_t count,
+                                       spinhash_result* result) SPINHASH_NOEXCEPT {
+  return recognize(rec, xyz, count, result);
+}
+
+spinhash_status spinhash_recognize_f64(spinhash_recognizer* rec, const double* xyz, uint32_t count,
+                                       spinhash_result* result) SPINHASH_NOEXCEPT {
+  return recognize(rec, xyz, count, result);
+}
+
+spinhash_status spinhash_result_entry(const spinhash_result* result, uint32_t rank, spinhash_ranked_model* out) SPINHASH_NOEXCEPT {
+  if (result == nullptr || out == nullptr || result->status != SPINHASH_OK || rank >= result->ranking_count ||
+      result->ranking_ == nullptr)
+    return SPINHASH_INVALID_ARGUMENT;
+  const RankedModel& m = static_cast<const RankedModel*>(result->ranking_)[rank];
+  *out = spinhash_ranked_model{};
+  out->model = m.model;
+  out->score = m.score;
+  out->has_pose = m.has_pose ? 1u : 0u;
+  out->hypotheses = m.hypotheses;
+  out->inliers = m.inliers;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) out->pose[4 * r + c] = static_cast<double>(m.pose.rotation[3 * r + c]);
+    out->pose[4 * r + 3] = m.pose.translation[r];
+  }
+  out->pose[15] = 1.0;
+  out->name = spinhash_database_model_name(result->database_, m.model);
+  return SPINHASH_OK;
+}
+
+}  // extern "C"

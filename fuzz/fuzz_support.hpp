@@ -1,0 +1,65 @@
+// Shared by the fuzzers: a recognizer over any opened database, and the
+// invariants every Result must satisfy whatever the input.
+#pragma once
+#include <cmath>
+#include <cstdint>
+
+#include "blob/aligned_bytes.hpp"
+#include "fuzz_require.hpp"
+#include "spinhash/recognizer.hpp"
+
+namespace spinhash::fuzz {
+
+// Small capacities keep each run in the millisecond range and make thinning
+// (points and features) reachable from short inputs.
+inline RecognizerConfig small_config(Mode mode) {
+  RecognizerConfig cfg;
+  cfg.mode = mode;
+  cfg.max_points = 2048;
+  cfg.max_features = 256;
+  cfg.max_trials = 100;
+  cfg.sran_trials = 20;
+  cfg.max_hypotheses = 500;
+  return cfg;
+}
+
+// One recognizer with its own workspace.
+struct Session {
+  host::AlignedBytes workspace;
+  Recognizer recognizer;
+  Status init(const Database* db, const RecognizerConfig& cfg) {
+    if (workspace.size() < required_workspace_bytes(cfg))
+      workspace = host::AlignedBytes(required_workspace_bytes(cfg));
+    return recognizer.init(db, cfg, workspace.data(), workspace.size());
+  }
+};
+
+inline bool known_recognize_status(Status s) {
+  return s == Status::kOk || s == Status::kEmptyCloud || s == Status::kTooManyPoints ||
+         s == Status::kNotEnoughFeatures;
+}
+
+// What recognize() promises for any input of `count` points.
+inline void check_result(const Result& r, const Database& db, uint32_t count, size_t workspace_bytes) {
+  require(known_recognize_status(r.status), "unexpected status");
+  require(r.stats.extract.points_in == count, "points_in != count");
+  require(r.stats.extract.points_thinned <= count, "thinned more than given");
+  require(r.stats.workspace_used <= workspace_bytes, "workspace overrun");
+  if (r.status != Status::kOk) {
+    require(!r.confident, "confident without a result");
+    return;
+  }
+  require(r.ranking_count <= db.model_count(), "ranking longer than the model table");
+  for (uint32_t i = 0; i < r.ranking_count; ++i) {
+    const RankedModel& m = r.ranking[i];
+    require(m.model < db.model_count(), "ranked model out of range");
+    require(!std::isnan(m.score), "NaN score");
+    require(i == 0 || !(m.score > r.ranking[i - 1].score), "ranking not sorted");
+    if (!m.has_pose) continue;
+    for (float v : m.pose.rotation) require(std::isfinite(v), "non-finite rotation");
+    for (double v : m.pose.translation) require(std::isfinite(v), "non-finite translation");
+  }
+  require(!r.confident || r.ranking_count > 0, "confident with an empty ranking");
+}
+
+}  // namespace spinhash::fuzz

@@ -1,0 +1,210 @@
+/* spinhash C99 API: the onboard core for C firmware.
+ *
+ * No heap, no exceptions: the caller owns every byte. A database view and a
+ * recognizer live in opaque storage objects declared by the caller (static,
+ * stack or a struct member); the workspace is a caller buffer aligned to
+ * SPINHASH_BUFFER_ALIGNMENT of spinhash_workspace_bytes(config) bytes; the
+ * blob stays where it is (flash, mmap, const array) for as long as it is used.
+ *
+ * Typical use:
+ *   static spinhash_database db;  static spinhash_recognizer rec;
+ *   spinhash_config cfg;  spinhash_default_config(&cfg);
+ *   spinhash_database_open(&db, blob, blob_size);
+ *   spinhash_recognizer_init(&rec, &db, &cfg, workspace, workspace_size);
+ *   spinhash_result res;  spinhash_recognize_f32(&rec, xyz, count, &res);
+ *   for (i = 0; i < res.ranking_count; ++i) spinhash_result_entry(&res, i, &entry);
+ *
+ * Every function is safe to call with null pointers (it returns
+ * SPINHASH_INVALID_ARGUMENT, 0 or a null name). Compiles as C99 and C++. */
+#ifndef SPINHASH_SPINHASH_H
+#define SPINHASH_SPINHASH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+#define SPINHASH_NOEXCEPT noexcept /* the C++ side never throws */
+extern "C" {
+#else
+#define SPINHASH_NOEXCEPT
+#endif
+
+/* Blob and workspace base addresses must be multiples of this. */
+#define SPINHASH_BUFFER_ALIGNMENT 64
+
+/* Opaque storage sizes, the same on every target (checked against the C++
+ * objects by static_assert in firmware-lib/c_api/). */
+#define SPINHASH_DATABASE_STORAGE_BYTES 128
+#define SPINHASH_RECOGNIZER_STORAGE_BYTES 320
+#define SPINHASH_STORAGE_ALIGNMENT 8
+
+/* Values mirror spinhash::Status (include/spinhash/status.hpp) exactly and
+ * are only ever appended to. */
+typedef enum spinhash_status {
+  SPINHASH_OK = 0,
+  SPINHASH_INVALID_ARGUMENT = 1,
+  SPINHASH_WORKSPACE_TOO_SMALL = 2,
+  SPINHASH_MISALIGNED_BUFFER = 3,
+  SPINHASH_BLOB_TRUNCATED = 10,
+  SPINHASH_BLOB_BAD_MAGIC = 11,
+  SPINHASH_BLOB_UNSUPPORTED_VERSION = 12,
+  SPINHASH_BLOB_WRONG_BYTE_ORDER = 13,
+  SPINHASH_BLOB_HEADER_CHECKSUM = 14,
+  SPINHASH_BLOB_SECTION_CHECKSUM = 15,
+  SPINHASH_BLOB_SECTION_OUT_OF_BOUNDS = 16,
+  SPINHASH_BLOB_SECTION_OVERLAP = 17,
+  SPINHASH_BLOB_SECTION_MISALIGNED = 18,
+  SPINHASH_BLOB_MISSING_SECTION = 19,
+  SPINHASH_BLOB_DUPLICATE_SECTION = 20,
+  SPINHASH_BLOB_COUNT_OVERFLOW = 21,
+  SPINHASH_BLOB_SIZE_MISMATCH = 22,
+  SPINHASH_BLOB_BAD_PARAMETER = 23,
+  SPINHASH_BLOB_BAD_MODEL_TABLE = 24,
+  SPINHASH_BLOB_BAD_FEATURE = 25,
+  SPINHASH_BLOB_BAD_INDEX = 26,
+  SPINHASH_DATABASE_TOO_LARGE = 27,
+  SPINHASH_BLOB_UNKNOWN_SECTION = 28,
+  SPINHASH_EMPTY_CLOUD = 40,
+  SPINHASH_TOO_MANY_POINTS = 41,
+  SPINHASH_NOT_ENOUGH_FEATURES = 42,
+  SPINHASH_NOT_OPEN = 43
+} spinhash_status;
+
+typedef enum spinhash_mode {
+  SPINHASH_MODE_BRAN = 0, /* batch RANSAC over the joint LSH index */
+  SPINHASH_MODE_SRAN = 1, /* sequential per-model RANSAC (baseline) */
+  SPINHASH_MODE_SIND = 2  /* spin-image indexing by votes, no geometry (baseline) */
+} spinhash_mode;
+
+/* Opaque, caller-owned: spinhash_database_open and spinhash_recognizer_init fill them. */
+typedef union spinhash_database {
+  unsigned char bytes[SPINHASH_DATABASE_STORAGE_BYTES];
+  double align_double;
+  uint64_t align_u64;
+} spinhash_database;
+
+typedef union spinhash_recognizer {
+  unsigned char bytes[SPINHASH_RECOGNIZER_STORAGE_BYTES];
+  double align_double;
+  uint64_t align_u64;
+} spinhash_recognizer;
+
+/* Recognition settings; see spinhash::RecognizerConfig (config.hpp) for the
+ * meaning of each field. Start from spinhash_default_config(). Flags are
+ * 0 or 1. */
+typedef struct spinhash_config {
+  int32_t mode; /* spinhash_mode */
+  uint64_t seed;
+  uint32_t max_points;
+  uint32_t thin_large_clouds;
+  uint32_t max_features;
+  uint32_t max_models;
+  uint32_t max_spin_dims;
+  float query_basis_spacing;
+  uint32_t top_w;
+  uint32_t top_w_sran;
+  uint32_t top_w_sind;
+  uint32_t max_bucket_scan;
+  float d_min;
+  float theta_min_deg;
+  float tol_distance;
+  float tol_angle_deg;
+  float tol_handedness;
+  float sigma;
+  float delta;
+  float delta_max;
+  float eta_max_deg;
+  float spin_lambda;
+  float min_inlier_fraction;
+  uint32_t max_trials;
+  uint32_t sran_trials;
+  uint32_t max_hypotheses;
+  uint32_t max_pair_checks;
+  uint32_t has_viewpoint;
+  double viewpoint[3];
+} spinhash_config;
+
+typedef struct spinhash_stats {
+  uint32_t points_in;
+  uint32_t points_thinned;
+  uint32_t points_nonfinite;
+  uint32_t features;          /* query features used */
+  uint32_t salient_features;
+  uint32_t trials;            /* doublet draws */
+  uint32_t hypotheses;        /* poses verified */
+  uint32_t budget_exhausted;  /* 1: the work budget cut recognition short */
+  uint32_t bucket_scan_truncated;
+  uint32_t features_thinned;
+  uint64_t candidates;
+  uint64_t bucket_entries;
+  uint64_t pair_checks;
+  uint64_t doublets_passed;
+  uint64_t workspace_used;    /* bytes */
+} spinhash_stats;
+
+/* One recognition. The ranking it refers to lives in the recognizer's
+ * workspace: valid until the next recognize call on that recognizer. */
+typedef struct spinhash_result {
+  int32_t status;        /* spinhash_status */
+  uint32_t ranking_count;
+  uint32_t confident;    /* 1: the best model explains enough of the query */
+  spinhash_stats stats;
+  const void* ranking_;  /* private */
+  const spinhash_database* database_; /* private: for model names */
+} spinhash_result;
+
+/* One ranked model. pose is row-major 4x4, model frame -> query frame (in
+ * the input's coordinates, georeferenced included): x_q = R x_m + t. */
+typedef struct spinhash_ranked_model {
+  uint32_t model;      /* index into the database's model table */
+  float score;         /* larger is better */
+  uint32_t has_pose;   /* 0 for SIND */
+  uint32_t hypotheses;
+  uint32_t inliers;
+  double pose[16];
+  const char* name;    /* NUL-terminated, inside the blob */
+} spinhash_ranked_model;
+
+/* Log levels passed to the hook. */
+#define SPINHASH_LOG_ERROR 1
+#define SPINHASH_LOG_WARNING 2
+#define SPINHASH_LOG_INFO 3
+
+/* One process-wide hook for the core's diagnostics (route it to a UART).
+ * Null (the default) silences them. Built with SPINHASH_NO_LOG_STRINGS, the
+ * core holds no message text and the hook receives "" with the level. */
+typedef void (*spinhash_log_hook)(int level, const char* message);
+void spinhash_set_log_hook(spinhash_log_hook hook) SPINHASH_NOEXCEPT;
+
+/* Short English name of a status; "unknown" for values not listed. */
+const char* spinhash_status_name(int32_t status) SPINHASH_NOEXCEPT;
+
+/* Fills *config with the defaults (the paper's settings). */
+void spinhash_default_config(spinhash_config* config) SPINHASH_NOEXCEPT;
+/* Workspace bytes needed for *config; 0 if the config is invalid. */
+size_t spinhash_workspace_bytes(const spinhash_config* config) SPINHASH_NOEXCEPT;
+
+/* Validates the blob once (every offset, count and checksum) and fills *db. */
+spinhash_status spinhash_database_open(spinhash_database* db, const void* bytes, size_t size) SPINHASH_NOEXCEPT;
+uint32_t spinhash_database_model_count(const spinhash_database* db) SPINHASH_NOEXCEPT;
+/* Name of model `index`, or a null pointer when out of range / not open. */
+const char* spinhash_database_model_name(const spinhash_database* db, uint32_t index) SPINHASH_NOEXCEPT;
+
+/* Carves every buffer from the workspace; the database must outlive rec. */
+spinhash_status spinhash_recognizer_init(spinhash_recognizer* rec, const spinhash_database* db,
+                                         const spinhash_config* config, void* workspace,
+                                         size_t workspace_bytes) SPINHASH_NOEXCEPT;
+/* xyz: count points as x y z triples. Returns result->status. */
+spinhash_status spinhash_recognize_f32(spinhash_recognizer* rec, const float* xyz, uint32_t count,
+                                       spinhash_result* result) SPINHASH_NOEXCEPT;
+spinhash_status spinhash_recognize_f64(spinhash_recognizer* rec, const double* xyz, uint32_t count,
+                                       spinhash_result* result) SPINHASH_NOEXCEPT;
+/* Entry `rank` (0 = best) of a successful result. */
+spinhash_status spinhash_result_entry(const spinhash_result* result, uint32_t rank,
+                                      spinhash_ranked_model* out) SPINHASH_NOEXCEPT;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SPINHASH_SPINHASH_H */
