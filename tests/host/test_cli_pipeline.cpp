@@ -1,0 +1,97 @@
+// The spinhash command end to end on built-in data: generate vehicles, build
+// a database, inspect and verify it, scan a vehicle from the air in a random
+// georeferenced pose, and recognise it with each mode (JSON Lines contract).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "cli_runner.hpp"
+#include "cloud/cloud_reader.hpp"
+
+using namespace spinhash::host::test;
+
+namespace {
+
+constexpr int kVehicles = 6;  // one of each of the first six families
+
+struct Pipeline {
+  TempDir dir{"cli-pipeline"};
+  std::string meshes = dir.file("fleet"), db = dir.file("fleet.shdb");
+  Pipeline() {
+    REQUIRE(run_spinhash(dir, "generate --count " + std::to_string(kVehicles) + " -o " + shell_quoted(meshes)).exit_code == 0);
+    CliRun b = run_spinhash(dir, "build --quiet -o " + shell_quoted(db) + " " + shell_quoted(meshes));
+    INFO(b.err);
+    REQUIRE(b.exit_code == 0);
+  }
+};
+
+const Pipeline& pipeline() {
+  static const Pipeline p;
+  return p;
+}
+
+// Value of a numeric field of a flat JSON object, NaN when absent.
+double json_field(const std::string& line, const std::string& key) {
+  size_t at = line.find("\"" + key + "\":");
+  return at == std::string::npos ? NAN : std::atof(line.c_str() + at + key.size() + 3);
+}
+
+}  // namespace
+
+TEST_CASE("build writes a database that info describes and verify checks") {
+  const Pipeline& p = pipeline();
+  CliRun info = run_spinhash(p.dir, "info " + shell_quoted(p.db));
+  REQUIRE(info.exit_code == 0);
+  CHECK(contains(info.out, "models        6"));
+  CHECK(contains(info.out, "sedan-00"));
+  CHECK(contains(info.out, "10x10 bins, R = 1 m"));
+  CliRun verify = run_spinhash(p.dir, "verify --quiet --queries 1 " + shell_quoted(p.db) + " " + shell_quoted(p.meshes));
+  INFO(verify.err);
+  CHECK(verify.exit_code == 0);
+  CHECK(contains(verify.out, "integrity     ok"));
+  CHECK(contains(verify.out, "self-recognition 6/6"));
+}
+
+TEST_CASE("a georeferenced airborne scan in a random pose is recognised with its pose, in every mode") {
+  const Pipeline& p = pipeline();
+  const std::string query = p.dir.file("truck-00.ply"), pose = p.dir.file("truck-00.pose");
+  CliRun scan = run_spinhash(p.dir, "scan " + shell_quoted(p.meshes + "/truck-00.obj") + " -o " + shell_quoted(query) +
+                                        " --noise 0.05 --seed 11 --random-pose --offset 500000 4000000 120"
+                                        " --pose-out " + shell_quoted(pose));
+  REQUIRE(scan.exit_code == 0);
+  Eigen::Matrix4d truth;
+  std::string error;
+  REQUIRE(spinhash::host::read_pose(pose, &truth, &error));
+  for (const char* mode : {"bran", "sran", "sind"}) {
+    CliRun r = run_spinhash(p.dir, std::string("recognize --top 3 --mode ") + mode + " --db " + shell_quoted(p.db) + " " +
+                                       shell_quoted(query));
+    CAPTURE(mode);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    REQUIRE(r.lines().size() == 1);
+    const std::string line = r.lines()[0];
+    CHECK(contains(line, "{\"query\":\"truck-00\",\"status\":\"ok\",\"ranking\":[{\"model\":\"truck-00\""));
+    CHECK(json_field(line, "hypotheses") >= (std::string(mode) == "sind" ? 0 : 1));
+    if (std::string(mode) == "sind") {
+      CHECK(contains(line, "\"pose\":null"));
+      continue;
+    }
+    // pose: 16 numbers, row-major, model -> query; translation within 0.3 m of the truth at UTM magnitudes.
+    size_t at = line.find("\"pose\":[");
+    REQUIRE(at != std::string::npos);
+    double m[16];
+    const char* s = line.c_str() + at + 8;
+    for (double& v : m) {
+      v = std::strtod(s, const_cast<char**>(&s));
+      ++s;  // ',' or ']'
+    }
+    CHECK(std::fabs(m[3] - truth(0, 3)) < 0.3);
+    CHECK(std::fabs(m[7] - truth(1, 3)) < 0.3);
+    CHECK(std::fabs(m[11] - truth(2, 3)) < 0.3);
+    CHECK(m[15] == 1.0);
+    double yaw = std::atan2(m[4], m[0]), true_yaw = std::atan2(truth(1, 0), truth(0, 0));
+    CHECK(std::fabs(std::remainder(yaw - true_yaw, 2 * M_PI)) < 0.1);
+  }
+}
