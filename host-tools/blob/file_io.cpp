@@ -72,11 +72,11 @@ void sync_directory(const std::string& dir) {
 }
 
 // Writes, flushes and closes the temporary; false leaves errno set.
-bool fill_temporary(int fd, const std::vector<uint8_t>& bytes, mode_t mode) {
+bool fill_temporary(int fd, const void* data, size_t size, mode_t mode) {
   Fd f;
   f.fd = fd;
   if (::fchmod(f.fd, mode) != 0) return false;
-  if (!write_all(f.fd, bytes.data(), bytes.size())) return false;
+  if (!write_all(f.fd, static_cast<const uint8_t*>(data), size)) return false;
   if (::fsync(f.fd) != 0) return false;
   return ::close(f.release()) == 0;
 }
@@ -117,6 +117,10 @@ bool read_file(const std::string& path, AlignedBytes* out, std::string* error) {
 
 bool write_file_atomically(const std::string& path, const std::vector<uint8_t>& bytes,
                            std::string* error) {
+  return write_file_atomically(path, bytes.data(), bytes.size(), error);
+}
+
+bool write_file_atomically(const std::string& path, const void* data, size_t size, std::string* error) {
   error->clear();
   const std::string dir = directory_of(path);
   const std::string base = base_name_of(path);
@@ -136,7 +140,7 @@ bool write_file_atomically(const std::string& path, const std::vector<uint8_t>& 
     return false;
   }
   errno = 0;
-  if (!fill_temporary(fd, bytes, mode)) {
+  if (!fill_temporary(fd, data, size, mode)) {
     const int err = errno != 0 ? errno : EIO;
     ::unlink(temp.c_str());
     *error = describe("cannot write", temp, err);

@@ -18,6 +18,7 @@ bool read_file(const std::string& path, AlignedBytes* out, std::string* error);
 // failure the temporary is removed and an existing `path` is left untouched.
 bool write_file_atomically(const std::string& path, const std::vector<uint8_t>& bytes,
                            std::string* error);
+bool write_file_atomically(const std::string& path, const void* data, size_t size, std::string* error);
 
 }  // namespace host
 }  // namespace spinhash

@@ -1,6 +1,6 @@
 #include "cloud/cloud_writer.hpp"
 
-#include "mesh/atomic_file.hpp"
+#include "blob/file_io.hpp"
 
 #include <cstdint>
 #include <cstdio>
@@ -49,7 +49,8 @@ bool write_ply(const std::string& path, const std::vector<double>& xyz, bool bin
     return false;
   }
   try {
-    return write_file_atomically(path, ply_bytes(xyz, binary), error);
+    const std::string bytes = ply_bytes(xyz, binary);
+    return write_file_atomically(path, bytes.data(), bytes.size(), error);
   } catch (const std::exception& e) {
     if (error) *error = "cannot write " + path + ": " + e.what();
     return false;
@@ -64,7 +65,7 @@ bool write_pose(const std::string& path, const Eigen::Matrix4d& pose, std::strin
                   pose(r, 2), pose(r, 3));
     text += line;
   }
-  return write_file_atomically(path, text, error);
+  return write_file_atomically(path, text.data(), text.size(), error);
 }
 
 }  // namespace spinhash::host

@@ -1,6 +1,6 @@
 #include "mesh/mesh_writer.hpp"
 
-#include "mesh/atomic_file.hpp"
+#include "blob/file_io.hpp"
 
 #include <cctype>
 #include <cstdint>
@@ -76,7 +76,8 @@ bool write_encoded(const std::string& path, const Mesh& mesh, Encode encode,
     return false;
   }
   try {
-    return write_file_atomically(path, encode(mesh), error);
+    const std::string bytes = encode(mesh);
+    return write_file_atomically(path, bytes.data(), bytes.size(), error);
   } catch (const std::exception& e) {
     if (error) *error = "cannot write " + path + ": " + e.what();
     return false;
