@@ -591,3 +591,147 @@ TEST_CASE("tiny blob content is deterministic and its LSH buckets agree with buc
     }
   }
 }
+
+// ---- Issue 5 (hardening): the remaining corruptions of the issue's list, and
+// exhaustive sweeps (every truncation, every single-byte flip) that also run
+// on the cross targets, where no fuzzer runs.
+
+TEST_CASE("versions 0 and 0xFFFFFFFF are kBlobUnsupportedVersion") {
+  for (uint32_t version : {0u, 0xFFFFFFFFu}) {
+    CAPTURE(version);
+    BlobPatch b = fresh();
+    b.header().version = version;
+    b.reseal_header();
+    CHECK(b.open() == Status::kBlobUnsupportedVersion);
+  }
+}
+
+TEST_CASE("every float parameter NaN, +inf or -inf is kBlobBadParameter") {
+  float blob::Params::*const fields[] = {
+      &blob::Params::cloud_voxel,       &blob::Params::normal_radius,    &blob::Params::basis_spacing,
+      &blob::Params::support_radius,    &blob::Params::support_angle_deg, &blob::Params::spin_quant_scale,
+      &blob::Params::lsh_dc,            &blob::Params::grid_cell};
+  const float values[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                          -std::numeric_limits<float>::infinity()};
+  for (size_t f = 0; f < sizeof fields / sizeof fields[0]; ++f) {
+    for (float v : values) {
+      CAPTURE(f);
+      CAPTURE(v);
+      BlobPatch b = fresh();
+      b.params().*fields[f] = v;
+      b.reseal();
+      CHECK(b.open() == Status::kBlobBadParameter);
+    }
+  }
+}
+
+TEST_CASE("non-finite model bounds and grid origins are kBlobBadModelTable") {
+  const float bad[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                       -std::numeric_limits<float>::infinity()};
+  for (float v : bad) {
+    for (int axis = 0; axis < 3; ++axis) {
+      CAPTURE(v);
+      CAPTURE(axis);
+      float* fields[] = {nullptr, nullptr, nullptr};
+      for (int which = 0; which < 3; ++which) {
+        BlobPatch b = fresh();
+        blob::ModelRecord& m = b.model(kModels - 1u);
+        fields[0] = &m.grid_origin[axis];
+        fields[1] = &m.bbox_min[axis];
+        fields[2] = &m.bbox_max[axis];
+        *fields[which] = v;
+        b.reseal();
+        CHECK(b.open() == Status::kBlobBadModelTable);
+      }
+    }
+  }
+}
+
+TEST_CASE("an empty model table section is kBlobSizeMismatch") {
+  BlobPatch b = fresh();
+  b.entry_of(blob::kModels).size = 0;
+  b.reseal();
+  CHECK(b.open() == Status::kBlobSizeMismatch);
+}
+
+TEST_CASE("every truncation of a valid blob is refused") {
+  BlobPatch b = fresh();
+  CHECK(b.open_prefix(0) == Status::kInvalidArgument);
+  uint32_t accepted = 0;
+  for (size_t length = 1; length < b.size(); ++length) accepted += b.open_prefix(length) == Status::kOk ? 1u : 0u;
+  CHECK(accepted == 0);
+}
+
+namespace {
+
+// True if byte `at` lies in the header, the section table or a payload, the
+// regions the CRCs cover (padding between payloads is not covered, by design).
+bool covered_by_crc(BlobPatch& b, size_t at) {
+  if (at < sizeof(blob::Header) + blob::kSectionIdCount * sizeof(blob::SectionEntry)) return true;
+  for (uint32_t i = 0; i < blob::kSectionIdCount; ++i) {
+    const blob::SectionEntry& e = b.entry(i);
+    if (at >= e.offset && at < e.offset + e.size) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("every single-byte corruption of covered bytes is detected") {
+  BlobPatch b = fresh();
+  uint32_t missed = 0, covered = 0;
+  for (size_t at = 0; at < b.size(); ++at) {
+    if (!covered_by_crc(b, at)) continue;
+    ++covered;
+    b.data()[at] ^= 0xFFu;
+    if (b.open() == Status::kOk) {
+      ++missed;
+      CAPTURE(at);
+      CHECK(false);
+    }
+    b.data()[at] ^= 0xFFu;
+  }
+  CHECK(missed == 0);
+  CHECK(covered > b.size() / 2);
+  CHECK(b.open() == Status::kOk);
+}
+
+TEST_CASE("single-byte corruptions re-sealed past the checksums never escape the blob") {
+  // With valid CRCs the structural checks alone must catch what matters; a
+  // corruption they allow (a name byte, a spin value) must still give a view
+  // whose arrays all lie inside the blob.
+  // Every byte of the header, table, params and models; a prime stride through
+  // the feature and index arrays (keeps the sweep quick under QEMU).
+  constexpr size_t kArrayStride = 7;
+  const std::vector<uint8_t>& original = tiny_blob();
+  const size_t arrays_start = fresh().entry_of(blob::kFeatPositions).offset;
+  uint32_t accepted = 0;
+  for (size_t at = 0; at < original.size(); at += at < arrays_start ? 1 : kArrayStride) {
+    BlobPatch b(original);
+    b.data()[at] ^= 0xFFu;
+    b.reseal();
+    Database db;
+    if (b.open(&db) != Status::kOk) continue;
+    ++accepted;
+    const uint8_t* lo = b.data();
+    const uint8_t* hi = b.data() + b.size();
+    auto inside = [&](const void* p, size_t bytes) {
+      const uint8_t* q = static_cast<const uint8_t*>(p);
+      return q >= lo && q + bytes <= hi;
+    };
+    const size_t n = db.feature_count();
+    const blob::Params& p = db.params();
+    CAPTURE(at);
+    CHECK(inside(db.positions(), 3 * n * sizeof(float)));
+    CHECK(inside(db.normals(), 3 * n * sizeof(int16_t)));
+    CHECK(inside(db.feature_models(), n * sizeof(uint16_t)));
+    CHECK(inside(db.spin(0), n * db.spin_dims()));
+    CHECK(inside(db.grid_offsets(), p.grid_offset_count * sizeof(uint32_t)));
+    CHECK(inside(db.lsh_bits(0), static_cast<size_t>(p.lsh_tables) * p.lsh_bits * sizeof(blob::LshBit)));
+    CHECK(inside(db.lsh_offsets(0), static_cast<size_t>(p.lsh_tables) * (p.lsh_buckets + 1u) * sizeof(uint32_t)));
+    CHECK(inside(db.lsh_entries(), static_cast<size_t>(p.lsh_tables) * n * sizeof(uint32_t)));
+    for (uint32_t m = 0; m < db.model_count(); ++m)
+      CHECK(db.model(m).first_feature + db.model(m).feature_count <= n);
+  }
+  CHECK(accepted > 0);  // reserved bytes, padding, spin values: allowed by design
+}
