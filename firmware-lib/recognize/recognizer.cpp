@@ -14,7 +14,8 @@ namespace {
 
 bool config_valid(const RecognizerConfig& c) {
   auto in = [](float v, float lo, float hi) { return v >= lo && v <= hi; };  // false for NaN
-  return c.max_points >= 1u && c.max_points <= kMaxQueryPointsLimit && c.max_features >= 2u &&
+  return static_cast<uint32_t>(c.mode) <= static_cast<uint32_t>(Mode::kSind) && c.max_points >= 1u &&
+         c.max_points <= kMaxQueryPointsLimit && c.max_features >= 2u &&
          c.max_features <= kMaxQueryFeaturesLimit && c.max_models >= 1u && c.max_models <= kMaxModels &&
          c.max_spin_dims >= 1u && c.max_spin_dims <= kMaxSpinDims && c.top_w >= 1u &&
          c.top_w <= kMaxCandidates && c.top_w_sran >= 1u && c.top_w_sran <= kMaxCandidates &&
@@ -24,7 +25,8 @@ bool config_valid(const RecognizerConfig& c) {
          in(c.tol_handedness, 0.0f, 2.0f) && in(c.sigma, 1e-4f, 100.0f) && in(c.delta, 1e-4f, 100.0f) &&
          in(c.delta_max, c.delta, 100.0f) && in(c.eta_max_deg, 0.0f, 180.0f) &&
          in(c.spin_lambda, 1e-3f, 1e3f) && in(c.query_basis_spacing, 0.0f, 100.0f) &&
-         in(c.min_inlier_fraction, 0.0f, 1.0f) && c.verify_features >= 1u &&
+         in(c.min_inlier_fraction, 0.0f, 1.0f) &&
+         in(c.min_mean_log_likelihood, -1e6f, 0.0f) && c.verify_features >= 1u &&
          (!c.has_viewpoint || (std::isfinite(c.viewpoint[0]) && std::isfinite(c.viewpoint[1]) &&
                                std::isfinite(c.viewpoint[2])));
 }
@@ -81,6 +83,13 @@ void reset(ModelBest& best) {
   best.inliers = 0;
   best.has_score = false;
   best.final_score = false;
+}
+
+bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features) {
+  if (r.ranking_count == 0 || !r.ranking[0].has_pose) return false;
+  const float n = static_cast<float>(features);
+  return static_cast<float>(r.ranking[0].inliers) >= cfg.min_inlier_fraction * n &&
+         r.ranking[0].score >= cfg.min_mean_log_likelihood * n;
 }
 
 Pose identity_pose() {
@@ -197,9 +206,7 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
   if (config_.mode != Mode::kSind) finalise_scores(ctx, config_.refine_poses);
   result.ranking = b.ranking;
   result.ranking_count = rank_models(*db_, b, fs.origin);
-  result.confident = result.ranking_count > 0 && result.ranking[0].has_pose &&
-                     static_cast<float>(result.ranking[0].inliers) >=
-                         config_.min_inlier_fraction * static_cast<float>(fs.count);
+  result.confident = is_confident(result, config_, fs.count);
   return result;
 }
 

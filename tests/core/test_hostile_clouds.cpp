@@ -270,15 +270,11 @@ TEST_CASE("objects larger than every model (a 3 m sphere, a 3 m random blob) are
   check_not_confident(s.run(random_blob(kUnknownPoints, kSide)));
 }
 
-// KNOWN WEAKNESS, reported under issue 5: `confident` only asks whether the
-// best model explains >= min_inlier_fraction of the query features; an object
-// smaller than a vehicle (a 1-1.5 m sphere, a 1 m blob) fits inside a model's
-// surface for 30-60 % of its features and is called confident, although its
-// mean log-likelihood per feature is far below a real view's. should_fail
-// keeps CI green while the weakness stands; remove it once `confident` also
-// checks the score or the model's coverage.
-TEST_CASE("objects smaller than the models are not confident where the scores say so" *
-          doctest::should_fail()) {
+// An object smaller than a vehicle (a 1-1.5 m sphere, a 1 m blob) fits inside
+// a model's surface for 30-60 % of its features, so the inlier share alone
+// would call it confident; its log-likelihood per feature is far below a
+// real view's, and `confident` also requires min_mean_log_likelihood.
+TEST_CASE("objects smaller than the models are not confident where the scores say so") {
   Session s;
   const Result known = s.run(known_query());
   REQUIRE(known.status == Status::kOk);
@@ -296,7 +292,7 @@ TEST_CASE("objects smaller than the models are not confident where the scores sa
     REQUIRE(r.status == Status::kOk);
     REQUIRE(r.ranking_count > 0);
     CHECK(mean_score(r) < known_mean - kScoreGap);  // the scores say so...
-    CHECK_FALSE(r.confident);                              // ...the flag does not (yet)
+    CHECK_FALSE(r.confident);                              // ...and so does the flag
   }
 }
 
@@ -402,12 +398,9 @@ TEST_CASE("capacities below the database are refused at init") {
   CHECK(r.init(&toy().db, small_spins, ws2.data(), ws2.size()) == Status::kInvalidArgument);
 }
 
-// REPORTED under issue 5: config_valid() does not check `mode`, so a value
-// outside the enum (from the C API or a corrupt settings file) is accepted
-// and recognize() returns kOk with an empty ranking. Proposed one-line fix in
-// firmware-lib/recognize/recognizer.cpp config_valid():
-//   static_cast<uint32_t>(c.mode) <= static_cast<uint32_t>(Mode::kSind) && ...
-TEST_CASE("a mode outside the enum is an invalid argument" * doctest::should_fail()) {
+// A mode outside the enum (from the C API or a corrupt settings file) must
+// not run as "no mode" and return an empty ranking with kOk.
+TEST_CASE("a mode outside the enum is an invalid argument") {
   constexpr uint8_t kBadMode = 7;
   RecognizerConfig cfg;
   cfg.mode = static_cast<Mode>(kBadMode);
