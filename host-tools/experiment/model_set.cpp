@@ -1,0 +1,29 @@
+#include "experiment/model_set.hpp"
+
+#include "cli/build_database_file.hpp"
+#include "mesh/vehicle_generator.hpp"
+
+namespace spinhash::experiment {
+
+std::vector<cli::ModelMesh> generated_models(uint32_t count, uint64_t fleet_seed) {
+  std::vector<cli::ModelMesh> out;
+  for (host::Mesh& m : host::generate_fleet(count, fleet_seed)) {
+    std::string name = m.name;
+    out.push_back(cli::ModelMesh{std::move(name), std::move(m)});
+  }
+  return out;
+}
+
+bool loaded_models(const std::vector<std::string>& inputs, uint32_t max_count, std::vector<cli::ModelMesh>* out,
+                   std::string* error) {
+  if (!cli::load_model_meshes(inputs, out, error, /*quiet=*/false)) return false;
+  if (max_count > 0 && out->size() > max_count) out->resize(max_count);
+  return true;
+}
+
+bool model_clouds(const std::vector<cli::ModelMesh>& meshes, std::vector<host::ModelCloud>* out,
+                  std::string* error) {
+  return cli::scan_models(meshes, cli::BuildSettings{}.scan_spacing, out, error, /*quiet=*/false);
+}
+
+}  // namespace spinhash::experiment

@@ -1,0 +1,43 @@
+// Simulated queries (section 10.1): three views 45 degrees apart from a
+// random side, a random pose, noise along the rays, optionally an occluder
+// and the ground around the vehicle that every airborne scan contains.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mesh/mesh.hpp"
+
+namespace spinhash::experiment {
+
+struct QueryCondition {
+  double noise = 0.05;     // m along each ray
+  double occlusion = 0.0;  // fraction of the object hidden
+  bool ground = false;     // scan a ground square around the vehicle too
+  std::string label() const;  // e.g. "noise0.05_occ0.2_ground"
+};
+
+struct Query {
+  uint32_t model = 0;        // index of the scanned model in the database
+  uint32_t index = 0;        // query number for this model
+  uint64_t seed = 0;
+  std::vector<double> xyz;   // the cloud
+  uint32_t object_points = 0;
+  Eigen::Matrix4d true_pose = Eigen::Matrix4d::Identity();  // model -> query frame
+};
+
+// The same (model, q) gets the same seed, hence the same sides and pose,
+// under every condition: conditions differ only in what they change.
+uint64_t query_seed(uint64_t base_seed, uint32_t model, uint32_t q);
+
+// ground_margin: metres of ground beyond the vehicle's footprint on each side.
+bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const QueryCondition& c,
+                    uint64_t base_seed, double ground_margin, Query* out, std::string* error);
+
+// Cartesian product of the lists (ground: off, then on when with_ground).
+std::vector<QueryCondition> make_conditions(const std::vector<double>& noise, const std::vector<double>& occlusion,
+                                            bool with_ground);
+
+}  // namespace spinhash::experiment

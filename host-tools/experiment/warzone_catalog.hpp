@@ -1,0 +1,26 @@
+// Which Warzone 2100 PIE files make a vehicle or a structure. The body ->
+// propulsion pairs are those of stats/body.json ("propulsionExtraModels")
+// in warzone2100-data 4.3.3: the propulsion model is drawn at the body's
+// origin, so a vehicle is the two meshes merged. VTOL and cyborg parts are
+// left out (aircraft and people, not ground vehicles).
+#pragma once
+#include <string>
+#include <vector>
+
+namespace spinhash::experiment {
+
+struct WarzoneVehicle {
+  std::string name;                // e.g. "wz-drlbod01-tracks"
+  std::vector<std::string> parts;  // paths under the base.wz root
+};
+
+// Droid bodies x ground propulsion (wheels, half-tracks, tracks, hover),
+// plus the one-piece "Babas" vehicles (jeep, buggy, trike, bus, fire truck).
+std::vector<WarzoneVehicle> warzone_vehicles();
+
+// Directory of the structures under the base.wz root, and whether a file
+// there is a texture-only variant of another (same geometry: *_col, *_nex).
+constexpr const char* kWarzoneStructureDir = "structs";
+bool is_texture_variant(const std::string& stem);
+
+}  // namespace spinhash::experiment

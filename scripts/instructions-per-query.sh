@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# Instructions per query (valgrind --tool=callgrind: deterministic, unlike
+# wall time on a shared machine) against database size, beside native wall
+# time, for BRAN, SRAN and SIND on the same simulated queries.
+#
+#   scripts/instructions-per-query.sh [--sizes 56,1000] [--queries 3] [--modes bran,sran,sind]
+#       [--sran-queries-large 1] [--out DIR] [--spinhash BIN]
+#
+# Counts cover Recognizer::run (feature extraction through ranking), not
+# process start-up or database loading. SRAN is linear in the models and
+# ~50x slower under callgrind: at sizes above 100 it runs only the first
+# --sran-queries-large queries. Writes DIR/instructions.csv and prints a
+# Markdown table of the means.
+set -euo pipefail
+
+usage() { sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+
+sizes="56,1000" queries=3 modes="bran,sran,sind" sran_large=1 out="instructions-out"
+sran_large_from=100
+noise=0.05
+root=$(cd "$(dirname "$0")/.." && pwd)
+spinhash="${SPINHASH:-}"
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --sizes) sizes="$2"; shift 2 ;;
+    --queries) queries="$2"; shift 2 ;;
+    --modes) modes="$2"; shift 2 ;;
+    --sran-queries-large) sran_large="$2"; shift 2 ;;
+    --out) out="$2"; shift 2 ;;
+    --spinhash) spinhash="$2"; shift 2 ;;
+    *) usage ;;
+  esac
+done
+if [[ -z "$spinhash" ]]; then
+  for b in "$root"/build*/host-tools/spinhash; do [[ -x "$b" ]] && spinhash="$b" && break; done
+fi
+[[ -x "$spinhash" ]] || { echo "instructions-per-query: no spinhash binary (--spinhash BIN)" >&2; exit 1; }
+command -v valgrind >/dev/null || { echo "instructions-per-query: valgrind not installed" >&2; exit 1; }
+mkdir -p "$out"
+csv="$out/instructions.csv"
+echo "models,features,mode,query,instructions,native_ms,hypotheses,top_model,true_model" > "$csv"
+
+IFS=, read -r -a size_list <<< "$sizes"
+IFS=, read -r -a mode_list <<< "$modes"
+# The same queries for every size, from the first fleet members (in every database).
+"$spinhash" generate -o "$out/first" --count "$queries" 2>/dev/null
+mapfile -t first < <(ls "$out/first"/*.obj | sort)
+for ((q = 0; q < queries; q++)); do
+  "$spinhash" scan "${first[$q]}" -o "$out/q$q.ply" --noise "$noise" --random-pose --seed $((q + 1)) 2>/dev/null
+  basename "${first[$q]}" .obj > "$out/q$q.model"
+done
+
+for size in "${size_list[@]}"; do
+  members=$(mktemp -d)
+  "$spinhash" generate -o "$members" --count "$size" 2>/dev/null
+  db="$out/db$size.shdb"
+  [[ -f "$db" ]] || "$spinhash" build -o "$db" "$members" --quiet
+  rm -rf "$members"
+  features=$("$spinhash" info "$db" | awk '/features/ {for (i = 1; i <= NF; i++) if ($i ~ /^[0-9]+$/) {print $i; exit}}')
+  for mode in "${mode_list[@]}"; do
+    n=$queries
+    [[ "$mode" == sran && $size -gt $sran_large_from && $sran_large -lt $n ]] && n=$sran_large
+    for ((q = 0; q < n; q++)); do
+      json=$("$spinhash" recognize --db "$db" --mode "$mode" --top 1 "$out/q$q.ply")
+      ms=$(grep -o '"time_ms":[0-9.e+]*' <<< "$json" | cut -d: -f2)
+      hyp=$(grep -o '"hypotheses":[0-9]*' <<< "$json" | head -1 | cut -d: -f2)
+      top=$(grep -o '"ranking":\[{"model":"[^"]*"' <<< "$json" | sed 's/.*"model":"//; s/"$//')
+      cg="$out/callgrind.$size.$mode.$q"
+      echo "instructions-per-query: $size models, $mode, query $q (callgrind)" >&2
+      valgrind --tool=callgrind --toggle-collect='spinhash::Recognizer::run*' --callgrind-out-file="$cg" \
+        "$spinhash" recognize --db "$db" --mode "$mode" --top 1 "$out/q$q.ply" >/dev/null 2>"$cg.log"
+      ir=$(awk '/^(summary|totals):/ {print $2; exit}' "$cg")
+      echo "$size,$features,$mode,$q,$ir,$ms,$hyp,$top,$(cat "$out/q$q.model")" >> "$csv"
+    done
+  done
+done
+
+echo "| models | mode | queries | mean instructions per query | mean native ms |"
+echo "|---|---|---|---|---|"
+awk -F, 'NR > 1 {k = $1 "," $3; n[k]++; ir[k] += $5; ms[k] += $6; if (!(k in seen)) {seen[k] = 1; order[++m] = k}}
+  END {for (i = 1; i <= m; i++) {k = order[i]; split(k, a, ","); printf "| %s | %s | %d | %.4g | %.4g |\n", a[1], a[2], n[k], ir[k] / n[k], ms[k] / n[k]}}' "$csv"
