@@ -9,7 +9,8 @@ packages=(build-essential cmake doctest-dev libeigen3-dev libassimp-dev libembre
           clang libclang-rt-14-dev)  # libFuzzer and the sanitizer runtimes (scripts/stages/40-fuzz.sh)
 if [[ "${1:-}" == "--cross" ]]; then
   packages+=(g++-aarch64-linux-gnu g++-arm-linux-gnueabihf g++-powerpc-linux-gnu
-             gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-user)
+             gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-user
+             valgrind python3)  # callgrind for the work budget, python3 for the stack report
 fi
 
 missing=()

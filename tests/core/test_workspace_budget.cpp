@@ -1,0 +1,49 @@
+// Workspace threshold test (ONBOARD rule 3, as TFLM's arena threshold tests):
+// required_workspace_bytes() for the default config and for a 20 000-point
+// query may not change unnoticed. If a change moves them on purpose, copy the
+// new values from the failure message into the constants below and into
+// docs/budgets.md ("Workspace"), and say why in the commit message.
+#include <doctest/doctest.h>
+
+#include <cstddef>
+#include <cstdint>
+
+#include "spinhash/recognizer.hpp"
+
+using namespace spinhash;
+
+namespace {
+
+struct WorkspaceThreshold {
+  size_t default_config;  // RecognizerConfig{}
+  size_t points_20000;    // RecognizerConfig{} with max_points = 20000
+};
+// Pointer-sized members make 64-bit layouts larger than 32-bit ones.
+constexpr WorkspaceThreshold kThreshold64 = {6308256, 5478336};
+constexpr WorkspaceThreshold kThreshold32 = {6308144, 5478224};
+// Padding and alignment may move a few bytes between ABIs of one pointer size
+// (armhf and powerpc agree today); anything larger is a real change.
+constexpr size_t kToleranceBytes = 1024;
+
+constexpr WorkspaceThreshold kThreshold = sizeof(void*) == 8 ? kThreshold64 : kThreshold32;
+
+void check_close(size_t measured, size_t recorded) {
+  CHECK_MESSAGE(measured <= recorded + kToleranceBytes, "workspace grew to ", measured, " bytes (recorded ",
+                recorded, ")");
+  CHECK_MESSAGE(measured + kToleranceBytes >= recorded, "workspace shrank to ", measured, " bytes (recorded ",
+                recorded, "): update the threshold");
+}
+
+}  // namespace
+
+TEST_CASE("workspace: the default config needs the recorded number of bytes") {
+  CAPTURE(sizeof(void*));
+  check_close(required_workspace_bytes(RecognizerConfig{}), kThreshold.default_config);
+}
+
+TEST_CASE("workspace: a 20 000-point query needs the recorded number of bytes") {
+  RecognizerConfig cfg;
+  cfg.max_points = 20000;
+  CAPTURE(sizeof(void*));
+  check_close(required_workspace_bytes(cfg), kThreshold.points_20000);
+}

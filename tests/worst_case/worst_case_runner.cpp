@@ -1,0 +1,172 @@
+// Worst-case inputs for the work budget (ONBOARD rule 5), measured by
+// instruction count under callgrind (scripts/stages/40-work-budget.sh):
+//   worst_case_runner prepare DIR        builds the databases and clouds (natively)
+//   worst_case_runner run DIR CASE       one recognition, the part callgrind counts
+//   worst_case_runner golden GOLDEN_DIR [INDEX]  the golden queries (all, or one)
+// Cases:
+//   max_points    toy database, a query of exactly config.max_points points
+//   symmetric     toy models plus a sphere, a sphere query: every doublet on a
+//                 sphere matches every model pair at the same distance
+//   huge_buckets  32 identical spheres: every feature in the same LSH buckets
+// `run` fails when the stats and the budget flag disagree, and when a case
+// that must hit the budget does not say so.
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "blob/aligned_bytes.hpp"
+#include "blob/blob_writer.hpp"
+#include "blob/file_io.hpp"
+#include "db/database_builder.hpp"
+#include "golden/golden_expected.hpp"
+#include "spinhash/recognizer.hpp"
+#include "support/geometry_fixtures.hpp"
+#include "support/toy_database.hpp"
+
+using namespace spinhash;
+
+namespace {
+
+constexpr float kSphereRadius = 1.5f;        // m: vehicle-sized, many basis points
+constexpr uint32_t kSpherePoints = 6000;     // ~0.07 m apart, near the 0.08 m voxel
+constexpr uint32_t kHugeBucketModels = 32;   // identical spheres
+constexpr float kDenseSpacing = 0.02f;       // m: a toy view denser than max_points allows
+const char* const kCases[] = {"max_points", "symmetric", "huge_buckets"};
+
+int fail(const std::string& what) {
+  std::fprintf(stderr, "worst_case_runner: %s\n", what.c_str());
+  return 1;
+}
+
+std::vector<double> sphere(float radius, uint32_t n) {
+  std::vector<float> f = test::fibonacci_sphere(n, radius, 0.0f, 0.0f, 1.0f);
+  return std::vector<double>(f.begin(), f.end());
+}
+
+// The query files are raw native-order float32 xyz: written and read on the same host.
+bool write_floats(const std::string& path, const std::vector<double>& xyz) {
+  std::vector<uint8_t> bytes(xyz.size() * sizeof(float));
+  for (size_t i = 0; i < xyz.size(); ++i) {
+    const float f = static_cast<float>(xyz[i]);
+    std::memcpy(bytes.data() + i * sizeof f, &f, sizeof f);
+  }
+  std::string error;
+  return host::write_file_atomically(path, bytes, &error);
+}
+
+bool write_database(const std::string& path, const std::vector<host::ModelCloud>& models) {
+  host::BlobContent content;
+  host::BuildReport report;
+  std::string error;
+  std::vector<uint8_t> bytes;
+  if (!host::build_database(models, host::BuildOptions{}, &content, &report, &error) ||
+      !host::serialize_blob(content, host::ByteOrder::kNative, &bytes, &error) ||
+      !host::write_file_atomically(path, bytes, &error)) {
+    std::fprintf(stderr, "worst_case_runner: %s: %s\n", path.c_str(), error.c_str());
+    return false;
+  }
+  std::printf("%s: %u features, largest LSH bucket %u\n", path.c_str(), report.features, report.max_bucket);
+  return true;
+}
+
+std::vector<host::ModelCloud> toy_models() {
+  std::vector<host::ModelCloud> m;
+  for (uint32_t i = 0; i < test::kToyModels; ++i)
+    m.push_back(host::ModelCloud{"toy-" + std::to_string(i), test::toy_vehicle_points(i, 0.05f)});
+  return m;
+}
+
+int prepare(const std::string& dir) {
+  const uint32_t max_points = RecognizerConfig{}.max_points;
+  const double t[3] = {0.0, 0.0, 0.0};
+  std::vector<double> dense = test::toy_query(test::toy_vehicle_points(2, kDenseSpacing), 0.5, t, 0.02, 3);
+  if (dense.size() / 3 < max_points) return fail("dense view smaller than max_points");
+  std::vector<double> exact;  // exactly max_points, spread evenly over the dense view
+  for (uint64_t i = 0; i < max_points; ++i) {
+    const size_t p = static_cast<size_t>(i * (dense.size() / 3) / max_points);
+    exact.insert(exact.end(), dense.begin() + 3 * p, dense.begin() + 3 * p + 3);
+  }
+  std::vector<host::ModelCloud> with_sphere = toy_models();
+  with_sphere.push_back(host::ModelCloud{"sphere", sphere(kSphereRadius, kSpherePoints)});
+  std::vector<host::ModelCloud> spheres;
+  for (uint32_t i = 0; i < kHugeBucketModels; ++i)
+    spheres.push_back(host::ModelCloud{"sphere-" + std::to_string(i), sphere(kSphereRadius, kSpherePoints)});
+  const std::vector<double> sphere_query = sphere(kSphereRadius, kSpherePoints / 2);
+  const bool ok = write_database(dir + "/max_points.shdb", toy_models()) && write_floats(dir + "/max_points.f32", exact) &&
+                  write_database(dir + "/symmetric.shdb", with_sphere) &&
+                  write_floats(dir + "/symmetric.f32", sphere_query) &&
+                  write_database(dir + "/huge_buckets.shdb", spheres) &&
+                  write_floats(dir + "/huge_buckets.f32", sphere_query);
+  return ok ? 0 : fail("prepare failed");
+}
+
+// One recognition with the default config; prints the stats as one line.
+int recognise(const Database& db, const float* xyz, uint32_t count, const char* name, bool must_exhaust,
+              const RecognizerConfig& cfg) {
+  host::AlignedBytes workspace(required_workspace_bytes(cfg));
+  Recognizer rec;
+  if (rec.init(&db, cfg, workspace.data(), workspace.size()) != Status::kOk) return fail("init failed");
+  Result r = rec.recognize(xyz, count);
+  const RecognitionStats& s = r.stats;
+  std::printf("%s: status=%s points=%u features=%u trials=%u pair_checks=%llu hypotheses=%u "
+              "bucket_entries=%llu bucket_scan_truncated=%d budget_exhausted=%d\n",
+              name, status_name(r.status), count, s.features, s.trials,
+              static_cast<unsigned long long>(s.pair_checks), s.hypotheses,
+              static_cast<unsigned long long>(s.bucket_entries), s.bucket_scan_truncated ? 1 : 0,
+              s.budget_exhausted ? 1 : 0);
+  if (r.status != Status::kOk) return fail(std::string(name) + ": not recognised");
+  const bool cap_reached = s.hypotheses >= cfg.max_hypotheses || s.pair_checks >= cfg.max_pair_checks;
+  if (cap_reached != s.budget_exhausted) return fail(std::string(name) + ": budget flag disagrees with the stats");
+  if (must_exhaust && !s.budget_exhausted) return fail(std::string(name) + ": worst case did not reach the budget");
+  return 0;
+}
+
+int run(const std::string& dir, const std::string& name) {
+  bool known = false;
+  for (const char* c : kCases) known = known || name == c;
+  if (!known) return fail("unknown case " + name);
+  host::AlignedBytes blob, cloud;
+  std::string error;
+  if (!host::read_file(dir + "/" + name + ".shdb", &blob, &error) ||
+      !host::read_file(dir + "/" + name + ".f32", &cloud, &error))
+    return fail(error + " (run prepare first)");
+  Database db;
+  if (Database::open(blob.data(), blob.size(), &db) != Status::kOk) return fail("database does not open");
+  const auto* xyz = reinterpret_cast<const float*>(cloud.data());  // 64-byte aligned buffer
+  return recognise(db, xyz, static_cast<uint32_t>(cloud.size() / (3 * sizeof(float))), name.c_str(),
+                   name != "max_points", RecognizerConfig{});
+}
+
+int golden_queries(const std::string& dir, int only) {
+  host::AlignedBytes blob, raw;
+  std::string error;
+  if (!host::read_file(dir + "/golden_le.shdb", &blob, &error) ||
+      !host::read_file(dir + "/golden_queries.i16", &raw, &error))
+    return fail(error);
+  Database db;
+  if (Database::open(blob.data(), blob.size(), &db) != Status::kOk) return fail("golden blob does not open");
+  std::vector<float> xyz(raw.size() / golden::kBytesPerCoordinate);
+  for (size_t i = 0; i < xyz.size(); ++i) xyz[i] = golden::decode_mm(raw.data() + golden::kBytesPerCoordinate * i);
+  int status = 0;
+  for (size_t q = 0; q < sizeof(golden::kGoldenQueries) / sizeof(golden::kGoldenQueries[0]); ++q) {
+    if (only >= 0 && static_cast<size_t>(only) != q) continue;
+    const golden::GoldenQuery& g = golden::kGoldenQueries[q];
+    const std::string name = "golden-" + std::to_string(q);
+    status |= recognise(db, xyz.data() + 3u * g.first_point, g.point_count, name.c_str(), false,
+                        golden::golden_config(g.mode));
+  }
+  return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc == 3 && std::strcmp(argv[1], "prepare") == 0) return prepare(argv[2]);
+  if (argc == 4 && std::strcmp(argv[1], "run") == 0) return run(argv[2], argv[3]);
+  if ((argc == 3 || argc == 4) && std::strcmp(argv[1], "golden") == 0)
+    return golden_queries(argv[2], argc == 4 ? std::atoi(argv[3]) : -1);
+  std::fprintf(stderr, "usage: worst_case_runner prepare DIR | run DIR CASE | golden GOLDEN_DIR [INDEX]\n");
+  return 2;
+}
