@@ -26,6 +26,10 @@ blob=$(stat -c %s tests/golden/golden_le.shdb)
 code=$((text - blob))  # .text + .rodata without the embedded database
 echo "bare-metal: code+constants $code bytes (text $text - blob $blob), data $data, bss $bss (workspace + cloud)"
 status=0
+# Built with SPINHASH_NO_LOG_STRINGS: no log text may reach the image.
+if arm-none-eabi-strings "$elf" | grep -q 'database open: '; then
+  echo "bare-metal: log strings present despite SPINHASH_NO_LOG_STRINGS"; status=1
+fi
 code_budget=$(budget code.cortex-m7)
 if (( code > code_budget )); then echo "bare-metal: code $code > budget $code_budget"; status=1; fi
 
