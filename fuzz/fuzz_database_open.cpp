@@ -45,12 +45,12 @@ void reseal(uint8_t* data, size_t size) {
   std::memcpy(data, &h, sizeof h);
 }
 
-// A fixed query: two boxes' worth of surface points, enough for features.
+// A fixed query: four squares of points (three orthogonal, one raised), enough for features.
 const std::vector<float>& query_points() {
   static const std::vector<float> points = [] {
     std::vector<float> p;
-    constexpr int kSide = 24;
-    constexpr float kStep = 0.1f;
+    constexpr int kSide = 12;      // 4 * 144 points: the blob, not feature extraction, is under test
+    constexpr float kStep = 0.15f;  // m
     for (int i = 0; i < kSide; ++i)
       for (int j = 0; j < kSide; ++j) {
         const float a = i * kStep, b = j * kStep;

@@ -10,16 +10,23 @@
 
 namespace spinhash::fuzz {
 
-// Small capacities keep each run in the millisecond range and make thinning
-// (points and features) reachable from short inputs.
+// Small capacities and budgets keep each run in the tens of milliseconds under
+// ASan and make thinning (points and features) reachable from short inputs.
 inline RecognizerConfig small_config(Mode mode) {
+  constexpr uint32_t kPoints = 1024;
+  constexpr uint32_t kFeatures = 64;
+  constexpr uint32_t kTrials = 50;
+  constexpr uint32_t kSranTrials = 10;
+  constexpr uint32_t kHypotheses = 200;
+  constexpr uint32_t kBucketScan = 256;  // LSH entries per feature: the default 4096 dominates the run time
   RecognizerConfig cfg;
   cfg.mode = mode;
-  cfg.max_points = 2048;
-  cfg.max_features = 256;
-  cfg.max_trials = 100;
-  cfg.sran_trials = 20;
-  cfg.max_hypotheses = 500;
+  cfg.max_points = kPoints;
+  cfg.max_features = kFeatures;
+  cfg.max_trials = kTrials;
+  cfg.sran_trials = kSranTrials;
+  cfg.max_hypotheses = kHypotheses;
+  cfg.max_bucket_scan = kBucketScan;
   return cfg;
 }
 

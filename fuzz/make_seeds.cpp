@@ -24,7 +24,7 @@ constexpr uint32_t kSeedModels = 2;
 constexpr uint32_t kSeedFeaturesPerModel = 6;
 constexpr uint64_t kSeedSeed = 5;
 constexpr size_t kTruncatedBlobBytes = 300;
-constexpr float kViewSpacing = 0.15f;  // m: a sparse toy view keeps the seed small
+constexpr float kViewSpacing = 0.25f;  // m: a sparse toy view keeps the seed small
 
 bool write(const fs::path& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary);

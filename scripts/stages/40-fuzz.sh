@@ -10,7 +10,7 @@ cd "$root"
 jobs=$(nproc 2>/dev/null || echo 2)
 fuzz_seconds=${FUZZ_SECONDS:-45}
 timeout_seconds=30      # one input taking longer is a hang (a normal one takes < 1 s under ASan)
-recognize_max_len=16384 # bytes: above max_points (2048) as int16 triples, so thinning is reached
+recognize_max_len=8192  # bytes: above max_points (1024) as int16 triples, so thinning is reached
 targets=(database_open cloud_reader recognize)
 start=$SECONDS
 
