@@ -14,13 +14,18 @@ cd "$root"
 jobs=$(nproc 2>/dev/null || echo 2)
 full_target=${SPINHASH_FULL_CROSS_TARGET:-aarch64}  # the fastest to emulate
 
-for entry in aarch64:aarch64-linux-gnu arm:arm-linux-gnueabihf powerpc:powerpc-linux-gnu; do
-  target=${entry%%:*} triple=${entry#*:}
+declare -A triples=([aarch64]=aarch64-linux-gnu [arm]=arm-linux-gnueabihf [powerpc]=powerpc-linux-gnu)
+for target in ${SPINHASH_CROSS_TARGETS:-aarch64 arm powerpc}; do
+  triple=${triples[$target]}
   dir=build-cross-$target
   start=$SECONDS
   cmake -S . -B "$dir" -DCMAKE_TOOLCHAIN_FILE="toolchains/$triple.cmake" -DCMAKE_BUILD_TYPE=Release --no-warn-unused-cli \
         -DSPINHASH_HOST_TOOLS=OFF >/dev/null
-  cmake --build "$dir" -j"$jobs" >/dev/null
+  if ! cmake --build "$dir" -j"$jobs" >"$dir/cross-build.log" 2>&1; then
+    tail -n 40 "$dir/cross-build.log"
+    echo "cross: $target build FAILED (full log: $dir/cross-build.log)"
+    exit 1
+  fi
   built=$SECONDS
   select=(-LE heavy)
   [[ "$target" == "$full_target" ]] && select=()
