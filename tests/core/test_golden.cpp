@@ -38,6 +38,7 @@ TEST_CASE("golden: the blob of this target's byte order reproduces the recorded 
   Database db;
   REQUIRE(Database::open(blob.data(), blob.size(), &db) == Status::kOk);
   const std::vector<float> xyz = test::golden_query_points();
+  double worst_score = 0.0, worst_pose = 0.0;  // largest deviations seen, reported below
 
   for (size_t q = 0; q < sizeof(golden::kGoldenQueries) / sizeof(golden::kGoldenQueries[0]); ++q) {
     const golden::GoldenQuery& want = golden::kGoldenQueries[q];
@@ -57,11 +58,18 @@ TEST_CASE("golden: the blob of this target's byte order reproduces the recorded 
       CHECK(r.ranking[i].model == want.ranking[i].model);
       CHECK_MESSAGE(score_close(r.ranking[i].score, want.ranking[i].score),
                     "score ", r.ranking[i].score, " recorded ", want.ranking[i].score);
+      const double w = static_cast<double>(want.ranking[i].score);
+      worst_score = std::fmax(worst_score, std::fabs(static_cast<double>(r.ranking[i].score) - w) /
+                                               std::fmax(1.0, std::fabs(w)));
     }
     const Pose& p = r.ranking[0].pose;
-    for (int i = 0; i < 9; ++i) CHECK(std::fabs(static_cast<double>(p.rotation[i]) - want.pose[i]) <= kPoseTolerance);
-    for (int i = 0; i < 3; ++i) CHECK(std::fabs(p.translation[i] - want.pose[9 + i]) <= kPoseTolerance);
+    for (int i = 0; i < 12; ++i) {
+      const double got = i < 9 ? static_cast<double>(p.rotation[i]) : p.translation[i - 9];
+      CHECK(std::fabs(got - want.pose[i]) <= kPoseTolerance);
+      worst_pose = std::fmax(worst_pose, std::fabs(got - want.pose[i]));
+    }
   }
+  MESSAGE("largest deviation from the recording: score ", worst_score, " (relative), pose ", worst_pose);
 }
 
 TEST_CASE("golden: the blob of the other byte order is refused with kBlobWrongByteOrder") {
