@@ -189,7 +189,10 @@ bool read_ascii_property(TextCursor* c, const Property& p, double* value,
   if (!read_ascii_value(c, value, where, error)) return false;
   if (!p.is_list) return true;
   const double count = *value;
-  if (!(count >= 0.0) || count != static_cast<double>(static_cast<uint64_t>(count))) {
+  // Range first: casting a double beyond uint64 is undefined (found by fuzz_cloud_reader).
+  // No PLY count type is wider than 32 bits.
+  constexpr double kMaxListLength = 4294967295.0;
+  if (!(count >= 0.0 && count <= kMaxListLength) || count != static_cast<double>(static_cast<uint64_t>(count))) {
     return fail(error, "invalid list length in " + where);
   }
   // Each item consumes a token or fails, so the loop is bounded by the file.
