@@ -23,8 +23,10 @@ bool CellGrid::carve(Arena& arena, uint32_t max_points) {
 int32_t CellGrid::coord(float v) const {
   float c = std::floor(v / cell_);
   // Clouds wider than 2^20 cells are clamped at the rim (recentred input never is).
-  float lim = static_cast<float>(kCoordBias - 2);
-  return static_cast<int32_t>(clampf(c, -lim, lim));
+  const float lim = static_cast<float>(kCoordBias - 2);
+  if (!(c > -lim)) c = -lim;  // also NaN: never convert a non-finite float to int
+  if (!(c < lim)) c = lim;
+  return static_cast<int32_t>(c);
 }
 
 uint64_t CellGrid::pack(int32_t x, int32_t y, int32_t z) {

@@ -10,13 +10,25 @@ inline uint32_t pick(uint32_t i, uint32_t n, uint32_t keep) {
   return static_cast<uint32_t>(static_cast<uint64_t>(i) * n / keep);
 }
 
+// Farther than this from the frame origin a coordinate is garbage (Earth-centred
+// coordinates stay below 7e6 m); such points are dropped like NaN so the
+// double mean and the float offsets cannot overflow.
+constexpr double kMaxCoordinate = 1e9;
+
+template <typename T>
+bool usable(const T* p) {
+  for (int a = 0; a < 3; ++a)
+    if (!(std::fabs(static_cast<double>(p[a])) <= kMaxCoordinate)) return false;  // false for NaN too
+  return true;
+}
+
 template <typename T>
 uint32_t recentre_typed(const T* xyz, uint32_t n, uint32_t keep, double origin[3], float* out) {
   double sum[3] = {0.0, 0.0, 0.0};
   uint32_t finite = 0;
   for (uint32_t i = 0; i < keep; ++i) {
     const T* p = xyz + 3u * pick(i, n, keep);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
+    if (!usable(p)) continue;
     for (int a = 0; a < 3; ++a) sum[a] += static_cast<double>(p[a]);
     ++finite;
   }
@@ -24,7 +36,7 @@ uint32_t recentre_typed(const T* xyz, uint32_t n, uint32_t keep, double origin[3
   uint32_t k = 0;
   for (uint32_t i = 0; i < keep; ++i) {
     const T* p = xyz + 3u * pick(i, n, keep);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
+    if (!usable(p)) continue;
     for (int a = 0; a < 3; ++a) out[3u * k + a] = static_cast<float>(static_cast<double>(p[a]) - origin[a]);
     ++k;
   }

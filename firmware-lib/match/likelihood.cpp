@@ -55,7 +55,10 @@ NearestFeature find_nearest_model_feature(const Database& db, const blob::ModelR
   for (int a = 0; a < 3; ++a) {
     const float local = x[a] - rec.grid_origin[a];
     const int32_t dim = static_cast<int32_t>(rec.grid_dims[a]);
-    centre[a] = static_cast<int32_t>(std::floor(local / cell));
+    const float f = std::floor(local / cell);
+    // Beyond the grid by more than the reach (also inf/NaN from an extreme pose): no match.
+    if (!(f > static_cast<float>(-r - 1) && f < static_cast<float>(dim + r))) return best;
+    centre[a] = static_cast<int32_t>(f);
     lo[a] = centre[a] - r < 0 ? 0 : centre[a] - r;
     hi[a] = centre[a] + r >= dim ? dim - 1 : centre[a] + r;
     if (lo[a] > hi[a]) return best;  // x is farther than Delta_max from the model's grid

@@ -38,7 +38,7 @@ int run_recognize(const RecognizeArgs& a) {
       // An unreadable file still gets its line, so readers can pair lines with queries.
       std::printf("{\"query\":%s,\"status\":\"unreadable\",\"error\":%s,\"ranking\":[],\"pose\":null}\n",
                   json_string(name).c_str(), json_string(error).c_str());
-      std::fprintf(stderr, "spinhash recognize: %s: %s\n", q.c_str(), error.c_str());
+      std::fprintf(stderr, "spinhash recognize: %s\n", error.c_str());  // the reader names the file
       exit_code = kExitCheckFailed;
       continue;
     }
