@@ -56,7 +56,8 @@ for size in "${size_list[@]}"; do
   db="$out/db$size.shdb"
   [[ -f "$db" ]] || "$spinhash" build -o "$db" "$members" --quiet
   rm -rf "$members"
-  features=$("$spinhash" info "$db" | awk '/features/ {for (i = 1; i <= NF; i++) if ($i ~ /^[0-9]+$/) {print $i; exit}}')
+  # awk reads to the end: an early exit would break the pipe (pipefail).
+  features=$("$spinhash" info "$db" | awk '$1 == "features" && !f {f = $2} END {print f}')
   for mode in "${mode_list[@]}"; do
     n=$queries
     [[ "$mode" == sran && $size -gt $sran_large_from && $sran_large -lt $n ]] && n=$sran_large

@@ -29,6 +29,7 @@ struct AccuracyArgs {
   std::vector<double> noise{0.05, 0.10};
   std::vector<double> occlusion{0.0, 0.2, 0.4};
   bool ground = false;
+  bool ground_filter = false;
   double ground_margin = 3.0;  // m of ground beyond the vehicle on each side
   std::vector<std::string> modes{"bran", "sran", "sind"};
   uint64_t seed = 1;        // query scans
@@ -80,7 +81,7 @@ int run_accuracy(const AccuracyArgs& a) {
   run.queries_per_model = a.queries_per_model;
   run.max_k = a.max_k;
   run.ground_margin = a.ground_margin;
-  run.conditions = make_conditions(a.noise, a.occlusion, a.ground);
+  run.conditions = make_conditions(a.noise, a.occlusion, a.ground, a.ground_filter);
   std::vector<cli::ModelMesh> meshes;
   std::vector<host::ModelCloud> clouds;
   if (!parse_modes(a.modes, &run.modes, &error) || !make_output_dir(a.out, &error)) {
@@ -136,6 +137,8 @@ void add_accuracy_experiment(CLI::App* parent, int* exit_code) {
   cmd->add_option("--occlusion", a->occlusion, "occluded fractions")->delimiter(',')
       ->check(CLI::Range(0.0, 0.9))->capture_default_str();
   cmd->add_flag("--ground", a->ground, "also run every condition with the ground around the vehicle scanned");
+  cmd->add_flag("--ground-filter", a->ground_filter,
+                "also run every condition with the ground scanned, then removed by a level-ground height filter");
   cmd->add_option("--ground-margin", a->ground_margin, "ground beyond the vehicle on each side, m")
       ->check(CLI::Range(0.0, 100.0))->capture_default_str();
   cmd->add_option("--modes", a->modes, "bran, sran, sind")->delimiter(',')->capture_default_str();

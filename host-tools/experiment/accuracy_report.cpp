@@ -6,6 +6,7 @@
 #include "cli/recognizer_flags.hpp"
 #include "experiment/accuracy_data.hpp"
 #include "experiment/csv_table.hpp"
+#include "experiment/ground_filter.hpp"
 #include "experiment/gnuplot.hpp"
 #include "experiment/output_dir.hpp"
 #include "experiment/plot_styles.hpp"
@@ -17,6 +18,7 @@ namespace {
 constexpr double kBranSranTolerance = 0.02;  // issue 3: BRAN within 2 points of SRAN at every k
 constexpr double kSindMargin = 0.10;         // "clearly below": 10 points under both at k = 1
 const uint32_t kTableKs[] = {1, 2, 3, 5, 10, 20};
+constexpr size_t kListedModels = 5;
 constexpr int kPanelWidth = 420, kPanelHeight = 330, kMinPageWidth = 640;
 
 std::vector<const AccuracyRecord*> select(const AccuracyRun& run, uint32_t condition, uint32_t mode) {
@@ -31,7 +33,7 @@ std::string curve_file(const QueryCondition& c) { return "curves/" + c.label() +
 std::string condition_title(const QueryCondition& c) {
   std::ostringstream s;
   s << "noise " << c.noise * 100.0 << " cm, occlusion " << c.occlusion * 100.0 << "%"
-    << (c.ground ? ", ground" : "");
+    << (c.ground == Ground::kScanned ? ", ground" : c.ground == Ground::kFiltered ? ", ground filtered out" : "");
   return s.str();
 }
 
@@ -67,7 +69,7 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
   for (const AccuracyRecord& r : run.records) {
     const QueryCondition& c = run.conditions[r.condition];
     const Outcome& o = r.outcome;
-    per_query.add({cli::mode_name(run.modes[r.mode]), num(c.noise), num(c.occlusion), c.ground ? "1" : "0",
+    per_query.add({cli::mode_name(run.modes[r.mode]), num(c.noise), num(c.occlusion), ground_name(c.ground),
                    std::to_string(r.model), run.model_names[r.model], std::to_string(r.query),
                    std::to_string(r.points), status_name(o.status), std::to_string(o.rank), num(o.ms),
                    std::to_string(o.hypotheses), std::to_string(o.features), std::to_string(o.ranked),
@@ -93,7 +95,7 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
       std::vector<const AccuracyRecord*> rs = select(run, c, m);
       ModeSummary s = summarise(rs);
       std::vector<std::string> cond_cols{cli::mode_name(run.modes[m]), num(cond.noise), num(cond.occlusion),
-                                         cond.ground ? "1" : "0"};
+                                         ground_name(cond.ground)};
       for (uint32_t k = 1; k <= run.max_k; ++k) {
         std::vector<std::string> row = cond_cols;
         row.insert(row.end(), {std::to_string(k), num(per_mode.back()[k - 1]), std::to_string(rs.size())});
@@ -146,20 +148,33 @@ bool write_plots(const AccuracyRun& run, std::vector<std::string>* made, std::st
       return false;
     made->push_back(plot_file(name));
   }
+  // All conditions of one ground state on one page.
   std::vector<double> occ;
   for (const QueryCondition& c : run.conditions)
     if (std::find(occ.begin(), occ.end(), c.occlusion) == occ.end()) occ.push_back(c.occlusion);
-  const size_t cols = occ.size(), rows = (run.conditions.size() + cols - 1) / cols;
-  std::ostringstream body;
-  body << curve_axes(run) << "set multiplot layout " << rows << "," << cols
-       << " title '" << run.model_names.size() << " models, " << run.queries_per_model * run.model_names.size()
-       << " queries per condition'\n";
-  for (size_t i = 0; i < run.conditions.size(); ++i) body << curve_plot_command(run, run.conditions[i], i == 0);
-  body << "unset multiplot\n";
-  if (!render_plot(run.out_dir, "accuracy_overview", body.str(), std::max(kMinPageWidth, static_cast<int>(cols) * kPanelWidth),
-                   static_cast<int>(rows) * kPanelHeight + 40, error))
-    return false;
-  made->insert(made->begin(), plot_file("accuracy_overview"));
+  const size_t cols = occ.size();
+  std::vector<std::string> overviews;
+  for (Ground g : {Ground::kNone, Ground::kScanned, Ground::kFiltered}) {
+    std::vector<const QueryCondition*> page;
+    for (const QueryCondition& c : run.conditions)
+      if (c.ground == g) page.push_back(&c);
+    if (page.empty()) continue;
+    const size_t rows = (page.size() + cols - 1) / cols;
+    const std::string name = std::string("accuracy_overview") + (g == Ground::kNone ? "" : "_ground") +
+                             (g == Ground::kFiltered ? "_filtered" : "");
+    std::ostringstream body;
+    body << curve_axes(run) << "set multiplot layout " << rows << "," << cols << " title '"
+         << run.model_names.size() << " models, " << run.queries_per_model * run.model_names.size()
+         << " queries per condition" << (g == Ground::kScanned ? ", ground scanned" : "")
+         << (g == Ground::kFiltered ? ", ground scanned then filtered out" : "") << "'\n";
+    for (size_t i = 0; i < page.size(); ++i) body << curve_plot_command(run, *page[i], i == 0);
+    body << "unset multiplot\n";
+    if (!render_plot(run.out_dir, name, body.str(), std::max(kMinPageWidth, static_cast<int>(cols) * kPanelWidth),
+                     static_cast<int>(rows) * kPanelHeight + 40, error))
+      return false;
+    overviews.push_back(plot_file(name));
+  }
+  made->insert(made->begin(), overviews.begin(), overviews.end());
   // Median time and mean hypotheses per condition, clustered by mode.
   std::ostringstream t;
   const size_t n = run.modes.size();
@@ -216,29 +231,56 @@ std::string target_section(const AccuracyRun& run) {
   return s.str();
 }
 
+// The condition with `ground` and the same noise and occlusion as c, or -1.
+int matching(const AccuracyRun& run, const QueryCondition& c, Ground ground) {
+  for (size_t i = 0; i < run.conditions.size(); ++i) {
+    const QueryCondition& o = run.conditions[i];
+    if (o.ground == ground && o.noise == c.noise && o.occlusion == c.occlusion) return static_cast<int>(i);
+  }
+  return -1;
+}
+
 std::string ground_section(const AccuracyRun& run) {
   std::ostringstream s;
-  bool any = false;
-  for (const QueryCondition& c : run.conditions) any = any || c.ground;
-  if (!any) return "";
-  s << "\n## Ground (every airborne scan has it)\n\nTop-1 without -> with a ground square reaching "
-    << run.ground_margin << " m beyond the vehicle:\n\n| noise, occlusion |";
+  bool scanned = false, filtered = false;
+  for (const QueryCondition& c : run.conditions) {
+    scanned = scanned || c.ground == Ground::kScanned;
+    filtered = filtered || c.ground == Ground::kFiltered;
+  }
+  if (!scanned && !filtered) return "";
+  s << "\n## Ground (every airborne scan has it)\n\nTop-1 without ground";
+  if (scanned) s << " -> with a ground square reaching " << run.ground_margin << " m beyond the vehicle";
+  if (filtered)
+    s << " -> with that ground removed before recognition (level ground at the " << kGroundPercentile * 100.0
+      << "th percentile of z, points within " << kGroundClearance << " m above it dropped)";
+  s << ":\n\n| noise, occlusion |";
   for (Mode m : run.modes) s << " " << mode_title(m) << " |";
   s << "\n|---|";
   for (size_t m = 0; m < run.modes.size(); ++m) s << "---|";
   s << "\n";
   for (uint32_t c = 0; c < run.conditions.size(); ++c) {
     const QueryCondition& off = run.conditions[c];
-    if (off.ground) continue;
-    for (uint32_t g = 0; g < run.conditions.size(); ++g) {
-      const QueryCondition& on = run.conditions[g];
-      if (!on.ground || on.noise != off.noise || on.occlusion != off.occlusion) continue;
-      s << "| " << off.noise * 100.0 << " cm, " << off.occlusion * 100.0 << "% |";
-      for (uint32_t m = 0; m < run.modes.size(); ++m)
-        s << " " << pct(topk_curve(run, c, m)[0]) << "% -> " << pct(topk_curve(run, g, m)[0]) << "% |";
-      s << "\n";
+    if (off.ground != Ground::kNone) continue;
+    const int on = matching(run, off, Ground::kScanned), fil = matching(run, off, Ground::kFiltered);
+    s << "| " << off.noise * 100.0 << " cm, " << off.occlusion * 100.0 << "% |";
+    for (uint32_t m = 0; m < run.modes.size(); ++m) {
+      s << " " << pct(topk_curve(run, c, m)[0]) << "%";
+      if (on >= 0) s << " -> " << pct(topk_curve(run, static_cast<uint32_t>(on), m)[0]) << "%";
+      if (fil >= 0) s << " -> " << pct(topk_curve(run, static_cast<uint32_t>(fil), m)[0]) << "%";
+      s << " |";
     }
+    s << "\n";
   }
+  s << "\nModels most often ranked first with the ground scanned (all modes):";
+  std::vector<uint32_t> firsts(run.model_names.size(), 0);
+  for (const AccuracyRecord& r : run.records)
+    if (run.conditions[r.condition].ground == Ground::kScanned && r.outcome.ranked > 0) ++firsts[r.outcome.best_model];
+  std::vector<uint32_t> order(firsts.size());
+  for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return firsts[a] > firsts[b]; });
+  for (size_t i = 0; i < std::min<size_t>(kListedModels, order.size()) && firsts[order[i]] > 0; ++i)
+    s << (i ? ", " : " ") << run.model_names[order[i]] << " (" << firsts[order[i]] << ")";
+  s << ".\n";
   return s.str();
 }
 

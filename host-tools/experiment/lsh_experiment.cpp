@@ -42,7 +42,7 @@ struct LshArgs {
 
 bool make_probes(const LshArgs& a, const std::vector<cli::ModelMesh>& meshes, const MemoryDatabase& mdb,
                  const RecognizerConfig& cfg, std::vector<ProbeFeature>* probes, std::string* error) {
-  const QueryCondition cond{a.noise, 0.0, false};
+  const QueryCondition cond{a.noise, 0.0, Ground::kNone};
   const uint32_t m = static_cast<uint32_t>(meshes.size());
   cli::Progress progress("probe features (exhaustive search)", a.queries);
   for (uint32_t j = 0; j < a.queries; ++j) {

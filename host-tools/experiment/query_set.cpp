@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "experiment/ground_filter.hpp"
 #include "mesh/vehicle_generator.hpp"
 #include "scan/scan_simulator.hpp"
 
@@ -15,9 +16,14 @@ constexpr uint64_t kQuerySeedStride = 7919;
 
 }  // namespace
 
+const char* ground_name(Ground g) {
+  return g == Ground::kNone ? "none" : g == Ground::kScanned ? "scanned" : "filtered";
+}
+
 std::string QueryCondition::label() const {
   std::ostringstream s;
-  s << "noise" << noise << "_occ" << occlusion << (ground ? "_ground" : "");
+  s << "noise" << noise << "_occ" << occlusion
+    << (ground == Ground::kScanned ? "_ground" : ground == Ground::kFiltered ? "_ground_filtered" : "");
   return s.str();
 }
 
@@ -34,7 +40,7 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
   opt.random_pose = true;
   opt.occlusion = c.occlusion;
   host::Mesh ground;
-  if (c.ground) {
+  if (c.ground != Ground::kNone) {
     host::Box3 box = mesh.bounding_box();
     double half = std::max({std::abs(box.lo.x()), std::abs(box.hi.x()), std::abs(box.lo.y()),
                             std::abs(box.hi.y())}) + ground_margin;
@@ -49,15 +55,18 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
   out->object_points = static_cast<uint32_t>(std::count(scan.on_object.begin(), scan.on_object.end(), 1));
   out->xyz = std::move(scan.xyz);
   out->true_pose = scan.true_pose;
+  if (c.ground == Ground::kFiltered) remove_level_ground(&out->xyz);
   return true;
 }
 
 std::vector<QueryCondition> make_conditions(const std::vector<double>& noise, const std::vector<double>& occlusion,
-                                            bool with_ground) {
+                                            bool with_ground, bool with_filtered) {
   std::vector<QueryCondition> out;
-  for (int g = 0; g < (with_ground ? 2 : 1); ++g)
+  for (Ground g : {Ground::kNone, Ground::kScanned, Ground::kFiltered}) {
+    if ((g == Ground::kScanned && !with_ground) || (g == Ground::kFiltered && !with_filtered)) continue;
     for (double n : noise)
-      for (double o : occlusion) out.push_back(QueryCondition{n, o, g == 1});
+      for (double o : occlusion) out.push_back(QueryCondition{n, o, g});
+  }
   return out;
 }
 

@@ -12,10 +12,17 @@
 
 namespace spinhash::experiment {
 
+enum class Ground : uint8_t {
+  kNone,      // the vehicle alone (the paper's setting)
+  kScanned,   // a ground square around the vehicle scanned with it
+  kFiltered,  // scanned, then removed by remove_level_ground() before recognition
+};
+const char* ground_name(Ground g);  // "none", "scanned", "filtered"
+
 struct QueryCondition {
   double noise = 0.05;     // m along each ray
   double occlusion = 0.0;  // fraction of the object hidden
-  bool ground = false;     // scan a ground square around the vehicle too
+  Ground ground = Ground::kNone;
   std::string label() const;  // e.g. "noise0.05_occ0.2_ground"
 };
 
@@ -36,8 +43,9 @@ uint64_t query_seed(uint64_t base_seed, uint32_t model, uint32_t q);
 bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const QueryCondition& c,
                     uint64_t base_seed, double ground_margin, Query* out, std::string* error);
 
-// Cartesian product of the lists (ground: off, then on when with_ground).
+// Cartesian product of the lists, ground states outermost: none, then
+// scanned (with_ground), then filtered (with_filtered).
 std::vector<QueryCondition> make_conditions(const std::vector<double>& noise, const std::vector<double>& occlusion,
-                                            bool with_ground);
+                                            bool with_ground, bool with_filtered);
 
 }  // namespace spinhash::experiment

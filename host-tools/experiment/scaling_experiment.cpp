@@ -40,7 +40,7 @@ struct ScalingArgs {
 
 bool make_queries(const ScalingArgs& a, const std::vector<cli::ModelMesh>& meshes, uint32_t pool,
                   std::vector<Query>* out, std::string* error) {
-  const QueryCondition cond{a.noise, 0.0, false};
+  const QueryCondition cond{a.noise, 0.0, Ground::kNone};
   for (uint32_t j = 0; j < a.queries; ++j) {
     Query q;
     if (!simulate_query(meshes[j % pool].mesh, j % pool, j / pool, cond, a.seed, 0.0, &q, error)) return false;

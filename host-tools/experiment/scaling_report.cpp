@@ -125,6 +125,10 @@ bool write_plots(const ScalingRun& run, std::vector<std::string>* made, std::str
   std::ostringstream h;
   h << plot_style_lines() << x << "set key top left\nset logscale xy\nset ylabel 'hypotheses verified per query'\n"
     << "set title 'Mean hypotheses per query (SIND verifies none)'\nplot " << mode_series(run, 2, true);
+  std::ostringstream a;
+  a << plot_style_lines() << x << "set key bottom left\nset logscale x\nset yrange [0:1.02]\n"
+    << "set ylabel 'P(correct model ranked first)'\nset title 'Top-1 accuracy of the same queries (SRAN: first "
+    << run.sran_queries_large << " at >= " << run.sran_large_from << " models)'\nplot " << mode_series(run, 3, false);
   std::ostringstream b;
   b << plot_style_lines() << "set key top left\nset xlabel 'features in the database'\n"
     << "set xrange [0:*]\nset yrange [0:*]\n"
@@ -136,9 +140,10 @@ bool write_plots(const ScalingRun& run, std::vector<std::string>* made, std::str
     << ") with linespoints ls 2 title 'blob', x*" << kMaxBytesPerFeature / kBytesPerMegabyte
     << " ls 9 title '" << kMaxBytesPerFeature << " B/feature'\nunset multiplot\n";
   const std::pair<std::string, std::string> plots[] = {
-      {"time_per_query", t.str()}, {"hypotheses_per_query", h.str()}, {"build_cost", b.str()}};
+      {"time_per_query", t.str()}, {"hypotheses_per_query", h.str()}, {"top1_per_size", a.str()},
+      {"build_cost", b.str()}};
   for (const auto& p : plots) {
-    const bool wide = p.first != "hypotheses_per_query";
+    const bool wide = p.first == "time_per_query" || p.first == "build_cost";
     if (!render_plot(run.out_dir, p.first, "set fit quiet\nset fit logfile '/dev/null'\n" + p.second,
                      wide ? 1100 : 640, 480, error))
       return false;
