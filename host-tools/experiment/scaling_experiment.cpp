@@ -34,7 +34,7 @@ struct ScalingArgs {
   uint64_t fleet_seed = 1;
   // SRAN is linear in the models (seconds per query at 1000): at the large
   // sizes it runs on the first few queries only (stated in the summary).
-  uint32_t sran_queries_large = 5;
+  uint32_t sran_queries_large = 10;
   uint32_t sran_large_from = 250;
 };
 

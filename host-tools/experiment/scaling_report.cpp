@@ -184,7 +184,9 @@ std::string targets(const ScalingRun& run) {
     s << "| BRAN >= " << kMinSpeedup << "x faster than SRAN at " << m_big << " | " << num(speed, 3)
       << "x (mean over the " << n << " queries both ran) | " << verdict(speed >= kMinSpeedup) << " |\n"
       << "| with >= " << kMinHypothesisRatio << "x fewer hypotheses | " << num(hyp, 3) << "x | "
-      << verdict(hyp >= kMinHypothesisRatio) << " |\n";
+      << verdict(hyp >= kMinHypothesisRatio) << " |\n"
+      << "| (context) top-1 on those " << n << " queries | BRAN " << num(100.0 * cb.top(1), 3) << "%, SRAN "
+      << num(100.0 * cr.top(1), 3) << "% | - |\n";
   }
   double worst = 0.0;
   for (const BuildPoint& p : run.builds) worst = std::max(worst, static_cast<double>(p.blob_bytes) / p.features);
