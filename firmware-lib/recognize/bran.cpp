@@ -58,8 +58,9 @@ void run_bran(SearchContext& ctx) {
     uint32_t k = 0, l = 0;
     DoubletShape shape;
     if (!draw_stable_doublet(ctx, &k, &l, &shape)) continue;
-    if (!enumerate_pairs(ctx, k, l, shape, caps)) return;
+    if (!enumerate_pairs(ctx, k, l, shape, caps)) break;
   }
+  transfer_poses(ctx);
 }
 
 }  // namespace spinhash

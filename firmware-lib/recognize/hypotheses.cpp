@@ -50,6 +50,19 @@ bool draw_stable_doublet(SearchContext& ctx, uint32_t* k, uint32_t* l, DoubletSh
   return false;
 }
 
+void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose) {
+  ModelBest& best = ctx.buf.best[model];
+  ++best.hypotheses;
+  const float to_beat = best.has_score ? best.score : -3.0e38f;
+  Verification v = verify_pose(ctx.db, model, pose, ctx.query, ctx.likelihood, to_beat, best.has_score);
+  if (v.complete && (!best.has_score || v.log_likelihood > best.score)) {
+    best.score = v.log_likelihood;
+    best.pose = pose;
+    best.inliers = v.inliers;
+    best.has_score = true;
+  }
+}
+
 bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l,
                    const DoubletShape& shape, uint32_t fu, uint32_t fv, const HypothesisCaps& caps) {
   RecognitionStats& st = ctx.stats;
@@ -64,18 +77,9 @@ bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l,
   ++st.doublets_passed;
   RigidPose pose;
   if (!pose_from_doublet(ctx.query_point(k), ctx.query_point(l), mu, mv, &pose)) return true;
-  ModelBest& best = ctx.buf.best[model];
   ++st.hypotheses;
-  ++best.hypotheses;
-  const float to_beat = best.has_score ? best.score : -3.0e38f;
-  Verification v = verify_pose(ctx.db, model, pose, ctx.query, ctx.likelihood, to_beat, best.has_score);
-  if (v.complete && (!best.has_score || v.log_likelihood > best.score)) {
-    best.score = v.log_likelihood;
-    best.pose = pose;
-    best.inliers = v.inliers;
-    best.has_score = true;
-  }
-  if (st.hypotheses >= caps.total || best.hypotheses >= caps.per_model) {
+  consider_pose(ctx, model, pose);
+  if (st.hypotheses >= caps.total || ctx.buf.best[model].hypotheses >= caps.per_model) {
     st.budget_exhausted = true;
     return false;
   }

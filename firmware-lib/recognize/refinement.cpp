@@ -7,6 +7,7 @@
 // (1 + kRefineIterations) full verifications.
 #include "match/refine_pose.hpp"
 #include "recognize/search_context.hpp"
+#include "util/top_n.hpp"
 
 namespace spinhash {
 namespace {
@@ -16,18 +17,8 @@ constexpr uint32_t kRefineIterations = 3;
 
 // Indices of the (up to) kRefinedModels best-scoring models, best first.
 uint32_t leading_models(const SearchContext& ctx, uint32_t* out) {
-  uint32_t n = 0;
-  for (uint32_t m = 0; m < ctx.db.model_count(); ++m) {
-    const ModelBest& b = ctx.buf.best[m];
-    if (!b.has_score || b.hypotheses == 0) continue;
-    uint32_t i = n < kRefinedModels ? n++ : kRefinedModels;
-    while (i > 0 && ctx.buf.best[out[i - 1u]].score < b.score) {  // insertion into a short sorted list
-      if (i < kRefinedModels) out[i] = out[i - 1u];
-      --i;
-    }
-    if (i < kRefinedModels) out[i] = m;
-  }
-  return n;
+  return top_n(ctx.db.model_count(), kRefinedModels, out, [&](uint32_t m) { return has_hypothesis(ctx, m); },
+               [&](uint32_t a, uint32_t b) { return scores_higher(ctx, a, b); });
 }
 
 void finalise_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, bool refine) {

@@ -64,12 +64,30 @@ struct HypothesisCaps {
   uint32_t per_model;
 };
 
+// Model m holds a verified pose.
+inline bool has_hypothesis(const SearchContext& ctx, uint32_t m) {
+  return ctx.buf.best[m].has_score && ctx.buf.best[m].hypotheses > 0;
+}
+
+// Ranking order: higher score first, ties by model index.
+inline bool scores_higher(const SearchContext& ctx, uint32_t a, uint32_t b) {
+  const float sa = ctx.buf.best[a].score, sb = ctx.buf.best[b].score;
+  return sa > sb || (sa == sb && a < b);
+}
+
+// Verifies `pose` of `model` and keeps it as gamma_model if it scores higher
+// (the caller counts it in the stats).
+void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose);
+
 // Cascade, pose, verification and gamma_i update for query features (k, l)
 // matched to model features (fu, fv) of `model`. false once the budget is spent.
 bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l,
                    const DoubletShape& shape, uint32_t fu, uint32_t fv, const HypothesisCaps& caps);
 
 void run_bran(SearchContext& ctx);
+// Lends the leading models' poses to the models whose boxes are nearest
+// theirs (look-alikes crowded out of the W candidates; BRAN).
+void transfer_poses(SearchContext& ctx);
 // Rescores the leading models on all query features (refining their poses
 // when asked) and puts every score on the all-features scale (BRAN, SRAN).
 void finalise_scores(SearchContext& ctx, bool refine);

@@ -34,6 +34,9 @@ void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
   cmd->add_option("--tol-distance", c->tol_distance, "doublet distance tolerance, m")->capture_default_str();
   cmd->add_option("-W,--top-w", c->top_w, "W: candidates per query feature (BRAN)")
       ->check(CLI::Range(1u, kMaxCandidates))->capture_default_str();
+  cmd->add_option("--transfer-models", c->transfer_models,
+                  "look-alikes each leading pose is also tried on (BRAN; 0: off, the paper's BRAN)")
+      ->check(CLI::Range(0u, kMaxTransferModels))->capture_default_str();
   cmd->add_option("--top-w-sran", c->top_w_sran, "W per model (SRAN)")->check(CLI::Range(1u, kMaxCandidates))->capture_default_str();
   cmd->add_option("--top-w-sind", c->top_w_sind, "W (SIND)")->check(CLI::Range(1u, kMaxCandidates))->capture_default_str();
   cmd->add_option("--max-bucket-scan", c->max_bucket_scan, "LSH entries scanned per query feature")->capture_default_str();

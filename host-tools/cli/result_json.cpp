@@ -35,6 +35,7 @@ std::string stats_json(const RecognitionStats& st) {
          ",\"features\":" + std::to_string(st.features) + ",\"candidates\":" + std::to_string(st.candidates) +
          ",\"trials\":" + std::to_string(st.trials) + ",\"doublets_tried\":" + std::to_string(st.pair_checks) +
          ",\"doublets_passed\":" + std::to_string(st.doublets_passed) +
+         ",\"transferred\":" + std::to_string(st.transferred) +
          ",\"budget_exhausted\":" + (st.budget_exhausted ? "true" : "false") + "}";
 }
 

@@ -51,9 +51,16 @@ std::vector<blob::LshBit> sample_bits(const std::vector<uint32_t>& range, uint32
   return bits;
 }
 
+// Buckets per table: the power of two that leaves 8 to 16 features per
+// bucket on average. Distinct keys sharing a bucket only add entries to
+// re-rank by exact L1 (within the scan bound); the offsets then cost
+// 4 L B / N = 2 to 4 bytes per feature (L = 8), which keeps the blob under
+// 160 B per feature (176 B with two features per bucket).
+constexpr uint32_t kFeaturesPerBucket = 16;
+
 uint32_t bucket_count_for(uint32_t features) {
   uint32_t b = 1;
-  while (b < features / 2u && b < (1u << 28)) b <<= 1u;  // about two entries per bucket
+  while (b < features / kFeaturesPerBucket && b < (1u << 28)) b <<= 1u;
   return b;
 }
 

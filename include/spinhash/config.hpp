@@ -65,6 +65,13 @@ struct RecognizerConfig {
   // leading models are then rescored on all of them.
   uint32_t verify_features = 256;
 
+  // Look-alike pose transfer (not in the paper; BRAN): the poses of the
+  // leading models are also verified on the models whose bounding boxes are
+  // nearest theirs (this many per pose), for look-alikes crowded out of the
+  // W candidates in a large database. Pays off when models share a frame convention
+  // (CAD libraries, our fleets); 0 turns it off (the paper's BRAN).
+  uint32_t transfer_models = 32;
+
   // Least-squares refinement of the best few models' poses over their
   // inliers after the hypothesis loop (not in the paper; BRAN and SRAN).
   bool refine_poses = true;

@@ -37,7 +37,8 @@ struct RecognitionStats {
   uint32_t trials = 0;            // doublet draws
   uint64_t pair_checks = 0;       // candidate pairs put through the cascade
   uint64_t doublets_passed = 0;   // pairs that passed the cascade
-  uint32_t hypotheses = 0;        // poses verified
+  uint32_t hypotheses = 0;        // poses verified from doublets (bounded by max_hypotheses)
+  uint32_t transferred = 0;       // look-alike pose transfers verified (BRAN, <= 4 x transfer_models)
   uint32_t refinements = 0;       // least-squares pose refinements verified
   bool budget_exhausted = false;  // the work budget cut recognition short
   bool bucket_scan_truncated = false;  // some LSH lookups hit max_bucket_scan

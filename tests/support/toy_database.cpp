@@ -39,10 +39,11 @@ std::vector<double> toy_vehicle_points(uint32_t index, float spacing) {
   return out;
 }
 
-bool make_toy_database(ToyDatabase* out) {
+bool make_toy_database(ToyDatabase* out, uint32_t twin_of) {
   std::vector<host::ModelCloud> clouds;
   for (uint32_t i = 0; i < kToyModels; ++i)
     clouds.push_back(host::ModelCloud{"toy-" + std::to_string(i), toy_vehicle_points(i, 0.05f)});
+  if (twin_of < kToyModels) clouds.push_back(host::ModelCloud{"toy-twin", toy_vehicle_points(twin_of, 0.05f)});
   host::BuildOptions opt;
   host::BlobContent content;
   host::BuildReport report;

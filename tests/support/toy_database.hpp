@@ -19,8 +19,11 @@ struct ToyDatabase {
   host::AlignedBytes bytes;
   Database db;
 };
-// Builds, serialises (native byte order) and opens the toy database.
-bool make_toy_database(ToyDatabase* out);
+// Builds, serialises (native byte order) and opens the toy database. With
+// twin_of < kToyModels, a last model "toy-twin" repeats that toy exactly (a
+// look-alike in the same frame).
+constexpr uint32_t kNoTwin = 0xFFFFFFFFu;
+bool make_toy_database(ToyDatabase* out, uint32_t twin_of = kNoTwin);
 
 // A partial, moved, noisy view of points: keeps those facing direction `view`
 // side (x . view > -keep_depth), applies rotation about z by yaw and the
