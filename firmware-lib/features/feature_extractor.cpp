@@ -3,6 +3,7 @@
 
 #include "descriptor/spin_image.hpp"
 #include "geometry/cell_grid.hpp"
+#include "geometry/ground.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/resample.hpp"
 #include "spinhash/features.hpp"
@@ -19,6 +20,7 @@ struct FeatureExtractor::Impl {
   float* normals = nullptr;     // 3 * max_points
   uint8_t* has_normal = nullptr;
   uint32_t* basis = nullptr;    // max_points
+  uint32_t* ground_histogram = nullptr;  // kGroundHistogramBins, when ground is removed
   float* out_positions = nullptr;
   float* out_normals = nullptr;
   float* out_spins = nullptr;
@@ -32,7 +34,8 @@ bool params_valid(const FeatureParams& p, const ExtractorCapacity& cap) {
          positive(p.support_radius) && p.bins_alpha >= 1u && p.bins_beta >= 1u &&
          p.bins_alpha <= kMaxSpinBinsPerAxis && p.bins_beta <= kMaxSpinBinsPerAxis &&
          spin_dims(p) <= cap.max_spin_dims && p.support_angle_deg > 0.0f &&
-         cap.max_points >= 1u && cap.max_points <= kMaxQueryPointsLimit && cap.max_features >= 1u;
+         cap.max_points >= 1u && cap.max_points <= kMaxQueryPointsLimit && cap.max_features >= 1u &&
+         cap.ground_clearance >= 0.0f && cap.ground_clearance <= kMaxGroundClearance;
 }
 
 SpinImageParams spin_params(const FeatureParams& p) {
@@ -63,6 +66,7 @@ Status FeatureExtractor::init(const FeatureParams& params, const ExtractorCapaci
   target->normals = arena.alloc<float>(3u * static_cast<size_t>(np));
   target->has_normal = arena.alloc<uint8_t>(np);
   target->basis = arena.alloc<uint32_t>(np);
+  if (cap.ground_clearance > 0.0f) target->ground_histogram = arena.alloc<uint32_t>(kGroundHistogramBins);
   target->out_positions = arena.alloc<float>(3u * static_cast<size_t>(nf));
   target->out_normals = arena.alloc<float>(3u * static_cast<size_t>(nf));
   target->out_spins = arena.alloc<float>(static_cast<size_t>(nf) * cap.max_spin_dims);
@@ -87,6 +91,11 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   uint32_t n = recentre(cloud, keep, out->origin, m.points);
   stats->points_nonfinite = keep - n;
   if (n == 0) return Status::kEmptyCloud;
+  if (cap_.ground_clearance > 0.0f) {
+    stats->points_ground = remove_level_ground(m.points, n, cap_.ground_clearance, m.ground_histogram);
+    n -= stats->points_ground;
+    if (n == 0) return Status::kNotEnoughFeatures;  // nothing stands on the ground
+  }
 
   m.voxel_grid.build(m.points, n, params_.cloud_voxel);
   uint32_t ne = equalise_density(m.voxel_grid, m.points, m.equalised);

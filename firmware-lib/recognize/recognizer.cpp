@@ -20,7 +20,7 @@ bool config_valid(const RecognizerConfig& c) {
          c.max_spin_dims >= 1u && c.max_spin_dims <= kMaxSpinDims && c.top_w >= 1u &&
          c.top_w <= kMaxCandidates && c.top_w_sran >= 1u && c.top_w_sran <= kMaxCandidates &&
          c.top_w_sind >= 1u && c.top_w_sind <= kMaxCandidates &&
-         c.transfer_models <= kMaxTransferModels && c.max_bucket_scan >= 1u &&
+         c.transfer_models <= kMaxTransferModels && in(c.ground_clearance, 0.0f, kMaxGroundClearance) && c.max_bucket_scan >= 1u &&
          c.max_bucket_scan <= (1u << 24) && in(c.d_min, 0.0f, 100.0f) && in(c.theta_min_deg, 0.0f, 180.0f) &&
          in(c.tol_distance, 0.0f, 100.0f) && in(c.tol_angle_deg, 0.0f, 180.0f) &&
          in(c.tol_handedness, 0.0f, 2.0f) && in(c.sigma, 1e-4f, 100.0f) && in(c.delta, 1e-4f, 100.0f) &&
@@ -45,6 +45,7 @@ Status carve(Arena& arena, const RecognizerConfig& cfg, const FeatureParams& fp,
   cap.max_features = cfg.max_features;
   cap.max_spin_dims = cfg.max_spin_dims;
   cap.thin_excess = cfg.thin_large_clouds;
+  cap.ground_clearance = cfg.ground_clearance;
   Status s = b.extractor.init(fp, cap, arena);
   if (s != Status::kOk && s != Status::kWorkspaceTooSmall) return s;
   b.searcher.carve(arena, cfg.max_bucket_scan);

@@ -28,6 +28,9 @@ void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
       ->check(CLI::Range(1u, kMaxModels))->capture_default_str();
   cmd->add_option("--query-spacing", c->query_basis_spacing, "query basis point spacing, m (0: the database's)")
       ->capture_default_str();
+  cmd->add_option("--ground-clearance", c->ground_clearance,
+                  "m of level ground dropped from the bottom of the cloud, z up (0: keep the ground)")
+      ->check(CLI::Range(0.0f, kMaxGroundClearance))->capture_default_str();
   cmd->add_option("--verify-features", c->verify_features, "query features scored per hypothesis")->capture_default_str();
   cmd->add_flag("!--no-refine", c->refine_poses, "skip the least-squares pose refinement");
   cmd->add_option("--tol-angle", c->tol_angle_deg, "doublet angle tolerance, degrees")->capture_default_str();

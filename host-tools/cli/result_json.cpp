@@ -32,6 +32,7 @@ std::string stats_json(const RecognitionStats& st) {
   return "{\"points\":" + std::to_string(st.extract.points_in) +
          ",\"points_thinned\":" + std::to_string(st.extract.points_thinned) +
          ",\"points_nonfinite\":" + std::to_string(st.extract.points_nonfinite) +
+         ",\"points_ground\":" + std::to_string(st.extract.points_ground) +
          ",\"features\":" + std::to_string(st.features) + ",\"candidates\":" + std::to_string(st.candidates) +
          ",\"trials\":" + std::to_string(st.trials) + ",\"doublets_tried\":" + std::to_string(st.pair_checks) +
          ",\"doublets_passed\":" + std::to_string(st.doublets_passed) +

@@ -8,6 +8,7 @@
 #include "cli/recognizer_flags.hpp"
 #include "experiment/accuracy_data.hpp"
 #include "experiment/config_text.hpp"
+#include "spinhash/limits.hpp"
 #include "experiment/experiments.hpp"
 #include "experiment/memory_database.hpp"
 #include "experiment/model_set.hpp"
@@ -29,21 +30,26 @@ struct AccuracyArgs {
   std::vector<double> noise{0.05, 0.10};
   std::vector<double> occlusion{0.0, 0.2, 0.4};
   bool ground = false;
-  bool ground_filter = false;
+  bool ground_kept = false;
   double ground_margin = 3.0;  // m of ground beyond the vehicle on each side
   std::vector<std::string> modes{"bran", "sran", "sind"};
   uint64_t seed = 1;        // query scans
   uint64_t fleet_seed = 1;  // procedural vehicles
   uint32_t max_k = 10;
+  uint32_t transfer_models = RecognizerConfig{}.transfer_models;
   bool models_given = false;
 };
 
 using Sessions = std::vector<std::unique_ptr<cli::RecognitionSession>>;
 
-bool open_sessions(const Database& db, const std::vector<Mode>& modes, Sessions* out, std::string* error) {
+// One session per mode; keep_ground turns the recognizer's ground removal off.
+bool open_sessions(const Database& db, const AccuracyArgs& a, const std::vector<Mode>& modes, bool keep_ground,
+                   Sessions* out, std::string* error) {
   for (Mode m : modes) {
-    RecognizerConfig cfg;  // library defaults: the experiment measures them
+    RecognizerConfig cfg;  // library defaults (but --transfer-models): the experiment measures them
     cfg.mode = m;
+    cfg.transfer_models = a.transfer_models;
+    if (keep_ground) cfg.ground_clearance = 0.0f;
     out->push_back(std::make_unique<cli::RecognitionSession>());
     if (!out->back()->init(&db, cfg, error)) return false;
   }
@@ -51,13 +57,14 @@ bool open_sessions(const Database& db, const std::vector<Mode>& modes, Sessions*
 }
 
 // Every query of every condition through every mode.
-bool run_queries(const AccuracyArgs& a, const std::vector<cli::ModelMesh>& meshes, Sessions& sessions,
+bool run_queries(const AccuracyArgs& a, const std::vector<cli::ModelMesh>& meshes, Sessions (&all_sessions)[2],
                  AccuracyRun* run, std::string* error) {
   const uint32_t per_condition = static_cast<uint32_t>(meshes.size()) * a.queries_per_model;
   for (uint32_t c = 0; c < run->conditions.size(); ++c) {
     const QueryCondition& cond = run->conditions[c];
     std::fprintf(stderr, "spinhash experiment accuracy: condition %u/%zu: %s\n", c + 1, run->conditions.size(),
                  cond.label().c_str());
+    Sessions& sessions = all_sessions[cond.ground == Ground::kKept ? 1 : 0];
     cli::Progress progress(cond.label(), per_condition);
     uint32_t done = 0;
     for (uint32_t m = 0; m < meshes.size(); ++m)
@@ -81,7 +88,7 @@ int run_accuracy(const AccuracyArgs& a) {
   run.queries_per_model = a.queries_per_model;
   run.max_k = a.max_k;
   run.ground_margin = a.ground_margin;
-  run.conditions = make_conditions(a.noise, a.occlusion, a.ground, a.ground_filter);
+  run.conditions = make_conditions(a.noise, a.occlusion, a.ground, a.ground_kept);
   std::vector<cli::ModelMesh> meshes;
   std::vector<host::ModelCloud> clouds;
   if (!parse_modes(a.modes, &run.modes, &error) || !make_output_dir(a.out, &error)) {
@@ -100,16 +107,17 @@ int run_accuracy(const AccuracyArgs& a) {
   }
   for (const cli::ModelMesh& m : meshes) run.model_names.push_back(m.name);
   std::unique_ptr<MemoryDatabase> mdb;
-  Sessions sessions;
+  Sessions sessions[2];  // [0] library defaults, [1] ground removal off (--ground-kept)
   if (!model_clouds(meshes, &clouds, &error) ||
       !(mdb = build_memory_database(clouds, host::BuildOptions{}, false, &error)) ||
-      !open_sessions(mdb->db, run.modes, &sessions, &error)) {
+      !open_sessions(mdb->db, a, run.modes, false, &sessions[0], &error) ||
+      (a.ground_kept && !open_sessions(mdb->db, a, run.modes, true, &sessions[1], &error))) {
     std::fprintf(stderr, "spinhash experiment accuracy: %s\n", error.c_str());
     return cli::kExitError;
   }
   clouds.clear();
   run.database = database_text(*mdb);
-  run.recognizer = recognizer_text(sessions.front()->config());
+  run.recognizer = recognizer_text(sessions[0].front()->config());
   std::fprintf(stderr, "spinhash experiment accuracy: %s\n", run.database.c_str());
   if (!run_queries(a, meshes, sessions, &run, &error) || !write_accuracy_report(run, &error)) {
     std::fprintf(stderr, "spinhash experiment accuracy: %s\n", error.c_str());
@@ -137,14 +145,16 @@ void add_accuracy_experiment(CLI::App* parent, int* exit_code) {
   cmd->add_option("--occlusion", a->occlusion, "occluded fractions")->delimiter(',')
       ->check(CLI::Range(0.0, 0.9))->capture_default_str();
   cmd->add_flag("--ground", a->ground, "also run every condition with the ground around the vehicle scanned");
-  cmd->add_flag("--ground-filter", a->ground_filter,
-                "also run every condition with the ground scanned, then removed by a level-ground height filter");
+  cmd->add_flag("--ground-kept", a->ground_kept,
+                "also run every condition with the ground scanned and the recognizer's ground removal off");
   cmd->add_option("--ground-margin", a->ground_margin, "ground beyond the vehicle on each side, m")
       ->check(CLI::Range(0.0, 100.0))->capture_default_str();
   cmd->add_option("--modes", a->modes, "bran, sran, sind")->delimiter(',')->capture_default_str();
   cmd->add_option("--seed", a->seed, "seed of the query scans")->capture_default_str();
   cmd->add_option("--fleet-seed", a->fleet_seed, "seed of the procedural fleet")->capture_default_str();
   cmd->add_option("--max-k", a->max_k, "largest k of the curves")->check(CLI::Range(1u, 1000u))->capture_default_str();
+  cmd->add_option("--transfer-models", a->transfer_models, "BRAN's look-alike pose transfer (0: the paper's BRAN)")
+      ->check(CLI::Range(0u, kMaxTransferModels))->capture_default_str();
   cmd->callback([a, exit_code]() { *exit_code = run_accuracy(*a); });
 }
 

@@ -6,7 +6,6 @@
 #include "cli/recognizer_flags.hpp"
 #include "experiment/accuracy_data.hpp"
 #include "experiment/csv_table.hpp"
-#include "experiment/ground_filter.hpp"
 #include "experiment/gnuplot.hpp"
 #include "experiment/output_dir.hpp"
 #include "experiment/plot_styles.hpp"
@@ -33,7 +32,7 @@ std::string curve_file(const QueryCondition& c) { return "curves/" + c.label() +
 std::string condition_title(const QueryCondition& c) {
   std::ostringstream s;
   s << "noise " << c.noise * 100.0 << " cm, occlusion " << c.occlusion * 100.0 << "%"
-    << (c.ground == Ground::kScanned ? ", ground" : c.ground == Ground::kFiltered ? ", ground filtered out" : "");
+    << (c.ground == Ground::kScanned ? ", ground removed" : c.ground == Ground::kKept ? ", ground kept (removal off)" : "");
   return s.str();
 }
 
@@ -154,19 +153,19 @@ bool write_plots(const AccuracyRun& run, std::vector<std::string>* made, std::st
     if (std::find(occ.begin(), occ.end(), c.occlusion) == occ.end()) occ.push_back(c.occlusion);
   const size_t cols = occ.size();
   std::vector<std::string> overviews;
-  for (Ground g : {Ground::kNone, Ground::kScanned, Ground::kFiltered}) {
+  for (Ground g : {Ground::kNone, Ground::kScanned, Ground::kKept}) {
     std::vector<const QueryCondition*> page;
     for (const QueryCondition& c : run.conditions)
       if (c.ground == g) page.push_back(&c);
     if (page.empty()) continue;
     const size_t rows = (page.size() + cols - 1) / cols;
     const std::string name = std::string("accuracy_overview") + (g == Ground::kNone ? "" : "_ground") +
-                             (g == Ground::kFiltered ? "_filtered" : "");
+                             (g == Ground::kKept ? "_kept" : "");
     std::ostringstream body;
     body << curve_axes(run) << "set multiplot layout " << rows << "," << cols << " title '"
          << run.model_names.size() << " models, " << run.queries_per_model * run.model_names.size()
-         << " queries per condition" << (g == Ground::kScanned ? ", ground scanned" : "")
-         << (g == Ground::kFiltered ? ", ground scanned then filtered out" : "") << "'\n";
+         << " queries per condition" << (g == Ground::kScanned ? ", ground scanned (removed by the recognizer)" : "")
+         << (g == Ground::kKept ? ", ground scanned and kept (removal off)" : "") << "'\n";
     for (size_t i = 0; i < page.size(); ++i) body << curve_plot_command(run, *page[i], i == 0);
     body << "unset multiplot\n";
     if (!render_plot(run.out_dir, name, body.str(), std::max(kMinPageWidth, static_cast<int>(cols) * kPanelWidth),
@@ -242,17 +241,18 @@ int matching(const AccuracyRun& run, const QueryCondition& c, Ground ground) {
 
 std::string ground_section(const AccuracyRun& run) {
   std::ostringstream s;
-  bool scanned = false, filtered = false;
+  bool scanned = false, kept = false;
   for (const QueryCondition& c : run.conditions) {
     scanned = scanned || c.ground == Ground::kScanned;
-    filtered = filtered || c.ground == Ground::kFiltered;
+    kept = kept || c.ground == Ground::kKept;
   }
-  if (!scanned && !filtered) return "";
+  if (!scanned && !kept) return "";
   s << "\n## Ground (every airborne scan has it)\n\nTop-1 without ground";
-  if (scanned) s << " -> with a ground square reaching " << run.ground_margin << " m beyond the vehicle";
-  if (filtered)
-    s << " -> with that ground removed before recognition (level ground at the " << kGroundPercentile * 100.0
-      << "th percentile of z, points within " << kGroundClearance << " m above it dropped)";
+  if (scanned)
+    s << " -> with a ground square reaching " << run.ground_margin
+      << " m beyond the vehicle scanned too (the recognizer's default level-ground removal, ground_clearance "
+      << RecognizerConfig{}.ground_clearance << " m)";
+  if (kept) s << " -> the same scans with the ground removal off (what a pipeline without it sees)";
   s << ":\n\n| noise, occlusion |";
   for (Mode m : run.modes) s << " " << mode_title(m) << " |";
   s << "\n|---|";
@@ -261,20 +261,21 @@ std::string ground_section(const AccuracyRun& run) {
   for (uint32_t c = 0; c < run.conditions.size(); ++c) {
     const QueryCondition& off = run.conditions[c];
     if (off.ground != Ground::kNone) continue;
-    const int on = matching(run, off, Ground::kScanned), fil = matching(run, off, Ground::kFiltered);
+    const int on = matching(run, off, Ground::kScanned), kept_c = matching(run, off, Ground::kKept);
     s << "| " << off.noise * 100.0 << " cm, " << off.occlusion * 100.0 << "% |";
     for (uint32_t m = 0; m < run.modes.size(); ++m) {
       s << " " << pct(topk_curve(run, c, m)[0]) << "%";
       if (on >= 0) s << " -> " << pct(topk_curve(run, static_cast<uint32_t>(on), m)[0]) << "%";
-      if (fil >= 0) s << " -> " << pct(topk_curve(run, static_cast<uint32_t>(fil), m)[0]) << "%";
+      if (kept_c >= 0) s << " -> " << pct(topk_curve(run, static_cast<uint32_t>(kept_c), m)[0]) << "%";
       s << " |";
     }
     s << "\n";
   }
-  s << "\nModels most often ranked first with the ground scanned (all modes):";
+  if (!kept) return s.str();
+  s << "\nModels most often ranked first with the ground kept (all modes):";
   std::vector<uint32_t> firsts(run.model_names.size(), 0);
   for (const AccuracyRecord& r : run.records)
-    if (run.conditions[r.condition].ground == Ground::kScanned && r.outcome.ranked > 0) ++firsts[r.outcome.best_model];
+    if (run.conditions[r.condition].ground == Ground::kKept && r.outcome.ranked > 0) ++firsts[r.outcome.best_model];
   std::vector<uint32_t> order(firsts.size());
   for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return firsts[a] > firsts[b]; });

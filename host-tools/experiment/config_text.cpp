@@ -20,6 +20,7 @@ std::string recognizer_text(const RecognizerConfig& c) {
   s << "W = " << c.top_w << " (BRAN), " << c.top_w_sran << " (SRAN), " << c.top_w_sind
     << " (SIND); trials " << c.max_trials << " (BRAN), " << c.sran_trials << " per model (SRAN); max hypotheses "
     << c.max_hypotheses << "; max bucket scan " << c.max_bucket_scan << "; max features " << c.max_features
+    << "; look-alike pose transfer " << c.transfer_models << " models per leading pose (BRAN; 0: the paper's BRAN)"
     << "; seed " << c.seed;
   return s.str();
 }

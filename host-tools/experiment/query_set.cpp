@@ -4,7 +4,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "experiment/ground_filter.hpp"
 #include "mesh/vehicle_generator.hpp"
 #include "scan/scan_simulator.hpp"
 
@@ -17,13 +16,13 @@ constexpr uint64_t kQuerySeedStride = 7919;
 }  // namespace
 
 const char* ground_name(Ground g) {
-  return g == Ground::kNone ? "none" : g == Ground::kScanned ? "scanned" : "filtered";
+  return g == Ground::kNone ? "none" : g == Ground::kScanned ? "scanned" : "kept";
 }
 
 std::string QueryCondition::label() const {
   std::ostringstream s;
   s << "noise" << noise << "_occ" << occlusion
-    << (ground == Ground::kScanned ? "_ground" : ground == Ground::kFiltered ? "_ground_filtered" : "");
+    << (ground == Ground::kScanned ? "_ground" : ground == Ground::kKept ? "_ground_kept" : "");
   return s.str();
 }
 
@@ -55,15 +54,14 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
   out->object_points = static_cast<uint32_t>(std::count(scan.on_object.begin(), scan.on_object.end(), 1));
   out->xyz = std::move(scan.xyz);
   out->true_pose = scan.true_pose;
-  if (c.ground == Ground::kFiltered) remove_level_ground(&out->xyz);
   return true;
 }
 
 std::vector<QueryCondition> make_conditions(const std::vector<double>& noise, const std::vector<double>& occlusion,
-                                            bool with_ground, bool with_filtered) {
+                                            bool with_ground, bool with_kept) {
   std::vector<QueryCondition> out;
-  for (Ground g : {Ground::kNone, Ground::kScanned, Ground::kFiltered}) {
-    if ((g == Ground::kScanned && !with_ground) || (g == Ground::kFiltered && !with_filtered)) continue;
+  for (Ground g : {Ground::kNone, Ground::kScanned, Ground::kKept}) {
+    if ((g == Ground::kScanned && !with_ground) || (g == Ground::kKept && !with_kept)) continue;
     for (double n : noise)
       for (double o : occlusion) out.push_back(QueryCondition{n, o, g});
   }

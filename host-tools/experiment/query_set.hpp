@@ -14,10 +14,10 @@ namespace spinhash::experiment {
 
 enum class Ground : uint8_t {
   kNone,      // the vehicle alone (the paper's setting)
-  kScanned,   // a ground square around the vehicle scanned with it
-  kFiltered,  // scanned, then removed by remove_level_ground() before recognition
+  kScanned,   // a ground square around the vehicle scanned with it (removed by the recognizer's default)
+  kKept,      // scanned, and the recognizer's ground removal turned off (ground_clearance = 0)
 };
-const char* ground_name(Ground g);  // "none", "scanned", "filtered"
+const char* ground_name(Ground g);  // "none", "scanned", "kept"
 
 struct QueryCondition {
   double noise = 0.05;     // m along each ray
@@ -44,8 +44,8 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
                     uint64_t base_seed, double ground_margin, Query* out, std::string* error);
 
 // Cartesian product of the lists, ground states outermost: none, then
-// scanned (with_ground), then filtered (with_filtered).
+// scanned (with_ground), then scanned and kept (with_kept).
 std::vector<QueryCondition> make_conditions(const std::vector<double>& noise, const std::vector<double>& occlusion,
-                                            bool with_ground, bool with_filtered);
+                                            bool with_ground, bool with_kept);
 
 }  // namespace spinhash::experiment

@@ -10,6 +10,7 @@
 #include "cli/progress.hpp"
 #include "cli/recognizer_flags.hpp"
 #include "experiment/config_text.hpp"
+#include "spinhash/limits.hpp"
 #include "experiment/experiments.hpp"
 #include "experiment/memory_database.hpp"
 #include "experiment/model_set.hpp"
@@ -36,6 +37,7 @@ struct ScalingArgs {
   // sizes it runs on the first few queries only (stated in the summary).
   uint32_t sran_queries_large = 10;
   uint32_t sran_large_from = 250;
+  uint32_t transfer_models = RecognizerConfig{}.transfer_models;  // BRAN (0: the paper's BRAN)
 };
 
 bool make_queries(const ScalingArgs& a, const std::vector<cli::ModelMesh>& meshes, uint32_t pool,
@@ -69,6 +71,7 @@ bool measure_size(const ScalingArgs& a, const std::vector<host::ModelCloud>& all
   for (uint32_t m = 0; m < run->modes.size(); ++m) {
     RecognizerConfig cfg;
     cfg.mode = run->modes[m];
+    cfg.transfer_models = a.transfer_models;
     cli::RecognitionSession session;
     if (!session.init(&mdb->db, cfg, error)) return false;
     run->recognizer = recognizer_text(session.config());
@@ -128,6 +131,8 @@ void add_scaling_experiment(CLI::App* parent, int* exit_code) {
   cmd->add_option("--fleet-seed", a->fleet_seed, "seed of the procedural fleet")->capture_default_str();
   cmd->add_option("--sran-queries-large", a->sran_queries_large, "SRAN's queries at the large sizes")
       ->check(CLI::Range(1u, kMaxQueries))->capture_default_str();
+  cmd->add_option("--transfer-models", a->transfer_models, "BRAN's look-alike pose transfer (0: the paper's BRAN)")
+      ->check(CLI::Range(0u, kMaxTransferModels))->capture_default_str();
   cmd->add_option("--sran-large-from", a->sran_large_from, "sizes from which SRAN runs fewer queries")
       ->capture_default_str();
   cmd->callback([a, exit_code]() { *exit_code = run_scaling(*a); });

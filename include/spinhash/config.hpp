@@ -40,6 +40,13 @@ struct RecognizerConfig {
   uint32_t max_spin_dims = 256;      // d: largest spin image (bins_alpha * bins_beta) supported
   float query_basis_spacing = 0.0f;  // m between query basis points; 0: the database's spacing
 
+  // Airborne scans hold the ground around the vehicle, which no model has.
+  // When at least 35% of the points lie in a level slab at the bottom of
+  // the cloud (z up), that slab is dropped up to this height above the
+  // ground: 5 sigma of 5 cm noise, taking the bottom of the wheels too
+  // (geometry/ground.hpp; not in the paper). 0 keeps every point.
+  float ground_clearance = 0.25f;    // m
+
   // Spin-image pruning (section 5).
   uint32_t top_w = 50;               // W for BRAN (paper: 50)
   uint32_t top_w_sran = 5;           // W for SRAN, per model (paper: 5)

@@ -12,6 +12,8 @@ constexpr uint32_t kMaxSpinDims = kMaxSpinBinsPerAxis * kMaxSpinBinsPerAxis;  //
 constexpr uint32_t kMaxLshBits = 64;            // K: bits per key (one uint64 key)
 constexpr uint32_t kMaxLshTables = 64;          // L
 constexpr uint32_t kMaxCandidates = 128;        // W: candidates kept per query feature
+// Largest ground clearance, m (RecognizerConfig::ground_clearance).
+constexpr float kMaxGroundClearance = 10.0f;
 // Largest RecognizerConfig::transfer_models (look-alike pose transfer).
 constexpr uint32_t kMaxTransferModels = 64;
 constexpr uint32_t kMaxModelNameBytes = 48;     // including the terminating NUL

@@ -19,8 +19,8 @@ struct WorkspaceThreshold {
   size_t points_20000;    // RecognizerConfig{} with max_points = 20000
 };
 // Pointer-sized members make 64-bit layouts larger than 32-bit ones.
-constexpr WorkspaceThreshold kThreshold64 = {6308256, 5478336};
-constexpr WorkspaceThreshold kThreshold32 = {6308144, 5478224};
+constexpr WorkspaceThreshold kThreshold64 = {6312384, 5482464};
+constexpr WorkspaceThreshold kThreshold32 = {6312272, 5482352};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
 constexpr size_t kToleranceBytes = 1024;
