@@ -1,19 +1,7 @@
 # Cross build for 64-bit Arm (little-endian) Linux; tests run under qemu-user (aarch64) with the target's
 # runtime from /usr/aarch64-linux-gnu (Debian's cross packages put it there).
 # cmake -S . -B build-cross-aarch64 -DCMAKE_TOOLCHAIN_FILE=toolchains/aarch64-linux-gnu.cmake -DSPINHASH_HOST_TOOLS=OFF
-set(CMAKE_SYSTEM_NAME Linux)
 set(CMAKE_SYSTEM_PROCESSOR aarch64)
 set(SPINHASH_TRIPLE aarch64-linux-gnu)
-
-set(CMAKE_C_COMPILER ${SPINHASH_TRIPLE}-gcc)
-set(CMAKE_CXX_COMPILER ${SPINHASH_TRIPLE}-g++)
-set(CMAKE_FIND_ROOT_PATH /usr/${SPINHASH_TRIPLE})
-set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
-set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
-# Header-only host packages (Eigen, doctest) are found through their CMake
-# configs under /usr/share and /usr/lib/cmake; they hold no target code.
-set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE BOTH)
-
-find_program(SPINHASH_QEMU qemu-aarch64 REQUIRED)
-set(CMAKE_CROSSCOMPILING_EMULATOR ${SPINHASH_QEMU} -L /usr/${SPINHASH_TRIPLE})
+set(SPINHASH_QEMU_NAME qemu-aarch64)
+include(${CMAKE_CURRENT_LIST_DIR}/linux-cross-common.cmake)

@@ -4,13 +4,11 @@
 // Runs the built binary (SPINHASH_TEST_BINARY) on small temporary files.
 #include <doctest/doctest.h>
 
-#include <sys/wait.h>
-
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "cli_runner.hpp"
 #include "geometry_test_support.hpp"
 #include "spinhash/status.hpp"
 
@@ -25,20 +23,8 @@ constexpr int kExitOk = 0;
 constexpr int kExitError = 1;
 constexpr int kExitCheckFailed = 3;
 
-struct Run {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-  std::vector<std::string> lines() const {
-    std::vector<std::string> v;
-    size_t start = 0;
-    for (size_t nl; (nl = out.find('\n', start)) != std::string::npos; start = nl + 1)
-      v.push_back(out.substr(start, nl - start));
-    return v;
-  }
-};
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using Run = spinhash::host::test::CliRun;
+using spinhash::host::test::contains;
 
 // Two generated vehicles, their database and a small scan, made once.
 struct Fixture {
@@ -48,17 +34,8 @@ struct Fixture {
   std::string query = dir.file("view.ply");
   std::string good_bytes;
 
-  Run run(const std::string& args) const {
-    const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
-    const std::string cmd = "'" SPINHASH_TEST_BINARY "' " + args + " > '" + out + "' 2> '" + err + "'";
-    const int raw = std::system(cmd.c_str());
-    Run r;
-    r.exit_code = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = read_bytes(out);
-    r.err = read_bytes(err);
-    return r;
-  }
-  std::string q(const std::string& path) const { return "'" + path + "'"; }
+  Run run(const std::string& args) const { return spinhash::host::test::run_spinhash(dir, args); }
+  std::string q(const std::string& path) const { return spinhash::host::test::shell_quoted(path); }
 
   Fixture() {
     REQUIRE(run("generate --count 2 -o " + q(meshes)).exit_code == kExitOk);
