@@ -18,9 +18,11 @@ struct WarzoneVehicle {
 // plus the one-piece "Babas" vehicles (jeep, buggy, trike, bus, fire truck).
 std::vector<WarzoneVehicle> warzone_vehicles();
 
-// Directory of the structures under the base.wz root, and whether a file
-// there is a texture-only variant of another (same geometry: *_col, *_nex).
+// Directories of the structures and of the map features (trees, rocks,
+// wrecks, ruins) under the base.wz root, and whether a file there is a
+// texture-only variant of another (same geometry: *_col, *_nex).
 constexpr const char* kWarzoneStructureDir = "structs";
+constexpr const char* kWarzoneFeatureDir = "features";
 bool is_texture_variant(const std::string& stem);
 
 }  // namespace spinhash::experiment
