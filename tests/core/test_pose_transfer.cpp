@@ -18,17 +18,26 @@ constexpr uint32_t kTwinned = 2;  // toy-2 gets an exact twin, the database's la
 // Recognises a moved, noisy view of toy-2 with W = 1: each query feature's
 // single candidate is toy-2's copy of a feature (equal distances go to the
 // lower feature index), so the twin never takes part in a doublet.
-Result recognize_twinned(const test::ToyDatabase& toy, uint32_t transfer_models, host::AlignedBytes* ws) {
-  RecognizerConfig cfg;
-  cfg.top_w = 1;
-  cfg.transfer_models = transfer_models;
-  *ws = host::AlignedBytes(required_workspace_bytes(cfg));
-  Recognizer r;
-  REQUIRE(r.init(&toy.db, cfg, ws->data(), ws->size()) == Status::kOk);
-  const double t[3] = {120.0, -40.0, 3.0};
-  std::vector<double> q = test::toy_query(test::toy_vehicle_points(kTwinned, 0.05f), 0.7, t, 0.03, 5);
-  return r.recognize(q.data(), static_cast<uint32_t>(q.size() / 3));
-}
+struct Twinned {
+  test::ToyDatabase toy;
+  host::AlignedBytes ws;
+  const uint32_t twin = test::kToyModels;
+  Twinned() { REQUIRE(test::make_toy_database(&toy, kTwinned)); }
+
+  Result recognize(uint32_t transfer_models) {
+    RecognizerConfig cfg;
+    cfg.top_w = 1;
+    cfg.transfer_models = transfer_models;
+    ws = host::AlignedBytes(required_workspace_bytes(cfg));
+    Recognizer r;
+    REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
+    const double t[3] = {120.0, -40.0, 3.0};
+    std::vector<double> q = test::toy_query(test::toy_vehicle_points(kTwinned, 0.05f), 0.7, t, 0.03, 5);
+    Result res = r.recognize(q.data(), static_cast<uint32_t>(q.size() / 3));
+    REQUIRE(res.status == Status::kOk);
+    return res;
+  }
+};
 
 const RankedModel* find(const Result& r, uint32_t model) {
   for (uint32_t i = 0; i < r.ranking_count; ++i)
@@ -38,26 +47,16 @@ const RankedModel* find(const Result& r, uint32_t model) {
 
 }  // namespace
 
-TEST_CASE("a twin crowded out of the candidates gets no pose without transfer") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy, kTwinned));
-  const uint32_t twin = test::kToyModels;
-  host::AlignedBytes ws;
-  Result r = recognize_twinned(toy, 0, &ws);
-  REQUIRE(r.status == Status::kOk);
+TEST_CASE_FIXTURE(Twinned, "a twin crowded out of the candidates gets no pose without transfer") {
+  Result r = recognize(0);
   REQUIRE(r.ranking_count >= 1);
   CHECK(r.ranking[0].model == kTwinned);
   const RankedModel* t = find(r, twin);
   CHECK((t == nullptr || !t->has_pose));
 }
 
-TEST_CASE("pose transfer scores the twin at the leading pose, as well as the original") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy, kTwinned));
-  const uint32_t twin = test::kToyModels;
-  host::AlignedBytes ws;
-  Result r = recognize_twinned(toy, 8, &ws);
-  REQUIRE(r.status == Status::kOk);
+TEST_CASE_FIXTURE(Twinned, "pose transfer scores the twin at the leading pose, as well as the original") {
+  Result r = recognize(8);
   REQUIRE(r.ranking_count >= 2);
   // Identical geometry at an identical pose: the two lead, with equal scores.
   CHECK(((r.ranking[0].model == kTwinned && r.ranking[1].model == twin) ||
