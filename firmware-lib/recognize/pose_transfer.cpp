@@ -5,8 +5,9 @@
 // the same likelihood, on the models whose bounding boxes (each in its own
 // frame) are nearest the posed model's; the least-squares refinement of the
 // leading models then settles the fit. A model in another frame convention
-// has a distant box and is not tried. Bounded:
-// kTransferPoses x kMaxTransferModels extra verifications.
+// just scores badly at a lent pose and changes nothing. Bounded:
+// kTransferPoses x kMaxTransferModels extra verifications, after the
+// hypothesis budget (counted in RecognitionStats::transferred).
 #include <cmath>
 
 #include "recognize/search_context.hpp"
