@@ -88,7 +88,7 @@ bool write_csvs(const ScalingRun& run, std::string* error) {
       longform.add({std::to_string(b.models), std::to_string(b.features), cli::mode_name(run.modes[m]),
                     std::to_string(c.ms.size()), num(median_of(c.ms)), num(mean_of(c.ms)), num(median_of(c.hyp)),
                     num(mean_of(c.hyp)), num(c.top(1)), num(c.top(5)), std::to_string(c.budget)});
-      row.insert(row.end(), {num(median_of(c.ms)), num(mean_of(c.ms)), num(std::max(mean_of(c.hyp), 0.5)),
+      row.insert(row.end(), {num(median_of(c.ms)), num(mean_of(c.ms)), num(mean_of(c.hyp)),
                              num(c.top(1))});
     }
     wide.add(row);
