@@ -9,27 +9,6 @@ namespace spinhash {
 namespace host {
 namespace {
 
-// Per-dimension range C_i, the `quantile` of the dimension's values (at least 1):
-// thresholds 0..C_i-1 make P(bit differs) = |min(q1, C_i) - min(q2, C_i)| / C_i,
-// so eq. 2 holds exactly for the clamped images. Clamping at a high quantile
-// instead of the maximum keeps d_c near the distances that matter: spin images
-// are sparse and heavy-tailed, and d_c = sum of maxima makes every key collide.
-std::vector<uint32_t> dimension_ranges(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features,
-                                       float quantile) {
-  std::vector<uint32_t> range(dims, 1u);
-  std::vector<uint32_t> histogram(256);
-  const uint64_t rank = static_cast<uint64_t>(quantile * static_cast<float>(features));
-  for (uint32_t d = 0; d < dims; ++d) {
-    std::fill(histogram.begin(), histogram.end(), 0u);
-    for (uint32_t f = 0; f < features; ++f) ++histogram[spins[static_cast<size_t>(f) * dims + d]];
-    uint64_t seen = 0;
-    uint32_t v = 0;
-    while (v < 255u && (seen += histogram[v]) <= rank) ++v;
-    range[d] = std::max(1u, v);
-  }
-  return range;
-}
-
 // Draws a value in [0, n) from 64 random bits (same on every standard library).
 uint32_t draw_below(std::mt19937_64& rng, uint64_t n) { return static_cast<uint32_t>(rng() % n); }
 
@@ -65,6 +44,27 @@ uint32_t bucket_count_for(uint32_t features) {
 }
 
 }  // namespace
+
+// Per-dimension range C_i, the `quantile` of the dimension's values (at least 1):
+// thresholds 0..C_i-1 make P(bit differs) = |min(q1, C_i) - min(q2, C_i)| / C_i,
+// so eq. 2 holds exactly for the clamped images. Clamping at a high quantile
+// instead of the maximum keeps d_c near the distances that matter: spin images
+// are sparse and heavy-tailed, and d_c = sum of maxima makes every key collide.
+std::vector<uint32_t> dimension_ranges(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features,
+                                       float quantile) {
+  std::vector<uint32_t> range(dims, 1u);
+  std::vector<uint32_t> histogram(256);
+  const uint64_t rank = static_cast<uint64_t>(quantile * static_cast<float>(features));
+  for (uint32_t d = 0; d < dims; ++d) {
+    std::fill(histogram.begin(), histogram.end(), 0u);
+    for (uint32_t f = 0; f < features; ++f) ++histogram[spins[static_cast<size_t>(f) * dims + d]];
+    uint64_t seen = 0;
+    uint32_t v = 0;
+    while (v < 255u && (seen += histogram[v]) <= rank) ++v;
+    range[d] = std::max(1u, v);
+  }
+  return range;
+}
 
 LshTables build_lsh_tables(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features,
                            uint32_t tables, uint32_t bits_per_key, float range_quantile, uint64_t seed) {

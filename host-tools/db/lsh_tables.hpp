@@ -19,6 +19,11 @@ struct LshTables {
   double mean_bucket = 0.0;
 };
 
+// Per-dimension LSH range C_i: the `quantile` of the dimension's values
+// over all features (at least 1); their sum is eq. 2's d_c.
+std::vector<uint32_t> dimension_ranges(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features,
+                                       float quantile);
+
 LshTables build_lsh_tables(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features,
                            uint32_t tables, uint32_t bits_per_key, float range_quantile, uint64_t seed);
 

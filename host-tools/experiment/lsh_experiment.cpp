@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
+#include "db/lsh_tables.hpp"
 #include "experiment/config_text.hpp"
 #include "experiment/experiments.hpp"
 #include "experiment/lsh_measure.hpp"
@@ -111,7 +112,7 @@ int run_lsh(const LshArgs& a) {
   run.database = database_text(*mdb);
   run.database_features = mdb->db.feature_count();
   const std::vector<uint32_t> ranges =
-      lsh_ranges(mdb->content.spins, mdb->db.spin_dims(), mdb->db.feature_count(), build.lsh_range_quantile);
+      host::dimension_ranges(mdb->content.spins, mdb->db.spin_dims(), mdb->db.feature_count(), build.lsh_range_quantile);
   for (uint32_t r : ranges) run.d_c += r;
   run.d_c_matches_builder = std::abs(run.d_c - mdb->db.params().lsh_dc) < 0.5;
   run.bins = kDistanceBins;

@@ -182,24 +182,6 @@ bool probe_features(const MemoryDatabase& mdb, const RecognizerConfig& cfg, cons
   return true;
 }
 
-std::vector<uint32_t> lsh_ranges(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features,
-                                 float quantile) {
-  // Mirrors dimension_ranges() in host-tools/db/lsh_tables.cpp; the caller
-  // checks the sum against the builder's d_c.
-  std::vector<uint32_t> range(dims, 1u);
-  std::vector<uint32_t> histogram(256);
-  const uint64_t rank = static_cast<uint64_t>(quantile * static_cast<float>(features));
-  for (uint32_t d = 0; d < dims; ++d) {
-    std::fill(histogram.begin(), histogram.end(), 0u);
-    for (uint32_t f = 0; f < features; ++f) ++histogram[spins[static_cast<size_t>(f) * dims + d]];
-    uint64_t seen = 0;
-    uint32_t v = 0;
-    while (v < 255u && (seen += histogram[v]) <= rank) ++v;
-    range[d] = std::max(1u, v);
-  }
-  return range;
-}
-
 bool measure_lsh_config(const MemoryDatabase& mdb, const host::BuildOptions& build, const RecognizerConfig& cfg,
                         const std::vector<ProbeFeature>& probes, uint32_t pair_features,
                         const std::vector<uint32_t>& ranges, double bin_width, uint32_t bins,

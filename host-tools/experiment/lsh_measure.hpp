@@ -31,11 +31,6 @@ struct ProbeFeature {
 bool probe_features(const MemoryDatabase& mdb, const RecognizerConfig& cfg, const Query& q, uint32_t per_query,
                     std::vector<ProbeFeature>* out, std::string* error);
 
-// Per-dimension LSH ranges C_i as the builder draws them (its quantile of
-// each dimension, at least 1); their sum is eq. 2's d_c.
-std::vector<uint32_t> lsh_ranges(const std::vector<uint8_t>& spins, uint32_t dims, uint32_t features,
-                                 float quantile);
-
 // One (K, L): tables built like the builder's, recall of the W candidates
 // of the core's LshSearcher, and key collisions of the first pair_features
 // probes against every database feature, binned by clamped L1 distance.
