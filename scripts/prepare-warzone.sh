@@ -2,15 +2,15 @@
 # Real artist-made models for the experiments: downloads Debian's
 # warzone2100-data with apt-get download (GPL game content: never commit it),
 # unpacks base.wz and converts its vehicles, structures and map features to
-# OBJ meshes (spinhash experiment prepare-warzone).
+# OBJ meshes (spinhash-experiment prepare-warzone).
 #
-#   scripts/prepare-warzone.sh [OUT_DIR] [SPINHASH_BIN]
+#   scripts/prepare-warzone.sh [OUT_DIR] [EXPERIMENT_BIN]
 #       OUT_DIR defaults to out/warzone; meshes land in OUT_DIR/meshes/{vehicles,structures,features}
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${1:-$root/out/warzone}
-spinhash=${2:-$root/build/host-tools/spinhash}
-[[ -x "$spinhash" ]] || { echo "prepare-warzone: no spinhash binary at $spinhash (build first)" >&2; exit 1; }
+spinhash=${2:-$root/build/experiments/spinhash-experiment}
+[[ -x "$spinhash" ]] || { echo "prepare-warzone: no spinhash-experiment binary at $spinhash (build first)" >&2; exit 1; }
 if ! command -v unzip >/dev/null; then
   [[ $(id -u) -eq 0 ]] || { echo "prepare-warzone: unzip missing (apt-get install unzip)" >&2; exit 1; }
   apt-get install -y -q unzip >/dev/null
@@ -26,5 +26,5 @@ base_wz=$(find "$work/x" -name base.wz | head -n 1)
 [[ -n "$base_wz" ]] || { echo "prepare-warzone: base.wz not found in $deb" >&2; exit 1; }
 rm -rf "$work/base"
 unzip -q "$base_wz" -d "$work/base"
-"$spinhash" experiment prepare-warzone --base "$work/base" -o "$out/meshes"
+"$spinhash" prepare-warzone --base "$work/base" -o "$out/meshes"
 echo "prepare-warzone: meshes in $out/meshes (catalog.csv lists them)"

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "geometry/cell_grid.hpp"
+#include "spinhash/internal/spin_quantize.hpp"  // quantize_spin
 
 namespace spinhash {
 
@@ -27,8 +28,5 @@ void normalise_spin(float* image, uint32_t dims);
 void compute_spin_image(const SpinImageParams& sp, const CellGrid& grid, const float* points,
                         const float* normals, const uint8_t* has_normal, const float* p,
                         const float* n, float* image);
-
-// q = min(255, round(v * scale)): the database's stored form of a spin image.
-void quantize_spin(const float* image, uint32_t dims, float scale, uint8_t* out);
 
 }  // namespace spinhash

@@ -1,4 +1,4 @@
-#include "index/candidates.hpp"
+#include "spinhash/internal/lsh_search.hpp"
 
 #include <cmath>
 

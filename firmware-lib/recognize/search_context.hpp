@@ -2,7 +2,7 @@
 #pragma once
 #include <cstdint>
 
-#include "index/candidates.hpp"
+#include "spinhash/internal/lsh_search.hpp"
 #include "match/doublet.hpp"
 #include "match/likelihood.hpp"
 #include "spinhash/features.hpp"

@@ -2,10 +2,17 @@
 #include <cstdio>
 #include <memory>
 
-#include "cli/build_database_file.hpp"
+#include "pipeline/build_database_file.hpp"
 #include "cli/commands.hpp"
 
 namespace spinhash::cli {
+
+using pipeline::BuildSettings;
+using pipeline::BuildSummary;
+using pipeline::ModelMesh;
+using pipeline::add_build_flags;
+using pipeline::build_database_file;
+using pipeline::load_model_meshes;
 namespace {
 
 struct BuildArgs {

@@ -3,10 +3,14 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "cli/database_file.hpp"
-#include "cli/recognition_session.hpp"
+#include "pipeline/database_file.hpp"
+#include "pipeline/recognition_session.hpp"
 
 namespace spinhash::cli {
+
+using pipeline::DatabaseFile;
+using pipeline::load_database;
+using pipeline::model_name;
 namespace {
 
 void print_params(const Database& db, uint64_t bytes) {

@@ -5,14 +5,19 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "cli/database_file.hpp"
+#include "pipeline/database_file.hpp"
 #include "cli/json_line.hpp"
-#include "cli/recognition_session.hpp"
-#include "cli/recognizer_flags.hpp"
+#include "pipeline/recognition_session.hpp"
+#include "pipeline/recognizer_flags.hpp"
 #include "cli/result_json.hpp"
 #include "cloud/cloud_reader.hpp"
 
 namespace spinhash::cli {
+
+using pipeline::DatabaseFile;
+using pipeline::RecognitionSession;
+using pipeline::add_recognizer_flags;
+using pipeline::load_database;
 namespace {
 
 struct RecognizeArgs {

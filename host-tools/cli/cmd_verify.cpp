@@ -5,14 +5,24 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "cli/database_file.hpp"
-#include "cli/model_sources.hpp"
-#include "cli/progress.hpp"
-#include "cli/recognition_session.hpp"
-#include "cli/recognizer_flags.hpp"
+#include "pipeline/database_file.hpp"
+#include "pipeline/model_sources.hpp"
+#include "pipeline/progress.hpp"
+#include "pipeline/recognition_session.hpp"
+#include "pipeline/recognizer_flags.hpp"
 #include "scan/scan_simulator.hpp"
 
 namespace spinhash::cli {
+
+using pipeline::DatabaseFile;
+using pipeline::ModelMesh;
+using pipeline::Progress;
+using pipeline::RecognitionSession;
+using pipeline::add_recognizer_flags;
+using pipeline::load_database;
+using pipeline::load_model_meshes;
+using pipeline::mode_name;
+using pipeline::model_name;
 namespace {
 
 struct VerifyArgs {

@@ -1,14 +1,16 @@
 // The spinhash subcommands. Each registers itself on the app and, when
 // chosen, stores its exit status in *exit_code:
-//   0 success, 1 error (message on stderr), 3 ran but a check or query failed.
+//   kExitOk, kExitError or kExitCheckFailed (pipeline/exit_codes.hpp).
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include "pipeline/exit_codes.hpp"
+
 namespace spinhash::cli {
 
-constexpr int kExitOk = 0;
-constexpr int kExitError = 1;
-constexpr int kExitCheckFailed = 3;
+using pipeline::kExitCheckFailed;
+using pipeline::kExitError;
+using pipeline::kExitOk;
 
 void add_build_command(CLI::App& app, int* exit_code);
 void add_info_command(CLI::App& app, int* exit_code);
@@ -16,6 +18,5 @@ void add_verify_command(CLI::App& app, int* exit_code);
 void add_scan_command(CLI::App& app, int* exit_code);
 void add_recognize_command(CLI::App& app, int* exit_code);
 void add_generate_command(CLI::App& app, int* exit_code);
-void add_experiment_command(CLI::App& app, int* exit_code);
 
 }  // namespace spinhash::cli

@@ -3,11 +3,11 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
-#include "cli/version.hpp"
+#include "pipeline/version.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"spinhash: 3D vehicle recognition in airborne lidar (spin images, LSH, batch RANSAC)"};
-  app.set_version_flag("--version", spinhash::cli::version());
+  app.set_version_flag("--version", spinhash::pipeline::version());
   app.require_subcommand(1);
   int exit_code = spinhash::cli::kExitOk;
   spinhash::cli::add_build_command(app, &exit_code);
@@ -16,7 +16,6 @@ int main(int argc, char** argv) {
   spinhash::cli::add_scan_command(app, &exit_code);
   spinhash::cli::add_recognize_command(app, &exit_code);
   spinhash::cli::add_generate_command(app, &exit_code);
-  spinhash::cli::add_experiment_command(app, &exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

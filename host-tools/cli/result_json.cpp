@@ -1,9 +1,11 @@
 #include "cli/result_json.hpp"
 
 #include "cli/json_line.hpp"
-#include "cli/recognition_session.hpp"
+#include "pipeline/recognition_session.hpp"
 
 namespace spinhash::cli {
+
+using pipeline::model_name;
 
 const char* status_word(Status s) {
   switch (s) {

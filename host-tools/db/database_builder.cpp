@@ -6,7 +6,7 @@
 #include "db/lsh_tables.hpp"
 #include "db/model_features.hpp"
 #include "db/model_grid.hpp"
-#include "descriptor/spin_image.hpp"
+#include "spinhash/internal/spin_quantize.hpp"
 #include "spinhash/database.hpp"
 #include "spinhash/limits.hpp"
 

@@ -17,8 +17,4 @@ inline uint64_t lsh_key(const blob::LshBit* bits, uint32_t k, const uint8_t* spi
   return key;
 }
 
-// Eq. 2: probability that two images at L1 distance d share a bucket in at
-// least one of L tables of K bits.
-double lsh_collision_probability(double d, double d_c, uint32_t k, uint32_t l);
-
 }  // namespace spinhash

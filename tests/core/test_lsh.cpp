@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "db/lsh_tables.hpp"
-#include "index/candidates.hpp"
+#include "spinhash/internal/lsh_search.hpp"
+#include "spinhash/internal/lsh_probability.hpp"
 #include "spinhash/lsh.hpp"
 
 using namespace spinhash;

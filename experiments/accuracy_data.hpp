@@ -1,0 +1,43 @@
+// What `experiment accuracy` measured: one record per (condition, query, mode).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "query_runner.hpp"
+#include "query_set.hpp"
+#include "spinhash/config.hpp"
+
+namespace spinhash::experiment {
+
+struct AccuracyRecord {
+  uint32_t condition = 0;  // index into AccuracyRun::conditions
+  uint32_t mode = 0;       // index into AccuracyRun::modes
+  uint32_t model = 0;
+  uint32_t query = 0;
+  uint32_t points = 0;     // query cloud size (object and ground)
+  Outcome outcome;
+};
+
+struct AccuracyRun {
+  std::string out_dir;
+  std::string command;        // as typed
+  std::string source;         // "procedural fleet" or the mesh inputs
+  std::string database;       // config_text descriptions
+  std::string recognizer;
+  std::vector<std::string> model_names;
+  std::vector<QueryCondition> conditions;
+  std::vector<Mode> modes;
+  uint32_t queries_per_model = 0;
+  uint32_t max_k = 0;
+  double ground_margin = 0.0;
+  std::vector<AccuracyRecord> records;
+};
+
+// P(true model within the top k) for k = 1..max_k, of one condition and mode.
+std::vector<double> topk_curve(const AccuracyRun& run, uint32_t condition, uint32_t mode);
+
+// CSVs, plots and summary.md into run.out_dir; false with *error on a write failure.
+bool write_accuracy_report(const AccuracyRun& run, std::string* error);
+
+}  // namespace spinhash::experiment

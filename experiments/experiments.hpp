@@ -1,0 +1,17 @@
+// `spinhash-experiment ...`: the paper's figures (section 10) reproduced from
+// data generated or loaded in memory, written as CSV + plots + summary.md.
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace spinhash::experiment {
+
+// Figure 9: P(correct model within top k) against k, per mode and condition.
+void add_accuracy_experiment(CLI::App* parent, int* exit_code);
+// Figure 10: time and hypotheses per query against database size; build cost.
+void add_scaling_experiment(CLI::App* parent, int* exit_code);
+// Eq. 2 against measured collisions; recall of the W candidates.
+void add_lsh_experiment(CLI::App* parent, int* exit_code);
+// Warzone 2100's PIE models (vehicles, structures) to OBJ meshes.
+void add_prepare_warzone(CLI::App* parent, int* exit_code);
+
+}  // namespace spinhash::experiment

@@ -1,0 +1,71 @@
+#include "query_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "mesh/vehicle_generator.hpp"
+#include "scan/scan_simulator.hpp"
+
+namespace spinhash::experiment {
+namespace {
+
+constexpr uint64_t kModelSeedStride = 1000003;  // prime: (model, q) pairs never share a seed
+constexpr uint64_t kQuerySeedStride = 7919;
+
+}  // namespace
+
+const char* ground_name(Ground g) {
+  return g == Ground::kNone ? "none" : g == Ground::kScanned ? "scanned" : "kept";
+}
+
+std::string QueryCondition::label() const {
+  std::ostringstream s;
+  s << "noise" << noise << "_occ" << occlusion
+    << (ground == Ground::kScanned ? "_ground" : ground == Ground::kKept ? "_ground_kept" : "");
+  return s.str();
+}
+
+uint64_t query_seed(uint64_t base_seed, uint32_t model, uint32_t q) {
+  return base_seed * kModelSeedStride * kQuerySeedStride + model * kQuerySeedStride + q + 1u;
+}
+
+bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const QueryCondition& c,
+                    uint64_t base_seed, double ground_margin, Query* out, std::string* error) {
+  out->model = model;
+  out->index = q;
+  out->seed = query_seed(base_seed, model, q);
+  host::ScanOptions opt = host::query_scan_options(c.noise, out->seed);
+  opt.random_pose = true;
+  opt.occlusion = c.occlusion;
+  host::Mesh ground;
+  if (c.ground != Ground::kNone) {
+    host::Box3 box = mesh.bounding_box();
+    double half = std::max({std::abs(box.lo.x()), std::abs(box.hi.x()), std::abs(box.lo.y()),
+                            std::abs(box.hi.y())}) + ground_margin;
+    ground = host::make_ground_patch(half, box.lo.z());
+    opt.ground = &ground;
+  }
+  host::ScanResult scan = host::simulate_scan(mesh, opt);
+  if (!scan.ok()) {
+    *error = mesh.name + ": query scan: " + scan.error;
+    return false;
+  }
+  out->object_points = static_cast<uint32_t>(std::count(scan.on_object.begin(), scan.on_object.end(), 1));
+  out->xyz = std::move(scan.xyz);
+  out->true_pose = scan.true_pose;
+  return true;
+}
+
+std::vector<QueryCondition> make_conditions(const std::vector<double>& noise, const std::vector<double>& occlusion,
+                                            bool with_ground, bool with_kept) {
+  std::vector<QueryCondition> out;
+  for (Ground g : {Ground::kNone, Ground::kScanned, Ground::kKept}) {
+    if ((g == Ground::kScanned && !with_ground) || (g == Ground::kKept && !with_kept)) continue;
+    for (double n : noise)
+      for (double o : occlusion) out.push_back(QueryCondition{n, o, g});
+  }
+  return out;
+}
+
+}  // namespace spinhash::experiment

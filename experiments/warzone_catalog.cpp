@@ -1,0 +1,54 @@
+#include "warzone_catalog.hpp"
+
+namespace spinhash::experiment {
+namespace {
+
+constexpr const char* kBodyDir = "components/bodies/";
+constexpr const char* kPropDir = "components/prop/";
+
+struct BodyClass {
+  const char* bodies[4];
+  const char* wheels;
+  const char* half_tracks;
+  const char* tracks;
+  const char* hover;
+};
+
+// stats/body.json, warzone2100-data 4.3.3 (Body7ABT alone has its own hover skirt).
+const BodyClass kBodyClasses[] = {
+    {{"drlbod01", "drlbod02", "drlbod03", "drlbod04"}, "prlwhl1", "prlhtr1", "prltrk1", "prlhov1"},
+    {{"drmbod05", "drmbod06", "drmbod07", "drmbod08"}, "prmwhl1", "prmhtr2", "prmtrk2", "prmhov1"},
+    {{"drhbod09", "drhbod10", "drhbod11", "drhbod12"}, "prhwhl1", "prhhtr3", "prhtrk3", "prhhov1"},
+};
+constexpr const char* kBody7 = "drmbod07";
+constexpr const char* kBody7Hover = "prmhov2";
+
+// One-piece vehicles of the scavenger faction.
+const char* const kOnePiece[] = {"exjeep", "exjeeprk", "exbuggy", "exbugrk", "extrike", "exschool", "exfire"};
+
+std::string pie(const char* dir, const std::string& stem) { return std::string(dir) + stem + ".pie"; }
+
+}  // namespace
+
+std::vector<WarzoneVehicle> warzone_vehicles() {
+  std::vector<WarzoneVehicle> out;
+  for (const BodyClass& c : kBodyClasses)
+    for (const char* body : c.bodies) {
+      const std::pair<const char*, const char*> props[] = {
+          {"wheels", c.wheels}, {"halftracks", c.half_tracks}, {"tracks", c.tracks},
+          {"hover", std::string(body) == kBody7 ? kBody7Hover : c.hover}};
+      for (const auto& p : props)
+        out.push_back({"wz-" + std::string(body) + "-" + p.first, {pie(kBodyDir, body), pie(kPropDir, p.second)}});
+    }
+  for (const char* stem : kOnePiece) out.push_back({"wz-" + std::string(stem), {pie(kBodyDir, stem)}});
+  return out;
+}
+
+bool is_texture_variant(const std::string& stem) {
+  auto ends = [&](const std::string& s) {
+    return stem.size() > s.size() && stem.compare(stem.size() - s.size(), s.size(), s) == 0;
+  };
+  return ends("_col") || ends("_nex");
+}
+
+}  // namespace spinhash::experiment

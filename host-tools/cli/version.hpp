@@ -1,4 +1,0 @@
-#pragma once
-namespace spinhash::cli {
-const char* version();
-}  // namespace spinhash::cli

@@ -1,0 +1,35 @@
+// Meshes -> model clouds -> database content -> blob file, written atomically.
+// Shared by `build` and `experiment`.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "blob/byte_order.hpp"
+#include "pipeline/model_sources.hpp"
+#include "db/database_builder.hpp"
+
+namespace spinhash::pipeline {
+
+struct BuildSettings {
+  host::BuildOptions options;
+  double scan_spacing = 0.05;  // m between model-scan rays at the object
+  host::ByteOrder byte_order = host::ByteOrder::kNative;
+  bool quiet = false;
+};
+
+// The feature, LSH and scan flags of `build` (also used by `experiment`).
+void add_build_flags(CLI::App* cmd, BuildSettings* s);
+
+struct BuildSummary {
+  uint32_t models = 0;
+  uint32_t features = 0;
+  uint64_t bytes = 0;
+  double seconds = 0.0;
+  host::BuildReport report;
+};
+
+bool build_database_file(const std::vector<ModelMesh>& meshes, const BuildSettings& s, const std::string& out_path,
+                         BuildSummary* summary, std::string* error);
+
+}  // namespace spinhash::pipeline

@@ -1,0 +1,28 @@
+// Model meshes named by the command line, and their virtual scans: the
+// paper's model clouds (8 views at 45 degrees elevation, all round), so that
+// model and query sampling match.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "db/database_builder.hpp"
+#include "mesh/mesh.hpp"
+
+namespace spinhash::pipeline {
+
+struct ModelMesh {
+  std::string name;  // file stem
+  host::Mesh mesh;
+};
+
+// Files and directories (their mesh files) to loaded meshes; false with a
+// message naming the file on the first one that is missing or won't load,
+// or on two files with the same stem.
+bool load_model_meshes(const std::vector<std::string>& inputs, std::vector<ModelMesh>* out,
+                       std::string* error, bool quiet);
+
+// Scans every mesh from the model viewpoints; spacing is metres between rays at the object.
+bool scan_models(const std::vector<ModelMesh>& meshes, double spacing, std::vector<host::ModelCloud>* out,
+                 std::string* error, bool quiet);
+
+}  // namespace spinhash::pipeline

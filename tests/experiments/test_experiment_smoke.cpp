@@ -1,0 +1,39 @@
+// Smoke test of `spinhash-experiment accuracy` (the experiments themselves
+// are too slow for CI): a 4-model run end to end, its CSVs and summary.
+#include "geometry_test_support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+namespace {
+
+using spinhash::host::test::read_bytes;
+using spinhash::host::test::TempDir;
+
+size_t count_lines(const std::string& text) {
+  size_t n = 0;
+  for (char c : text) n += c == '\n' ? 1u : 0u;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("experiment accuracy runs end to end on a tiny fleet") {
+  TempDir dir("experiment-smoke");
+  const std::string out = dir.file("acc");
+  const std::string cmd = "'" SPINHASH_EXPERIMENT_BINARY "' accuracy --models 4 --queries-per-model 1 "
+                          "--noise 0.05 --occlusion 0 --modes bran,sind --max-k 3 --out '" + out + "' 2> '" +
+                          dir.file("stderr.txt") + "'";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const std::string curves = read_bytes(out + "/accuracy.csv");
+  CHECK(curves.rfind("mode,noise,occlusion,ground,k,p_correct_within_k,queries\n", 0) == 0);
+  CHECK(count_lines(curves) == 1u + 2u * 3u);  // header + 2 modes x k = 1..3
+  const std::string per_query = read_bytes(out + "/per_query.csv");
+  CHECK(count_lines(per_query) == 1u + 2u * 4u);  // header + 2 modes x 4 queries
+  const std::string summary = read_bytes(out + "/summary.md");
+  CHECK(summary.find("# Accuracy") != std::string::npos);
+  CHECK(summary.find("| noise 5 cm, occlusion 0% | BRAN |") != std::string::npos);
+}
