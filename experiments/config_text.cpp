@@ -2,6 +2,9 @@
 
 #include <sstream>
 
+#include "pipeline/recognizer_flags.hpp"
+#include "spinhash/config_fields.h"
+
 namespace spinhash::experiment {
 
 std::string database_text(const MemoryDatabase& m) {
@@ -15,13 +18,27 @@ std::string database_text(const MemoryDatabase& m) {
   return s.str();
 }
 
+namespace {
+
+void put(std::ostringstream& s, Mode v) { s << pipeline::mode_name(v); }
+void put(std::ostringstream& s, bool v) { s << (v ? "on" : "off"); }
+void put(std::ostringstream& s, uint32_t v) { s << v; }
+void put(std::ostringstream& s, uint64_t v) { s << v; }
+void put(std::ostringstream& s, float v) { s << v; }
+void put(std::ostringstream& s, const double (&v)[3]) { s << v[0] << " " << v[1] << " " << v[2]; }
+
+}  // namespace
+
+// Every field of SPINHASH_CONFIG_FIELDS, as "name value; ...".
 std::string recognizer_text(const RecognizerConfig& c) {
   std::ostringstream s;
-  s << "W = " << c.top_w << " (BRAN), " << c.top_w_sran << " (SRAN), " << c.top_w_sind
-    << " (SIND); trials " << c.max_trials << " (BRAN), " << c.sran_trials << " per model (SRAN); max hypotheses "
-    << c.max_hypotheses << "; max bucket scan " << c.max_bucket_scan << "; max features " << c.max_features
-    << "; look-alike pose transfer " << c.transfer_models << " models per leading pose (BRAN; 0: the paper's BRAN)"
-    << "; seed " << c.seed;
+  const char* sep = "";
+#define SPINHASH_PUT_FIELD(kind, name, lo, hi, flag, help) \
+  s << sep << #name << " ";                              \
+  put(s, c.name);                                        \
+  sep = "; ";
+  SPINHASH_CONFIG_FIELDS(SPINHASH_PUT_FIELD)
+#undef SPINHASH_PUT_FIELD
   return s.str();
 }
 

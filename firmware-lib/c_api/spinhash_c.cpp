@@ -68,30 +68,12 @@ RecognizerSlot* slot(spinhash_recognizer* rec) {
   return rec == nullptr ? nullptr : reinterpret_cast<RecognizerSlot*>(rec->bytes);
 }
 
-void copy_stats(const RecognitionStats& s, spinhash_stats* out) {
-  out->points_in = s.extract.points_in;
-  out->points_thinned = s.extract.points_thinned;
-  out->points_nonfinite = s.extract.points_nonfinite;
-  out->features = s.features;
-  out->salient_features = s.salient_features;
-  out->trials = s.trials;
-  out->hypotheses = s.hypotheses;
-  out->budget_exhausted = s.budget_exhausted ? 1u : 0u;
-  out->bucket_scan_truncated = s.bucket_scan_truncated ? 1u : 0u;
-  out->features_thinned = s.extract.features_thinned ? 1u : 0u;
-  out->candidates = s.candidates;
-  out->bucket_entries = s.bucket_entries;
-  out->pair_checks = s.pair_checks;
-  out->doublets_passed = s.doublets_passed;
-  out->workspace_used = s.workspace_used;
-}
-
 spinhash_status finish(const RecognizerSlot& sl, const Result& r, spinhash_result* out) {
   *out = spinhash_result{};
   out->status = static_cast<int32_t>(r.status);
   out->ranking_count = r.status == Status::kOk ? r.ranking_count : 0u;
   out->confident = r.confident ? 1u : 0u;
-  copy_stats(r.stats, &out->stats);
+  to_c_stats(r.stats, &out->stats);
   out->ranking_ = r.ranking;
   out->database_ = sl.database;
   if (r.status != Status::kOk) log_message(LogLevel::kWarning, SPINHASH_LOG_TEXT("recognize: "), status_name(r.status));

@@ -4,6 +4,7 @@
 
 #include "descriptor/spin_image.hpp"
 #include "recognize/search_context.hpp"
+#include "spinhash/config_fields.h"
 #include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"
 #include "util/fixed_math.hpp"
@@ -12,22 +13,24 @@
 namespace spinhash {
 namespace {
 
+// One range check per kind of SPINHASH_CONFIG_FIELDS; functions, so that a
+// field whose range is its type's whole range compiles without "comparison
+// is always true".
+bool in_range_MODE(Mode v, int lo, int hi) { return static_cast<int>(v) >= lo && static_cast<int>(v) <= hi; }
+bool in_range_BOOL(bool, int, int) { return true; }
+bool in_range_U32(uint32_t v, uint32_t lo, uint32_t hi) { return v >= lo && v <= hi; }
+bool in_range_U64(uint64_t v, uint64_t lo, uint64_t hi) { return v >= lo && v <= hi; }
+bool in_range_F32(float v, float lo, float hi) { return v >= lo && v <= hi; }  // false for NaN
+bool in_range_VEC3D(const double (&)[3], int, int) { return true; }  // checked with has_viewpoint below
+
+// Every field within its range of SPINHASH_CONFIG_FIELDS, plus the rules
+// that join two fields.
 bool config_valid(const RecognizerConfig& c) {
-  auto in = [](float v, float lo, float hi) { return v >= lo && v <= hi; };  // false for NaN
-  return static_cast<uint32_t>(c.mode) <= static_cast<uint32_t>(Mode::kSind) && c.max_points >= 1u &&
-         c.max_points <= kMaxQueryPointsLimit && c.max_features >= 2u &&
-         c.max_features <= kMaxQueryFeaturesLimit && c.max_models >= 1u && c.max_models <= kMaxModels &&
-         c.max_spin_dims >= 1u && c.max_spin_dims <= kMaxSpinDims && c.top_w >= 1u &&
-         c.top_w <= kMaxCandidates && c.top_w_sran >= 1u && c.top_w_sran <= kMaxCandidates &&
-         c.top_w_sind >= 1u && c.top_w_sind <= kMaxCandidates &&
-         c.transfer_models <= kMaxTransferModels && in(c.ground_clearance, 0.0f, kMaxGroundClearance) && c.max_bucket_scan >= 1u &&
-         c.max_bucket_scan <= (1u << 24) && in(c.d_min, 0.0f, 100.0f) && in(c.theta_min_deg, 0.0f, 180.0f) &&
-         in(c.tol_distance, 0.0f, 100.0f) && in(c.tol_angle_deg, 0.0f, 180.0f) &&
-         in(c.tol_handedness, 0.0f, 2.0f) && in(c.sigma, 1e-4f, 100.0f) && in(c.delta, 1e-4f, 100.0f) &&
-         in(c.delta_max, c.delta, 100.0f) && in(c.eta_max_deg, 0.0f, 180.0f) &&
-         in(c.spin_lambda, 1e-3f, 1e3f) && in(c.query_basis_spacing, 0.0f, 100.0f) &&
-         in(c.min_inlier_fraction, 0.0f, 1.0f) &&
-         in(c.min_mean_log_likelihood, -1e6f, 0.0f) && c.verify_features >= 1u &&
+  bool ok = true;
+#define SPINHASH_CHECK_RANGE(kind, name, lo, hi, flag, help) ok = ok && in_range_##kind(c.name, lo, hi);
+  SPINHASH_CONFIG_FIELDS(SPINHASH_CHECK_RANGE)
+#undef SPINHASH_CHECK_RANGE
+  return ok && c.delta_max >= c.delta &&
          (!c.has_viewpoint || (std::isfinite(c.viewpoint[0]) && std::isfinite(c.viewpoint[1]) &&
                                std::isfinite(c.viewpoint[2])));
 }

@@ -1,6 +1,7 @@
 #include "cli/result_json.hpp"
 
 #include "cli/json_line.hpp"
+#include "spinhash/config_fields.h"
 #include "pipeline/recognition_session.hpp"
 
 namespace spinhash::cli {
@@ -30,16 +31,18 @@ std::string pose_json(const Pose& p) {
   return s + "0,0,0,1]";
 }
 
+std::string stat_json(bool v) { return v ? "true" : "false"; }
+std::string stat_json(uint32_t v) { return std::to_string(v); }
+std::string stat_json(uint64_t v) { return std::to_string(v); }
+
+// Every entry of SPINHASH_STATS_FIELDS, under its JSON key.
 std::string stats_json(const RecognitionStats& st) {
-  return "{\"points\":" + std::to_string(st.extract.points_in) +
-         ",\"points_thinned\":" + std::to_string(st.extract.points_thinned) +
-         ",\"points_nonfinite\":" + std::to_string(st.extract.points_nonfinite) +
-         ",\"points_ground\":" + std::to_string(st.extract.points_ground) +
-         ",\"features\":" + std::to_string(st.features) + ",\"candidates\":" + std::to_string(st.candidates) +
-         ",\"trials\":" + std::to_string(st.trials) + ",\"doublets_tried\":" + std::to_string(st.pair_checks) +
-         ",\"doublets_passed\":" + std::to_string(st.doublets_passed) +
-         ",\"transferred\":" + std::to_string(st.transferred) +
-         ",\"budget_exhausted\":" + (st.budget_exhausted ? "true" : "false") + "}";
+  std::string s;
+#define SPINHASH_STAT_JSON(kind, name, member, json) \
+  s += std::string(s.empty() ? "{" : ",") + "\"" json "\":" + stat_json(st.member);
+  SPINHASH_STATS_FIELDS(SPINHASH_STAT_JSON)
+#undef SPINHASH_STAT_JSON
+  return s + "}";
 }
 
 }  // namespace

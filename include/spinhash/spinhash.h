@@ -22,6 +22,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "spinhash/config_fields.h"
+
 #ifdef __cplusplus
 #define SPINHASH_NOEXCEPT noexcept /* the C++ side never throws */
 extern "C" {
@@ -89,57 +91,19 @@ typedef union spinhash_recognizer {
   uint64_t align_u64;
 } spinhash_recognizer;
 
-/* Recognition settings; see spinhash::RecognizerConfig (config.hpp) for the
- * meaning of each field. Start from spinhash_default_config(). Flags are
- * 0 or 1. */
+/* Recognition settings: one member per entry of SPINHASH_CONFIG_FIELDS
+ * (config_fields.h), in that order; see spinhash::RecognizerConfig
+ * (config.hpp) for the meaning and default of each. Start from
+ * spinhash_default_config(). BOOL members are 0 or 1; mode is a
+ * spinhash_mode. */
 typedef struct spinhash_config {
-  int32_t mode; /* spinhash_mode */
-  uint64_t seed;
-  uint32_t max_points;
-  uint32_t thin_large_clouds;
-  uint32_t max_features;
-  uint32_t max_models;
-  uint32_t max_spin_dims;
-  float query_basis_spacing;
-  uint32_t top_w;
-  uint32_t top_w_sran;
-  uint32_t top_w_sind;
-  uint32_t max_bucket_scan;
-  float d_min;
-  float theta_min_deg;
-  float tol_distance;
-  float tol_angle_deg;
-  float tol_handedness;
-  float sigma;
-  float delta;
-  float delta_max;
-  float eta_max_deg;
-  float spin_lambda;
-  float min_inlier_fraction;
-  uint32_t max_trials;
-  uint32_t sran_trials;
-  uint32_t max_hypotheses;
-  uint32_t max_pair_checks;
-  uint32_t has_viewpoint;
-  double viewpoint[3];
+  SPINHASH_CONFIG_FIELDS(SPINHASH_C_CONFIG_MEMBER)
 } spinhash_config;
 
+/* What one recognition did: one member per entry of SPINHASH_STATS_FIELDS
+ * (config_fields.h); see spinhash::RecognitionStats (recognizer.hpp). */
 typedef struct spinhash_stats {
-  uint32_t points_in;
-  uint32_t points_thinned;
-  uint32_t points_nonfinite;
-  uint32_t features;          /* query features used */
-  uint32_t salient_features;
-  uint32_t trials;            /* doublet draws */
-  uint32_t hypotheses;        /* poses verified */
-  uint32_t budget_exhausted;  /* 1: the work budget cut recognition short */
-  uint32_t bucket_scan_truncated;
-  uint32_t features_thinned;
-  uint64_t candidates;
-  uint64_t bucket_entries;
-  uint64_t pair_checks;
-  uint64_t doublets_passed;
-  uint64_t workspace_used;    /* bytes */
+  SPINHASH_STATS_FIELDS(SPINHASH_C_STATS_MEMBER)
 } spinhash_stats;
 
 /* One recognition. The ranking it refers to lives in the recognizer's
