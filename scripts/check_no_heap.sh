@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ONBOARD rule 1: the core archive references no allocator and no exception
+# onboard rule 1, docs/onboard-rules.md: the core archive references no allocator and no exception
 # machinery. Usage: scripts/check_no_heap.sh NM LIBSPINHASH_CORE.a [...]
 # (NM is the target's nm, e.g. aarch64-linux-gnu-nm). Placement new is inline
 # and leaves no symbol, so any operator new/delete reference is a real one.

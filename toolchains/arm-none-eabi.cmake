@@ -1,6 +1,6 @@
 # Bare-metal Cortex-M7 with double-precision FPU (newlib nano, no OS): proves
 # the core compiles and links for a microcontroller and measures its size.
-# Nothing runs: scripts/stages/30-bare-metal.sh reports arm-none-eabi-size.
+# Nothing runs: scripts/stages/21-bare-metal.sh reports arm-none-eabi-size.
 # cmake -S . -B build-cross-cortex-m7 -DCMAKE_TOOLCHAIN_FILE=toolchains/arm-none-eabi.cmake
 set(CMAKE_SYSTEM_NAME Generic)
 set(CMAKE_SYSTEM_PROCESSOR cortex-m7)

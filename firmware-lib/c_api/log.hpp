@@ -1,4 +1,4 @@
-// The core's single diagnostics channel (ONBOARD rule 12): one process-wide
+// The core's single diagnostics channel (onboard rule 12, docs/onboard-rules.md): one process-wide
 // hook set through spinhash_set_log_hook() (spinhash.h). Messages are string
 // literals or short concatenations; with SPINHASH_NO_LOG_STRINGS they are
 // compiled out and the hook receives "" with the level only.

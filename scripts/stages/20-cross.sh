@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Onboard proof (ONBOARD rule 10): the core, its doctest suites, the C example
+# Onboard proof (onboard rule 10, docs/onboard-rules.md): the core, its doctest suites, the C example
 # and the bare-metal main cross-compiled for aarch64, armhf and big-endian
 # powerpc, run under qemu-user through CMAKE_CROSSCOMPILING_EMULATOR.
 # Every suite runs on every target. The heavy cases (label "heavy" in

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ONBOARD rule 1 on every build of the core: host (./build, from
+# onboard rule 1, docs/onboard-rules.md on every build of the core: host (./build, from
 # scripts/test.sh), the three Linux cross builds and the bare-metal one.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)

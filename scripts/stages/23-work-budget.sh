@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Bounded time (ONBOARD rule 5): worst-case inputs must stop on the work
+# Bounded time (onboard rule 5, docs/onboard-rules.md): worst-case inputs must stop on the work
 # budget, say so (budget_exhausted), and stay under the instruction budgets of
 # docs/budgets.md. Instructions are counted by callgrind inside
 # Recognizer::recognize only (deterministic for a given binary); uses the

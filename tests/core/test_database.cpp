@@ -592,7 +592,7 @@ TEST_CASE("tiny blob content is deterministic and its LSH buckets agree with buc
   }
 }
 
-// ---- Issue 5 (hardening): the remaining corruptions of the issue's list, and
+// ---- Hardening: the remaining corruptions of a blob (each header and section field), and
 // exhaustive sweeps (every truncation, every single-byte flip) that also run
 // on the cross targets, where no fuzzer runs.
 

@@ -1,4 +1,4 @@
-// Workspace threshold test (ONBOARD rule 3, as TFLM's arena threshold tests):
+// Workspace threshold test (onboard rule 3, docs/onboard-rules.md, as TFLM's arena threshold tests):
 // required_workspace_bytes() for the default config and for a 20 000-point
 // query may not change unnoticed. If a change moves them on purpose, copy the
 // new values from the failure message into the constants below and into

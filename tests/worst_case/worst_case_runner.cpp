@@ -1,5 +1,5 @@
-// Worst-case inputs for the work budget (ONBOARD rule 5), measured by
-// instruction count under callgrind (scripts/stages/40-work-budget.sh):
+// Worst-case inputs for the work budget (onboard rule 5, docs/onboard-rules.md), measured by
+// instruction count under callgrind (scripts/stages/23-work-budget.sh):
 //   worst_case_runner prepare DIR        builds the databases and clouds (natively)
 //   worst_case_runner run DIR CASE       one recognition, the part callgrind counts
 //   worst_case_runner golden GOLDEN_DIR [INDEX]  the golden queries (all, or one)

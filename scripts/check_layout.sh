@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Layout and format rules (docs/onboard-rules.md, "Layout rules"), before
+# anything is built:
+#  1. no #include climbs out of its module with ../;
+#  2. host code (host-tools, experiments, python, fuzz, examples) includes no
+#     private core header (a path that exists under firmware-lib/): it uses
+#     include/spinhash/ and include/spinhash/internal/;
+#  3. host-tools never depends on experiments/;
+#  4. every C/C++ file is as .clang-format lays it out.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+status=0
+sources=$(git ls-files '*.c' '*.h' '*.cpp' '*.hpp')
+
+climbing=$(grep -nE '^\s*#\s*include\s+"(\.\./)+' $sources || true)
+if [[ -n "$climbing" ]]; then
+  echo "check_layout: includes that climb out of their module with ../:"; echo "$climbing"; status=1
+fi
+
+host_sources=$(git ls-files 'host-tools/*' 'experiments/*' 'python/*' 'fuzz/*' 'examples/*' | grep -E '\.(c|h|cpp|hpp)$' || true)
+while IFS=: read -r file line include; do
+  [[ -n "$file" ]] || continue
+  header=$(sed -E 's/.*#\s*include\s+"([^"]+)".*/\1/' <<<"$include")
+  if [[ -f "firmware-lib/$header" ]]; then
+    echo "check_layout: $file:$line includes the core's private $header (use include/spinhash/internal/)"; status=1
+  fi
+done < <(grep -nE '^\s*#\s*include\s+"' $host_sources || true)
+
+reverse=$(grep -nE '^\s*(#\s*include|[a-z_]+\().*experiments?/' host-tools/CMakeLists.txt \
+            $(git ls-files 'host-tools/*' | grep -E '\.(cpp|hpp)$') || true)
+if [[ -n "$reverse" ]]; then
+  echo "check_layout: host-tools depends on experiments/:"; echo "$reverse"; status=1
+fi
+
+if command -v clang-format >/dev/null; then
+  if ! clang-format --dry-run --Werror $sources 2>/tmp/check_layout_format.txt; then
+    echo "check_layout: files not laid out as .clang-format says (clang-format -i FILE):"
+    grep -oE '^[^ :]+\.(c|h|cpp|hpp):[0-9]+:[0-9]+: (error|warning)' /tmp/check_layout_format.txt |
+      cut -d: -f1 | sort -u | head -40
+    status=1
+  fi
+else
+  echo "check_layout: clang-format missing (scripts/install-deps.sh installs it)"; status=1
+fi
+[[ $status -eq 0 ]] && echo "check_layout: includes stay in their modules; every file is formatted"
+exit $status
