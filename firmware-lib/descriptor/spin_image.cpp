@@ -22,7 +22,7 @@ void spin_vote(const SpinImageParams& sp, float alpha, float beta, float* image)
   image[j1 * sp.bins_alpha + i1] += wa * wb;
 }
 
-void normalise_spin(float* image, uint32_t dims) {
+void normalize_spin(float* image, uint32_t dims) {
   float sum = 0.0f;
   for (uint32_t i = 0; i < dims; ++i) sum += image[i];
   if (!(sum > 0.0f)) return;
@@ -47,7 +47,7 @@ void compute_spin_image(const SpinImageParams& sp, const CellGrid& grid, const f
     float alpha2 = dx * dx + dy * dy + dz * dz - beta * beta;
     spin_vote(sp, std::sqrt(alpha2 > 0.0f ? alpha2 : 0.0f), beta, image);
   });
-  normalise_spin(image, dims);
+  normalize_spin(image, dims);
 }
 
 void quantize_spin(const float* image, uint32_t dims, float scale, uint8_t* out) {

@@ -22,7 +22,7 @@ struct SpinImageParams {
 void spin_vote(const SpinImageParams& sp, float alpha, float beta, float* image);
 
 // Scales image so its bins sum to 1 (left unchanged when empty).
-void normalise_spin(float* image, uint32_t dims);
+void normalize_spin(float* image, uint32_t dims);
 
 // Spin image of oriented point (p, n) over points within R found in `grid`.
 void compute_spin_image(const SpinImageParams& sp, const CellGrid& grid, const float* points,

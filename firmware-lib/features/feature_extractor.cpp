@@ -83,7 +83,7 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   *stats = ExtractStats{};
   *out = FeatureSet{};
   stats->points_in = cloud.count;
-  if (cloud.count > cap_.max_points && !cap_.thin_excess) return Status::kTooManyPoints;
+  if (cloud.count > cap_.max_points && !cap_.thin_large_clouds) return Status::kTooManyPoints;
   Impl& m = *impl_;
   const uint32_t keep = cloud.count > cap_.max_points ? cap_.max_points : cloud.count;
   stats->points_thinned = cloud.count - keep;

@@ -47,7 +47,7 @@ Status carve(Arena& arena, const RecognizerConfig& cfg, const FeatureParams& fp,
   cap.max_points = cfg.max_points;
   cap.max_features = cfg.max_features;
   cap.max_spin_dims = cfg.max_spin_dims;
-  cap.thin_excess = cfg.thin_large_clouds;
+  cap.thin_large_clouds = cfg.thin_large_clouds;
   cap.ground_clearance = cfg.ground_clearance;
   Status s = b.extractor.init(fp, cap, arena);
   if (s != Status::kOk && s != Status::kWorkspaceTooSmall) return s;

@@ -25,7 +25,7 @@ struct ExtractorCapacity {
   uint32_t max_points = 32768;    // raw points accepted
   uint32_t max_features = 1024;   // basis points kept (deterministically thinned above)
   uint32_t max_spin_dims = 256;   // bins_alpha * bins_beta supported
-  bool thin_excess = true;        // above max_points: keep max_points spread evenly (else refuse)
+  bool thin_large_clouds = true;        // above max_points: keep max_points spread evenly (else refuse)
   float ground_clearance = 0.0f;  // m: level ground and this much above it dropped (queries; 0: kept)
 };
 
