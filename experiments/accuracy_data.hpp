@@ -25,7 +25,8 @@ struct AccuracyRun {
   std::string source;         // "procedural fleet" or the mesh inputs
   std::string database;       // config_text descriptions
   std::string recognizer;
-  std::vector<std::string> model_names;
+  std::vector<std::string> model_names;  // every database model (originals first)
+  uint32_t query_models = 0;             // the originals, which the queries scan
   std::vector<QueryCondition> conditions;
   std::vector<Mode> modes;
   uint32_t queries_per_model = 0;
@@ -36,6 +37,11 @@ struct AccuracyRun {
 
 // P(true model within the top k) for k = 1..max_k, of one condition and mode.
 std::vector<double> topk_curve(const AccuracyRun& run, uint32_t condition, uint32_t mode);
+
+// Whether `confident` means right: per condition and mode, and pooled per
+// mode. calibration.csv and a summary section.
+std::string confidence_section(const AccuracyRun& run);
+bool write_calibration_csv(const AccuracyRun& run, std::string* error);
 
 // CSVs, plots and summary.md into run.out_dir; false with *error on a write failure.
 bool write_accuracy_report(const AccuracyRun& run, std::string* error);

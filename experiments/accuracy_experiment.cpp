@@ -11,6 +11,7 @@
 #include "spinhash/limits.hpp"
 #include "experiments.hpp"
 #include "memory_database.hpp"
+#include "lookalikes.hpp"
 #include "model_set.hpp"
 #include "modes.hpp"
 #include "output_dir.hpp"
@@ -29,6 +30,8 @@ struct AccuracyArgs {
   uint32_t queries_per_model = 2;
   std::vector<double> noise{0.05, 0.10};
   std::vector<double> occlusion{0.0, 0.2, 0.4};
+  std::vector<double> spacing{kPaperQuerySpacing};
+  uint32_t lookalikes = 0;  // copies of each model added to the database
   bool ground = false;
   bool ground_kept = false;
   double ground_margin = 3.0;  // m of ground beyond the vehicle on each side
@@ -57,9 +60,11 @@ bool open_sessions(const Database& db, const AccuracyArgs& a, const std::vector<
 }
 
 // Every query of every condition through every mode.
+// Queries come from the first run->query_models meshes (the originals, when
+// look-alike copies follow them).
 bool run_queries(const AccuracyArgs& a, const std::vector<pipeline::ModelMesh>& meshes, Sessions (&all_sessions)[2],
                  AccuracyRun* run, std::string* error) {
-  const uint32_t per_condition = static_cast<uint32_t>(meshes.size()) * a.queries_per_model;
+  const uint32_t per_condition = run->query_models * a.queries_per_model;
   for (uint32_t c = 0; c < run->conditions.size(); ++c) {
     const QueryCondition& cond = run->conditions[c];
     std::fprintf(stderr, "spinhash-experiment accuracy: condition %u/%zu: %s\n", c + 1, run->conditions.size(),
@@ -67,7 +72,7 @@ bool run_queries(const AccuracyArgs& a, const std::vector<pipeline::ModelMesh>& 
     Sessions& sessions = all_sessions[cond.ground == Ground::kKept ? 1 : 0];
     pipeline::Progress progress(cond.label(), per_condition);
     uint32_t done = 0;
-    for (uint32_t m = 0; m < meshes.size(); ++m)
+    for (uint32_t m = 0; m < run->query_models; ++m)
       for (uint32_t q = 0; q < a.queries_per_model; ++q) {
         Query query;
         if (!simulate_query(meshes[m].mesh, m, q, cond, a.seed, a.ground_margin, &query, error)) return false;
@@ -88,7 +93,7 @@ int run_accuracy(const AccuracyArgs& a) {
   run.queries_per_model = a.queries_per_model;
   run.max_k = a.max_k;
   run.ground_margin = a.ground_margin;
-  run.conditions = make_conditions(a.noise, a.occlusion, a.ground, a.ground_kept);
+  run.conditions = make_conditions(a.noise, a.occlusion, a.spacing, a.ground, a.ground_kept);
   std::vector<pipeline::ModelMesh> meshes;
   std::vector<host::ModelCloud> clouds;
   if (!parse_modes(a.modes, &run.modes, &error) || !make_output_dir(a.out, &error)) {
@@ -104,6 +109,12 @@ int run_accuracy(const AccuracyArgs& a) {
   } else {
     run.source = std::to_string(meshes.size()) + " meshes from";
     for (const std::string& m : a.meshes) run.source += " " + m;
+  }
+  run.query_models = static_cast<uint32_t>(meshes.size());
+  if (a.lookalikes > 0) {
+    meshes = with_lookalikes(meshes, a.lookalikes);
+    run.source += ", each with " + std::to_string(a.lookalikes) +
+                  " look-alike copies (stretched, shortened, widened, narrowed, mirrored; queries from the originals)";
   }
   for (const pipeline::ModelMesh& m : meshes) run.model_names.push_back(m.name);
   std::unique_ptr<MemoryDatabase> mdb;
@@ -144,6 +155,11 @@ void add_accuracy_experiment(CLI::App* parent, int* exit_code) {
       ->check(CLI::Range(0.0, 1.0))->capture_default_str();
   cmd->add_option("--occlusion", a->occlusion, "occluded fractions")->delimiter(',')
       ->check(CLI::Range(0.0, 0.9))->capture_default_str();
+  cmd->add_option("--spacing", a->spacing, "query point spacings, m between rays at the object (0.05: 20 m range)")
+      ->delimiter(',')->check(CLI::Range(0.01, 0.5))->capture_default_str();
+  cmd->add_option("--lookalikes", a->lookalikes,
+                  "look-alike copies of each model added to the database (queries stay on the originals)")
+      ->check(CLI::Range(0u, kMaxLookalikesPerModel))->capture_default_str();
   cmd->add_flag("--ground", a->ground, "also run every condition with the ground around the vehicle scanned");
   cmd->add_flag("--ground-kept", a->ground_kept,
                 "also run every condition with the ground scanned and the recognizer's ground removal off");

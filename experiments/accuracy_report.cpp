@@ -33,6 +33,7 @@ std::string condition_title(const QueryCondition& c) {
   std::ostringstream s;
   s << "noise " << c.noise * 100.0 << " cm, occlusion " << c.occlusion * 100.0 << "%"
     << (c.ground == Ground::kScanned ? ", ground removed" : c.ground == Ground::kKept ? ", ground kept (removal off)" : "");
+  if (c.spacing != kPaperQuerySpacing) s << ", spacing " << c.spacing * 100.0 << " cm";
   return s.str();
 }
 
@@ -63,20 +64,20 @@ ModeSummary summarise(const std::vector<const AccuracyRecord*>& rs) {
 }
 
 bool write_csvs(const AccuracyRun& run, std::string* error) {
-  CsvTable per_query({"mode", "noise", "occlusion", "ground", "model", "name", "query", "points", "status", "rank",
+  CsvTable per_query({"mode", "noise", "occlusion", "ground", "spacing", "model", "name", "query", "points", "status", "rank",
                       "ms", "hypotheses", "features", "ranked", "best", "confident", "budget_exhausted"});
   for (const AccuracyRecord& r : run.records) {
     const QueryCondition& c = run.conditions[r.condition];
     const Outcome& o = r.outcome;
     per_query.add({pipeline::mode_name(run.modes[r.mode]), num(c.noise), num(c.occlusion), ground_name(c.ground),
-                   std::to_string(r.model), run.model_names[r.model], std::to_string(r.query),
+                   num(c.spacing), std::to_string(r.model), run.model_names[r.model], std::to_string(r.query),
                    std::to_string(r.points), status_name(o.status), std::to_string(o.rank), num(o.ms),
                    std::to_string(o.hypotheses), std::to_string(o.features), std::to_string(o.ranked),
                    o.ranked ? run.model_names[o.best_model] : "", o.confident ? "1" : "0",
                    o.budget_exhausted ? "1" : "0"});
   }
-  CsvTable curves({"mode", "noise", "occlusion", "ground", "k", "p_correct_within_k", "queries"});
-  CsvTable timing({"mode", "noise", "occlusion", "ground", "queries", "not_ok", "budget_exhausted", "median_ms",
+  CsvTable curves({"mode", "noise", "occlusion", "ground", "spacing", "k", "p_correct_within_k", "queries"});
+  CsvTable timing({"mode", "noise", "occlusion", "ground", "spacing", "queries", "not_ok", "budget_exhausted", "median_ms",
                    "mean_ms", "median_hypotheses", "mean_hypotheses", "mean_points"});
   std::vector<std::string> wide_header{"condition"};
   for (Mode m : run.modes) wide_header.push_back(std::string(pipeline::mode_name(m)) + "_median_ms");
@@ -94,7 +95,7 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
       std::vector<const AccuracyRecord*> rs = select(run, c, m);
       ModeSummary s = summarise(rs);
       std::vector<std::string> cond_cols{pipeline::mode_name(run.modes[m]), num(cond.noise), num(cond.occlusion),
-                                         ground_name(cond.ground)};
+                                         ground_name(cond.ground), num(cond.spacing)};
       for (uint32_t k = 1; k <= run.max_k; ++k) {
         std::vector<std::string> row = cond_cols;
         row.insert(row.end(), {std::to_string(k), num(per_mode.back()[k - 1]), std::to_string(rs.size())});
@@ -163,7 +164,7 @@ bool write_plots(const AccuracyRun& run, std::vector<std::string>* made, std::st
                              (g == Ground::kKept ? "_kept" : "");
     std::ostringstream body;
     body << curve_axes(run) << "set multiplot layout " << rows << "," << cols << " title '"
-         << run.model_names.size() << " models, " << run.queries_per_model * run.model_names.size()
+         << run.model_names.size() << " models, " << run.queries_per_model * run.query_models
          << " queries per condition" << (g == Ground::kScanned ? ", ground scanned (removed by the recognizer)" : "")
          << (g == Ground::kKept ? ", ground scanned and kept (removal off)" : "") << "'\n";
     for (size_t i = 0; i < page.size(); ++i) body << curve_plot_command(run, *page[i], i == 0);
@@ -234,7 +235,8 @@ std::string target_section(const AccuracyRun& run) {
 int matching(const AccuracyRun& run, const QueryCondition& c, Ground ground) {
   for (size_t i = 0; i < run.conditions.size(); ++i) {
     const QueryCondition& o = run.conditions[i];
-    if (o.ground == ground && o.noise == c.noise && o.occlusion == c.occlusion) return static_cast<int>(i);
+    if (o.ground == ground && o.noise == c.noise && o.occlusion == c.occlusion && o.spacing == c.spacing)
+      return static_cast<int>(i);
   }
   return -1;
 }
@@ -262,7 +264,9 @@ std::string ground_section(const AccuracyRun& run) {
     const QueryCondition& off = run.conditions[c];
     if (off.ground != Ground::kNone) continue;
     const int on = matching(run, off, Ground::kScanned), kept_c = matching(run, off, Ground::kKept);
-    s << "| " << off.noise * 100.0 << " cm, " << off.occlusion * 100.0 << "% |";
+    s << "| " << off.noise * 100.0 << " cm, " << off.occlusion * 100.0 << "%";
+    if (off.spacing != kPaperQuerySpacing) s << ", spacing " << off.spacing * 100.0 << " cm";
+    s << " |";
     for (uint32_t m = 0; m < run.modes.size(); ++m) {
       s << " " << pct(topk_curve(run, c, m)[0]) << "%";
       if (on >= 0) s << " -> " << pct(topk_curve(run, static_cast<uint32_t>(on), m)[0]) << "%";
@@ -289,8 +293,8 @@ std::string summary(const AccuracyRun& run, const std::vector<std::string>& plot
   std::ostringstream s;
   s << "# Accuracy (paper Figure 9)\n\nCommand: `" << run.command << "`\n\n"
     << "- Models: " << run.source << "\n- Database: " << run.database << "\n- Recognizer (library defaults): "
-    << run.recognizer << "\n- Queries: " << run.queries_per_model << " per model x " << run.model_names.size()
-    << " models = " << run.queries_per_model * run.model_names.size()
+    << run.recognizer << "\n- Queries: " << run.queries_per_model << " per model x " << run.query_models
+    << " models = " << run.queries_per_model * run.query_models
     << " per condition; 3 views 45 degrees apart at 45 degrees elevation from a random side, random pose"
     << " (yaw, +-50 m), Gaussian noise along the rays, optional slab occluder; the same sides and poses under"
     << " every condition.\n\n## P(correct model within the top k), time and hypotheses per query\n\n"
@@ -311,10 +315,11 @@ std::string summary(const AccuracyRun& run, const std::vector<std::string>& plot
       s << " " << num(ms.median_ms, 4) << " | " << num(ms.mean_ms, 4) << " | " << num(ms.mean_hyp, 4) << " | "
         << ms.not_ok << " |\n";
     }
-  s << target_section(run) << ground_section(run) << "\n## Files\n\n"
+  s << target_section(run) << ground_section(run) << confidence_section(run) << "\n## Files\n\n"
     << "- `accuracy.csv`: P(correct within top k) per mode, condition and k; `curves/*.csv`: the same, one file "
        "per condition\n- `timing.csv`: time and hypotheses per mode and condition\n"
-    << "- `per_query.csv`: every recognition (rank of the true model, 0 = not ranked)\n- Plots:";
+    << "- `per_query.csv`: every recognition (rank of the true model, 0 = not ranked)\n"
+    << "- `calibration.csv`: confident answers against right ones, per mode and condition\n- Plots:";
   for (const std::string& p : plots) s << " `" << p << "`";
   s << "\n";
   return s.str();
@@ -336,7 +341,9 @@ std::vector<double> topk_curve(const AccuracyRun& run, uint32_t condition, uint3
 
 bool write_accuracy_report(const AccuracyRun& run, std::string* error) {
   std::vector<std::string> plots;
-  if (!make_output_dir(run.out_dir + "/curves", error) || !write_csvs(run, error)) return false;
+  if (!make_output_dir(run.out_dir + "/curves", error) || !write_csvs(run, error) ||
+      !write_calibration_csv(run, error))
+    return false;
   std::string plot_error;
   if (!write_plots(run, &plots, &plot_error)) plots.push_back("(plots failed: " + plot_error + ")");
   return write_text(run.out_dir + "/summary.md", summary(run, plots), error);

@@ -23,6 +23,7 @@ std::string QueryCondition::label() const {
   std::ostringstream s;
   s << "noise" << noise << "_occ" << occlusion
     << (ground == Ground::kScanned ? "_ground" : ground == Ground::kKept ? "_ground_kept" : "");
+  if (spacing != kPaperQuerySpacing) s << "_sp" << spacing;
   return s.str();
 }
 
@@ -38,6 +39,7 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
   host::ScanOptions opt = host::query_scan_options(c.noise, out->seed);
   opt.random_pose = true;
   opt.occlusion = c.occlusion;
+  opt.point_spacing = c.spacing;
   host::Mesh ground;
   if (c.ground != Ground::kNone) {
     host::Box3 box = mesh.bounding_box();
@@ -58,12 +60,13 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
 }
 
 std::vector<QueryCondition> make_conditions(const std::vector<double>& noise, const std::vector<double>& occlusion,
-                                            bool with_ground, bool with_kept) {
+                                            const std::vector<double>& spacing, bool with_ground, bool with_kept) {
   std::vector<QueryCondition> out;
   for (Ground g : {Ground::kNone, Ground::kScanned, Ground::kKept}) {
     if ((g == Ground::kScanned && !with_ground) || (g == Ground::kKept && !with_kept)) continue;
-    for (double n : noise)
-      for (double o : occlusion) out.push_back(QueryCondition{n, o, g});
+    for (double sp : spacing)
+      for (double n : noise)
+        for (double o : occlusion) out.push_back(QueryCondition{n, o, g, sp});
   }
   return out;
 }

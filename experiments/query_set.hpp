@@ -19,11 +19,17 @@ enum class Ground : uint8_t {
 };
 const char* ground_name(Ground g);  // "none", "scanned", "kept"
 
+// The paper's query density: 5 cm between neighbouring rays at the object
+// (an airborne sensor at 20 m; 0.10 m is about 40 m, 0.15 m about 60 m).
+constexpr double kPaperQuerySpacing = 0.05;
+
 struct QueryCondition {
   double noise = 0.05;     // m along each ray
   double occlusion = 0.0;  // fraction of the object hidden
   Ground ground = Ground::kNone;
-  std::string label() const;  // e.g. "noise0.05_occ0.2_ground"
+  double spacing = kPaperQuerySpacing;  // m between rays at the object
+  // e.g. "noise0.05_occ0.2_ground"; "_sp0.1" is added for another spacing.
+  std::string label() const;
 };
 
 struct Query {
@@ -44,8 +50,9 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
                     uint64_t base_seed, double ground_margin, Query* out, std::string* error);
 
 // Cartesian product of the lists, ground states outermost: none, then
-// scanned (with_ground), then scanned and kept (with_kept).
+// scanned (with_ground), then scanned and kept (with_kept); then spacing,
+// noise, occlusion.
 std::vector<QueryCondition> make_conditions(const std::vector<double>& noise, const std::vector<double>& occlusion,
-                                            bool with_ground, bool with_kept);
+                                            const std::vector<double>& spacing, bool with_ground, bool with_kept);
 
 }  // namespace spinhash::experiment
