@@ -64,6 +64,9 @@ NearestFeature find_nearest_model_feature(const Database& db, const blob::ModelR
                                           const Eigen::Vector3f& x, const Eigen::Vector3f& n,
                                           const LikelihoodParams& lp);
 
+// A `to_beat` that every score beats: the full score is wanted.
+constexpr float kNoScoreToBeat = -3.0e38f;
+
 struct Verification {
   float log_likelihood = 0.0f;  // sum over query features, eq. 7
   uint32_t inliers = 0;         // features matched within Delta

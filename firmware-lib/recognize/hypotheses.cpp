@@ -53,7 +53,7 @@ bool draw_stable_doublet(SearchContext& ctx, uint32_t* k, uint32_t* l, DoubletSh
 void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose) {
   ModelBest& best = ctx.buf.best[model];
   ++best.hypotheses;
-  const float to_beat = best.has_score ? best.score : -3.0e38f;
+  const float to_beat = best.has_score ? best.score : kNoScoreToBeat;
   Verification v = verify_pose(ctx.db, model, pose, ctx.query, ctx.likelihood, to_beat, best.has_score);
   if (v.complete && (!best.has_score || v.log_likelihood > best.score)) {
     best.score = v.log_likelihood;

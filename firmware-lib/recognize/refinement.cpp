@@ -23,14 +23,14 @@ uint32_t leading_models(const SearchContext& ctx, uint32_t* out) {
 
 void finalise_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, bool refine) {
   ModelBest& best = ctx.buf.best[model];
-  Verification full = verify_pose(ctx.db, model, best.pose, all, ctx.likelihood, -3.0e38f, false);
+  Verification full = verify_pose(ctx.db, model, best.pose, all, ctx.likelihood, kNoScoreToBeat, false);
   best.score = full.log_likelihood;
   best.inliers = full.inliers;
   best.final_score = true;
   for (uint32_t it = 0; refine && it < kRefineIterations; ++it) {
     RigidPose pose = best.pose;
     if (!refine_pose(ctx.db, model, all, ctx.likelihood, &pose)) return;
-    Verification v = verify_pose(ctx.db, model, pose, all, ctx.likelihood, -3.0e38f, false);
+    Verification v = verify_pose(ctx.db, model, pose, all, ctx.likelihood, kNoScoreToBeat, false);
     ++ctx.stats.refinements;
     if (!(v.log_likelihood > best.score)) return;
     best.score = v.log_likelihood;
