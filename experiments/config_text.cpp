@@ -29,14 +29,17 @@ void put(std::ostringstream& s, const double (&v)[3]) { s << v[0] << " " << v[1]
 
 }  // namespace
 
-// Every field of SPINHASH_CONFIG_FIELDS, as "name value; ...".
+// Every field of SPINHASH_CONFIG_FIELDS but the mode (the experiments list
+// their modes), as "name value; ...".
 std::string recognizer_text(const RecognizerConfig& c) {
   std::ostringstream s;
   const char* sep = "";
 #define SPINHASH_PUT_FIELD(kind, name, lo, hi, flag, help) \
-  s << sep << #name << " ";                              \
-  put(s, c.name);                                        \
-  sep = "; ";
+  if (std::string(#name) != "mode") {                    \
+    s << sep << #name << " ";                            \
+    put(s, c.name);                                      \
+    sep = "; ";                                          \
+  }
   SPINHASH_CONFIG_FIELDS(SPINHASH_PUT_FIELD)
 #undef SPINHASH_PUT_FIELD
   return s.str();

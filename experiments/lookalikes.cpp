@@ -41,8 +41,8 @@ std::vector<pipeline::ModelMesh> with_lookalikes(const std::vector<pipeline::Mod
                                                  uint32_t copies) {
   std::vector<pipeline::ModelMesh> out = originals;
   const uint32_t kinds = static_cast<uint32_t>(CopyKind::kCount);
-  for (const pipeline::ModelMesh& m : originals)
-    for (uint32_t k = 0; k < copies && k < kMaxLookalikesPerModel; ++k) {
+  for (uint32_t k = 0; k < copies && k < kMaxLookalikesPerModel; ++k)
+    for (const pipeline::ModelMesh& m : originals) {
       const CopyKind kind = static_cast<CopyKind>(k % kinds);
       const uint32_t level = k / kinds + 1;
       pipeline::ModelMesh copy{m.name + "~" + kind_tag(kind) + std::to_string(level), m.mesh};

@@ -16,7 +16,8 @@ namespace spinhash::experiment {
 constexpr double kLookalikeStep = 0.03;
 constexpr uint32_t kMaxLookalikesPerModel = 64;
 
-// The originals first (same indices), then `copies` copies of each, named
+// The originals first (same indices), then `copies` rounds of one copy of
+// each (so any prefix holds every model's copies evenly), named
 // "<model>~<kind><level>": sx+ / sx- stretch or shorten along x (length),
 // sy+ / sy- along y (width), m mirrored in y (and stretched by level - 1
 // steps). Copy k of a model is kind (k mod 5) at level (k / 5) + 1.

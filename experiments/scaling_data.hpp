@@ -40,6 +40,9 @@ struct ScalingRun {
   uint32_t sran_queries_large = 0;  // SRAN's queries at sizes >= sran_large_from
   uint32_t sran_large_from = 0;
   double noise = 0.0;
+  double spacing = 0.0;             // m between query rays at the object
+  std::string source;               // procedural fleet, or meshes and their look-alike copies
+  uint32_t query_pool_cap = ~0u;    // with look-alike copies: the originals
   double scan_seconds = 0.0;        // model scans of the largest fleet (once)
   std::vector<ScalingRecord> records;
 };

@@ -13,6 +13,7 @@
 #include "spinhash/limits.hpp"
 #include "experiments.hpp"
 #include "memory_database.hpp"
+#include "lookalikes.hpp"
 #include "model_set.hpp"
 #include "modes.hpp"
 #include "output_dir.hpp"
@@ -31,6 +32,9 @@ struct ScalingArgs {
   uint32_t queries = 20;
   std::vector<std::string> modes{"bran", "sran", "sind"};
   double noise = 0.05;
+  double spacing = kPaperQuerySpacing;  // m between query rays at the object
+  std::vector<std::string> meshes;      // instead of the procedural fleet
+  uint32_t lookalikes = 0;              // copies of each mesh (with --meshes)
   uint64_t seed = 1;
   uint64_t fleet_seed = 1;
   // SRAN is linear in the models (seconds per query at 1000): at the large
@@ -42,7 +46,7 @@ struct ScalingArgs {
 
 bool make_queries(const ScalingArgs& a, const std::vector<pipeline::ModelMesh>& meshes, uint32_t pool,
                   std::vector<Query>* out, std::string* error) {
-  const QueryCondition cond{a.noise, 0.0, Ground::kNone};
+  const QueryCondition cond{a.noise, 0.0, Ground::kNone, a.spacing};
   for (uint32_t j = 0; j < a.queries; ++j) {
     Query q;
     if (!simulate_query(meshes[j % pool].mesh, j % pool, j / pool, cond, a.seed, 0.0, &q, error)) return false;
@@ -85,6 +89,29 @@ bool measure_size(const ScalingArgs& a, const std::vector<host::ModelCloud>& all
   return true;
 }
 
+// The procedural fleet, or the meshes with their look-alike copies (queries
+// then come from the originals); the largest size is capped at what exists.
+bool fleet(ScalingArgs& a, std::vector<pipeline::ModelMesh>* meshes, ScalingRun* run, std::string* error) {
+  if (a.meshes.empty()) {
+    *meshes = generated_models(a.sizes.back(), a.fleet_seed);
+    run->source = "procedural fleet (seed " + std::to_string(a.fleet_seed) + ")";
+    return true;
+  }
+  if (!loaded_models(a.meshes, 0u, meshes, error)) return false;
+  const uint32_t originals = static_cast<uint32_t>(meshes->size());
+  *meshes = with_lookalikes(*meshes, a.lookalikes);
+  run->source = std::to_string(originals) + " meshes, each with " + std::to_string(a.lookalikes) +
+                " look-alike copies; queries from the originals";
+  run->query_pool_cap = originals;
+  while (!a.sizes.empty() && a.sizes.back() > meshes->size()) a.sizes.pop_back();
+  if (a.sizes.empty() || a.sizes.front() < originals) {
+    *error = "every size must hold the " + std::to_string(originals) + " originals and at most " +
+             std::to_string(meshes->size()) + " models";
+    return false;
+  }
+  return true;
+}
+
 int run_scaling(ScalingArgs a) {
   std::string error;
   ScalingRun run;
@@ -94,15 +121,18 @@ int run_scaling(ScalingArgs a) {
   run.command = invoked_command_line();
   run.queries = a.queries;
   run.query_pool = std::min(kQueryPoolModels, a.sizes.front());
+  run.spacing = a.spacing;
   run.sran_queries_large = a.sran_queries_large;
   run.sran_large_from = a.sran_large_from;
   run.noise = a.noise;
-  std::vector<pipeline::ModelMesh> meshes = generated_models(a.sizes.back(), a.fleet_seed);
+  std::vector<pipeline::ModelMesh> meshes;
+  bool ok = fleet(a, &meshes, &run, &error);
+  run.query_pool = std::min(run.query_pool, run.query_pool_cap);
   std::vector<host::ModelCloud> clouds;
   std::vector<Query> queries;
   auto start = std::chrono::steady_clock::now();
-  bool ok = parse_modes(a.modes, &run.modes, &error) && make_output_dir(a.out, &error) &&
-            model_clouds(meshes, &clouds, &error);
+  ok = ok && parse_modes(a.modes, &run.modes, &error) && make_output_dir(a.out, &error) &&
+       model_clouds(meshes, &clouds, &error);
   run.scan_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ok = ok && make_queries(a, meshes, run.query_pool, &queries, &error);
   meshes.clear();
@@ -127,6 +157,11 @@ void add_scaling_experiment(CLI::App* parent, int* exit_code) {
       ->check(CLI::Range(1u, kMaxQueries))->capture_default_str();
   cmd->add_option("--modes", a->modes, "bran, sran, sind")->delimiter(',')->capture_default_str();
   cmd->add_option("--noise", a->noise, "query noise, m along the ray")->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  cmd->add_option("--spacing", a->spacing, "query point spacing, m between rays at the object")
+      ->check(CLI::Range(0.01, 0.5))->capture_default_str();
+  cmd->add_option("--meshes", a->meshes, "model meshes (files or folders) instead of the procedural fleet");
+  cmd->add_option("--lookalikes", a->lookalikes, "with --meshes: look-alike copies of each mesh")
+      ->check(CLI::Range(0u, kMaxLookalikesPerModel))->capture_default_str();
   cmd->add_option("--seed", a->seed, "seed of the query scans")->capture_default_str();
   cmd->add_option("--fleet-seed", a->fleet_seed, "seed of the procedural fleet")->capture_default_str();
   cmd->add_option("--sran-queries-large", a->sran_queries_large, "SRAN's queries at the large sizes")

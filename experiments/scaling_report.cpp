@@ -207,21 +207,25 @@ std::string summary(const ScalingRun& run, const std::vector<std::string>& plots
   std::ostringstream s;
   s << "# Scaling (paper Figure 10)\n\nCommand: `" << run.command << "`\n\n- Queries: " << run.queries
     << ", drawn in turn from the first " << run.query_pool << " models (in every database), noise "
-    << run.noise * 100.0 << " cm, 3 views, random pose; the same queries at every size. SRAN runs only the first "
+    << run.noise * 100.0 << " cm, ray spacing " << run.spacing * 100.0
+    << " cm, 3 views, random pose; the same queries at every size. SRAN runs only the first "
     << run.sran_queries_large << " at sizes >= " << run.sran_large_from
     << " (it is linear in the models); its speed-up is compared on those same queries.\n"
-    << "- Recognizer (library defaults): " << run.recognizer << "\n- Largest database: " << run.database
+    << "- Models: " << run.source << "\n- Recognizer (library defaults): " << run.recognizer
+    << "\n- Largest database: " << run.database
     << "\n- Model scans (once, largest fleet): " << num(run.scan_seconds, 3)
     << " s\n- Wall times on a shared 2-core machine: noisy; instruction counts from "
        "scripts/instructions-per-query.sh are the stable measure.\n\n"
     << "## Time and hypotheses per query\n\n| models | features | mode | queries | median ms | mean ms | "
-       "mean hypotheses | top-1 | top-5 |\n|---|---|---|---|---|---|---|---|---|\n";
+       "median hypotheses | mean hypotheses | budget cut | top-1 | top-5 |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (uint32_t i = 0; i < run.builds.size(); ++i)
     for (uint32_t m = 0; m < run.modes.size(); ++m) {
       Cell c = cell(run, i, m);
       s << "| " << run.builds[i].models << " | " << run.builds[i].features << " | " << mode_title(run.modes[m])
         << " | " << c.ms.size() << " | " << num(median_of(c.ms), 4) << " | " << num(mean_of(c.ms), 4) << " | "
-        << num(mean_of(c.hyp), 4) << " | " << num(100.0 * c.top(1), 3) << "% | " << num(100.0 * c.top(5), 3)
+        << num(median_of(c.hyp), 4) << " | " << num(mean_of(c.hyp), 4) << " | "
+        << num(100.0 * c.budget / std::max<size_t>(c.ms.size(), 1), 3) << "% | " << num(100.0 * c.top(1), 3)
+        << "% | " << num(100.0 * c.top(5), 3)
         << "% |\n";
     }
   s << "\n## Build\n\n| models | features | build s | blob bytes | B/feature | largest LSH bucket |\n"
