@@ -4,26 +4,14 @@
 #include <vector>
 
 #include "descriptor/spin_image.hpp"
+#include "support/grid_fixture.hpp"
 #include "support/geometry_fixtures.hpp"
 
 using namespace spinhash;
 
 namespace {
 
-struct GridFixture {
-  std::vector<unsigned char> memory;
-  CellGrid grid;
-  explicit GridFixture(const std::vector<float>& pts, float cell) {
-    uint32_t n = static_cast<uint32_t>(pts.size() / 3);
-    Arena counter;
-    CellGrid sizing;
-    sizing.carve(counter, n);
-    memory.resize(counter.used() + 64);
-    Arena arena(memory.data(), memory.size());
-    REQUIRE(grid.carve(arena, n));
-    grid.build(pts.data(), n, cell);
-  }
-};
+using test::GridFixture;
 
 SpinImageParams paper_params() {  // 1 m support, 10 x 10 bins
   SpinImageParams sp;

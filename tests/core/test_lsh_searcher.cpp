@@ -1,0 +1,97 @@
+// The LSH candidate search (spinhash/internal/lsh_search.hpp): sorted, W-long
+// results, the truncation flag exactly when the scan bound is reached, and the
+// per-model exhaustive search against brute force.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "spinhash/arena.hpp"
+#include "spinhash/internal/lsh_search.hpp"
+#include "spinhash/internal/spin_quantize.hpp"
+#include "support/toy_database.hpp"
+
+using namespace spinhash;
+
+namespace {
+
+struct Searcher {
+  std::vector<unsigned char> memory;
+  LshSearcher lsh;
+  explicit Searcher(uint32_t max_scan) {
+    Arena counter;
+    LshSearcher sizing;
+    sizing.carve(counter, max_scan);
+    memory.resize(counter.used() + 64);
+    Arena arena(memory.data(), memory.size());
+    REQUIRE(lsh.carve(arena, max_scan));
+  }
+};
+
+bool sorted(const Candidate* c, uint32_t n) {
+  for (uint32_t i = 1; i < n; ++i)
+    if (c[i - 1].distance > c[i].distance || (c[i - 1].distance == c[i].distance && c[i - 1].feature >= c[i].feature))
+      return false;
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("LSH search: a database feature finds itself first, W sorted candidates, no truncation") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  Searcher s(1u << 20);
+  const uint32_t w = 20;
+  Candidate out[128];
+  for (uint32_t f = 0; f < toy.db.feature_count(); f += 97) {
+    SearchStats st;
+    const uint32_t n = s.lsh.search(toy.db, toy.db.spin(f), w, out, &st);
+    REQUIRE(n >= 1u);
+    CHECK(n <= w);
+    CHECK(out[0].distance == 0u);
+    CHECK(sorted(out, n));
+    CHECK_FALSE(st.truncated);
+    for (uint32_t i = 0; i < n; ++i)
+      CHECK(out[i].distance == l1_distance(toy.db.spin(f), toy.db.spin(out[i].feature), toy.db.spin_dims()));
+  }
+}
+
+TEST_CASE("LSH search: the scan bound truncates, and says so") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  const uint32_t f = toy.db.feature_count() / 2;
+  SearchStats full;
+  Candidate out[128];
+  Searcher wide(1u << 20);
+  wide.lsh.search(toy.db, toy.db.spin(f), 50, out, &full);
+  REQUIRE(full.entries_scanned > 8u);
+  CHECK_FALSE(full.truncated);
+  SearchStats cut;
+  Searcher narrow(8);
+  narrow.lsh.search(toy.db, toy.db.spin(f), 50, out, &cut);
+  CHECK(cut.truncated);
+  CHECK(cut.entries_scanned <= 8u);
+}
+
+TEST_CASE("exhaustive per-model search equals a brute-force sort by (distance, feature)") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  const uint32_t dims = toy.db.spin_dims(), w = 5;
+  const uint8_t* probe = toy.db.spin(3);
+  for (uint32_t m = 0; m < toy.db.model_count(); ++m) {
+    const blob::ModelRecord& rec = toy.db.model(m);
+    std::vector<Candidate> all;
+    for (uint32_t f = rec.first_feature; f < rec.first_feature + rec.feature_count; ++f)
+      all.push_back(Candidate{f, l1_distance(probe, toy.db.spin(f), dims)});
+    std::sort(all.begin(), all.end(), [](const Candidate& a, const Candidate& b) {
+      return a.distance < b.distance || (a.distance == b.distance && a.feature < b.feature);
+    });
+    Candidate out[8];
+    const uint32_t n = search_model_exhaustive(toy.db, m, probe, w, out);
+    REQUIRE(n == std::min<uint32_t>(w, rec.feature_count));
+    for (uint32_t i = 0; i < n; ++i) {
+      CHECK(out[i].feature == all[i].feature);
+      CHECK(out[i].distance == all[i].distance);
+    }
+  }
+}
