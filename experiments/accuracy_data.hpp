@@ -15,15 +15,15 @@ struct AccuracyRecord {
   uint32_t mode = 0;       // index into AccuracyRun::modes
   uint32_t model = 0;
   uint32_t query = 0;
-  uint32_t points = 0;     // query cloud size (object and ground)
+  uint32_t points = 0;  // query cloud size (object and ground)
   Outcome outcome;
 };
 
 struct AccuracyRun {
   std::string out_dir;
-  std::string command;        // as typed
-  std::string source;         // "procedural fleet" or the mesh inputs
-  std::string database;       // config_text descriptions
+  std::string command;   // as typed
+  std::string source;    // "procedural fleet" or the mesh inputs
+  std::string database;  // config_text descriptions
   std::string recognizer;
   std::vector<std::string> model_names;  // every database model (originals first)
   uint32_t query_models = 0;             // the originals, which the queries scan

@@ -3,19 +3,19 @@
 #include <cstdio>
 #include <memory>
 
-#include "pipeline/exit_codes.hpp"
-#include "pipeline/progress.hpp"
-#include "pipeline/recognizer_flags.hpp"
 #include "accuracy_data.hpp"
 #include "config_text.hpp"
-#include "spinhash/limits.hpp"
 #include "experiments.hpp"
-#include "memory_database.hpp"
 #include "lookalikes.hpp"
+#include "memory_database.hpp"
+#include "mesh/vehicle_generator.hpp"
 #include "model_set.hpp"
 #include "modes.hpp"
 #include "output_dir.hpp"
-#include "mesh/vehicle_generator.hpp"
+#include "pipeline/exit_codes.hpp"
+#include "pipeline/progress.hpp"
+#include "pipeline/recognizer_flags.hpp"
+#include "spinhash/limits.hpp"
 
 namespace spinhash::experiment {
 namespace {
@@ -46,8 +46,8 @@ struct AccuracyArgs {
 using Sessions = std::vector<std::unique_ptr<pipeline::RecognitionSession>>;
 
 // One session per mode; keep_ground turns the recognizer's ground removal off.
-bool open_sessions(const Database& db, const AccuracyArgs& a, const std::vector<Mode>& modes, bool keep_ground,
-                   Sessions* out, std::string* error) {
+bool open_sessions(const Database& db, const AccuracyArgs& a, const std::vector<Mode>& modes,
+                   bool keep_ground, Sessions* out, std::string* error) {
   for (Mode m : modes) {
     RecognizerConfig cfg;  // library defaults (but --transfer-models): the experiment measures them
     cfg.mode = m;
@@ -62,13 +62,13 @@ bool open_sessions(const Database& db, const AccuracyArgs& a, const std::vector<
 // Every query of every condition through every mode.
 // Queries come from the first run->query_models meshes (the originals, when
 // look-alike copies follow them).
-bool run_queries(const AccuracyArgs& a, const std::vector<pipeline::ModelMesh>& meshes, Sessions (&all_sessions)[2],
-                 AccuracyRun* run, std::string* error) {
+bool run_queries(const AccuracyArgs& a, const std::vector<pipeline::ModelMesh>& meshes,
+                 Sessions (&all_sessions)[2], AccuracyRun* run, std::string* error) {
   const uint32_t per_condition = run->query_models * a.queries_per_model;
   for (uint32_t c = 0; c < run->conditions.size(); ++c) {
     const QueryCondition& cond = run->conditions[c];
-    std::fprintf(stderr, "spinhash-experiment accuracy: condition %u/%zu: %s\n", c + 1, run->conditions.size(),
-                 cond.label().c_str());
+    std::fprintf(stderr, "spinhash-experiment accuracy: condition %u/%zu: %s\n", c + 1,
+                 run->conditions.size(), cond.label().c_str());
     Sessions& sessions = all_sessions[cond.ground == Ground::kKept ? 1 : 0];
     pipeline::Progress progress(cond.label(), per_condition);
     uint32_t done = 0;
@@ -102,7 +102,8 @@ int run_accuracy(const AccuracyArgs& a) {
   }
   if (a.meshes.empty()) {
     meshes = generated_models(a.models, a.fleet_seed);
-    run.source = "procedural fleet of " + std::to_string(a.models) + " (seed " + std::to_string(a.fleet_seed) + ")";
+    run.source =
+        "procedural fleet of " + std::to_string(a.models) + " (seed " + std::to_string(a.fleet_seed) + ")";
   } else if (!loaded_models(a.meshes, a.models_given ? a.models : 0u, &meshes, &error)) {
     std::fprintf(stderr, "spinhash-experiment accuracy: %s\n", error.c_str());
     return pipeline::kExitError;
@@ -113,8 +114,9 @@ int run_accuracy(const AccuracyArgs& a) {
   run.query_models = static_cast<uint32_t>(meshes.size());
   if (a.lookalikes > 0) {
     meshes = with_lookalikes(meshes, a.lookalikes);
-    run.source += ", each with " + std::to_string(a.lookalikes) +
-                  " look-alike copies (stretched, shortened, widened, narrowed, mirrored; queries from the originals)";
+    run.source +=
+        ", each with " + std::to_string(a.lookalikes) +
+        " look-alike copies (stretched, shortened, widened, narrowed, mirrored; queries from the originals)";
   }
   for (const pipeline::ModelMesh& m : meshes) run.model_names.push_back(m.name);
   std::unique_ptr<MemoryDatabase> mdb;
@@ -150,27 +152,41 @@ void add_accuracy_experiment(CLI::App* parent, int* exit_code) {
       ->capture_default_str();
   cmd->add_option("--meshes", a->meshes, "model meshes (files or folders) instead of the procedural fleet");
   cmd->add_option("--queries-per-model", a->queries_per_model, "queries (random sides and poses) per model")
-      ->check(CLI::Range(1u, kMaxQueriesPerModel))->capture_default_str();
-  cmd->add_option("--noise", a->noise, "noise levels, m along the ray")->delimiter(',')
-      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
-  cmd->add_option("--occlusion", a->occlusion, "occluded fractions")->delimiter(',')
-      ->check(CLI::Range(0.0, 0.9))->capture_default_str();
-  cmd->add_option("--spacing", a->spacing, "query point spacings, m between rays at the object (0.05: 20 m range)")
-      ->delimiter(',')->check(CLI::Range(0.01, 0.5))->capture_default_str();
+      ->check(CLI::Range(1u, kMaxQueriesPerModel))
+      ->capture_default_str();
+  cmd->add_option("--noise", a->noise, "noise levels, m along the ray")
+      ->delimiter(',')
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--occlusion", a->occlusion, "occluded fractions")
+      ->delimiter(',')
+      ->check(CLI::Range(0.0, 0.9))
+      ->capture_default_str();
+  cmd->add_option("--spacing", a->spacing,
+                  "query point spacings, m between rays at the object (0.05: 20 m range)")
+      ->delimiter(',')
+      ->check(CLI::Range(0.01, 0.5))
+      ->capture_default_str();
   cmd->add_option("--lookalikes", a->lookalikes,
                   "look-alike copies of each model added to the database (queries stay on the originals)")
-      ->check(CLI::Range(0u, kMaxLookalikesPerModel))->capture_default_str();
+      ->check(CLI::Range(0u, kMaxLookalikesPerModel))
+      ->capture_default_str();
   cmd->add_flag("--ground", a->ground, "also run every condition with the ground around the vehicle scanned");
   cmd->add_flag("--ground-kept", a->ground_kept,
                 "also run every condition with the ground scanned and the recognizer's ground removal off");
   cmd->add_option("--ground-margin", a->ground_margin, "ground beyond the vehicle on each side, m")
-      ->check(CLI::Range(0.0, 100.0))->capture_default_str();
+      ->check(CLI::Range(0.0, 100.0))
+      ->capture_default_str();
   cmd->add_option("--modes", a->modes, "bran, sran, sind")->delimiter(',')->capture_default_str();
   cmd->add_option("--seed", a->seed, "seed of the query scans")->capture_default_str();
   cmd->add_option("--fleet-seed", a->fleet_seed, "seed of the procedural fleet")->capture_default_str();
-  cmd->add_option("--max-k", a->max_k, "largest k of the curves")->check(CLI::Range(1u, 1000u))->capture_default_str();
-  cmd->add_option("--transfer-models", a->transfer_models, "BRAN's look-alike pose transfer (0: the paper's BRAN)")
-      ->check(CLI::Range(0u, kMaxTransferModels))->capture_default_str();
+  cmd->add_option("--max-k", a->max_k, "largest k of the curves")
+      ->check(CLI::Range(1u, 1000u))
+      ->capture_default_str();
+  cmd->add_option("--transfer-models", a->transfer_models,
+                  "BRAN's look-alike pose transfer (0: the paper's BRAN)")
+      ->check(CLI::Range(0u, kMaxTransferModels))
+      ->capture_default_str();
   cmd->callback([a, exit_code]() { *exit_code = run_accuracy(*a); });
 }
 

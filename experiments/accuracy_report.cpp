@@ -3,19 +3,20 @@
 #include <cmath>
 #include <sstream>
 
-#include "pipeline/recognizer_flags.hpp"
 #include "accuracy_data.hpp"
 #include "csv_table.hpp"
 #include "gnuplot.hpp"
 #include "output_dir.hpp"
+#include "pipeline/recognizer_flags.hpp"
 #include "plot_styles.hpp"
 #include "stats.hpp"
 
 namespace spinhash::experiment {
 namespace {
 
-constexpr double kBranSranTolerance = 0.02;  // BRAN within 2 points of SRAN at every k (the paper: "the same level")
-constexpr double kSindMargin = 0.10;         // "clearly below": 10 points under both at k = 1
+constexpr double kBranSranTolerance =
+    0.02;                             // BRAN within 2 points of SRAN at every k (the paper: "the same level")
+constexpr double kSindMargin = 0.10;  // "clearly below": 10 points under both at k = 1
 const uint32_t kTableKs[] = {1, 2, 3, 5, 10, 20};
 constexpr size_t kListedModels = 5;
 constexpr int kPanelWidth = 420, kPanelHeight = 330, kMinPageWidth = 640;
@@ -32,7 +33,9 @@ std::string curve_file(const QueryCondition& c) { return "curves/" + c.label() +
 std::string condition_title(const QueryCondition& c) {
   std::ostringstream s;
   s << "noise " << c.noise * 100.0 << " cm, occlusion " << c.occlusion * 100.0 << "%"
-    << (c.ground == Ground::kScanned ? ", ground removed" : c.ground == Ground::kKept ? ", ground kept (removal off)" : "");
+    << (c.ground == Ground::kScanned ? ", ground removed"
+        : c.ground == Ground::kKept  ? ", ground kept (removal off)"
+                                     : "");
   if (c.spacing != kPaperQuerySpacing) s << ", spacing " << c.spacing * 100.0 << " cm";
   return s.str();
 }
@@ -64,21 +67,23 @@ ModeSummary summarise(const std::vector<const AccuracyRecord*>& rs) {
 }
 
 bool write_csvs(const AccuracyRun& run, std::string* error) {
-  CsvTable per_query({"mode", "noise", "occlusion", "ground", "spacing", "model", "name", "query", "points", "status", "rank",
-                      "ms", "hypotheses", "features", "ranked", "best", "confident", "budget_exhausted"});
+  CsvTable per_query({"mode", "noise", "occlusion", "ground", "spacing", "model", "name", "query", "points",
+                      "status", "rank", "ms", "hypotheses", "features", "ranked", "best", "confident",
+                      "budget_exhausted"});
   for (const AccuracyRecord& r : run.records) {
     const QueryCondition& c = run.conditions[r.condition];
     const Outcome& o = r.outcome;
-    per_query.add({pipeline::mode_name(run.modes[r.mode]), num(c.noise), num(c.occlusion), ground_name(c.ground),
-                   num(c.spacing), std::to_string(r.model), run.model_names[r.model], std::to_string(r.query),
-                   std::to_string(r.points), status_name(o.status), std::to_string(o.rank), num(o.ms),
-                   std::to_string(o.hypotheses), std::to_string(o.features), std::to_string(o.ranked),
+    per_query.add({pipeline::mode_name(run.modes[r.mode]), num(c.noise), num(c.occlusion),
+                   ground_name(c.ground), num(c.spacing), std::to_string(r.model), run.model_names[r.model],
+                   std::to_string(r.query), std::to_string(r.points), status_name(o.status),
+                   std::to_string(o.rank), num(o.ms), std::to_string(o.hypotheses),
+                   std::to_string(o.features), std::to_string(o.ranked),
                    o.ranked ? run.model_names[o.best_model] : "", o.confident ? "1" : "0",
                    o.budget_exhausted ? "1" : "0"});
   }
   CsvTable curves({"mode", "noise", "occlusion", "ground", "spacing", "k", "p_correct_within_k", "queries"});
-  CsvTable timing({"mode", "noise", "occlusion", "ground", "spacing", "queries", "not_ok", "budget_exhausted", "median_ms",
-                   "mean_ms", "median_hypotheses", "mean_hypotheses", "mean_points"});
+  CsvTable timing({"mode", "noise", "occlusion", "ground", "spacing", "queries", "not_ok", "budget_exhausted",
+                   "median_ms", "mean_ms", "median_hypotheses", "mean_hypotheses", "mean_points"});
   std::vector<std::string> wide_header{"condition"};
   for (Mode m : run.modes) wide_header.push_back(std::string(pipeline::mode_name(m)) + "_median_ms");
   for (Mode m : run.modes) wide_header.push_back(std::string(pipeline::mode_name(m)) + "_mean_hypotheses");
@@ -94,17 +99,17 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
       per_mode.push_back(topk_curve(run, c, m));
       std::vector<const AccuracyRecord*> rs = select(run, c, m);
       ModeSummary s = summarise(rs);
-      std::vector<std::string> cond_cols{pipeline::mode_name(run.modes[m]), num(cond.noise), num(cond.occlusion),
-                                         ground_name(cond.ground), num(cond.spacing)};
+      std::vector<std::string> cond_cols{pipeline::mode_name(run.modes[m]), num(cond.noise),
+                                         num(cond.occlusion), ground_name(cond.ground), num(cond.spacing)};
       for (uint32_t k = 1; k <= run.max_k; ++k) {
         std::vector<std::string> row = cond_cols;
         row.insert(row.end(), {std::to_string(k), num(per_mode.back()[k - 1]), std::to_string(rs.size())});
         curves.add(row);
       }
       std::vector<std::string> row = cond_cols;
-      row.insert(row.end(), {std::to_string(s.queries), std::to_string(s.not_ok), std::to_string(s.budget),
-                             num(s.median_ms), num(s.mean_ms), num(s.median_hyp), num(s.mean_hyp),
-                             num(s.mean_points)});
+      row.insert(row.end(),
+                 {std::to_string(s.queries), std::to_string(s.not_ok), std::to_string(s.budget),
+                  num(s.median_ms), num(s.mean_ms), num(s.median_hyp), num(s.mean_hyp), num(s.mean_points)});
       timing.add(row);
       wide_ms.push_back(num(s.median_ms));
       wide_hyp.push_back(num(std::max(s.mean_hyp, 0.5)));  // log axis: SIND's 0 drawn at 0.5
@@ -119,7 +124,8 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
     timing_wide.add(wide_ms);
   }
   return per_query.write(run.out_dir + "/per_query.csv", error) &&
-         curves.write(run.out_dir + "/accuracy.csv", error) && timing.write(run.out_dir + "/timing.csv", error) &&
+         curves.write(run.out_dir + "/accuracy.csv", error) &&
+         timing.write(run.out_dir + "/timing.csv", error) &&
          timing_wide.write(run.out_dir + "/timing_wide.csv", error);
 }
 
@@ -165,11 +171,13 @@ bool write_plots(const AccuracyRun& run, std::vector<std::string>* made, std::st
     std::ostringstream body;
     body << curve_axes(run) << "set multiplot layout " << rows << "," << cols << " title '"
          << run.model_names.size() << " models, " << run.queries_per_model * run.query_models
-         << " queries per condition" << (g == Ground::kScanned ? ", ground scanned (removed by the recognizer)" : "")
+         << " queries per condition"
+         << (g == Ground::kScanned ? ", ground scanned (removed by the recognizer)" : "")
          << (g == Ground::kKept ? ", ground scanned and kept (removal off)" : "") << "'\n";
     for (size_t i = 0; i < page.size(); ++i) body << curve_plot_command(run, *page[i], i == 0);
     body << "unset multiplot\n";
-    if (!render_plot(run.out_dir, name, body.str(), std::max(kMinPageWidth, static_cast<int>(cols) * kPanelWidth),
+    if (!render_plot(run.out_dir, name, body.str(),
+                     std::max(kMinPageWidth, static_cast<int>(cols) * kPanelWidth),
                      static_cast<int>(rows) * kPanelHeight + 40, error))
       return false;
     overviews.push_back(plot_file(name));
@@ -185,7 +193,8 @@ bool write_plots(const AccuracyRun& run, std::vector<std::string>* made, std::st
   for (size_t m = 0; m < n; ++m)
     t << (m ? ", " : "") << "'timing_wide.csv' using " << m + 2 << (m ? "" : ":xtic(1)") << " ls "
       << mode_style(run.modes[m]) << " title '" << mode_title(run.modes[m]) << "'";
-  t << "\nset title 'mean hypotheses per query (SIND verifies none: drawn at 0.5)'\nset ylabel 'hypotheses'\nplot ";
+  t << "\nset title 'mean hypotheses per query (SIND verifies none: drawn at 0.5)'\nset ylabel "
+       "'hypotheses'\nplot ";
   for (size_t m = 0; m < n; ++m)
     t << (m ? ", " : "") << "'timing_wide.csv' using " << n + m + 2 << (m ? "" : ":xtic(1)") << " ls "
       << mode_style(run.modes[m]) << " title '" << mode_title(run.modes[m]) << "'";
@@ -204,7 +213,8 @@ int mode_index(const AccuracyRun& run, Mode m) {
 // The accuracy targets (BRAN within 2 points of SRAN, SIND below both), per condition.
 std::string target_section(const AccuracyRun& run) {
   std::ostringstream s;
-  const int b = mode_index(run, Mode::kBran), r = mode_index(run, Mode::kSran), d = mode_index(run, Mode::kSind);
+  const int b = mode_index(run, Mode::kBran), r = mode_index(run, Mode::kSran),
+            d = mode_index(run, Mode::kSind);
   s << "\n## Targets (BRAN within 2 points of SRAN; SIND below both)\n\n";
   if (b < 0 || r < 0) {
     s << "BRAN and SRAN both needed to check the targets.\n";
@@ -219,8 +229,8 @@ std::string target_section(const AccuracyRun& run) {
     uint32_t at = 1;
     for (uint32_t k = 0; k < run.max_k; ++k)
       if (cr[k] - cb[k] > worst) worst = cr[k] - cb[k], at = k + 1;
-    s << "| " << condition_title(run.conditions[c]) << " | " << num(100.0 * worst, 3) << " (k = " << at << ") | "
-      << (worst <= kBranSranTolerance + 1e-9 ? "met" : "**missed**") << " |";
+    s << "| " << condition_title(run.conditions[c]) << " | " << num(100.0 * worst, 3) << " (k = " << at
+      << ") | " << (worst <= kBranSranTolerance + 1e-9 ? "met" : "**missed**") << " |";
     if (d >= 0) {
       double sind1 = topk_curve(run, c, d)[0], both1 = std::min(cb[0], cr[0]);
       s << " " << pct(sind1) << "% vs " << pct(both1) << "% | "
@@ -279,7 +289,8 @@ std::string ground_section(const AccuracyRun& run) {
   s << "\nModels most often ranked first with the ground kept (all modes):";
   std::vector<uint32_t> firsts(run.model_names.size(), 0);
   for (const AccuracyRecord& r : run.records)
-    if (run.conditions[r.condition].ground == Ground::kKept && r.outcome.ranked > 0) ++firsts[r.outcome.best_model];
+    if (run.conditions[r.condition].ground == Ground::kKept && r.outcome.ranked > 0)
+      ++firsts[r.outcome.best_model];
   std::vector<uint32_t> order(firsts.size());
   for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return firsts[a] > firsts[b]; });
@@ -292,9 +303,9 @@ std::string ground_section(const AccuracyRun& run) {
 std::string summary(const AccuracyRun& run, const std::vector<std::string>& plots) {
   std::ostringstream s;
   s << "# Accuracy (paper Figure 9)\n\nCommand: `" << run.command << "`\n\n"
-    << "- Models: " << run.source << "\n- Database: " << run.database << "\n- Recognizer (library defaults): "
-    << run.recognizer << "\n- Queries: " << run.queries_per_model << " per model x " << run.query_models
-    << " models = " << run.queries_per_model * run.query_models
+    << "- Models: " << run.source << "\n- Database: " << run.database
+    << "\n- Recognizer (library defaults): " << run.recognizer << "\n- Queries: " << run.queries_per_model
+    << " per model x " << run.query_models << " models = " << run.queries_per_model * run.query_models
     << " per condition; 3 views 45 degrees apart at 45 degrees elevation from a random side, random pose"
     << " (yaw, +-50 m), Gaussian noise along the rays, optional slab occluder; the same sides and poses under"
     << " every condition.\n\n## P(correct model within the top k), time and hypotheses per query\n\n"
@@ -316,7 +327,8 @@ std::string summary(const AccuracyRun& run, const std::vector<std::string>& plot
         << ms.not_ok << " |\n";
     }
   s << target_section(run) << ground_section(run) << confidence_section(run) << "\n## Files\n\n"
-    << "- `accuracy.csv`: P(correct within top k) per mode, condition and k; `curves/*.csv`: the same, one file "
+    << "- `accuracy.csv`: P(correct within top k) per mode, condition and k; `curves/*.csv`: the same, one "
+       "file "
        "per condition\n- `timing.csv`: time and hypotheses per mode and condition\n"
     << "- `per_query.csv`: every recognition (rank of the true model, 0 = not ranked)\n"
     << "- `calibration.csv`: confident answers against right ones, per mode and condition\n- Plots:";
@@ -332,8 +344,9 @@ std::vector<double> topk_curve(const AccuracyRun& run, uint32_t condition, uint3
   std::vector<double> curve(run.max_k, 0.0);
   if (rs.empty()) return curve;
   for (uint32_t k = 1; k <= run.max_k; ++k) {
-    size_t hits = std::count_if(rs.begin(), rs.end(),
-                                [k](const AccuracyRecord* r) { return r->outcome.rank >= 1 && r->outcome.rank <= k; });
+    size_t hits = std::count_if(rs.begin(), rs.end(), [k](const AccuracyRecord* r) {
+      return r->outcome.rank >= 1 && r->outcome.rank <= k;
+    });
     curve[k - 1] = static_cast<double>(hits) / static_cast<double>(rs.size());
   }
   return curve;

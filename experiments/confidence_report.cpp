@@ -6,8 +6,8 @@
 
 #include "accuracy_data.hpp"
 #include "csv_table.hpp"
-#include "plot_styles.hpp"
 #include "pipeline/recognizer_flags.hpp"
+#include "plot_styles.hpp"
 
 namespace spinhash::experiment {
 namespace {
@@ -33,14 +33,16 @@ void count(const AccuracyRun& run, const AccuracyRecord& r, Tally* t) {
   t->right += right ? 1u : 0u;
   t->confident += o.confident ? 1u : 0u;
   t->confident_right += o.confident && right ? 1u : 0u;
-  if (!right && o.ranked > 0 && base_name(run.model_names[o.best_model]) == base_name(run.model_names[r.model]))
+  if (!right && o.ranked > 0 &&
+      base_name(run.model_names[o.best_model]) == base_name(run.model_names[r.model]))
     ++t->wrong_lookalike;
 }
 
 Tally tally(const AccuracyRun& run, int condition, uint32_t mode) {
   Tally t;
   for (const AccuracyRecord& r : run.records)
-    if (r.mode == mode && (condition < 0 || r.condition == static_cast<uint32_t>(condition))) count(run, r, &t);
+    if (r.mode == mode && (condition < 0 || r.condition == static_cast<uint32_t>(condition)))
+      count(run, r, &t);
   return t;
 }
 
@@ -48,10 +50,11 @@ std::string pct(double p) { return num(100.0 * p, 3) + "%"; }
 
 std::string row(const std::string& label, const std::string& mode, const Tally& t) {
   std::ostringstream s;
-  s << "| " << label << " | " << mode << " | " << t.queries << " | " << pct(t.queries ? double(t.right) / t.queries : 0)
-    << " | " << t.confident << " | " << pct(t.precision()) << (t.precision() >= kMinConfidentPrecision ? "" : " (below)")
-    << " | " << pct(t.recall()) << (t.recall() >= kMinConfidentRecall ? "" : " (below)") << " | "
-    << t.confident - t.confident_right << " | " << t.wrong_lookalike << " |\n";
+  s << "| " << label << " | " << mode << " | " << t.queries << " | "
+    << pct(t.queries ? double(t.right) / t.queries : 0) << " | " << t.confident << " | " << pct(t.precision())
+    << (t.precision() >= kMinConfidentPrecision ? "" : " (below)") << " | " << pct(t.recall())
+    << (t.recall() >= kMinConfidentRecall ? "" : " (below)") << " | " << t.confident - t.confident_right
+    << " | " << t.wrong_lookalike << " |\n";
   return s.str();
 }
 
@@ -60,8 +63,9 @@ std::string row(const std::string& label, const std::string& mode, const Tally& 
 std::string confidence_section(const AccuracyRun& run) {
   std::ostringstream s;
   s << "\n## Confidence (is `confident` right?)\n\nPrecision: confident answers whose first model is right "
-    << "(target >= " << pct(kMinConfidentPrecision) << "); recall: right answers flagged confident (target >= "
-    << pct(kMinConfidentRecall) << "). Look-alike errors: wrong answers that name a look-alike copy of the "
+    << "(target >= " << pct(kMinConfidentPrecision)
+    << "); recall: right answers flagged confident (target >= " << pct(kMinConfidentRecall)
+    << "). Look-alike errors: wrong answers that name a look-alike copy of the "
     << "scanned model.\n\n| condition | mode | queries | right first | confident | precision | recall | "
     << "confident and wrong | look-alike errors |\n|---|---|---|---|---|---|---|---|---|\n";
   for (uint32_t m = 0; m < run.modes.size(); ++m)
@@ -73,14 +77,15 @@ std::string confidence_section(const AccuracyRun& run) {
 }
 
 bool write_calibration_csv(const AccuracyRun& run, std::string* error) {
-  CsvTable t({"mode", "condition", "queries", "right_first", "confident", "confident_right", "precision", "recall",
-              "lookalike_errors"});
+  CsvTable t({"mode", "condition", "queries", "right_first", "confident", "confident_right", "precision",
+              "recall", "lookalike_errors"});
   for (int c = -1; c < static_cast<int>(run.conditions.size()); ++c)
     for (uint32_t m = 0; m < run.modes.size(); ++m) {
       const Tally x = tally(run, c, m);
-      t.add({pipeline::mode_name(run.modes[m]), c < 0 ? "all" : run.conditions[static_cast<size_t>(c)].label(),
-             std::to_string(x.queries), std::to_string(x.right), std::to_string(x.confident),
-             std::to_string(x.confident_right), num(x.precision()), num(x.recall()), std::to_string(x.wrong_lookalike)});
+      t.add({pipeline::mode_name(run.modes[m]),
+             c < 0 ? "all" : run.conditions[static_cast<size_t>(c)].label(), std::to_string(x.queries),
+             std::to_string(x.right), std::to_string(x.confident), std::to_string(x.confident_right),
+             num(x.precision()), num(x.recall()), std::to_string(x.wrong_lookalike)});
     }
   return t.write(run.out_dir + "/calibration.csv", error);
 }

@@ -11,10 +11,11 @@ std::string database_text(const MemoryDatabase& m) {
   const blob::Params& p = m.db.params();
   std::ostringstream s;
   s << p.model_count << " models, " << p.feature_count << " features, blob " << m.blob_bytes << " bytes ("
-    << (p.feature_count ? static_cast<double>(m.blob_bytes) / p.feature_count : 0.0) << " B/feature); spin images "
-    << p.bins_alpha << "x" << p.bins_beta << ", R = " << p.support_radius << " m, basis spacing "
-    << p.basis_spacing << " m; LSH K = " << p.lsh_bits << ", L = " << p.lsh_tables << ", " << p.lsh_buckets
-    << " buckets/table, largest bucket " << m.report.max_bucket << "; build " << m.build_seconds << " s";
+    << (p.feature_count ? static_cast<double>(m.blob_bytes) / p.feature_count : 0.0)
+    << " B/feature); spin images " << p.bins_alpha << "x" << p.bins_beta << ", R = " << p.support_radius
+    << " m, basis spacing " << p.basis_spacing << " m; LSH K = " << p.lsh_bits << ", L = " << p.lsh_tables
+    << ", " << p.lsh_buckets << " buckets/table, largest bucket " << m.report.max_bucket << "; build "
+    << m.build_seconds << " s";
   return s.str();
 }
 
@@ -35,10 +36,10 @@ std::string recognizer_text(const RecognizerConfig& c) {
   std::ostringstream s;
   const char* sep = "";
 #define SPINHASH_PUT_FIELD(kind, name, lo, hi, flag, help) \
-  if (std::string(#name) != "mode") {                    \
-    s << sep << #name << " ";                            \
-    put(s, c.name);                                      \
-    sep = "; ";                                          \
+  if (std::string(#name) != "mode") {                      \
+    s << sep << #name << " ";                              \
+    put(s, c.name);                                        \
+    sep = "; ";                                            \
   }
   SPINHASH_CONFIG_FIELDS(SPINHASH_PUT_FIELD)
 #undef SPINHASH_PUT_FIELD

@@ -49,8 +49,8 @@ std::string plot_file(const std::string& name) {
   return name + "." + (f.available() ? f.extension : std::string("png"));
 }
 
-bool render_plot(const std::string& dir, const std::string& name, const std::string& body, int width, int height,
-                 std::string* error) {
+bool render_plot(const std::string& dir, const std::string& name, const std::string& body, int width,
+                 int height, std::string* error) {
   const PlotFormat& f = plot_format();
   const std::string script = dir + "/" + name + ".gp";
   {

@@ -18,8 +18,8 @@ const PlotFormat& plot_format();
 // Writes DIR/NAME.gp (terminal and output lines, then `body`, which reads
 // data files relative to DIR) and runs gnuplot in DIR. Image: DIR/NAME.<ext>.
 // Without gnuplot the script is still written and false is returned.
-bool render_plot(const std::string& dir, const std::string& name, const std::string& body, int width, int height,
-                 std::string* error);
+bool render_plot(const std::string& dir, const std::string& name, const std::string& body, int width,
+                 int height, std::string* error);
 
 // "NAME.png" / "NAME.svg" for the current format (what render_plot writes).
 std::string plot_file(const std::string& name);

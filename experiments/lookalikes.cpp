@@ -28,9 +28,7 @@ Eigen::Matrix4d copy_transform(CopyKind kind, uint32_t level) {
     case CopyKind::kShorter: t(0, 0) = 1.0 - step; break;
     case CopyKind::kWider: t(1, 1) = 1.0 + step; break;
     case CopyKind::kNarrower: t(1, 1) = 1.0 - step; break;
-    default:
-      t(1, 1) = -1.0;
-      t(0, 0) = 1.0 + kLookalikeStep * (level - 1);
+    default: t(1, 1) = -1.0; t(0, 0) = 1.0 + kLookalikeStep * (level - 1);
   }
   return t;
 }

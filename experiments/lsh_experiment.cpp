@@ -7,17 +7,17 @@
 #include <cstdio>
 #include <memory>
 
-#include "pipeline/exit_codes.hpp"
-#include "pipeline/progress.hpp"
-#include "db/lsh_tables.hpp"
 #include "config_text.hpp"
+#include "db/lsh_tables.hpp"
 #include "experiments.hpp"
 #include "lsh_measure.hpp"
+#include "mesh/vehicle_generator.hpp"
 #include "model_set.hpp"
 #include "output_dir.hpp"
-#include "stats.hpp"
-#include "mesh/vehicle_generator.hpp"
+#include "pipeline/exit_codes.hpp"
+#include "pipeline/progress.hpp"
 #include "spinhash/limits.hpp"
+#include "stats.hpp"
 
 namespace spinhash::experiment {
 namespace {
@@ -58,8 +58,8 @@ bool make_probes(const LshArgs& a, const std::vector<pipeline::ModelMesh>& meshe
 
 // Medians of the nearest-neighbour and nearest-correct distances, clamped L1,
 // over the probes that are paired for the collision measurement.
-void distance_medians(const MemoryDatabase& mdb, const std::vector<ProbeFeature>& probes, uint32_t pair_features,
-                      const std::vector<uint32_t>& ranges, LshRun* run) {
+void distance_medians(const MemoryDatabase& mdb, const std::vector<ProbeFeature>& probes,
+                      uint32_t pair_features, const std::vector<uint32_t>& ranges, LshRun* run) {
   const uint32_t dims = mdb.db.spin_dims(), n = mdb.db.feature_count();
   auto clamped_l1 = [&](const uint8_t* a, const uint8_t* b) {
     uint32_t s = 0;
@@ -92,7 +92,8 @@ int run_lsh(const LshArgs& a) {
   run.command = invoked_command_line();
   run.queries = a.queries;
   run.pair_features = a.pair_features;
-  run.source = "procedural fleet of " + std::to_string(a.models) + " (seed " + std::to_string(a.fleet_seed) + ")";
+  run.source =
+      "procedural fleet of " + std::to_string(a.models) + " (seed " + std::to_string(a.fleet_seed) + ")";
   const host::BuildOptions build;  // library defaults
   const RecognizerConfig cfg;
   run.top_w = cfg.top_w;
@@ -111,8 +112,8 @@ int run_lsh(const LshArgs& a) {
   clouds.clear();
   run.database = database_text(*mdb);
   run.database_features = mdb->db.feature_count();
-  const std::vector<uint32_t> ranges =
-      host::dimension_ranges(mdb->content.spins, mdb->db.spin_dims(), mdb->db.feature_count(), build.lsh_range_quantile);
+  const std::vector<uint32_t> ranges = host::dimension_ranges(
+      mdb->content.spins, mdb->db.spin_dims(), mdb->db.feature_count(), build.lsh_range_quantile);
   for (uint32_t r : ranges) run.d_c += r;
   run.d_c_matches_builder = std::abs(run.d_c - mdb->db.params().lsh_dc) < 0.5;
   run.bins = kDistanceBins;
@@ -133,8 +134,8 @@ int run_lsh(const LshArgs& a) {
       r.l = l;
       r.is_default = k == build.lsh_bits && l == build.lsh_tables;
       std::fprintf(stderr, "spinhash-experiment lsh: K = %u, L = %u\n", k, l);
-      if (!measure_lsh_config(*mdb, build, cfg, probes, a.pair_features, ranges, run.bin_width, kDistanceBins, &r,
-                              &error)) {
+      if (!measure_lsh_config(*mdb, build, cfg, probes, a.pair_features, ranges, run.bin_width, kDistanceBins,
+                              &r, &error)) {
         std::fprintf(stderr, "spinhash-experiment lsh: %s\n", error.c_str());
         return pipeline::kExitError;
       }
@@ -152,21 +153,33 @@ int run_lsh(const LshArgs& a) {
 
 void add_lsh_experiment(CLI::App* parent, int* exit_code) {
   auto a = std::make_shared<LshArgs>();
-  CLI::App* cmd = parent->add_subcommand("lsh", "eq. 2 against measured collisions; recall of the W candidates");
+  CLI::App* cmd =
+      parent->add_subcommand("lsh", "eq. 2 against measured collisions; recall of the W candidates");
   cmd->add_option("--out", a->out, "output folder (CSV, plots, summary.md)")->required();
   cmd->add_option("--models", a->models, "procedural vehicles in the database")
-      ->check(CLI::Range(2u, host::kMaxFleetSize))->capture_default_str();
-  cmd->add_option("--k", a->k, "bits per key (K) to try")->delimiter(',')
-      ->check(CLI::Range(1u, kMaxLshBits))->capture_default_str();
-  cmd->add_option("--l", a->l, "tables (L) to try")->delimiter(',')
-      ->check(CLI::Range(1u, kMaxLshTables))->capture_default_str();
+      ->check(CLI::Range(2u, host::kMaxFleetSize))
+      ->capture_default_str();
+  cmd->add_option("--k", a->k, "bits per key (K) to try")
+      ->delimiter(',')
+      ->check(CLI::Range(1u, kMaxLshBits))
+      ->capture_default_str();
+  cmd->add_option("--l", a->l, "tables (L) to try")
+      ->delimiter(',')
+      ->check(CLI::Range(1u, kMaxLshTables))
+      ->capture_default_str();
   cmd->add_option("--queries", a->queries, "query scans (models in turn)")
-      ->check(CLI::Range(1u, kMaxQueries))->capture_default_str();
+      ->check(CLI::Range(1u, kMaxQueries))
+      ->capture_default_str();
   cmd->add_option("--features-per-query", a->features_per_query, "query features probed per scan")
-      ->check(CLI::Range(1u, kMaxQueryFeaturesLimit))->capture_default_str();
-  cmd->add_option("--pair-features", a->pair_features, "probes paired with every database feature (collisions)")
-      ->check(CLI::Range(1u, 1000000u))->capture_default_str();
-  cmd->add_option("--noise", a->noise, "query noise, m along the ray")->check(CLI::Range(0.0, 1.0))->capture_default_str();
+      ->check(CLI::Range(1u, kMaxQueryFeaturesLimit))
+      ->capture_default_str();
+  cmd->add_option("--pair-features", a->pair_features,
+                  "probes paired with every database feature (collisions)")
+      ->check(CLI::Range(1u, 1000000u))
+      ->capture_default_str();
+  cmd->add_option("--noise", a->noise, "query noise, m along the ray")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   cmd->add_option("--seed", a->seed, "seed of the query scans")->capture_default_str();
   cmd->add_option("--fleet-seed", a->fleet_seed, "seed of the procedural fleet")->capture_default_str();
   cmd->callback([a, exit_code]() { *exit_code = run_lsh(*a); });

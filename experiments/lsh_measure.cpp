@@ -124,11 +124,13 @@ void measure_collisions(const Database& db, const std::vector<ProbeFeature>& pro
   const uint32_t n = db.feature_count(), dims = db.spin_dims(), k = p.lsh_bits, l = p.lsh_tables;
   std::vector<uint64_t> keys(static_cast<size_t>(l) * n);  // every feature's key in every table
   for (uint32_t t = 0; t < l; ++t)
-    for (uint32_t f = 0; f < n; ++f) keys[static_cast<size_t>(t) * n + f] = lsh_key(db.lsh_bits(t), k, db.spin(f));
+    for (uint32_t f = 0; f < n; ++f)
+      keys[static_cast<size_t>(t) * n + f] = lsh_key(db.lsh_bits(t), k, db.spin(f));
   std::vector<uint8_t> clamped(static_cast<size_t>(n) * dims);
   for (uint32_t f = 0; f < n; ++f)
     for (uint32_t d = 0; d < dims; ++d)
-      clamped[static_cast<size_t>(f) * dims + d] = static_cast<uint8_t>(std::min<uint32_t>(db.spin(f)[d], ranges[d]));
+      clamped[static_cast<size_t>(f) * dims + d] =
+          static_cast<uint8_t>(std::min<uint32_t>(db.spin(f)[d], ranges[d]));
   r->pairs.assign(bins, 0);
   r->collisions.assign(bins, 0);
   const size_t stride = std::max<size_t>(1, probes.size() / std::max<uint32_t>(1, pair_features));
@@ -152,8 +154,8 @@ void measure_collisions(const Database& db, const std::vector<ProbeFeature>& pro
 
 }  // namespace
 
-bool probe_features(const MemoryDatabase& mdb, const RecognizerConfig& cfg, const Query& q, uint32_t per_query,
-                    std::vector<ProbeFeature>* out, std::string* error) {
+bool probe_features(const MemoryDatabase& mdb, const RecognizerConfig& cfg, const Query& q,
+                    uint32_t per_query, std::vector<ProbeFeature>* out, std::string* error) {
   host::ModelFeatures mf;
   const Database& db = mdb.db;
   if (!host::extract_model_features(q.xyz, db.feature_params(), cfg.max_points, cfg.max_features, &mf, error))
@@ -175,13 +177,13 @@ bool probe_features(const MemoryDatabase& mdb, const RecognizerConfig& cfg, cons
   return true;
 }
 
-bool measure_lsh_config(const MemoryDatabase& mdb, const host::BuildOptions& build, const RecognizerConfig& cfg,
-                        const std::vector<ProbeFeature>& probes, uint32_t pair_features,
-                        const std::vector<uint32_t>& ranges, double bin_width, uint32_t bins,
-                        LshConfigResult* out, std::string* error) {
+bool measure_lsh_config(const MemoryDatabase& mdb, const host::BuildOptions& build,
+                        const RecognizerConfig& cfg, const std::vector<ProbeFeature>& probes,
+                        uint32_t pair_features, const std::vector<uint32_t>& ranges, double bin_width,
+                        uint32_t bins, LshConfigResult* out, std::string* error) {
   const uint32_t dims = mdb.db.spin_dims(), n = mdb.db.feature_count();
-  host::LshTables t = host::build_lsh_tables(mdb.content.spins, dims, n, out->l, out->k, build.lsh_range_quantile,
-                                             build.seed);
+  host::LshTables t = host::build_lsh_tables(mdb.content.spins, dims, n, out->l, out->k,
+                                             build.lsh_range_quantile, build.seed);
   out->buckets = t.buckets;
   out->max_bucket = t.max_bucket;
   out->mean_bucket = t.mean_bucket;

@@ -9,7 +9,8 @@
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "spinhash-experiment: reproduce the paper's experiments: accuracy (Fig. 9), scaling (Fig. 10), LSH (eq. 2)"};
+      "spinhash-experiment: reproduce the paper's experiments: accuracy (Fig. 9), scaling (Fig. 10), LSH "
+      "(eq. 2)"};
   app.set_version_flag("--version", spinhash::pipeline::version());
   app.require_subcommand(1);
   int exit_code = spinhash::pipeline::kExitOk;

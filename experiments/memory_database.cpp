@@ -13,7 +13,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-bool open_content(const host::BlobContent& content, host::AlignedBytes* bytes, Database* db, std::string* error) {
+bool open_content(const host::BlobContent& content, host::AlignedBytes* bytes, Database* db,
+                  std::string* error) {
   std::vector<uint8_t> blob;
   if (!host::serialize_blob(content, host::ByteOrder::kNative, &blob, error)) return false;
   *bytes = host::AlignedBytes::copy_of(blob);

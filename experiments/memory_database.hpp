@@ -30,6 +30,7 @@ std::unique_ptr<MemoryDatabase> build_memory_database(const std::vector<host::Mo
                                                       std::string* error);
 
 // Serialises `content` (native order) and opens it; false with *error on failure.
-bool open_content(const host::BlobContent& content, host::AlignedBytes* bytes, Database* db, std::string* error);
+bool open_content(const host::BlobContent& content, host::AlignedBytes* bytes, Database* db,
+                  std::string* error);
 
 }  // namespace spinhash::experiment

@@ -1,7 +1,7 @@
 #include "model_set.hpp"
 
-#include "pipeline/build_database_file.hpp"
 #include "mesh/vehicle_generator.hpp"
+#include "pipeline/build_database_file.hpp"
 
 namespace spinhash::experiment {
 
@@ -14,8 +14,8 @@ std::vector<pipeline::ModelMesh> generated_models(uint32_t count, uint64_t fleet
   return out;
 }
 
-bool loaded_models(const std::vector<std::string>& inputs, uint32_t max_count, std::vector<pipeline::ModelMesh>* out,
-                   std::string* error) {
+bool loaded_models(const std::vector<std::string>& inputs, uint32_t max_count,
+                   std::vector<pipeline::ModelMesh>* out, std::string* error) {
   if (!pipeline::load_model_meshes(inputs, out, error, /*quiet=*/false)) return false;
   if (max_count > 0 && out->size() > max_count) out->resize(max_count);
   return true;

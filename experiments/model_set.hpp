@@ -14,8 +14,8 @@ namespace spinhash::experiment {
 std::vector<pipeline::ModelMesh> generated_models(uint32_t count, uint64_t fleet_seed);
 
 // Meshes from files/directories; at most max_count (0: all), in name order.
-bool loaded_models(const std::vector<std::string>& inputs, uint32_t max_count, std::vector<pipeline::ModelMesh>* out,
-                   std::string* error);
+bool loaded_models(const std::vector<std::string>& inputs, uint32_t max_count,
+                   std::vector<pipeline::ModelMesh>* out, std::string* error);
 
 // Model clouds with the database builder's default ray spacing.
 bool model_clouds(const std::vector<pipeline::ModelMesh>& meshes, std::vector<host::ModelCloud>* out,

@@ -10,13 +10,13 @@
 #include <filesystem>
 #include <memory>
 
-#include "pipeline/exit_codes.hpp"
 #include "csv_table.hpp"
 #include "experiments.hpp"
-#include "output_dir.hpp"
-#include "warzone_catalog.hpp"
 #include "mesh/mesh_writer.hpp"
 #include "mesh/pie_reader.hpp"
+#include "output_dir.hpp"
+#include "pipeline/exit_codes.hpp"
+#include "warzone_catalog.hpp"
 
 namespace spinhash::experiment {
 namespace {
@@ -86,8 +86,8 @@ bool prepare_vehicles(const PrepareArgs& a, CsvTable* catalog, Tally* tally, std
 
 // Every one-piece model of base/subdir that stands at least kMinObjectHeight
 // tall and is not a texture variant, as OUT/kind + "s"/prefix + stem.obj.
-bool prepare_directory(const PrepareArgs& a, const char* subdir, const std::string& kind, const std::string& prefix,
-                       CsvTable* catalog, Tally* tally, std::string* error) {
+bool prepare_directory(const PrepareArgs& a, const char* subdir, const std::string& kind,
+                       const std::string& prefix, CsvTable* catalog, Tally* tally, std::string* error) {
   const std::string out = a.out + "/" + kind + "s";
   const fs::path dir = fs::path(a.base) / subdir;
   std::vector<fs::path> files;
@@ -106,7 +106,8 @@ bool prepare_directory(const PrepareArgs& a, const char* subdir, const std::stri
     std::string why;
     if (is_texture_variant(stem) || !load_parts(a.base, {fs::relative(f, a.base).string()}, &m, &why) ||
         m.bounding_box().size().z() < kMinObjectHeight) {
-      if (!why.empty()) std::fprintf(stderr, "spinhash-experiment prepare-warzone: skipped %s\n", why.c_str());
+      if (!why.empty())
+        std::fprintf(stderr, "spinhash-experiment prepare-warzone: skipped %s\n", why.c_str());
       ++tally->skipped;
       continue;
     }
@@ -121,17 +122,20 @@ int run_prepare(const PrepareArgs& a) {
   std::string error;
   CsvTable catalog({"name", "kind", "triangles", "length_m", "width_m", "height_m"});
   Tally tally;
-  const bool ok =
-      prepare_vehicles(a, &catalog, &tally, &error) &&
-      (!a.structures || prepare_directory(a, kWarzoneStructureDir, "structure", "wzs-", &catalog, &tally, &error)) &&
-      (!a.features || prepare_directory(a, kWarzoneFeatureDir, "feature", "wzf-", &catalog, &tally, &error)) &&
-      catalog.write(a.out + "/catalog.csv", &error);
+  const bool ok = prepare_vehicles(a, &catalog, &tally, &error) &&
+                  (!a.structures || prepare_directory(a, kWarzoneStructureDir, "structure", "wzs-", &catalog,
+                                                      &tally, &error)) &&
+                  (!a.features ||
+                   prepare_directory(a, kWarzoneFeatureDir, "feature", "wzf-", &catalog, &tally, &error)) &&
+                  catalog.write(a.out + "/catalog.csv", &error);
   if (!ok) {
     std::fprintf(stderr, "spinhash-experiment prepare-warzone: %s\n", error.c_str());
     return pipeline::kExitError;
   }
-  std::fprintf(stderr, "spinhash-experiment prepare-warzone: %u meshes in %s (%u skipped: texture variants, "
-               "flat or unreadable)\n", tally.written, a.out.c_str(), tally.skipped);
+  std::fprintf(stderr,
+               "spinhash-experiment prepare-warzone: %u meshes in %s (%u skipped: texture variants, "
+               "flat or unreadable)\n",
+               tally.written, a.out.c_str(), tally.skipped);
   return pipeline::kExitOk;
 }
 
@@ -140,9 +144,11 @@ int run_prepare(const PrepareArgs& a) {
 void add_prepare_warzone(CLI::App* parent, int* exit_code) {
   auto a = std::make_shared<PrepareArgs>();
   CLI::App* cmd = parent->add_subcommand(
-      "prepare-warzone", "Warzone 2100 PIE models (unpacked base.wz) to OBJ vehicles, structures and features");
+      "prepare-warzone",
+      "Warzone 2100 PIE models (unpacked base.wz) to OBJ vehicles, structures and features");
   cmd->add_option("--base", a->base, "the unpacked base.wz (holds components/, structs/ and features/)")
-      ->required()->check(CLI::ExistingDirectory);
+      ->required()
+      ->check(CLI::ExistingDirectory);
   cmd->add_option("-o,--output", a->out, "output folder")->required();
   cmd->add_flag("!--no-structures", a->structures, "leave out the structures");
   cmd->add_flag("!--no-features", a->features, "leave out the map features (trees, rocks, wrecks, ruins)");

@@ -9,12 +9,12 @@ namespace spinhash::experiment {
 
 struct Outcome {
   Status status = Status::kNotOpen;
-  uint32_t rank = 0;          // 1-based position of the true model in the ranking; 0: not ranked
-  double ms = 0.0;            // wall time of recognize()
-  uint32_t hypotheses = 0;    // poses verified
-  uint32_t features = 0;      // query features used
-  uint32_t ranked = 0;        // models in the ranking
-  uint32_t best_model = 0;    // ranked first (valid when ranked > 0)
+  uint32_t rank = 0;        // 1-based position of the true model in the ranking; 0: not ranked
+  double ms = 0.0;          // wall time of recognize()
+  uint32_t hypotheses = 0;  // poses verified
+  uint32_t features = 0;    // query features used
+  uint32_t ranked = 0;      // models in the ranking
+  uint32_t best_model = 0;  // ranked first (valid when ranked > 0)
   bool confident = false;
   bool budget_exhausted = false;
 };

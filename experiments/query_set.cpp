@@ -22,7 +22,9 @@ const char* ground_name(Ground g) {
 std::string QueryCondition::label() const {
   std::ostringstream s;
   s << "noise" << noise << "_occ" << occlusion
-    << (ground == Ground::kScanned ? "_ground" : ground == Ground::kKept ? "_ground_kept" : "");
+    << (ground == Ground::kScanned ? "_ground"
+        : ground == Ground::kKept  ? "_ground_kept"
+                                   : "");
   if (spacing != kPaperQuerySpacing) s << "_sp" << spacing;
   return s.str();
 }
@@ -43,8 +45,9 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
   host::Mesh ground;
   if (c.ground != Ground::kNone) {
     host::Box3 box = mesh.bounding_box();
-    double half = std::max({std::abs(box.lo.x()), std::abs(box.hi.x()), std::abs(box.lo.y()),
-                            std::abs(box.hi.y())}) + ground_margin;
+    double half =
+        std::max({std::abs(box.lo.x()), std::abs(box.hi.x()), std::abs(box.lo.y()), std::abs(box.hi.y())}) +
+        ground_margin;
     ground = host::make_ground_patch(half, box.lo.z());
     opt.ground = &ground;
   }
@@ -59,8 +62,10 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
   return true;
 }
 
-std::vector<QueryCondition> make_conditions(const std::vector<double>& noise, const std::vector<double>& occlusion,
-                                            const std::vector<double>& spacing, bool with_ground, bool with_kept) {
+std::vector<QueryCondition> make_conditions(const std::vector<double>& noise,
+                                            const std::vector<double>& occlusion,
+                                            const std::vector<double>& spacing, bool with_ground,
+                                            bool with_kept) {
   std::vector<QueryCondition> out;
   for (Ground g : {Ground::kNone, Ground::kScanned, Ground::kKept}) {
     if ((g == Ground::kScanned && !with_ground) || (g == Ground::kKept && !with_kept)) continue;

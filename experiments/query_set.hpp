@@ -13,9 +13,9 @@
 namespace spinhash::experiment {
 
 enum class Ground : uint8_t {
-  kNone,      // the vehicle alone (the paper's setting)
-  kScanned,   // a ground square around the vehicle scanned with it (removed by the recognizer's default)
-  kKept,      // scanned, and the recognizer's ground removal turned off (ground_clearance = 0)
+  kNone,     // the vehicle alone (the paper's setting)
+  kScanned,  // a ground square around the vehicle scanned with it (removed by the recognizer's default)
+  kKept,     // scanned, and the recognizer's ground removal turned off (ground_clearance = 0)
 };
 const char* ground_name(Ground g);  // "none", "scanned", "kept"
 
@@ -33,10 +33,10 @@ struct QueryCondition {
 };
 
 struct Query {
-  uint32_t model = 0;        // index of the scanned model in the database
-  uint32_t index = 0;        // query number for this model
+  uint32_t model = 0;  // index of the scanned model in the database
+  uint32_t index = 0;  // query number for this model
   uint64_t seed = 0;
-  std::vector<double> xyz;   // the cloud
+  std::vector<double> xyz;  // the cloud
   uint32_t object_points = 0;
   Eigen::Matrix4d true_pose = Eigen::Matrix4d::Identity();  // model -> query frame
 };
@@ -52,7 +52,9 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
 // Cartesian product of the lists, ground states outermost: none, then
 // scanned (with_ground), then scanned and kept (with_kept); then spacing,
 // noise, occlusion.
-std::vector<QueryCondition> make_conditions(const std::vector<double>& noise, const std::vector<double>& occlusion,
-                                            const std::vector<double>& spacing, bool with_ground, bool with_kept);
+std::vector<QueryCondition> make_conditions(const std::vector<double>& noise,
+                                            const std::vector<double>& occlusion,
+                                            const std::vector<double>& spacing, bool with_ground,
+                                            bool with_kept);
 
 }  // namespace spinhash::experiment

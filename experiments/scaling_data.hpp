@@ -31,8 +31,8 @@ struct ScalingRecord {
 struct ScalingRun {
   std::string out_dir;
   std::string command;
-  std::string recognizer;   // config_text of the defaults
-  std::string database;     // config_text of the largest database
+  std::string recognizer;  // config_text of the defaults
+  std::string database;    // config_text of the largest database
   std::vector<Mode> modes;
   std::vector<BuildPoint> builds;  // one per size, ascending
   uint32_t queries = 0;
@@ -40,10 +40,10 @@ struct ScalingRun {
   uint32_t sran_queries_large = 0;  // SRAN's queries at sizes >= sran_large_from
   uint32_t sran_large_from = 0;
   double noise = 0.0;
-  double spacing = 0.0;             // m between query rays at the object
-  std::string source;               // procedural fleet, or meshes and their look-alike copies
-  uint32_t query_pool_cap = ~0u;    // with look-alike copies: the originals
-  double scan_seconds = 0.0;        // model scans of the largest fleet (once)
+  double spacing = 0.0;           // m between query rays at the object
+  std::string source;             // procedural fleet, or meshes and their look-alike copies
+  uint32_t query_pool_cap = ~0u;  // with look-alike copies: the originals
+  double scan_seconds = 0.0;      // model scans of the largest fleet (once)
   std::vector<ScalingRecord> records;
 };
 

@@ -6,19 +6,19 @@
 #include <cstdio>
 #include <memory>
 
-#include "pipeline/exit_codes.hpp"
-#include "pipeline/progress.hpp"
-#include "pipeline/recognizer_flags.hpp"
 #include "config_text.hpp"
-#include "spinhash/limits.hpp"
 #include "experiments.hpp"
-#include "memory_database.hpp"
 #include "lookalikes.hpp"
+#include "memory_database.hpp"
+#include "mesh/vehicle_generator.hpp"
 #include "model_set.hpp"
 #include "modes.hpp"
 #include "output_dir.hpp"
+#include "pipeline/exit_codes.hpp"
+#include "pipeline/progress.hpp"
+#include "pipeline/recognizer_flags.hpp"
 #include "scaling_data.hpp"
-#include "mesh/vehicle_generator.hpp"
+#include "spinhash/limits.hpp"
 
 namespace spinhash::experiment {
 namespace {
@@ -49,14 +49,16 @@ bool make_queries(const ScalingArgs& a, const std::vector<pipeline::ModelMesh>& 
   const QueryCondition cond{a.noise, 0.0, Ground::kNone, a.spacing};
   for (uint32_t j = 0; j < a.queries; ++j) {
     Query q;
-    if (!simulate_query(meshes[j % pool].mesh, j % pool, j / pool, cond, a.seed, 0.0, &q, error)) return false;
+    if (!simulate_query(meshes[j % pool].mesh, j % pool, j / pool, cond, a.seed, 0.0, &q, error))
+      return false;
     out->push_back(std::move(q));
   }
   return true;
 }
 
 uint32_t queries_for(const ScalingArgs& a, Mode m, uint32_t size) {
-  return m == Mode::kSran && size >= a.sran_large_from ? std::min(a.queries, a.sran_queries_large) : a.queries;
+  return m == Mode::kSran && size >= a.sran_large_from ? std::min(a.queries, a.sran_queries_large)
+                                                       : a.queries;
 }
 
 bool measure_size(const ScalingArgs& a, const std::vector<host::ModelCloud>& all, uint32_t size_index,
@@ -82,7 +84,8 @@ bool measure_size(const ScalingArgs& a, const std::vector<host::ModelCloud>& all
     const uint32_t n = queries_for(a, cfg.mode, size);
     pipeline::Progress progress(std::to_string(size) + " models, " + pipeline::mode_name(cfg.mode), n);
     for (uint32_t j = 0; j < n; ++j) {
-      run->records.push_back(ScalingRecord{size_index, m, j, queries[j].model, recognise(session, queries[j])});
+      run->records.push_back(
+          ScalingRecord{size_index, m, j, queries[j].model, recognise(session, queries[j])});
       progress.tick(j + 1);
     }
   }
@@ -149,25 +152,36 @@ int run_scaling(ScalingArgs a) {
 
 void add_scaling_experiment(CLI::App* parent, int* exit_code) {
   auto a = std::make_shared<ScalingArgs>();
-  CLI::App* cmd = parent->add_subcommand("scaling", "Figure 10: time and hypotheses per query against database size");
+  CLI::App* cmd =
+      parent->add_subcommand("scaling", "Figure 10: time and hypotheses per query against database size");
   cmd->add_option("--out", a->out, "output folder (CSV, plots, summary.md)")->required();
   cmd->add_option("--sizes", a->sizes, "database sizes (models; the smallest holds every query's model)")
-      ->delimiter(',')->check(CLI::Range(2u, host::kMaxFleetSize))->capture_default_str();
+      ->delimiter(',')
+      ->check(CLI::Range(2u, host::kMaxFleetSize))
+      ->capture_default_str();
   cmd->add_option("--queries", a->queries, "queries, drawn in turn from the first 25 models")
-      ->check(CLI::Range(1u, kMaxQueries))->capture_default_str();
+      ->check(CLI::Range(1u, kMaxQueries))
+      ->capture_default_str();
   cmd->add_option("--modes", a->modes, "bran, sran, sind")->delimiter(',')->capture_default_str();
-  cmd->add_option("--noise", a->noise, "query noise, m along the ray")->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  cmd->add_option("--noise", a->noise, "query noise, m along the ray")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   cmd->add_option("--spacing", a->spacing, "query point spacing, m between rays at the object")
-      ->check(CLI::Range(0.01, 0.5))->capture_default_str();
+      ->check(CLI::Range(0.01, 0.5))
+      ->capture_default_str();
   cmd->add_option("--meshes", a->meshes, "model meshes (files or folders) instead of the procedural fleet");
   cmd->add_option("--lookalikes", a->lookalikes, "with --meshes: look-alike copies of each mesh")
-      ->check(CLI::Range(0u, kMaxLookalikesPerModel))->capture_default_str();
+      ->check(CLI::Range(0u, kMaxLookalikesPerModel))
+      ->capture_default_str();
   cmd->add_option("--seed", a->seed, "seed of the query scans")->capture_default_str();
   cmd->add_option("--fleet-seed", a->fleet_seed, "seed of the procedural fleet")->capture_default_str();
   cmd->add_option("--sran-queries-large", a->sran_queries_large, "SRAN's queries at the large sizes")
-      ->check(CLI::Range(1u, kMaxQueries))->capture_default_str();
-  cmd->add_option("--transfer-models", a->transfer_models, "BRAN's look-alike pose transfer (0: the paper's BRAN)")
-      ->check(CLI::Range(0u, kMaxTransferModels))->capture_default_str();
+      ->check(CLI::Range(1u, kMaxQueries))
+      ->capture_default_str();
+  cmd->add_option("--transfer-models", a->transfer_models,
+                  "BRAN's look-alike pose transfer (0: the paper's BRAN)")
+      ->check(CLI::Range(0u, kMaxTransferModels))
+      ->capture_default_str();
   cmd->add_option("--sran-large-from", a->sran_large_from, "sizes from which SRAN runs fewer queries")
       ->capture_default_str();
   cmd->callback([a, exit_code]() { *exit_code = run_scaling(*a); });

@@ -4,10 +4,10 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "pipeline/recognizer_flags.hpp"
 #include "csv_table.hpp"
 #include "gnuplot.hpp"
 #include "output_dir.hpp"
+#include "pipeline/recognizer_flags.hpp"
 #include "plot_styles.hpp"
 #include "scaling_data.hpp"
 #include "stats.hpp"
@@ -29,8 +29,8 @@ struct Cell {  // one (size, mode)
   uint32_t budget = 0;
   double top(uint32_t k) const {
     if (ranks.empty()) return 0.0;
-    return static_cast<double>(std::count_if(ranks.begin(), ranks.end(),
-                                             [k](uint32_t r) { return r >= 1 && r <= k; })) /
+    return static_cast<double>(
+               std::count_if(ranks.begin(), ranks.end(), [k](uint32_t r) { return r >= 1 && r <= k; })) /
            static_cast<double>(ranks.size());
   }
 };
@@ -86,18 +86,20 @@ bool write_csvs(const ScalingRun& run, std::string* error) {
     for (uint32_t m = 0; m < run.modes.size(); ++m) {
       Cell c = cell(run, s, m);
       longform.add({std::to_string(b.models), std::to_string(b.features), pipeline::mode_name(run.modes[m]),
-                    std::to_string(c.ms.size()), num(median_of(c.ms)), num(mean_of(c.ms)), num(median_of(c.hyp)),
-                    num(mean_of(c.hyp)), num(c.top(1)), num(c.top(5)), std::to_string(c.budget)});
-      row.insert(row.end(), {num(median_of(c.ms)), num(mean_of(c.ms)), num(mean_of(c.hyp)),
-                             num(c.top(1))});
+                    std::to_string(c.ms.size()), num(median_of(c.ms)), num(mean_of(c.ms)),
+                    num(median_of(c.hyp)), num(mean_of(c.hyp)), num(c.top(1)), num(c.top(5)),
+                    std::to_string(c.budget)});
+      row.insert(row.end(), {num(median_of(c.ms)), num(mean_of(c.ms)), num(mean_of(c.hyp)), num(c.top(1))});
     }
     wide.add(row);
-    build.add({std::to_string(b.models), std::to_string(b.features), num(b.build_seconds), num(b.serialize_seconds),
-               std::to_string(b.blob_bytes), num(static_cast<double>(b.blob_bytes) / b.features),
-               std::to_string(b.max_bucket), num(b.mean_bucket)});
+    build.add({std::to_string(b.models), std::to_string(b.features), num(b.build_seconds),
+               num(b.serialize_seconds), std::to_string(b.blob_bytes),
+               num(static_cast<double>(b.blob_bytes) / b.features), std::to_string(b.max_bucket),
+               num(b.mean_bucket)});
   }
   return per_query.write(run.out_dir + "/per_query.csv", error) &&
-         longform.write(run.out_dir + "/scaling.csv", error) && wide.write(run.out_dir + "/scaling_wide.csv", error) &&
+         longform.write(run.out_dir + "/scaling.csv", error) &&
+         wide.write(run.out_dir + "/scaling_wide.csv", error) &&
          build.write(run.out_dir + "/build.csv", error);
 }
 
@@ -123,12 +125,15 @@ bool write_plots(const ScalingRun& run, std::vector<std::string>* made, std::str
     << mode_series(run, 0, false) << "set title 'log-log'\nset logscale xy\nset yrange [*:*]\nplot "
     << mode_series(run, 0, false) << "unset multiplot\n";
   std::ostringstream h;
-  h << plot_style_lines() << x << "set key top left\nset logscale xy\nset ylabel 'hypotheses verified per query'\n"
+  h << plot_style_lines() << x
+    << "set key top left\nset logscale xy\nset ylabel 'hypotheses verified per query'\n"
     << "set title 'Mean hypotheses per query (SIND verifies none)'\nplot " << mode_series(run, 2, true);
   std::ostringstream a;
   a << plot_style_lines() << x << "set key bottom left\nset logscale x\nset yrange [0:1.02]\n"
-    << "set ylabel 'P(correct model ranked first)'\nset title 'Top-1 accuracy of the same queries (SRAN: first "
-    << run.sran_queries_large << " at >= " << run.sran_large_from << " models)'\nplot " << mode_series(run, 3, false);
+    << "set ylabel 'P(correct model ranked first)'\nset title 'Top-1 accuracy of the same queries (SRAN: "
+       "first "
+    << run.sran_queries_large << " at >= " << run.sran_large_from << " models)'\nplot "
+    << mode_series(run, 3, false);
   std::ostringstream b;
   b << plot_style_lines() << "set key top left\nset xlabel 'features in the database'\n"
     << "set xrange [0:*]\nset yrange [0:*]\n"
@@ -139,9 +144,10 @@ bool write_plots(const ScalingRun& run, std::vector<std::string>* made, std::str
     << "set title 'blob size'\nset ylabel 'MB'\nplot 'build.csv' using 2:($5/" << kBytesPerMegabyte
     << ") with linespoints ls 2 title 'blob', x*" << kMaxBytesPerFeature / kBytesPerMegabyte
     << " ls 9 title '" << kMaxBytesPerFeature << " B/feature'\nunset multiplot\n";
-  const std::pair<std::string, std::string> plots[] = {
-      {"time_per_query", t.str()}, {"hypotheses_per_query", h.str()}, {"top1_per_size", a.str()},
-      {"build_cost", b.str()}};
+  const std::pair<std::string, std::string> plots[] = {{"time_per_query", t.str()},
+                                                       {"hypotheses_per_query", h.str()},
+                                                       {"top1_per_size", a.str()},
+                                                       {"build_cost", b.str()}};
   for (const auto& p : plots) {
     const bool wide = p.first == "time_per_query" || p.first == "build_cost";
     if (!render_plot(run.out_dir, p.first, "set fit quiet\nset fit logfile '/dev/null'\n" + p.second,
@@ -159,7 +165,8 @@ std::string targets(const ScalingRun& run) {
   const int b = mode_index(run, Mode::kBran), r = mode_index(run, Mode::kSran);
   const uint32_t ref = reference_size(run), big = static_cast<uint32_t>(run.builds.size() - 1);
   const uint32_t m_ref = run.builds[ref].models, m_big = run.builds[big].models;
-  s << "\n## Targets (BRAN sub-linear and far cheaper than SRAN), " << m_big << " against " << m_ref << " models\n\n| target | measured | verdict |\n"
+  s << "\n## Targets (BRAN sub-linear and far cheaper than SRAN), " << m_big << " against " << m_ref
+    << " models\n\n| target | measured | verdict |\n"
     << "|---|---|---|\n";
   if (b >= 0) {
     double g = median_of(cell(run, big, b).ms) / median_of(cell(run, ref, b).ms);
@@ -189,7 +196,8 @@ std::string targets(const ScalingRun& run) {
       << num(100.0 * cr.top(1), 3) << "% | - |\n";
   }
   double worst = 0.0;
-  for (const BuildPoint& p : run.builds) worst = std::max(worst, static_cast<double>(p.blob_bytes) / p.features);
+  for (const BuildPoint& p : run.builds)
+    worst = std::max(worst, static_cast<double>(p.blob_bytes) / p.features);
   s << "| blob <= " << kMaxBytesPerFeature << " bytes per model feature | " << num(worst, 4)
     << " B/feature (worst size) | " << verdict(worst <= kMaxBytesPerFeature) << " |\n";
   std::vector<double> fx, fy;
@@ -197,8 +205,8 @@ std::string targets(const ScalingRun& run) {
   LineFit bf = fit_line(fx, fy);
   const BuildPoint &lo = run.builds.front(), &hi = run.builds.back();
   double per_lo = 1e6 * lo.build_seconds / lo.features, per_hi = 1e6 * hi.build_seconds / hi.features;
-  s << "| build time linear in features | R^2 " << num(bf.r2, 4) << "; " << num(per_lo, 3) << " us/feature at "
-    << lo.models << " models, " << num(per_hi, 3) << " at " << hi.models << " | "
+  s << "| build time linear in features | R^2 " << num(bf.r2, 4) << "; " << num(per_lo, 3)
+    << " us/feature at " << lo.models << " models, " << num(per_hi, 3) << " at " << hi.models << " | "
     << verdict(bf.r2 > 0.98 && per_hi < 2.0 * per_lo) << " |\n";
   return s.str();
 }
@@ -217,23 +225,24 @@ std::string summary(const ScalingRun& run, const std::vector<std::string>& plots
     << " s\n- Wall times on a shared 2-core machine: noisy; instruction counts from "
        "scripts/instructions-per-query.sh are the stable measure.\n\n"
     << "## Time and hypotheses per query\n\n| models | features | mode | queries | median ms | mean ms | "
-       "median hypotheses | mean hypotheses | budget cut | top-1 | top-5 |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+       "median hypotheses | mean hypotheses | budget cut | top-1 | top-5 "
+       "|\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (uint32_t i = 0; i < run.builds.size(); ++i)
     for (uint32_t m = 0; m < run.modes.size(); ++m) {
       Cell c = cell(run, i, m);
-      s << "| " << run.builds[i].models << " | " << run.builds[i].features << " | " << mode_title(run.modes[m])
-        << " | " << c.ms.size() << " | " << num(median_of(c.ms), 4) << " | " << num(mean_of(c.ms), 4) << " | "
-        << num(median_of(c.hyp), 4) << " | " << num(mean_of(c.hyp), 4) << " | "
-        << num(100.0 * c.budget / std::max<size_t>(c.ms.size(), 1), 3) << "% | " << num(100.0 * c.top(1), 3)
-        << "% | " << num(100.0 * c.top(5), 3)
-        << "% |\n";
+      s << "| " << run.builds[i].models << " | " << run.builds[i].features << " | "
+        << mode_title(run.modes[m]) << " | " << c.ms.size() << " | " << num(median_of(c.ms), 4) << " | "
+        << num(mean_of(c.ms), 4) << " | " << num(median_of(c.hyp), 4) << " | " << num(mean_of(c.hyp), 4)
+        << " | " << num(100.0 * c.budget / std::max<size_t>(c.ms.size(), 1), 3) << "% | "
+        << num(100.0 * c.top(1), 3) << "% | " << num(100.0 * c.top(5), 3) << "% |\n";
     }
   s << "\n## Build\n\n| models | features | build s | blob bytes | B/feature | largest LSH bucket |\n"
     << "|---|---|---|---|---|---|\n";
   for (const BuildPoint& b : run.builds)
     s << "| " << b.models << " | " << b.features << " | " << num(b.build_seconds, 4) << " | " << b.blob_bytes
       << " | " << num(static_cast<double>(b.blob_bytes) / b.features, 4) << " | " << b.max_bucket << " |\n";
-  s << targets(run) << "\n## Files\n\n- `scaling.csv` (per size and mode), `scaling_wide.csv` (the same, one row "
+  s << targets(run)
+    << "\n## Files\n\n- `scaling.csv` (per size and mode), `scaling_wide.csv` (the same, one row "
     << "per size), `build.csv`, `per_query.csv`\n- Plots:";
   for (const std::string& p : plots) s << " `" << p << "`";
   s << "\n";

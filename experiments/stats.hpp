@@ -4,8 +4,8 @@
 
 namespace spinhash::experiment {
 
-double mean_of(const std::vector<double>& v);    // 0 for an empty list
-double median_of(std::vector<double> v);         // 0 for an empty list
+double mean_of(const std::vector<double>& v);  // 0 for an empty list
+double median_of(std::vector<double> v);       // 0 for an empty list
 // Least-squares line y = slope * x + intercept and its R^2.
 struct LineFit {
   double slope = 0.0, intercept = 0.0, r2 = 0.0;

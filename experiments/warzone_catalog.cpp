@@ -35,10 +35,13 @@ std::vector<WarzoneVehicle> warzone_vehicles() {
   for (const BodyClass& c : kBodyClasses)
     for (const char* body : c.bodies) {
       const std::pair<const char*, const char*> props[] = {
-          {"wheels", c.wheels}, {"halftracks", c.half_tracks}, {"tracks", c.tracks},
+          {"wheels", c.wheels},
+          {"halftracks", c.half_tracks},
+          {"tracks", c.tracks},
           {"hover", std::string(body) == kBody7 ? kBody7Hover : c.hover}};
       for (const auto& p : props)
-        out.push_back({"wz-" + std::string(body) + "-" + p.first, {pie(kBodyDir, body), pie(kPropDir, p.second)}});
+        out.push_back(
+            {"wz-" + std::string(body) + "-" + p.first, {pie(kBodyDir, body), pie(kPropDir, p.second)}});
     }
   for (const char* stem : kOnePiece) out.push_back({"wz-" + std::string(stem), {pie(kBodyDir, stem)}});
   return out;

@@ -40,7 +40,8 @@ void reseal(uint8_t* data, size_t size) {
   h.header_crc = 0;
   std::memcpy(data, &h, sizeof h);
   const size_t table = static_cast<size_t>(h.section_count) * sizeof(blob::SectionEntry);
-  const size_t covered = h.section_count <= kMaxSections && sizeof h + table <= size ? sizeof h + table : sizeof h;
+  const size_t covered =
+      h.section_count <= kMaxSections && sizeof h + table <= size ? sizeof h + table : sizeof h;
   h.header_crc = crc32c(data, covered);
   std::memcpy(data, &h, sizeof h);
 }
@@ -49,7 +50,7 @@ void reseal(uint8_t* data, size_t size) {
 const std::vector<float>& query_points() {
   static const std::vector<float> points = [] {
     std::vector<float> p;
-    constexpr int kSide = 12;      // 4 * 144 points: the blob, not feature extraction, is under test
+    constexpr int kSide = 12;       // 4 * 144 points: the blob, not feature extraction, is under test
     constexpr float kStep = 0.15f;  // m
     for (int i = 0; i < kSide; ++i)
       for (int j = 0; j < kSide; ++j) {

@@ -40,8 +40,8 @@ void append(std::string* s, T v) {
 std::string blob_bytes(host::ByteOrder order) {
   std::vector<uint8_t> bytes;
   std::string error;
-  if (!host::serialize_blob(host::make_tiny_blob_content(kSeedModels, kSeedFeaturesPerModel, kSeedSeed), order, &bytes,
-                            &error)) {
+  if (!host::serialize_blob(host::make_tiny_blob_content(kSeedModels, kSeedFeaturesPerModel, kSeedSeed),
+                            order, &bytes, &error)) {
     std::fprintf(stderr, "make_seeds: %s\n", error.c_str());
     std::exit(1);
   }
@@ -62,7 +62,8 @@ bool database_seeds(const fs::path& dir) {
 bool recognize_seeds(const fs::path& dir) {
   // Control byte: bits 0-1 encoding, 2-3 mode, 4 refuse; see fuzz_recognize.cpp.
   const double origin[3] = {0.0, 0.0, 0.0};
-  const std::vector<double> view = test::toy_query(test::toy_vehicle_points(2, kViewSpacing), 0.3, origin, 0.02, 1);
+  const std::vector<double> view =
+      test::toy_query(test::toy_vehicle_points(2, kViewSpacing), 0.3, origin, 0.02, 1);
   std::string cm(1, '\x01'), utm(1, '\x0a'), raw(1, '\x00'), dbl(1, '\x07');
   for (double v : view) {
     append(&cm, static_cast<int16_t>(v * 100.0));
@@ -71,27 +72,32 @@ bool recognize_seeds(const fs::path& dir) {
   const float hostile[] = {1.0f, 2.0f, 3.0f, NAN, 0.0f, 0.0f, INFINITY, 1.0f, 1.0f, 3.0e38f, -3.0e38f, 0.0f};
   for (float v : hostile) append(&raw, v);
   for (double v : {0.0, 0.0, 0.0, 1e300, -1e300, 0.0, 4.0e6, 4.0e6, 4.0e6}) append(&dbl, v);
-  return write(dir / "toy-view-cm", cm) && write(dir / "toy-view-utm-sran", utm) && write(dir / "hostile-float", raw) &&
-         write(dir / "hostile-double-sind", dbl) && write(dir / "empty", std::string(1, '\x02'));
+  return write(dir / "toy-view-cm", cm) && write(dir / "toy-view-utm-sran", utm) &&
+         write(dir / "hostile-float", raw) && write(dir / "hostile-double-sind", dbl) &&
+         write(dir / "empty", std::string(1, '\x02'));
 }
 
 bool cloud_seeds(const fs::path& dir) {
   const std::string xyz = "property float x\nproperty float y\nproperty float z\n";
-  std::string le = "ply\nformat binary_little_endian 1.0\ncomment seed\nelement vertex 2\nproperty double x\n"
-                   "property double y\nproperty double z\nproperty uchar intensity\nelement face 0\n"
-                   "property list uchar int vertex_indices\nend_header\n";
+  std::string le =
+      "ply\nformat binary_little_endian 1.0\ncomment seed\nelement vertex 2\nproperty double x\n"
+      "property double y\nproperty double z\nproperty uchar intensity\nelement face 0\n"
+      "property list uchar int vertex_indices\nend_header\n";
   std::string be = "ply\nformat binary_big_endian 1.0\nelement vertex 1\n" + xyz + "end_header\n";
   for (double v : {1.0, 2.0, 3.0}) append(&le, v);
   le.push_back('\x07');
   for (double v : {431000.5, 4020000.25, 87.0}) append(&le, v);
   le.push_back('\x08');
   be += std::string("\x3f\x80\x00\x00\x40\x00\x00\x00\x40\x40\x00\x00", 12);
-  return write(dir / "ascii.ply", "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "end_header\n1 2 3\n4 5 6\nnan inf -7\n") &&
+  return write(dir / "ascii.ply", "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz +
+                                      "end_header\n1 2 3\n4 5 6\nnan inf -7\n") &&
          write(dir / "binary-le.ply", le) && write(dir / "binary-be.ply", be) &&
          write(dir / "text.xyz", "1 2 3\n4.5 -6e2 7\n# comment\n8,9,10\n") &&
          write(dir / "truncated.ply", le.substr(0, le.size() - 5)) &&
-         write(dir / "bad-count.ply", "ply\nformat ascii 1.0\nelement vertex 9\n" + xyz + "end_header\n1 2 3\n") &&
-         write(dir / "bad-type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n1\n");
+         write(dir / "bad-count.ply",
+               "ply\nformat ascii 1.0\nelement vertex 9\n" + xyz + "end_header\n1 2 3\n") &&
+         write(dir / "bad-type.ply",
+               "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n1\n");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite, as CI runs it (.ci/run): installs what is missing,
-# builds, runs the host suites with ctest, then every onboard and hardening
+# checks the layout and format rules (scripts/check_layout.sh), builds, runs
+# the host suites with ctest, then every onboard and hardening
 # stage that scripts/ provides (cross targets under QEMU, sanitizers, fuzzing).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -8,6 +9,9 @@ cd "$root"
 jobs=$(nproc 2>/dev/null || echo 2)
 
 scripts/install-deps.sh --cross
+
+echo "== layout and format"
+scripts/check_layout.sh
 
 echo "== host build and tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null

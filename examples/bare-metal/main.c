@@ -8,12 +8,13 @@
 #include "spinhash/spinhash.h"
 
 enum {
-  kMaxPoints = 4096,         /* sensor frame capacity */
+  kMaxPoints = 4096, /* sensor frame capacity */
   kMaxFeatures = 256,
   kMaxModels = 16,
-  kSpinDims = 100,           /* 10 x 10 bins, as the golden blob */
-  kWorkspaceBytes = 1 << 20, /* >= spinhash_workspace_bytes() of this config (checked): 0.84 MB on 64-bit hosts */
-  kSide = 20                 /* grid steps along each edge of the synthetic box's faces */
+  kSpinDims = 100, /* 10 x 10 bins, as the golden blob */
+  kWorkspaceBytes =
+      1 << 20, /* >= spinhash_workspace_bytes() of this config (checked): 0.84 MB on 64-bit hosts */
+  kSide = 20   /* grid steps along each edge of the synthetic box's faces */
 };
 
 extern const unsigned char spinhash_blob[];

@@ -13,9 +13,9 @@
 #include "spinhash/spinhash.h"
 
 enum {
-  kMaxBlobBytes = 1 << 20,        /* flash image budget of this example */
-  kMaxPoints = 8192,              /* sensor frame capacity */
-  kWorkspaceBytes = 6 << 20       /* >= spinhash_workspace_bytes() for the config below */
+  kMaxBlobBytes = 1 << 20,  /* flash image budget of this example */
+  kMaxPoints = 8192,        /* sensor frame capacity */
+  kWorkspaceBytes = 6 << 20 /* >= spinhash_workspace_bytes() for the config below */
 };
 
 /* 64-byte alignment without C11: over-allocate and round the address up. */
@@ -30,7 +30,9 @@ static unsigned char* aligned(unsigned char* p) {
   return p + ((SPINHASH_BUFFER_ALIGNMENT - a % SPINHASH_BUFFER_ALIGNMENT) % SPINHASH_BUFFER_ALIGNMENT);
 }
 
-static void log_to_stderr(int level, const char* message) { fprintf(stderr, "spinhash[%d]: %s\n", level, message); }
+static void log_to_stderr(int level, const char* message) {
+  fprintf(stderr, "spinhash[%d]: %s\n", level, message);
+}
 
 /* Reads at most max bytes; returns the count, or 0 on error or overflow. */
 static size_t read_file(const char* path, unsigned char* out, size_t max) {

@@ -55,7 +55,7 @@ Status check_lsh(const Sections& s) {
   const blob::LshBit* bits = section_as<blob::LshBit>(s, blob::kLshBits);
   const uint32_t* offsets = section_as<uint32_t>(s, blob::kLshOffsets);
   const uint32_t* entries = section_as<uint32_t>(s, blob::kLshEntries);
-  const uint32_t dims = p.bins_alpha * p.bins_beta;  // <= kMaxSpinDims
+  const uint32_t dims = p.bins_alpha * p.bins_beta;      // <= kMaxSpinDims
   const uint32_t bit_count = p.lsh_tables * p.lsh_bits;  // <= kMaxLshTables * kMaxLshBits
   for (uint32_t j = 0; j < bit_count; ++j) {
     if (bits[j].dim >= dims || bits[j].threshold > kMaxSpinValue) return Status::kBlobBadIndex;

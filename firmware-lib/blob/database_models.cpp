@@ -27,8 +27,7 @@ bool all_finite(const float* v, uint32_t n) {
 }
 
 bool geometry_ok(const blob::ModelRecord& m) {
-  if (!all_finite(m.grid_origin, 3u) || !all_finite(m.bbox_min, 3u) ||
-      !all_finite(m.bbox_max, 3u)) {
+  if (!all_finite(m.grid_origin, 3u) || !all_finite(m.bbox_min, 3u) || !all_finite(m.bbox_max, 3u)) {
     return false;
   }
   for (uint32_t k = 0; k < 3u; ++k) {
@@ -59,8 +58,8 @@ bool grid_offsets_ok(const uint32_t* off, uint64_t cells, uint32_t feature_count
 }
 
 // One record; *next_feature and *next_grid advance past what it owns.
-bool model_ok(const blob::ModelRecord& m, const uint32_t* grid, uint64_t grid_count,
-              uint64_t* next_feature, uint64_t* next_grid) {
+bool model_ok(const blob::ModelRecord& m, const uint32_t* grid, uint64_t grid_count, uint64_t* next_feature,
+              uint64_t* next_grid) {
   if (!name_ok(m.name) || !geometry_ok(m)) return false;
   if (m.first_feature != *next_feature || m.feature_count == 0u) return false;
   const uint64_t cells = grid_cells(m);

@@ -18,12 +18,10 @@ bool is_power_of_two(uint32_t v) { return v != 0u && (v & (v - 1u)) == 0u; }
 bool positive_finite(float v) { return std::isfinite(v) && v > 0.0f; }
 
 Status check_counts(const blob::Params& p) {
-  const bool ok = in_range(p.model_count, 1u, kMaxModels) &&
-                  in_range(p.feature_count, 1u, kMaxFeatures) &&
+  const bool ok = in_range(p.model_count, 1u, kMaxModels) && in_range(p.feature_count, 1u, kMaxFeatures) &&
                   in_range(p.bins_alpha, 1u, kMaxSpinBinsPerAxis) &&
                   in_range(p.bins_beta, 1u, kMaxSpinBinsPerAxis) &&
-                  in_range(p.lsh_tables, 1u, kMaxLshTables) &&
-                  in_range(p.lsh_bits, 1u, kMaxLshBits) &&
+                  in_range(p.lsh_tables, 1u, kMaxLshTables) && in_range(p.lsh_bits, 1u, kMaxLshBits) &&
                   in_range(p.lsh_buckets, 1u, kMaxLshBuckets) && p.grid_offset_count >= 1u;
   if (!ok) return Status::kBlobCountOverflow;
   if (!is_power_of_two(p.lsh_buckets)) return Status::kBlobBadParameter;
@@ -66,10 +64,9 @@ Status check_sizes(const blob::Params& p, const Sections& s) {
 Status check_floats(const blob::Params& p) {
   const bool ok = positive_finite(p.cloud_voxel) && positive_finite(p.normal_radius) &&
                   positive_finite(p.basis_spacing) && positive_finite(p.support_radius) &&
-                  positive_finite(p.support_angle_deg) &&
-                  p.support_angle_deg <= kMaxSupportAngleDeg &&
-                  positive_finite(p.spin_quant_scale) && std::isfinite(p.lsh_dc) &&
-                  p.lsh_dc >= 0.0f && positive_finite(p.grid_cell);
+                  positive_finite(p.support_angle_deg) && p.support_angle_deg <= kMaxSupportAngleDeg &&
+                  positive_finite(p.spin_quant_scale) && std::isfinite(p.lsh_dc) && p.lsh_dc >= 0.0f &&
+                  positive_finite(p.grid_cell);
   return ok ? Status::kOk : Status::kBlobBadParameter;
 }
 

@@ -13,8 +13,8 @@ bool overlaps(uint64_t a_begin, uint64_t a_size, uint64_t b_begin, uint64_t b_si
 }
 
 // Entry against everything accepted so far; on success it is recorded in *s.
-Status check_entry(const uint8_t* base, const blob::SectionEntry& e, uint64_t table_end,
-                   uint64_t total, Sections* s) {
+Status check_entry(const uint8_t* base, const blob::SectionEntry& e, uint64_t table_end, uint64_t total,
+                   Sections* s) {
   if (e.id == 0u || e.id > blob::kSectionIdCount) return Status::kBlobUnknownSection;
   if (s->present[e.id]) return Status::kBlobDuplicateSection;
   if (e.offset % blob::kSectionAlignment != 0u) return Status::kBlobSectionMisaligned;
@@ -38,8 +38,7 @@ Status check_entry(const uint8_t* base, const blob::SectionEntry& e, uint64_t ta
 
 Status check_sections(const uint8_t* base, Sections* out) {
   const blob::Header& h = *reinterpret_cast<const blob::Header*>(base);
-  const blob::SectionEntry* table =
-      reinterpret_cast<const blob::SectionEntry*>(base + sizeof(blob::Header));
+  const blob::SectionEntry* table = reinterpret_cast<const blob::SectionEntry*>(base + sizeof(blob::Header));
   const uint64_t table_end = sizeof(blob::Header) + h.section_count * sizeof(blob::SectionEntry);
   Sections s{};
   for (uint32_t i = 0; i < h.section_count && i < kMaxSections; ++i) {

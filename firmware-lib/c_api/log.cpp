@@ -31,4 +31,6 @@ void log_message(LogLevel level, const char* prefix, const char* detail) noexcep
 
 }  // namespace spinhash
 
-extern "C" void spinhash_set_log_hook(spinhash_log_hook hook) SPINHASH_NOEXCEPT { spinhash::g_log_hook = hook; }
+extern "C" void spinhash_set_log_hook(spinhash_log_hook hook) SPINHASH_NOEXCEPT {
+  spinhash::g_log_hook = hook;
+}

@@ -28,7 +28,9 @@ static_assert(alignof(spinhash_database) == SPINHASH_STORAGE_ALIGNMENT, "storage
 static_assert(SPINHASH_BUFFER_ALIGNMENT == kBufferAlignment, "buffer alignment macro is stale");
 
 // The C enum must mirror Status value for value (append-only on both sides).
-constexpr bool same(spinhash_status c, Status s) { return static_cast<int32_t>(c) == static_cast<int32_t>(s); }
+constexpr bool same(spinhash_status c, Status s) {
+  return static_cast<int32_t>(c) == static_cast<int32_t>(s);
+}
 static_assert(same(SPINHASH_OK, Status::kOk) && same(SPINHASH_INVALID_ARGUMENT, Status::kInvalidArgument) &&
                   same(SPINHASH_WORKSPACE_TOO_SMALL, Status::kWorkspaceTooSmall) &&
                   same(SPINHASH_MISALIGNED_BUFFER, Status::kMisalignedBuffer) &&
@@ -76,7 +78,8 @@ spinhash_status finish(const RecognizerSlot& sl, const Result& r, spinhash_resul
   to_c_stats(r.stats, &out->stats);
   out->ranking_ = r.ranking;
   out->database_ = sl.database;
-  if (r.status != Status::kOk) log_message(LogLevel::kWarning, SPINHASH_LOG_TEXT("recognize: "), status_name(r.status));
+  if (r.status != Status::kOk)
+    log_message(LogLevel::kWarning, SPINHASH_LOG_TEXT("recognize: "), status_name(r.status));
   return to_c(r.status);
 }
 
@@ -99,7 +102,9 @@ using namespace spinhash;
 
 extern "C" {
 
-const char* spinhash_status_name(int32_t status) SPINHASH_NOEXCEPT { return status_name(static_cast<Status>(status)); }
+const char* spinhash_status_name(int32_t status) SPINHASH_NOEXCEPT {
+  return status_name(static_cast<Status>(status));
+}
 
 void spinhash_default_config(spinhash_config* config) SPINHASH_NOEXCEPT {
   if (config != nullptr) to_c_config(RecognizerConfig{}, config);
@@ -111,7 +116,8 @@ size_t spinhash_workspace_bytes(const spinhash_config* config) SPINHASH_NOEXCEPT
   return required_workspace_bytes(cfg);
 }
 
-spinhash_status spinhash_database_open(spinhash_database* db, const void* bytes, size_t size) SPINHASH_NOEXCEPT {
+spinhash_status spinhash_database_open(spinhash_database* db, const void* bytes,
+                                       size_t size) SPINHASH_NOEXCEPT {
   if (db == nullptr) return SPINHASH_INVALID_ARGUMENT;
   Database* d = new (db->bytes) Database();  // closed until open succeeds
   Status s = Database::open(bytes, size, d);
@@ -156,7 +162,8 @@ spinhash_status spinhash_recognize_f64(spinhash_recognizer* rec, const double* x
   return recognize(rec, xyz, count, result);
 }
 
-spinhash_status spinhash_result_entry(const spinhash_result* result, uint32_t rank, spinhash_ranked_model* out) SPINHASH_NOEXCEPT {
+spinhash_status spinhash_result_entry(const spinhash_result* result, uint32_t rank,
+                                      spinhash_ranked_model* out) SPINHASH_NOEXCEPT {
   if (result == nullptr || out == nullptr || result->status != SPINHASH_OK || rank >= result->ranking_count ||
       result->ranking_ == nullptr)
     return SPINHASH_INVALID_ARGUMENT;

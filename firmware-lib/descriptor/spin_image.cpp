@@ -31,8 +31,8 @@ void normalize_spin(float* image, uint32_t dims) {
 }
 
 void compute_spin_image(const SpinImageParams& sp, const CellGrid& grid, const float* points,
-                        const float* normals, const uint8_t* has_normal, const float* p,
-                        const float* n, float* image) {
+                        const float* normals, const uint8_t* has_normal, const float* p, const float* n,
+                        float* image) {
   const uint32_t dims = sp.bins_alpha * sp.bins_beta;
   for (uint32_t i = 0; i < dims; ++i) image[i] = 0.0f;
   grid.for_each_within(p, sp.radius, [&](uint32_t j) {

@@ -10,7 +10,7 @@
 namespace spinhash {
 
 struct SpinImageParams {
-  float radius = 1.0f;          // support radius R
+  float radius = 1.0f;  // support radius R
   uint32_t bins_alpha = 10;
   uint32_t bins_beta = 10;
   bool use_support_angle = true;
@@ -26,7 +26,7 @@ void normalize_spin(float* image, uint32_t dims);
 
 // Spin image of oriented point (p, n) over points within R found in `grid`.
 void compute_spin_image(const SpinImageParams& sp, const CellGrid& grid, const float* points,
-                        const float* normals, const uint8_t* has_normal, const float* p,
-                        const float* n, float* image);
+                        const float* normals, const uint8_t* has_normal, const float* p, const float* n,
+                        float* image);
 
 }  // namespace spinhash

@@ -13,13 +13,13 @@
 namespace spinhash {
 
 struct FeatureExtractor::Impl {
-  CellGrid voxel_grid;      // density voxels, then basis voxels
-  CellGrid neighbour_grid;  // radius searches over the equalised points
-  float* points = nullptr;      // re-centred input, 3 * max_points
-  float* equalised = nullptr;   // 3 * max_points
-  float* normals = nullptr;     // 3 * max_points
+  CellGrid voxel_grid;         // density voxels, then basis voxels
+  CellGrid neighbour_grid;     // radius searches over the equalised points
+  float* points = nullptr;     // re-centred input, 3 * max_points
+  float* equalised = nullptr;  // 3 * max_points
+  float* normals = nullptr;    // 3 * max_points
   uint8_t* has_normal = nullptr;
-  uint32_t* basis = nullptr;    // max_points
+  uint32_t* basis = nullptr;             // max_points
   uint32_t* ground_histogram = nullptr;  // kGroundHistogramBins, when ground is removed
   float* out_positions = nullptr;
   float* out_normals = nullptr;
@@ -33,9 +33,9 @@ bool params_valid(const FeatureParams& p, const ExtractorCapacity& cap) {
   return positive(p.cloud_voxel) && positive(p.normal_radius) && positive(p.basis_spacing) &&
          positive(p.support_radius) && p.bins_alpha >= 1u && p.bins_beta >= 1u &&
          p.bins_alpha <= kMaxSpinBinsPerAxis && p.bins_beta <= kMaxSpinBinsPerAxis &&
-         spin_dims(p) <= cap.max_spin_dims && p.support_angle_deg > 0.0f &&
-         cap.max_points >= 1u && cap.max_points <= kMaxQueryPointsLimit && cap.max_features >= 1u &&
-         cap.ground_clearance >= 0.0f && cap.ground_clearance <= kMaxGroundClearance;
+         spin_dims(p) <= cap.max_spin_dims && p.support_angle_deg > 0.0f && cap.max_points >= 1u &&
+         cap.max_points <= kMaxQueryPointsLimit && cap.max_features >= 1u && cap.ground_clearance >= 0.0f &&
+         cap.ground_clearance <= kMaxGroundClearance;
 }
 
 SpinImageParams spin_params(const FeatureParams& p) {
@@ -75,8 +75,8 @@ Status FeatureExtractor::init(const FeatureParams& params, const ExtractorCapaci
   return Status::kOk;
 }
 
-Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& hint,
-                                 FeatureSet* out, ExtractStats* stats) noexcept {
+Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& hint, FeatureSet* out,
+                                 ExtractStats* stats) noexcept {
   if (impl_ == nullptr || out == nullptr || stats == nullptr) return Status::kNotOpen;
   if ((cloud.xyz_f == nullptr) == (cloud.xyz_d == nullptr) && cloud.count > 0)
     return Status::kInvalidArgument;

@@ -4,7 +4,8 @@ namespace spinhash {
 namespace {
 
 // Height below which `share` of the points lie, to within one histogram bin.
-float percentile_height(const float* xyz, uint32_t n, float z_lo, float z_hi, float share, uint32_t* histogram) {
+float percentile_height(const float* xyz, uint32_t n, float z_lo, float z_hi, float share,
+                        uint32_t* histogram) {
   for (uint32_t b = 0; b < kGroundHistogramBins; ++b) histogram[b] = 0;
   const float scale = static_cast<float>(kGroundHistogramBins) / (z_hi - z_lo);
   for (uint32_t i = 0; i < n; ++i) {

@@ -7,8 +7,7 @@
 namespace spinhash {
 namespace {
 
-bool normal_at(const CellGrid& grid, const float* points, const float* q, float radius,
-               float* out) {
+bool normal_at(const CellGrid& grid, const float* points, const float* q, float radius, float* out) {
   // One pass: sums of offsets from q and of their outer products (offsets
   // from q, not from the origin, keep the float sums well conditioned).
   Eigen::Vector3f sum = Eigen::Vector3f::Zero();
@@ -25,7 +24,7 @@ bool normal_at(const CellGrid& grid, const float* points, const float* q, float 
   const Eigen::Vector3f mean = sum / static_cast<float>(count);
   const Eigen::Matrix3f cov = outer / static_cast<float>(count) - mean * mean.transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> solver;
-  solver.computeDirect(cov);  // closed form: fixed cost, no iteration, no heap
+  solver.computeDirect(cov);                         // closed form: fixed cost, no iteration, no heap
   const Eigen::Vector3f& ev = solver.eigenvalues();  // ascending
   if (!(ev(2) > 0.0f) || ev(1) < kMinPlanarRatio * ev(2)) return false;
   Eigen::Vector3f nrm = solver.eigenvectors().col(0);
@@ -40,8 +39,8 @@ bool normal_at(const CellGrid& grid, const float* points, const float* q, float 
 
 }  // namespace
 
-uint32_t estimate_normals(const CellGrid& grid, const float* points, uint32_t n, float radius,
-                          float* normals, uint8_t* has_normal) {
+uint32_t estimate_normals(const CellGrid& grid, const float* points, uint32_t n, float radius, float* normals,
+                          uint8_t* has_normal) {
   uint32_t good = 0;
   for (uint32_t i = 0; i < n; ++i) {
     bool ok = normal_at(grid, points, points + 3u * i, radius, normals + 3u * i);

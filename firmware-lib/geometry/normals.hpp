@@ -12,8 +12,8 @@ constexpr float kMinPlanarRatio = 1e-3f;
 
 // normals[3i..] of every points[i] with >= kMinNormalNeighbours neighbours within
 // `radius` (grid built over `points`); has_normal[i] says which. Returns the count.
-uint32_t estimate_normals(const CellGrid& grid, const float* points, uint32_t n, float radius,
-                          float* normals, uint8_t* has_normal);
+uint32_t estimate_normals(const CellGrid& grid, const float* points, uint32_t n, float radius, float* normals,
+                          uint8_t* has_normal);
 
 // Turns every normal to point away from `centre` (outward for a closed or
 // partial object), or towards `viewpoint` when given (sensor position).

@@ -86,7 +86,8 @@ uint32_t select_basis_points(const CellGrid& grid, const float* points, const ui
       uint32_t i = order[first + k];
       if (!has_normal[i]) continue;
       const float* p = points + 3u * i;
-      float d2 = (p[0] - s[0]) * (p[0] - s[0]) + (p[1] - s[1]) * (p[1] - s[1]) + (p[2] - s[2]) * (p[2] - s[2]);
+      float d2 =
+          (p[0] - s[0]) * (p[0] - s[0]) + (p[1] - s[1]) * (p[1] - s[1]) + (p[2] - s[2]) * (p[2] - s[2]);
       if (d2 < best_d2) {
         best_d2 = d2;
         best = i;

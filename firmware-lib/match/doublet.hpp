@@ -36,7 +36,7 @@ inline bool is_stable(const DoubletShape& s, float d_min, float theta_min) {
 
 // The cascade of Figure 5 for a query doublet against model points (m1, m2):
 // the first constraint that fails, or kPass.
-CascadeStage check_doublet(const DoubletShape& query, const OrientedPoint& m1,
-                           const OrientedPoint& m2, const DoubletTolerance& tol);
+CascadeStage check_doublet(const DoubletShape& query, const OrientedPoint& m1, const OrientedPoint& m2,
+                           const DoubletTolerance& tol);
 
 }  // namespace spinhash

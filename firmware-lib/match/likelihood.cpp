@@ -21,8 +21,8 @@ inline float axis_gap2(float v, int32_t c, float cell) {
 }
 
 // Features of one grid cell against x: updates best (nearest within best.dist2 with agreeing normal).
-void scan_cell(const Database& db, const blob::ModelRecord& rec, uint32_t cell_index, const Eigen::Vector3f& x,
-               const Eigen::Vector3f& n, float cos_eta_max, NearestFeature* best) {
+void scan_cell(const Database& db, const blob::ModelRecord& rec, uint32_t cell_index,
+               const Eigen::Vector3f& x, const Eigen::Vector3f& n, float cos_eta_max, NearestFeature* best) {
   const uint32_t* offsets = db.grid_offsets() + rec.grid_offset_base;
   const uint32_t end = rec.first_feature + offsets[cell_index + 1u];
   const float* pos = db.positions();
@@ -34,7 +34,8 @@ void scan_cell(const Database& db, const blob::ModelRecord& rec, uint32_t cell_i
     if (d2 >= best->dist2) continue;
     const int16_t* m = nrm + 3u * f;
     float dot = (static_cast<float>(m[0]) * n[0] + static_cast<float>(m[1]) * n[1] +
-                 static_cast<float>(m[2]) * n[2]) * (1.0f / 32767.0f);
+                 static_cast<float>(m[2]) * n[2]) *
+                (1.0f / 32767.0f);
     if (dot < cos_eta_max) continue;
     best->dist2 = d2;
     best->feature = f;
@@ -124,10 +125,10 @@ Verification verify_pose(const Database& db, uint32_t model, const RigidPose& po
   uint32_t l = 0;
   for (uint32_t i = 0; i < used; ++i, l = (l + stride) % n) {
     if (v.log_likelihood < to_beat) return v;  // remaining terms are <= 0
-    if (preemptive && ((i == kPreemptiveFirst && v.log_likelihood / static_cast<float>(i) <
-                                                    best_mean - kPreemptiveSlackFirst) ||
-                       (i == kPreemptiveSecond && v.log_likelihood / static_cast<float>(i) <
-                                                     best_mean - kPreemptiveSlackSecond)))
+    if (preemptive && ((i == kPreemptiveFirst &&
+                        v.log_likelihood / static_cast<float>(i) < best_mean - kPreemptiveSlackFirst) ||
+                       (i == kPreemptiveSecond &&
+                        v.log_likelihood / static_cast<float>(i) < best_mean - kPreemptiveSlackSecond)))
       return v;
     Eigen::Vector3f qp(query.positions[3u * l], query.positions[3u * l + 1u], query.positions[3u * l + 2u]);
     Eigen::Vector3f qn(query.normals[3u * l], query.normals[3u * l + 1u], query.normals[3u * l + 2u]);

@@ -21,7 +21,7 @@ namespace spinhash {
 struct QueryFeatures {
   const float* positions = nullptr;  // 3 per feature, query frame (re-centred)
   const float* normals = nullptr;
-  const uint8_t* spins = nullptr;    // quantised with the database's scale
+  const uint8_t* spins = nullptr;  // quantised with the database's scale
   uint32_t count = 0;
   uint32_t dims = 0;
   uint32_t verify_count = 0;  // features verify_pose scores (evenly spread), <= count
@@ -44,8 +44,8 @@ constexpr uint32_t kMaxGridReach = 4;
 
 struct LikelihoodParams {
   float inv_two_sigma2 = 0.0f;
-  float delta2 = 0.0f;       // Delta^2
-  float delta_max2 = 0.0f;   // Delta_max^2
+  float delta2 = 0.0f;      // Delta^2
+  float delta_max2 = 0.0f;  // Delta_max^2
   float cos_eta_max = 0.0f;
   float spin_weight = 0.0f;  // 1 / (lambda * quant_scale): quantised L1 -> -log p_s
   float floor = 0.0f;        // per-feature log-likelihood of an unexplained feature
@@ -74,9 +74,9 @@ struct Verification {
 };
 
 // Scores `pose` of `model` on query.verify_count features visited in an
-// evenly spread order (all of them when verify_count == count). Stops early once even perfect remaining features (log p <= 0 each)
-// could not lift the sum above `to_beat`, or, when `preemptive`, once the
-// first few dozen features say the pose is clearly worse than `to_beat`.
+// evenly spread order (all of them when verify_count == count). Stops early once even perfect remaining
+// features (log p <= 0 each) could not lift the sum above `to_beat`, or, when `preemptive`, once the first
+// few dozen features say the pose is clearly worse than `to_beat`.
 Verification verify_pose(const Database& db, uint32_t model, const RigidPose& pose,
                          const QueryFeatures& query, const LikelihoodParams& lp, float to_beat,
                          bool preemptive);

@@ -15,8 +15,8 @@ void gather_candidates(SearchContext& ctx, uint32_t w) {
   float running = 0.0f;
   for (uint32_t l = 0; l < ctx.query.count; ++l) {
     Candidate* list = ctx.candidates_of(l);
-    uint32_t n = b.searcher.search(ctx.db, ctx.query.spins + static_cast<size_t>(l) * ctx.query.dims, w,
-                                   list, &ss);
+    uint32_t n =
+        b.searcher.search(ctx.db, ctx.query.spins + static_cast<size_t>(l) * ctx.query.dims, w, list, &ss);
     b.candidate_count[l] = n;
     ctx.stats.candidates += n;
     // exp(-H) = 1 / perplexity: a feature whose candidates name one model is

@@ -30,7 +30,10 @@ uint32_t draw_index(SearchContext& ctx) {
   uint32_t lo = 0, hi = n - 1u;  // first index whose running sum exceeds u
   while (lo < hi) {              // log2(n) steps
     uint32_t mid = lo + (hi - lo) / 2u;
-    if (ctx.cumulative[mid] > u) hi = mid; else lo = mid + 1u;
+    if (ctx.cumulative[mid] > u)
+      hi = mid;
+    else
+      lo = mid + 1u;
   }
   return lo;
 }
@@ -63,8 +66,8 @@ void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose) {
   }
 }
 
-bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l,
-                   const DoubletShape& shape, uint32_t fu, uint32_t fv, const HypothesisCaps& caps) {
+bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l, const DoubletShape& shape,
+                   uint32_t fu, uint32_t fv, const HypothesisCaps& caps) {
   RecognitionStats& st = ctx.stats;
   if (st.pair_checks >= ctx.cfg.max_pair_checks) {
     st.budget_exhausted = true;

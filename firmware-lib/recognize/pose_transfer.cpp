@@ -23,7 +23,8 @@ constexpr uint32_t kTransferPoses = 4;  // leading models whose poses are lent
 // pose transfers between models whose boxes nearly coincide.
 float box_distance(const blob::ModelRecord& a, const blob::ModelRecord& b) {
   float d = 0.0f;
-  for (int k = 0; k < 3; ++k) d += std::fabs(a.bbox_min[k] - b.bbox_min[k]) + std::fabs(a.bbox_max[k] - b.bbox_max[k]);
+  for (int k = 0; k < 3; ++k)
+    d += std::fabs(a.bbox_min[k] - b.bbox_min[k]) + std::fabs(a.bbox_max[k] - b.bbox_max[k]);
   return d;
 }
 
@@ -34,9 +35,9 @@ void transfer_poses(SearchContext& ctx) {
   const uint32_t wanted = ctx.cfg.transfer_models;  // <= kMaxTransferModels (config_valid)
   if (wanted == 0u) return;
   uint32_t sources[kTransferPoses];
-  const uint32_t n_sources = top_n(model_count, kTransferPoses, sources,
-                                   [&](uint32_t m) { return has_hypothesis(ctx, m); },
-                                   [&](uint32_t a, uint32_t b) { return scores_higher(ctx, a, b); });
+  const uint32_t n_sources = top_n(
+      model_count, kTransferPoses, sources, [&](uint32_t m) { return has_hypothesis(ctx, m); },
+      [&](uint32_t a, uint32_t b) { return scores_higher(ctx, a, b); });
   RigidPose poses[kTransferPoses];  // copied: consider_pose may replace a source's own pose
   for (uint32_t i = 0; i < n_sources; ++i) poses[i] = ctx.buf.best[sources[i]].pose;
   uint32_t targets[kMaxTransferModels];
@@ -46,7 +47,8 @@ void transfer_poses(SearchContext& ctx) {
       const float da = box_distance(src, ctx.db.model(a)), db = box_distance(src, ctx.db.model(b));
       return da < db || (da == db && a < b);
     };
-    const uint32_t n = top_n(model_count, wanted, targets, [&](uint32_t m) { return m != sources[i]; }, nearer);
+    const uint32_t n = top_n(
+        model_count, wanted, targets, [&](uint32_t m) { return m != sources[i]; }, nearer);
     for (uint32_t t = 0; t < n; ++t) {
       ++ctx.stats.transferred;
       consider_pose(ctx, targets[t], poses[i]);

@@ -31,8 +31,8 @@ bool config_valid(const RecognizerConfig& c) {
   SPINHASH_CONFIG_FIELDS(SPINHASH_CHECK_RANGE)
 #undef SPINHASH_CHECK_RANGE
   return ok && c.delta_max >= c.delta &&
-         (!c.has_viewpoint || (std::isfinite(c.viewpoint[0]) && std::isfinite(c.viewpoint[1]) &&
-                               std::isfinite(c.viewpoint[2])));
+         (!c.has_viewpoint ||
+          (std::isfinite(c.viewpoint[0]) && std::isfinite(c.viewpoint[1]) && std::isfinite(c.viewpoint[2])));
 }
 
 uint32_t candidate_stride(const RecognizerConfig& c) {
@@ -198,11 +198,18 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
                   b.query_spins + static_cast<size_t>(f) * fs.dims);
   for (uint32_t m = 0; m < db_->model_count(); ++m) reset(b.best[m]);
 
-  SearchContext ctx{*db_, config_, b, QueryFeatures{fs.positions, fs.normals, b.query_spins, fs.count, fs.dims,
-                                  config_.verify_features < fs.count ? config_.verify_features : fs.count},
-                    make_likelihood_params(config_, *db_),
-                    DoubletTolerance{config_.tol_distance, deg_to_rad(config_.tol_angle_deg), config_.tol_handedness},
-                    config_.d_min, deg_to_rad(config_.theta_min_deg), result.stats, Pcg32(config_.seed)};
+  SearchContext ctx{
+      *db_,
+      config_,
+      b,
+      QueryFeatures{fs.positions, fs.normals, b.query_spins, fs.count, fs.dims,
+                    config_.verify_features < fs.count ? config_.verify_features : fs.count},
+      make_likelihood_params(config_, *db_),
+      DoubletTolerance{config_.tol_distance, deg_to_rad(config_.tol_angle_deg), config_.tol_handedness},
+      config_.d_min,
+      deg_to_rad(config_.theta_min_deg),
+      result.stats,
+      Pcg32(config_.seed)};
   switch (config_.mode) {
     case Mode::kBran: run_bran(ctx); break;
     case Mode::kSran: run_sran(ctx); break;

@@ -17,8 +17,9 @@ constexpr uint32_t kRefineIterations = 3;
 
 // Indices of the (up to) kRefinedModels best-scoring models, best first.
 uint32_t leading_models(const SearchContext& ctx, uint32_t* out) {
-  return top_n(ctx.db.model_count(), kRefinedModels, out, [&](uint32_t m) { return has_hypothesis(ctx, m); },
-               [&](uint32_t a, uint32_t b) { return scores_higher(ctx, a, b); });
+  return top_n(
+      ctx.db.model_count(), kRefinedModels, out, [&](uint32_t m) { return has_hypothesis(ctx, m); },
+      [&](uint32_t a, uint32_t b) { return scores_higher(ctx, a, b); });
 }
 
 void finalise_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, bool refine) {

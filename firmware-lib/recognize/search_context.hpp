@@ -2,10 +2,10 @@
 #pragma once
 #include <cstdint>
 
-#include "spinhash/internal/lsh_search.hpp"
 #include "match/doublet.hpp"
 #include "match/likelihood.hpp"
 #include "spinhash/features.hpp"
+#include "spinhash/internal/lsh_search.hpp"
 #include "spinhash/recognizer.hpp"
 #include "util/rng.hpp"
 
@@ -24,13 +24,13 @@ struct ModelBest {
 struct RecognizerBuffers {
   FeatureExtractor extractor;
   LshSearcher searcher;
-  uint8_t* query_spins = nullptr;     // max_features * max_spin_dims
-  Candidate* candidates = nullptr;    // max_features * candidate_stride
-  uint32_t* candidate_count = nullptr;// max_features
-  float* cumulative = nullptr;        // max_features: sampling weights, running sum
-  ModelBest* best = nullptr;          // max_models
-  RankedModel* ranking = nullptr;     // max_models
-  uint32_t candidate_stride = 0;      // largest W of any mode
+  uint8_t* query_spins = nullptr;       // max_features * max_spin_dims
+  Candidate* candidates = nullptr;      // max_features * candidate_stride
+  uint32_t* candidate_count = nullptr;  // max_features
+  float* cumulative = nullptr;          // max_features: sampling weights, running sum
+  ModelBest* best = nullptr;            // max_models
+  RankedModel* ranking = nullptr;       // max_models
+  uint32_t candidate_stride = 0;        // largest W of any mode
 };
 
 struct SearchContext {
@@ -81,8 +81,8 @@ void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose);
 
 // Cascade, pose, verification and gamma_i update for query features (k, l)
 // matched to model features (fu, fv) of `model`. false once the budget is spent.
-bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l,
-                   const DoubletShape& shape, uint32_t fu, uint32_t fv, const HypothesisCaps& caps);
+bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l, const DoubletShape& shape,
+                   uint32_t fu, uint32_t fv, const HypothesisCaps& caps);
 
 void run_bran(SearchContext& ctx);
 // Lends the leading models' poses to the models whose boxes are nearest

@@ -23,9 +23,7 @@ class Pcg32 {
   // Uniform in [0, 1) with 24 bits, exact in float.
   float uniform() { return static_cast<float>(next() >> 8) * (1.0f / 16777216.0f); }
   // Uniform integer in [0, n), n > 0 (Lemire's multiply-shift; bias < n / 2^32).
-  uint32_t below(uint32_t n) {
-    return static_cast<uint32_t>((static_cast<uint64_t>(next()) * n) >> 32);
-  }
+  uint32_t below(uint32_t n) { return static_cast<uint32_t>((static_cast<uint64_t>(next()) * n) >> 32); }
 
  private:
   uint64_t state_;

@@ -11,9 +11,7 @@ namespace {
 constexpr std::align_val_t kAlignment{kBufferAlignment};
 }  // namespace
 
-void AlignedBytes::AlignedDelete::operator()(uint8_t* p) const {
-  ::operator delete(p, kAlignment);
-}
+void AlignedBytes::AlignedDelete::operator()(uint8_t* p) const { ::operator delete(p, kAlignment); }
 
 AlignedBytes::AlignedBytes(size_t size) : size_(size) {
   if (size == 0u) return;

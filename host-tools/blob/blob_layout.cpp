@@ -7,8 +7,8 @@ namespace {
 struct Expected {
   uint32_t id;
   const char* name;
-  uint64_t elements;      // what the params call for
-  size_t actual;          // what the vector holds
+  uint64_t elements;  // what the params call for
+  size_t actual;      // what the vector holds
   uint64_t element_bytes;
 };
 
@@ -29,8 +29,7 @@ bool plan_blob_layout(const BlobContent& c, BlobLayout* layout, std::string* err
       {blob::kFeatNormals, "normals", 3u * n, c.normals.size(), sizeof(int16_t)},
       {blob::kFeatModels, "feature_models", n, c.feature_models.size(), sizeof(uint16_t)},
       {blob::kFeatSpins, "spins", dims * n, c.spins.size(), 1u},
-      {blob::kGridOffsets, "grid_offsets", p.grid_offset_count, c.grid_offsets.size(),
-       sizeof(uint32_t)},
+      {blob::kGridOffsets, "grid_offsets", p.grid_offset_count, c.grid_offsets.size(), sizeof(uint32_t)},
       {blob::kLshBits, "lsh_bits", tables * p.lsh_bits, c.lsh_bits.size(), sizeof(blob::LshBit)},
       {blob::kLshOffsets, "lsh_offsets", tables * (static_cast<uint64_t>(p.lsh_buckets) + 1u),
        c.lsh_offsets.size(), sizeof(uint32_t)},

@@ -114,8 +114,7 @@ void build_image(const BlobContent& c, const BlobLayout& l, bool swap, uint8_t* 
 
 }  // namespace
 
-bool serialize_blob(const BlobContent& c, ByteOrder order, std::vector<uint8_t>* out,
-                    std::string* error) {
+bool serialize_blob(const BlobContent& c, ByteOrder order, std::vector<uint8_t>* out, std::string* error) {
   if (out == nullptr || error == nullptr) return false;
   out->clear();
   error->clear();

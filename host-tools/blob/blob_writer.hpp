@@ -15,8 +15,7 @@ namespace host {
 
 // On success *out holds the blob and *error is cleared; on failure *out is
 // emptied and *error says why.
-bool serialize_blob(const BlobContent& c, ByteOrder order, std::vector<uint8_t>* out,
-                    std::string* error);
+bool serialize_blob(const BlobContent& c, ByteOrder order, std::vector<uint8_t>* out, std::string* error);
 
 }  // namespace host
 }  // namespace spinhash

@@ -115,8 +115,7 @@ bool read_file(const std::string& path, AlignedBytes* out, std::string* error) {
   return true;
 }
 
-bool write_file_atomically(const std::string& path, const std::vector<uint8_t>& bytes,
-                           std::string* error) {
+bool write_file_atomically(const std::string& path, const std::vector<uint8_t>& bytes, std::string* error) {
   return write_file_atomically(path, bytes.data(), bytes.size(), error);
 }
 

@@ -16,8 +16,7 @@ bool read_file(const std::string& path, AlignedBytes* out, std::string* error);
 // Writes to a temporary file next to `path`, flushes it to disk, then renames
 // it over `path`: readers see the old file or the new one, never a mix. On
 // failure the temporary is removed and an existing `path` is left untouched.
-bool write_file_atomically(const std::string& path, const std::vector<uint8_t>& bytes,
-                           std::string* error);
+bool write_file_atomically(const std::string& path, const std::vector<uint8_t>& bytes, std::string* error);
 bool write_file_atomically(const std::string& path, const void* data, size_t size, std::string* error);
 
 }  // namespace host

@@ -11,7 +11,7 @@ namespace spinhash {
 namespace host {
 namespace {
 
-constexpr uint32_t kBins = 4;          // 4 x 4 spin images
+constexpr uint32_t kBins = 4;  // 4 x 4 spin images
 constexpr uint32_t kTables = 3;
 constexpr uint32_t kBitsPerKey = 6;
 constexpr uint32_t kBuckets = 16;
@@ -107,7 +107,8 @@ void add_model(uint32_t i, uint32_t count, Rng& rng, BlobContent* c) {
     }
     add_unit_normal(rng, &c->normals);
     c->feature_models.push_back(static_cast<uint16_t>(i));
-    for (uint32_t d = 0; d < kBins * kBins; ++d) c->spins.push_back(static_cast<uint8_t>(rng.below(kMaxSpinValue + 1u)));
+    for (uint32_t d = 0; d < kBins * kBins; ++d)
+      c->spins.push_back(static_cast<uint8_t>(rng.below(kMaxSpinValue + 1u)));
   }
   std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
   c->grid_offsets.insert(c->grid_offsets.end(), offsets.begin(), offsets.end());
@@ -137,7 +138,8 @@ void add_lsh(Rng& rng, BlobContent* c) {
   }
   c->params.lsh_dc = dc;
   for (uint32_t j = 0; j < kTables * kBitsPerKey; ++j) {
-    c->lsh_bits.push_back({static_cast<uint16_t>(rng.below(dims)), static_cast<uint16_t>(rng.below(kMaxSpinValue))});
+    c->lsh_bits.push_back(
+        {static_cast<uint16_t>(rng.below(dims)), static_cast<uint16_t>(rng.below(kMaxSpinValue))});
   }
   for (uint32_t t = 0; t < kTables; ++t) {
     std::vector<uint32_t> bucket(n);

@@ -2,17 +2,17 @@
 #include <cstdio>
 #include <memory>
 
-#include "pipeline/build_database_file.hpp"
 #include "cli/commands.hpp"
+#include "pipeline/build_database_file.hpp"
 
 namespace spinhash::cli {
 
-using pipeline::BuildSettings;
-using pipeline::BuildSummary;
-using pipeline::ModelMesh;
 using pipeline::add_build_flags;
 using pipeline::build_database_file;
+using pipeline::BuildSettings;
+using pipeline::BuildSummary;
 using pipeline::load_model_meshes;
+using pipeline::ModelMesh;
 namespace {
 
 struct BuildArgs {
@@ -30,11 +30,12 @@ int run_build(const BuildArgs& a) {
     std::fprintf(stderr, "spinhash build: %s\n", error.c_str());
     return kExitError;
   }
-  std::fprintf(stderr,
-               "spinhash build: %s: %u models, %u features, %llu bytes (%.1f bytes/feature), "
-               "largest LSH bucket %u, %.1f s\n",
-               a.output.c_str(), summary.models, summary.features, static_cast<unsigned long long>(summary.bytes),
-               static_cast<double>(summary.bytes) / summary.features, summary.report.max_bucket, summary.seconds);
+  std::fprintf(
+      stderr,
+      "spinhash build: %s: %u models, %u features, %llu bytes (%.1f bytes/feature), "
+      "largest LSH bucket %u, %.1f s\n",
+      a.output.c_str(), summary.models, summary.features, static_cast<unsigned long long>(summary.bytes),
+      static_cast<double>(summary.bytes) / summary.features, summary.report.max_bucket, summary.seconds);
   return kExitOk;
 }
 

@@ -44,9 +44,13 @@ void add_generate_command(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<GenerateArgs>();
   CLI::App* cmd = app.add_subcommand("generate", "write procedural vehicle meshes (families of look-alikes)");
   cmd->add_option("-o,--output", a->output, "directory to write into")->required();
-  cmd->add_option("--count", a->count, "number of vehicles")->check(CLI::Range(1u, host::kMaxFleetSize))->capture_default_str();
+  cmd->add_option("--count", a->count, "number of vehicles")
+      ->check(CLI::Range(1u, host::kMaxFleetSize))
+      ->capture_default_str();
   cmd->add_option("--seed", a->seed, "fleet seed")->capture_default_str();
-  cmd->add_option("--format", a->format, "mesh format")->check(CLI::IsMember({"obj", "ply"}))->capture_default_str();
+  cmd->add_option("--format", a->format, "mesh format")
+      ->check(CLI::IsMember({"obj", "ply"}))
+      ->capture_default_str();
   cmd->callback([a, exit_code]() { *exit_code = run_generate(*a); });
 }
 

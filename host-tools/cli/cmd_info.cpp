@@ -17,17 +17,19 @@ void print_params(const Database& db, uint64_t bytes) {
   const blob::Params& p = db.params();
   std::printf("format        v%u, %llu bytes, %.1f bytes per feature, fingerprint %016llx\n",
               db.header().version, static_cast<unsigned long long>(bytes),
-              static_cast<double>(bytes) / p.feature_count, static_cast<unsigned long long>(db.header().config_fingerprint));
+              static_cast<double>(bytes) / p.feature_count,
+              static_cast<unsigned long long>(db.header().config_fingerprint));
   std::printf("models        %u\nfeatures      %u\n", p.model_count, p.feature_count);
-  std::printf("spin images   %ux%u bins, R = %g m, support angle %g deg, quantisation scale %g\n", p.bins_alpha,
-              p.bins_beta, static_cast<double>(p.support_radius), static_cast<double>(p.support_angle_deg),
-              static_cast<double>(p.spin_quant_scale));
+  std::printf("spin images   %ux%u bins, R = %g m, support angle %g deg, quantisation scale %g\n",
+              p.bins_alpha, p.bins_beta, static_cast<double>(p.support_radius),
+              static_cast<double>(p.support_angle_deg), static_cast<double>(p.spin_quant_scale));
   std::printf("sampling      voxel %g m, normal radius %g m, basis spacing %g m\n",
               static_cast<double>(p.cloud_voxel), static_cast<double>(p.normal_radius),
               static_cast<double>(p.basis_spacing));
   std::printf("LSH           L = %u tables, K = %u bits, %u buckets per table, d_c = %g\n", p.lsh_tables,
               p.lsh_bits, p.lsh_buckets, static_cast<double>(p.lsh_dc));
-  std::printf("model grids   %g m cells, %u offsets\n", static_cast<double>(p.grid_cell), p.grid_offset_count);
+  std::printf("model grids   %g m cells, %u offsets\n", static_cast<double>(p.grid_cell),
+              p.grid_offset_count);
 }
 
 int run_info(const std::string& path) {
@@ -42,7 +44,8 @@ int run_info(const std::string& path) {
   for (uint32_t m = 0; m < file.db.model_count(); ++m) {
     const blob::ModelRecord& r = file.db.model(m);
     std::printf("%-24s %8u  %.2f %.2f %.2f\n", model_name(file.db, m).c_str(), r.feature_count,
-                static_cast<double>(r.bbox_max[0] - r.bbox_min[0]), static_cast<double>(r.bbox_max[1] - r.bbox_min[1]),
+                static_cast<double>(r.bbox_max[0] - r.bbox_min[0]),
+                static_cast<double>(r.bbox_max[1] - r.bbox_min[1]),
                 static_cast<double>(r.bbox_max[2] - r.bbox_min[2]));
   }
   return kExitOk;

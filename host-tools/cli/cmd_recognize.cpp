@@ -5,19 +5,19 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "pipeline/database_file.hpp"
 #include "cli/json_line.hpp"
-#include "pipeline/recognition_session.hpp"
-#include "pipeline/recognizer_flags.hpp"
 #include "cli/result_json.hpp"
 #include "cloud/cloud_reader.hpp"
+#include "pipeline/database_file.hpp"
+#include "pipeline/recognition_session.hpp"
+#include "pipeline/recognizer_flags.hpp"
 
 namespace spinhash::cli {
 
-using pipeline::DatabaseFile;
-using pipeline::RecognitionSession;
 using pipeline::add_recognizer_flags;
+using pipeline::DatabaseFile;
 using pipeline::load_database;
+using pipeline::RecognitionSession;
 namespace {
 
 struct RecognizeArgs {
@@ -59,7 +59,8 @@ int run_recognize(const RecognizeArgs& a) {
 
 void add_recognize_command(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<RecognizeArgs>();
-  CLI::App* cmd = app.add_subcommand("recognize", "recognise point clouds (PLY or x y z text) against a database");
+  CLI::App* cmd =
+      app.add_subcommand("recognize", "recognise point clouds (PLY or x y z text) against a database");
   cmd->add_option("--db", a->db_path, "database file")->required();
   cmd->add_option("--top", a->top, "models listed per query (default: all that got a score)");
   cmd->add_option("queries", a->queries, "point cloud files")->required();

@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <memory>
 
-#include "cloud/cloud_writer.hpp"
 #include "cli/commands.hpp"
+#include "cloud/cloud_writer.hpp"
 #include "mesh/mesh_loader.hpp"
 #include "mesh/vehicle_generator.hpp"
 #include "scan/scan_simulator.hpp"
@@ -57,18 +57,30 @@ void add_scan_command(CLI::App& app, int* exit_code) {
   CLI::App* cmd = app.add_subcommand("scan", "simulate an airborne lidar scan of a mesh (PLY out)");
   cmd->add_option("mesh", a->mesh, "mesh file")->required();
   cmd->add_option("-o,--output", a->output, "PLY file to write")->required();
-  cmd->add_option("--views", o.views, "viewpoints on the hemisphere")->check(CLI::Range(1u, host::kMaxScanViews))->capture_default_str();
-  cmd->add_option("--noise", o.noise_sigma, "Gaussian noise along each ray, m")->check(CLI::Range(0.0, 10.0))->capture_default_str();
+  cmd->add_option("--views", o.views, "viewpoints on the hemisphere")
+      ->check(CLI::Range(1u, host::kMaxScanViews))
+      ->capture_default_str();
+  cmd->add_option("--noise", o.noise_sigma, "Gaussian noise along each ray, m")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
   cmd->add_option("--seed", o.seed, "seed for azimuth, noise, pose and occluder")->capture_default_str();
-  cmd->add_option("--elevation", o.elevation_deg, "viewpoint elevation, degrees")->check(CLI::Range(0.0, 90.0))->capture_default_str();
+  cmd->add_option("--elevation", o.elevation_deg, "viewpoint elevation, degrees")
+      ->check(CLI::Range(0.0, 90.0))
+      ->capture_default_str();
   cmd->add_option("--azimuth", o.azimuth_start_deg, "first view's azimuth, degrees (default: random)");
-  cmd->add_option("--azimuth-step", o.azimuth_step_deg, "azimuth between views, degrees")->capture_default_str();
-  cmd->add_option("--spacing", o.point_spacing, "ray spacing at the object, m")->check(CLI::Range(0.005, 1.0))->capture_default_str();
-  cmd->add_option("--occlusion", o.occlusion, "fraction of the object hidden by an occluder")->check(CLI::Range(0.0, 0.9))->capture_default_str();
+  cmd->add_option("--azimuth-step", o.azimuth_step_deg, "azimuth between views, degrees")
+      ->capture_default_str();
+  cmd->add_option("--spacing", o.point_spacing, "ray spacing at the object, m")
+      ->check(CLI::Range(0.005, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--occlusion", o.occlusion, "fraction of the object hidden by an occluder")
+      ->check(CLI::Range(0.0, 0.9))
+      ->capture_default_str();
   cmd->add_flag("--random-pose", o.random_pose, "random yaw and position (true pose with --pose-out)");
   cmd->add_flag("--tilt", o.random_tilt, "with --random-pose: small random roll and pitch");
   cmd->add_option("--offset", a->offset, "added to every point, e.g. UTM 500000 4000000 100")->expected(3);
-  cmd->add_option("--ground", a->ground_half_size, "scan a ground square of this half size (m) too")->check(CLI::Range(0.0, 1000.0));
+  cmd->add_option("--ground", a->ground_half_size, "scan a ground square of this half size (m) too")
+      ->check(CLI::Range(0.0, 1000.0));
   cmd->add_option("--pose-out", a->pose_output, "write the true model->scan pose (4x4) here");
   cmd->add_flag("--ascii", a->ascii, "ASCII PLY instead of binary");
   cmd->callback([a, exit_code]() { *exit_code = run_scan(*a); });

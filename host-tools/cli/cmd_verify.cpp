@@ -14,22 +14,22 @@
 
 namespace spinhash::cli {
 
-using pipeline::DatabaseFile;
-using pipeline::ModelMesh;
-using pipeline::Progress;
-using pipeline::RecognitionSession;
 using pipeline::add_recognizer_flags;
+using pipeline::DatabaseFile;
 using pipeline::load_database;
 using pipeline::load_model_meshes;
 using pipeline::mode_name;
 using pipeline::model_name;
+using pipeline::ModelMesh;
+using pipeline::Progress;
+using pipeline::RecognitionSession;
 namespace {
 
 struct VerifyArgs {
   std::string db_path;
   std::vector<std::string> meshes;
-  uint32_t queries = 2;      // scans per model
-  double noise = 0.05;       // m along the ray
+  uint32_t queries = 2;  // scans per model
+  double noise = 0.05;   // m along the ray
   uint64_t scan_seed = 1;
   bool quiet = false;
   RecognizerConfig config;
@@ -96,8 +96,12 @@ void add_verify_command(CLI::App& app, int* exit_code) {
   CLI::App* cmd = app.add_subcommand("verify", "check a database's integrity and self-recognition");
   cmd->add_option("database", a->db_path, "database file")->required();
   cmd->add_option("meshes", a->meshes, "the model meshes, to recognise each from its own scans");
-  cmd->add_option("--queries", a->queries, "scans per model")->check(CLI::Range(1u, 100u))->capture_default_str();
-  cmd->add_option("--noise", a->noise, "scan noise along the ray, m")->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  cmd->add_option("--queries", a->queries, "scans per model")
+      ->check(CLI::Range(1u, 100u))
+      ->capture_default_str();
+  cmd->add_option("--noise", a->noise, "scan noise along the ray, m")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   cmd->add_option("--scan-seed", a->scan_seed, "seed of the verification scans")->capture_default_str();
   cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
   add_recognizer_flags(cmd, &a->config);

@@ -1,8 +1,8 @@
 #include "cli/result_json.hpp"
 
 #include "cli/json_line.hpp"
-#include "spinhash/config_fields.h"
 #include "pipeline/recognition_session.hpp"
+#include "spinhash/config_fields.h"
 
 namespace spinhash::cli {
 

@@ -41,8 +41,7 @@ bool parse_cloud(const std::string& bytes, std::vector<double>* xyz, std::string
   }
 }
 
-bool read_file_bytes(const std::string& path, uint64_t max_bytes, std::string* bytes,
-                     std::string* error) {
+bool read_file_bytes(const std::string& path, uint64_t max_bytes, std::string* bytes, std::string* error) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {
     if (error) *error = "file not found: " + path;

@@ -35,7 +35,6 @@ bool read_pose(const std::string& path, Eigen::Matrix4d* pose, std::string* erro
 
 // Reads a whole file; false with *error if missing, not a regular file, or
 // larger than max_bytes.
-bool read_file_bytes(const std::string& path, uint64_t max_bytes, std::string* bytes,
-                     std::string* error);
+bool read_file_bytes(const std::string& path, uint64_t max_bytes, std::string* bytes, std::string* error);
 
 }  // namespace spinhash::host

@@ -21,10 +21,8 @@ void append_double_le(std::string* out, double value) {
 
 std::string ply_bytes(const std::vector<double>& xyz, bool binary) {
   const std::size_t points = xyz.size() / kAxes;
-  std::string out = std::string("ply\nformat ") +
-                    (binary ? "binary_little_endian" : "ascii") +
-                    " 1.0\ncomment spinhash point cloud\nelement vertex " +
-                    std::to_string(points) +
+  std::string out = std::string("ply\nformat ") + (binary ? "binary_little_endian" : "ascii") +
+                    " 1.0\ncomment spinhash point cloud\nelement vertex " + std::to_string(points) +
                     "\nproperty double x\nproperty double y\nproperty double z\nend_header\n";
   if (binary) {
     out.reserve(out.size() + points * kAxes * sizeof(double));
@@ -33,8 +31,8 @@ std::string ply_bytes(const std::vector<double>& xyz, bool binary) {
   }
   char line[kLineBufferBytes];
   for (std::size_t i = 0; i < points; ++i) {
-    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", xyz[kAxes * i],
-                  xyz[kAxes * i + 1], xyz[kAxes * i + 2]);
+    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", xyz[kAxes * i], xyz[kAxes * i + 1],
+                  xyz[kAxes * i + 2]);
     out += line;
   }
   return out;
@@ -42,8 +40,7 @@ std::string ply_bytes(const std::vector<double>& xyz, bool binary) {
 
 }  // namespace
 
-bool write_ply(const std::string& path, const std::vector<double>& xyz, bool binary,
-               std::string* error) {
+bool write_ply(const std::string& path, const std::vector<double>& xyz, bool binary, std::string* error) {
   if (xyz.size() % kAxes != 0) {
     if (error) *error = "cannot write " + path + ": coordinate count is not a multiple of 3";
     return false;
@@ -61,8 +58,8 @@ bool write_pose(const std::string& path, const Eigen::Matrix4d& pose, std::strin
   std::string text;
   char line[kLineBufferBytes];
   for (int r = 0; r < 4; ++r) {
-    std::snprintf(line, sizeof line, "%.17g %.17g %.17g %.17g\n", pose(r, 0), pose(r, 1),
-                  pose(r, 2), pose(r, 3));
+    std::snprintf(line, sizeof line, "%.17g %.17g %.17g %.17g\n", pose(r, 0), pose(r, 1), pose(r, 2),
+                  pose(r, 3));
     text += line;
   }
   return write_file_atomically(path, text.data(), text.size(), error);

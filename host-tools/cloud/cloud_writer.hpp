@@ -10,8 +10,7 @@ namespace spinhash::host {
 
 // PLY with one vertex element of double x y z: binary_little_endian (on any
 // host) or ascii with 17 significant digits; both round-trip exactly.
-bool write_ply(const std::string& path, const std::vector<double>& xyz, bool binary,
-               std::string* error);
+bool write_ply(const std::string& path, const std::vector<double>& xyz, bool binary, std::string* error);
 
 // 4 lines of 4 numbers (%.17g), row-major: read back exactly by read_pose.
 bool write_pose(const std::string& path, const Eigen::Matrix4d& pose, std::string* error);

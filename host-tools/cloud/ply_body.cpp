@@ -26,8 +26,7 @@ int find_property(const Element& e, const char* name) {
 }
 
 // Validates the vertex element; axis[i] = axis (0..2) of property i, or -1.
-bool check_vertex(const Header& h, std::size_t* vertex, std::vector<int>* axis,
-                  std::string* error) {
+bool check_vertex(const Header& h, std::size_t* vertex, std::vector<int>* axis, std::string* error) {
   *vertex = h.elements.size();
   for (std::size_t i = 0; i < h.elements.size(); ++i) {
     if (h.elements[i].name == "vertex") *vertex = i;
@@ -40,8 +39,8 @@ bool check_vertex(const Header& h, std::size_t* vertex, std::vector<int>* axis,
     if (p < 0) return fail(error, std::string("vertex element has no property ") + kAxisNames[k]);
     const Property& prop = e.properties[p];
     if (prop.is_list || is_integer(prop.type)) {
-      return fail(error, std::string("vertex property ") + kAxisNames[k] +
-                             " must be a float or double scalar");
+      return fail(error,
+                  std::string("vertex property ") + kAxisNames[k] + " must be a float or double scalar");
     }
     (*axis)[p] = k;
   }
@@ -99,8 +98,8 @@ std::size_t min_binary_size(const Element& e) {
   return size;
 }
 
-bool read_binary_property(BinaryCursor* c, const Property& p, double* value,
-                          const std::string& where, std::string* error) {
+bool read_binary_property(BinaryCursor* c, const Property& p, double* value, const std::string& where,
+                          std::string* error) {
   if (!p.is_list) {
     if (c->remaining() < type_size(p.type)) return fail(error, "data truncated in " + where);
     *value = decode(p.type, c->take_bits(type_size(p.type)));
@@ -118,16 +117,16 @@ bool read_binary_property(BinaryCursor* c, const Property& p, double* value,
   return true;
 }
 
-bool read_binary(const std::string& bytes, const Header& h, std::size_t vertex,
-                 const std::vector<int>& axis, std::vector<double>* xyz, std::string* error) {
-  BinaryCursor c{reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(),
-                 h.data_offset, h.format == Format::kBinaryBigEndian};
+bool read_binary(const std::string& bytes, const Header& h, std::size_t vertex, const std::vector<int>& axis,
+                 std::vector<double>* xyz, std::string* error) {
+  BinaryCursor c{reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), h.data_offset,
+                 h.format == Format::kBinaryBigEndian};
   for (std::size_t ei = 0; ei < h.elements.size(); ++ei) {
     const Element& e = h.elements[ei];
     const std::size_t min_size = min_binary_size(e);
     if (e.count > 0 && (min_size == 0 || e.count > c.remaining() / min_size)) {
-      return fail(error, "element '" + e.name + "' claims " + std::to_string(e.count) +
-                             " entries but only " + std::to_string(c.remaining()) +
+      return fail(error, "element '" + e.name + "' claims " + std::to_string(e.count) + " entries but only " +
+                             std::to_string(c.remaining()) +
                              " bytes of data remain (truncated file or wrong count)");
     }
     if (ei == vertex) xyz->reserve(kAxes * e.count);
@@ -174,8 +173,7 @@ bool parse_number(std::string_view token, double* value) {
   return !token.empty() && result.ec == std::errc() && result.ptr == end;
 }
 
-bool read_ascii_value(TextCursor* c, double* value, const std::string& where,
-                      std::string* error) {
+bool read_ascii_value(TextCursor* c, double* value, const std::string& where, std::string* error) {
   const std::string_view token = c->next();
   if (token.empty()) return fail(error, "data ends early in " + where);
   if (!parse_number(token, value)) {
@@ -184,15 +182,16 @@ bool read_ascii_value(TextCursor* c, double* value, const std::string& where,
   return true;
 }
 
-bool read_ascii_property(TextCursor* c, const Property& p, double* value,
-                         const std::string& where, std::string* error) {
+bool read_ascii_property(TextCursor* c, const Property& p, double* value, const std::string& where,
+                         std::string* error) {
   if (!read_ascii_value(c, value, where, error)) return false;
   if (!p.is_list) return true;
   const double count = *value;
   // Range first: casting a double beyond uint64 is undefined (found by fuzz_cloud_reader).
   // No PLY count type is wider than 32 bits.
   constexpr double kMaxListLength = 4294967295.0;
-  if (!(count >= 0.0 && count <= kMaxListLength) || count != static_cast<double>(static_cast<uint64_t>(count))) {
+  if (!(count >= 0.0 && count <= kMaxListLength) ||
+      count != static_cast<double>(static_cast<uint64_t>(count))) {
     return fail(error, "invalid list length in " + where);
   }
   // Each item consumes a token or fails, so the loop is bounded by the file.
@@ -203,8 +202,8 @@ bool read_ascii_property(TextCursor* c, const Property& p, double* value,
   return true;
 }
 
-bool read_ascii(const std::string& bytes, const Header& h, std::size_t vertex,
-                const std::vector<int>& axis, std::vector<double>* xyz, std::string* error) {
+bool read_ascii(const std::string& bytes, const Header& h, std::size_t vertex, const std::vector<int>& axis,
+                std::vector<double>* xyz, std::string* error) {
   TextCursor c{bytes, h.data_offset};
   for (std::size_t ei = 0; ei < h.elements.size(); ++ei) {
     const Element& e = h.elements[ei];
@@ -233,16 +232,14 @@ bool read_ascii(const std::string& bytes, const Header& h, std::size_t vertex,
 
 }  // namespace
 
-bool read_body(const std::string& bytes, const Header& header, std::vector<double>* xyz,
-               std::string* error) {
+bool read_body(const std::string& bytes, const Header& header, std::vector<double>* xyz, std::string* error) {
   xyz->clear();
   std::size_t vertex = 0;
   std::vector<int> axis;
   if (!check_vertex(header, &vertex, &axis, error)) return false;
   if (header.data_offset > bytes.size()) return fail(error, "header offset beyond the file");
-  const bool ok = header.format == Format::kAscii
-                      ? read_ascii(bytes, header, vertex, axis, xyz, error)
-                      : read_binary(bytes, header, vertex, axis, xyz, error);
+  const bool ok = header.format == Format::kAscii ? read_ascii(bytes, header, vertex, axis, xyz, error)
+                                                  : read_binary(bytes, header, vertex, axis, xyz, error);
   if (!ok) xyz->clear();
   return ok;
 }

@@ -10,7 +10,6 @@
 
 namespace spinhash::host::ply {
 
-bool read_body(const std::string& bytes, const Header& header, std::vector<double>* xyz,
-               std::string* error);
+bool read_body(const std::string& bytes, const Header& header, std::vector<double>* xyz, std::string* error);
 
 }  // namespace spinhash::host::ply

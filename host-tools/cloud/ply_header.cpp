@@ -51,8 +51,7 @@ bool parse_count(const std::string& text, uint64_t* count) {
   return result.ec == std::errc() && result.ptr == end;
 }
 
-bool parse_format(const std::vector<std::string>& w, Header* header, std::size_t line,
-                  std::string* error) {
+bool parse_format(const std::vector<std::string>& w, Header* header, std::size_t line, std::string* error) {
   if (w.size() != 3) return fail(error, line, "expected 'format <type> 1.0'");
   if (w[1] == "ascii") {
     header->format = Format::kAscii;
@@ -67,8 +66,7 @@ bool parse_format(const std::vector<std::string>& w, Header* header, std::size_t
   return true;
 }
 
-bool parse_element(const std::vector<std::string>& w, Header* header, std::size_t line,
-                   std::string* error) {
+bool parse_element(const std::vector<std::string>& w, Header* header, std::size_t line, std::string* error) {
   if (w.size() != 3) return fail(error, line, "expected 'element <name> <count>'");
   Element element;
   element.name = w[1];
@@ -82,8 +80,7 @@ bool parse_element(const std::vector<std::string>& w, Header* header, std::size_
   return true;
 }
 
-bool parse_property(const std::vector<std::string>& w, Header* header, std::size_t line,
-                    std::string* error) {
+bool parse_property(const std::vector<std::string>& w, Header* header, std::size_t line, std::string* error) {
   if (header->elements.empty()) return fail(error, line, "property before any element");
   Property p;
   if (w.size() == 5 && w[1] == "list") {
@@ -122,9 +119,13 @@ bool next_line(const std::string& bytes, std::size_t* pos, std::string* line) {
 
 std::size_t type_size(Type type) {
   switch (type) {
-    case Type::kInt8: case Type::kUint8: return 1;
-    case Type::kInt16: case Type::kUint16: return 2;
-    case Type::kInt32: case Type::kUint32: case Type::kFloat32: return 4;
+    case Type::kInt8:
+    case Type::kUint8: return 1;
+    case Type::kInt16:
+    case Type::kUint16: return 2;
+    case Type::kInt32:
+    case Type::kUint32:
+    case Type::kFloat32: return 4;
     case Type::kFloat64: return 8;
   }
   return 0;
@@ -142,8 +143,9 @@ bool parse_header(const std::string& bytes, Header* header, std::string* error) 
   bool have_format = false;
   for (std::size_t number = 2;; ++number) {
     if (!next_line(bytes, &pos, &line)) {
-      return fail(error, number, "missing end_header (header cut short or longer than " +
-                                     std::to_string(kMaxHeaderBytes) + " bytes)");
+      return fail(error, number,
+                  "missing end_header (header cut short or longer than " + std::to_string(kMaxHeaderBytes) +
+                      " bytes)");
     }
     const std::vector<std::string> w = split_words(line);
     if (w.empty()) continue;

@@ -15,9 +15,9 @@ enum class Type { kInt8, kUint8, kInt16, kUint16, kInt32, kUint32, kFloat32, kFl
 
 struct Property {
   std::string name;
-  Type type = Type::kFloat32;     // the item type for a list
+  Type type = Type::kFloat32;  // the item type for a list
   bool is_list = false;
-  Type count_type = Type::kUint8; // lists only: integer type of the count
+  Type count_type = Type::kUint8;  // lists only: integer type of the count
 };
 
 struct Element {

@@ -35,8 +35,7 @@ bool parse_pose(const std::string& text, Eigen::Matrix4d* pose, std::string* why
     if (token.front() == '+') token.remove_prefix(1);
     double value = 0.0;
     const auto result = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (result.ec != std::errc() || result.ptr != token.data() + token.size() ||
-        !std::isfinite(value)) {
+    if (result.ec != std::errc() || result.ptr != token.data() + token.size() || !std::isfinite(value)) {
       return fail(why, "'" + std::string(token) + "' is not a finite number");
     }
     (*pose)(count / 4, count % 4) = value;

@@ -6,8 +6,8 @@
 #include "db/lsh_tables.hpp"
 #include "db/model_features.hpp"
 #include "db/model_grid.hpp"
-#include "spinhash/internal/spin_quantize.hpp"
 #include "spinhash/database.hpp"
+#include "spinhash/internal/spin_quantize.hpp"
 #include "spinhash/limits.hpp"
 
 namespace spinhash {
@@ -23,7 +23,8 @@ float choose_quant_scale(const std::vector<ModelFeatures>& feats, float percenti
     for (float v : m.spins)
       if (v > 0.0f) values.push_back(v);
   if (values.empty()) return 255.0f;
-  size_t k = std::min(values.size() - 1u, static_cast<size_t>(percentile * static_cast<float>(values.size())));
+  size_t k =
+      std::min(values.size() - 1u, static_cast<size_t>(percentile * static_cast<float>(values.size())));
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
   return 255.0f / values[k];
 }
@@ -94,11 +95,14 @@ bool check_inputs(const std::vector<ModelCloud>& models, const BuildOptions& opt
   }
   for (const ModelCloud& m : models)
     if (m.name.empty() || m.name.size() >= kMaxModelNameBytes) {
-      *error = "model name '" + m.name + "' must be 1 to " + std::to_string(kMaxModelNameBytes - 1) + " bytes";
+      *error =
+          "model name '" + m.name + "' must be 1 to " + std::to_string(kMaxModelNameBytes - 1) + " bytes";
       return false;
     }
-  if (opt.lsh_tables < 1 || opt.lsh_tables > kMaxLshTables || opt.lsh_bits < 1 || opt.lsh_bits > kMaxLshBits) {
-    *error = "LSH tables must be 1.." + std::to_string(kMaxLshTables) + " and bits 1.." + std::to_string(kMaxLshBits);
+  if (opt.lsh_tables < 1 || opt.lsh_tables > kMaxLshTables || opt.lsh_bits < 1 ||
+      opt.lsh_bits > kMaxLshBits) {
+    *error = "LSH tables must be 1.." + std::to_string(kMaxLshTables) + " and bits 1.." +
+             std::to_string(kMaxLshBits);
     return false;
   }
   if (!(opt.grid_cell > 0.0f)) {
@@ -126,7 +130,8 @@ bool build_database(const std::vector<ModelCloud>& models, const BuildOptions& o
       *error = "model '" + models[i].name + "' gives only " + std::to_string(feats[i].count) + " features";
       return false;
     }
-    if (progress != nullptr) progress(static_cast<uint32_t>(i + 1), static_cast<uint32_t>(models.size()), user);
+    if (progress != nullptr)
+      progress(static_cast<uint32_t>(i + 1), static_cast<uint32_t>(models.size()), user);
   }
   const float scale = choose_quant_scale(feats, opt.quant_percentile);
   BlobContent c;
@@ -134,13 +139,14 @@ bool build_database(const std::vector<ModelCloud>& models, const BuildOptions& o
   for (size_t i = 0; i < models.size(); ++i) {
     ModelGrid g = build_model_grid(feats[i].positions, feats[i].count, opt.grid_cell);
     c.models.push_back(make_record(models[i].name, static_cast<uint32_t>(c.feature_models.size()),
-                                   feats[i].count, g, static_cast<uint32_t>(c.grid_offsets.size()), feats[i]));
+                                   feats[i].count, g, static_cast<uint32_t>(c.grid_offsets.size()),
+                                   feats[i]));
     append_model(&c, static_cast<uint16_t>(i), feats[i], g, scale, dims);
     report->features_per_model.push_back(feats[i].count);
   }
   const uint32_t total = static_cast<uint32_t>(c.feature_models.size());
-  LshTables lsh = build_lsh_tables(c.spins, dims, total, opt.lsh_tables, opt.lsh_bits, opt.lsh_range_quantile,
-                                   opt.seed);
+  LshTables lsh =
+      build_lsh_tables(c.spins, dims, total, opt.lsh_tables, opt.lsh_bits, opt.lsh_range_quantile, opt.seed);
   c.lsh_bits = std::move(lsh.bits);
   c.lsh_offsets = std::move(lsh.offsets);
   c.lsh_entries = std::move(lsh.entries);

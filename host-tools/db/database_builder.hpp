@@ -13,27 +13,27 @@ namespace spinhash {
 namespace host {
 
 struct ModelCloud {
-  std::string name;          // <= kMaxModelNameBytes - 1 bytes
-  std::vector<double> xyz;   // model frame, metres
+  std::string name;         // <= kMaxModelNameBytes - 1 bytes
+  std::vector<double> xyz;  // model frame, metres
 };
 
 struct BuildOptions {
-  FeatureParams features;              // spin_quant_scale is chosen from the data
-  uint32_t lsh_tables = 8;             // L
-  uint32_t lsh_bits = 24;              // K
-  float quant_percentile = 0.999f;     // bin value mapped to 255
-  float lsh_range_quantile = 0.999f;   // per-dimension range C_i of the LSH bits (eq. 2's d_c = sum C_i)
-  float grid_cell = 0.6f;              // m, per-model feature grid (= the default Delta_max: 27 cells per lookup)
+  FeatureParams features;             // spin_quant_scale is chosen from the data
+  uint32_t lsh_tables = 8;            // L
+  uint32_t lsh_bits = 24;             // K
+  float quant_percentile = 0.999f;    // bin value mapped to 255
+  float lsh_range_quantile = 0.999f;  // per-dimension range C_i of the LSH bits (eq. 2's d_c = sum C_i)
+  float grid_cell = 0.6f;  // m, per-model feature grid (= the default Delta_max: 27 cells per lookup)
   uint32_t max_points_per_model = 1u << 21;
   uint32_t max_features_per_model = 1u << 14;
-  uint64_t seed = 1;                   // LSH bit sampling
+  uint64_t seed = 1;  // LSH bit sampling
 };
 
 struct BuildReport {
   uint32_t features = 0;
   std::vector<uint32_t> features_per_model;
-  uint32_t max_bucket = 0;  // largest LSH bucket
-  double mean_bucket = 0.0; // mean non-empty bucket size
+  uint32_t max_bucket = 0;   // largest LSH bucket
+  double mean_bucket = 0.0;  // mean non-empty bucket size
 };
 
 // Progress callback: (models done, models total).

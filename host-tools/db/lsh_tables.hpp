@@ -10,11 +10,11 @@ namespace spinhash {
 namespace host {
 
 struct LshTables {
-  std::vector<blob::LshBit> bits;   // tables * bits_per_key
-  std::vector<uint32_t> offsets;    // tables * (buckets + 1)
-  std::vector<uint32_t> entries;    // tables * features
+  std::vector<blob::LshBit> bits;  // tables * bits_per_key
+  std::vector<uint32_t> offsets;   // tables * (buckets + 1)
+  std::vector<uint32_t> entries;   // tables * features
   uint32_t buckets = 0;
-  float d_c = 0.0f;                 // sum of per-dimension ranges
+  float d_c = 0.0f;  // sum of per-dimension ranges
   uint32_t max_bucket = 0;
   double mean_bucket = 0.0;
 };

@@ -17,8 +17,7 @@ constexpr uint64_t kGroundStream = 0x6000;
 Mesh make_ground_patch(double half_size, double z, double bump_height, uint64_t seed) {
   Mesh ground;
   ground.name = "ground";
-  if (!(half_size > 0.0) || !std::isfinite(half_size) || !std::isfinite(z) ||
-      !std::isfinite(bump_height)) {
+  if (!(half_size > 0.0) || !std::isfinite(half_size) || !std::isfinite(z) || !std::isfinite(bump_height)) {
     return ground;
   }
   const double cells_wanted = std::ceil(2.0 * half_size / kGroundCellSize);

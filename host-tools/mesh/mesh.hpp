@@ -24,8 +24,8 @@ struct Box3 {
 
 struct Mesh {
   std::string name;
-  std::vector<float> vertices;     // x y z per vertex
-  std::vector<uint32_t> triangles; // 3 vertex indices per triangle
+  std::vector<float> vertices;      // x y z per vertex
+  std::vector<uint32_t> triangles;  // 3 vertex indices per triangle
 
   std::size_t vertex_count() const { return vertices.size() / 3; }
   std::size_t triangle_count() const { return triangles.size() / 3; }

@@ -1,8 +1,8 @@
 #include "mesh/mesh_loader.hpp"
 
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -18,8 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr unsigned kImportFlags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                  aiProcess_PreTransformVertices |
-                                  aiProcess_ValidateDataStructure;
+                                  aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure;
 constexpr unsigned kTriangleCorners = 3;
 // Total area below this (m^2) means every triangle is degenerate.
 constexpr double kMinSurfaceArea = 1e-12;

@@ -4,10 +4,10 @@
 
 #include <cctype>
 #include <cstdint>
-#include <filesystem>
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 
 namespace spinhash::host {
 namespace {
@@ -40,14 +40,14 @@ std::string obj_text(const Mesh& mesh) {
   std::string text = "# spinhash mesh\no " + header_name(mesh.name) + "\n";
   char line[kLineBufferBytes];
   for (std::size_t i = 0; i < mesh.vertex_count(); ++i) {
-    std::snprintf(line, sizeof line, kObjVertexFormat, mesh.vertices[3 * i],
-                  mesh.vertices[3 * i + 1], mesh.vertices[3 * i + 2]);
+    std::snprintf(line, sizeof line, kObjVertexFormat, mesh.vertices[3 * i], mesh.vertices[3 * i + 1],
+                  mesh.vertices[3 * i + 2]);
     text += line;
   }
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     // OBJ indices are 1-based.
-    std::snprintf(line, sizeof line, "f %u %u %u\n", mesh.triangles[3 * t] + 1,
-                  mesh.triangles[3 * t + 1] + 1, mesh.triangles[3 * t + 2] + 1);
+    std::snprintf(line, sizeof line, "f %u %u %u\n", mesh.triangles[3 * t] + 1, mesh.triangles[3 * t + 1] + 1,
+                  mesh.triangles[3 * t + 2] + 1);
     text += line;
   }
   return text;
@@ -57,7 +57,8 @@ std::string ply_bytes(const Mesh& mesh) {
   std::string bytes = "ply\nformat binary_little_endian 1.0\ncomment spinhash mesh " +
                       header_name(mesh.name) + "\nelement vertex " + std::to_string(mesh.vertex_count()) +
                       "\nproperty float x\nproperty float y\nproperty float z\n"
-                      "element face " + std::to_string(mesh.triangle_count()) +
+                      "element face " +
+                      std::to_string(mesh.triangle_count()) +
                       "\nproperty list uchar uint vertex_indices\nend_header\n";
   for (float v : mesh.vertices) append_float_le(&bytes, v);
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
@@ -68,8 +69,7 @@ std::string ply_bytes(const Mesh& mesh) {
 }
 
 template <typename Encode>
-bool write_encoded(const std::string& path, const Mesh& mesh, Encode encode,
-                   std::string* error) {
+bool write_encoded(const std::string& path, const Mesh& mesh, Encode encode, std::string* error) {
   const std::string problem = mesh.validate();
   if (!problem.empty()) {
     if (error) *error = "cannot write " + path + ": " + problem;

@@ -48,7 +48,9 @@ bool parse_coordinate(const std::string& t, double* out) {
   return end != t.c_str() && *end == '\0' && std::isfinite(*out);
 }
 
-std::string at(const Line& l, const std::string& what) { return "line " + std::to_string(l.number) + ": " + what; }
+std::string at(const Line& l, const std::string& what) {
+  return "line " + std::to_string(l.number) + ": " + what;
+}
 
 // Reads the `count` lines after lines[*i] (a POINTS header) as x y z.
 bool read_points(const std::vector<Line>& lines, size_t* i, uint32_t count, Mesh* out, std::string* error) {
@@ -59,8 +61,8 @@ bool read_points(const std::vector<Line>& lines, size_t* i, uint32_t count, Mesh
     }
     const Line& l = lines[*i];
     double v[3];
-    if (l.tokens.size() < 3 || !parse_coordinate(l.tokens[0], &v[0]) || !parse_coordinate(l.tokens[1], &v[1]) ||
-        !parse_coordinate(l.tokens[2], &v[2])) {
+    if (l.tokens.size() < 3 || !parse_coordinate(l.tokens[0], &v[0]) ||
+        !parse_coordinate(l.tokens[1], &v[1]) || !parse_coordinate(l.tokens[2], &v[2])) {
       *error = at(l, "a point needs three numbers");
       return false;
     }
@@ -80,7 +82,8 @@ bool read_polygons(const std::vector<Line>& lines, size_t* i, uint32_t count, ui
     }
     const Line& l = lines[*i];
     uint32_t n = 0;
-    if (l.tokens.size() < 2 || !parse_uint(l.tokens[1], kMaxPiePolygonVertices, &n) || l.tokens.size() < 2u + n) {
+    if (l.tokens.size() < 2 || !parse_uint(l.tokens[1], kMaxPiePolygonVertices, &n) ||
+        l.tokens.size() < 2u + n) {
       *error = at(l, "bad polygon (flags, vertex count, indices)");
       return false;
     }

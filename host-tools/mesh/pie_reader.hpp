@@ -20,8 +20,8 @@
 namespace spinhash::host {
 
 // Bounds that keep a hostile file from exhausting memory.
-constexpr uint32_t kMaxPiePoints = 1u << 20;       // per level
-constexpr uint32_t kMaxPiePolygons = 1u << 20;     // per level
+constexpr uint32_t kMaxPiePoints = 1u << 20;    // per level
+constexpr uint32_t kMaxPiePolygons = 1u << 20;  // per level
 constexpr uint32_t kMaxPiePolygonVertices = 64;
 constexpr uint64_t kMaxPieFileBytes = 64u << 20;
 

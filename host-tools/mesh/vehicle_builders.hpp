@@ -14,8 +14,7 @@ constexpr uint32_t kWheelSegments = 14;
 
 // A pair of wheels (left and right) on each axle position along x, the outer
 // face inset from the body side.
-void add_wheel_pairs(Mesh* mesh, const VehicleSpec& spec, const std::vector<double>& axle_x,
-                     double inset);
+void add_wheel_pairs(Mesh* mesh, const VehicleSpec& spec, const std::vector<double>& axle_x, double inset);
 // Axle positions evenly spaced by spacing, centred at center_x.
 std::vector<double> axle_group(double center_x, uint32_t count, double spacing);
 

@@ -50,8 +50,8 @@ constexpr double kBedCoverThickness = 0.04;
 // Side profile of the lower body between x_rear and x_front; with a
 // rounded tail the rear is chamfered like a bumper, else it is a flat wall
 // (the front of a pickup bed).
-void add_lower_body(Mesh* mesh, const VehicleSpec& s, double x_rear, double x_front,
-                    double x_bonnet_rear, bool rounded_tail) {
+void add_lower_body(Mesh* mesh, const VehicleSpec& s, double x_rear, double x_front, double x_bonnet_rear,
+                    bool rounded_tail) {
   const double cl = s.ground_clearance;
   const double zb = s.belt_height;
   const double hw = 0.5 * s.width;
@@ -143,8 +143,8 @@ void build_sedan(const VehicleSpec& s, Mesh* mesh) {
   const double rear = -front;
   const double windscreen = front - s.front_length;
   add_lower_body(mesh, s, rear, front, windscreen, true);
-  const Cabin cabin = fit_cabin(
-      {rear + s.rear_length, windscreen, s.height, s.windscreen_run, s.rear_window_run});
+  const Cabin cabin =
+      fit_cabin({rear + s.rear_length, windscreen, s.height, s.windscreen_run, s.rear_window_run});
   add_cabin(mesh, s, cabin);
   add_mirrors(mesh, s, windscreen);
   add_wheel_pairs(mesh, s, car_axles(s), kCarWheelInset);
@@ -161,16 +161,16 @@ void build_van(const VehicleSpec& s, Mesh* mesh) {
   const double rear = -front;
   const double windscreen = front - s.front_length;
   add_lower_body(mesh, s, rear, front, windscreen, true);
-  const Cabin cabin = fit_cabin(
-      {rear + kTailSetback, windscreen, s.height, s.windscreen_run, s.rear_window_run});
+  const Cabin cabin =
+      fit_cabin({rear + kTailSetback, windscreen, s.height, s.windscreen_run, s.rear_window_run});
   add_cabin(mesh, s, cabin);
   add_mirrors(mesh, s, windscreen);
   add_wheel_pairs(mesh, s, car_axles(s), kCarWheelInset);
   if (s.roof_rack) add_roof_rack(mesh, s, cabin);
   if (s.spare_wheel) {
     const double x = rear + kTailSetback - kSpareWheelGap - 0.5 * s.wheel_width;
-    add_cylinder(mesh, {x, 0.0, s.belt_height + kSpareWheelLift - s.wheel_radius}, Axis::kX,
-                 s.wheel_radius, s.wheel_width, kWheelSegments);
+    add_cylinder(mesh, {x, 0.0, s.belt_height + kSpareWheelLift - s.wheel_radius}, Axis::kX, s.wheel_radius,
+                 s.wheel_width, kWheelSegments);
   }
 }
 
@@ -180,8 +180,7 @@ void build_pickup(const VehicleSpec& s, Mesh* mesh) {
   const double windscreen = front - s.front_length;
   const double bed_front = windscreen - s.cabin_length;
   add_lower_body(mesh, s, bed_front, front, windscreen, false);
-  const Cabin cabin =
-      fit_cabin({bed_front, windscreen, s.height, s.windscreen_run, s.rear_window_run});
+  const Cabin cabin = fit_cabin({bed_front, windscreen, s.height, s.windscreen_run, s.rear_window_run});
   add_cabin(mesh, s, cabin);
   add_mirrors(mesh, s, windscreen);
   add_wheel_pairs(mesh, s, car_axles(s), kCarWheelInset);
@@ -198,11 +197,9 @@ void build_pickup(const VehicleSpec& s, Mesh* mesh) {
     add_box(mesh, {rear, std::min(y_outer, y_inner), floor_top - kOverlap},
             {bed_end, std::max(y_outer, y_inner), s.belt_height});
   }
-  add_box(mesh, {rear, -hw, s.ground_clearance + kBumperHeight},
-          {rear + kBedWall, hw, s.belt_height});
+  add_box(mesh, {rear, -hw, s.ground_clearance + kBumperHeight}, {rear + kBedWall, hw, s.belt_height});
   if (s.bed_cover) {
-    add_box(mesh, {rear, -hw, s.belt_height - kOverlap},
-            {bed_end, hw, s.belt_height + kBedCoverThickness});
+    add_box(mesh, {rear, -hw, s.belt_height - kOverlap}, {bed_end, hw, s.belt_height + kBedCoverThickness});
   }
 }
 

@@ -9,20 +9,19 @@
 namespace spinhash::host {
 namespace {
 
-constexpr const char* kFamilyNames[kFamilyCount] = {"sedan",   "van", "truck", "tracked",
+constexpr const char* kFamilyNames[kFamilyCount] = {"sedan",  "van", "truck", "tracked",
                                                     "pickup", "bus", "apc"};
 
 }  // namespace
 
 namespace vehicle {
 
-void add_wheel_pairs(Mesh* mesh, const VehicleSpec& spec, const std::vector<double>& axle_x,
-                     double inset) {
+void add_wheel_pairs(Mesh* mesh, const VehicleSpec& spec, const std::vector<double>& axle_x, double inset) {
   const double y = 0.5 * spec.width - 0.5 * spec.wheel_width - inset;
   for (double x : axle_x) {
     for (double side : {-1.0, 1.0}) {
-      add_cylinder(mesh, {x, side * y, spec.wheel_radius}, Axis::kY, spec.wheel_radius,
-                   spec.wheel_width, kWheelSegments);
+      add_cylinder(mesh, {x, side * y, spec.wheel_radius}, Axis::kY, spec.wheel_radius, spec.wheel_width,
+                   kWheelSegments);
     }
   }
 }

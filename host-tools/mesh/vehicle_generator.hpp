@@ -34,36 +34,36 @@ struct VehicleSpec {
   uint32_t index = 0;
   std::string name;  // family-index, e.g. "sedan-03"
 
-  double length = 4.5;            // bumper to bumper (hull for tracked)
-  double width = 1.8;             // body width
-  double height = 1.45;           // roof (or turret top) above ground
-  double ground_clearance = 0.16; // hull underside above ground
-  double belt_height = 0.85;      // top of the lower body (bonnet level)
+  double length = 4.5;             // bumper to bumper (hull for tracked)
+  double width = 1.8;              // body width
+  double height = 1.45;            // roof (or turret top) above ground
+  double ground_clearance = 0.16;  // hull underside above ground
+  double belt_height = 0.85;       // top of the lower body (bonnet level)
 
-  double front_length = 1.2;      // bonnet, truck cab, or glacis run
-  double rear_length = 0.9;       // boot, pickup/truck bed or cargo box
-  double cabin_length = 2.0;      // pickup cab; truck cargo box height uses rear_height
-  double windscreen_run = 0.7;    // horizontal run of the sloped windscreen
-  double rear_window_run = 0.5;   // horizontal run of the rear window
-  double tumblehome = 0.15;       // roof narrower than the body, per side
-  double rear_height = 2.6;       // truck cargo box top / tracked engine deck
+  double front_length = 1.2;     // bonnet, truck cab, or glacis run
+  double rear_length = 0.9;      // boot, pickup/truck bed or cargo box
+  double cabin_length = 2.0;     // pickup cab; truck cargo box height uses rear_height
+  double windscreen_run = 0.7;   // horizontal run of the sloped windscreen
+  double rear_window_run = 0.5;  // horizontal run of the rear window
+  double tumblehome = 0.15;      // roof narrower than the body, per side
+  double rear_height = 2.6;      // truck cargo box top / tracked engine deck
 
   double wheel_radius = 0.31;
   double wheel_width = 0.21;
-  uint32_t axles = 2;             // 0 for tracked vehicles
-  double axle_spacing = 2.7;      // wheelbase (2 axles) or spacing of adjacent axles
-  double axle_shift = 0.0;        // wheel set offset along x from the centre
-  double track_width = 0.55;      // tracked: width of each track
+  uint32_t axles = 2;         // 0 for tracked vehicles
+  double axle_spacing = 2.7;  // wheelbase (2 axles) or spacing of adjacent axles
+  double axle_shift = 0.0;    // wheel set offset along x from the centre
+  double track_width = 0.55;  // tracked: width of each track
 
   bool hatchback = false;
   bool roof_rack = false;
   bool spoiler = false;
   bool spare_wheel = false;
-  bool flatbed = false;           // truck: flatbed instead of a cargo box
-  bool bed_cover = false;         // pickup: closed tonneau cover
+  bool flatbed = false;    // truck: flatbed instead of a cargo box
+  bool bed_cover = false;  // pickup: closed tonneau cover
   bool turret = false;
   bool barrel = false;
-  double turret_x = 0.0;          // turret centre along x
+  double turret_x = 0.0;  // turret centre along x
   double turret_length = 2.6;
   double turret_width = 2.2;
   double turret_height = 0.75;
@@ -86,7 +86,6 @@ std::vector<Mesh> generate_fleet(uint32_t count, uint64_t seed);
 // Flat square ground of side 2*half_size at height z (normal up), meshed on
 // a grid; with bump_height > 0 every grid vertex is raised or lowered by up
 // to that much (deterministic from seed). A bad size gives an empty mesh.
-Mesh make_ground_patch(double half_size, double z, double bump_height = 0.0,
-                       uint64_t seed = 0);
+Mesh make_ground_patch(double half_size, double z, double bump_height = 0.0, uint64_t seed = 0);
 
 }  // namespace spinhash::host

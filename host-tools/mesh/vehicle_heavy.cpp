@@ -15,7 +15,7 @@ constexpr double kRoofNarrowing = 0.05;
 // Truck (m).
 constexpr double kTruckWheelInset = 0.02;
 constexpr double kTruckRearOverhang = 1.30;
-constexpr double kFrontAxleInCab = 0.55;   // fraction of the cab length
+constexpr double kFrontAxleInCab = 0.55;  // fraction of the cab length
 constexpr double kChassisHalfWidth = 0.55;
 constexpr double kChassisDepth = 0.30;
 constexpr double kDeckAboveWheels = 0.12;
@@ -39,10 +39,10 @@ constexpr double kAcUnitHeight = 0.25;
 
 // Tracked vehicle (m).
 constexpr double kTrackLengthFraction = 0.96;
-constexpr double kTrackAboveHull = 0.50;      // track top above hull underside
-constexpr double kTrackEndRun = 0.45;         // bottom run ends short of the idlers
+constexpr double kTrackAboveHull = 0.50;  // track top above hull underside
+constexpr double kTrackEndRun = 0.45;     // bottom run ends short of the idlers
 constexpr double kTrackTopSetback = 0.25;
-constexpr double kTrackMidFraction = 0.55;    // height of the idler/sprocket corner
+constexpr double kTrackMidFraction = 0.55;  // height of the idler/sprocket corner
 constexpr double kLowerHullRearInset = 0.30;
 constexpr double kLowerGlacisRun = 0.60;
 constexpr double kHullTopNarrowing = 0.10;
@@ -50,12 +50,12 @@ constexpr double kHullRearSetback = 0.10;
 constexpr double kTurretTopScale = 0.85;
 constexpr double kBarrelRadius = 0.08;
 constexpr uint32_t kBarrelSegments = 10;
-constexpr double kBarrelInTurret = 0.30;       // breech length hidden in the turret
+constexpr double kBarrelInTurret = 0.30;  // breech length hidden in the turret
 constexpr double kMantletLength = 0.35;
 constexpr double kMantletHalfWidth = 0.35;
 constexpr double kMantletHalfHeight = 0.22;
 constexpr double kSuperstructureInset = 0.45;
-constexpr double kSuperstructureReach = 1.0;   // ahead of turret_x
+constexpr double kSuperstructureReach = 1.0;  // ahead of turret_x
 constexpr double kEngineDeckLength = 1.2;
 constexpr double kEngineDeckInset = 0.70;
 constexpr double kEngineDeckHeight = 0.12;
@@ -74,8 +74,7 @@ constexpr double kDoorThickness = 0.06;
 constexpr double kDoorBottomLift = 0.40;
 constexpr double kDoorTopDrop = 0.30;
 
-void add_turret(Mesh* mesh, const VehicleSpec& s, double z_hull_top, double top_scale,
-                double barrel_radius) {
+void add_turret(Mesh* mesh, const VehicleSpec& s, double z_hull_top, double top_scale, double barrel_radius) {
   const double z1 = z_hull_top + s.turret_height;
   add_plan_frustum(mesh, hexagon_plan(s.turret_length, s.turret_width), {s.turret_x, 0.0},
                    z_hull_top - kOverlap, z1, top_scale);
@@ -85,8 +84,7 @@ void add_turret(Mesh* mesh, const VehicleSpec& s, double z_hull_top, double top_
   add_box(mesh, {x_front - kMantletLength, -kMantletHalfWidth, z_axis - kMantletHalfHeight},
           {x_front + kOverlap, kMantletHalfWidth, z_axis + kMantletHalfHeight});
   const double x_mid = x_front - kBarrelInTurret + 0.5 * s.barrel_length;
-  add_cylinder(mesh, {x_mid, 0.0, z_axis}, Axis::kX, barrel_radius, s.barrel_length,
-               kBarrelSegments);
+  add_cylinder(mesh, {x_mid, 0.0, z_axis}, Axis::kX, barrel_radius, s.barrel_length, kBarrelSegments);
 }
 
 }  // namespace
@@ -127,11 +125,11 @@ void build_truck(const VehicleSpec& s, Mesh* mesh) {
 
   // Fuel tank (right) and, optionally, a spare wheel (left) between the axles.
   const double x_between = 0.5 * (front_axle + rear_center + 0.5 * (rear_axles - 1) * s.axle_spacing);
-  add_cylinder(mesh, {x_between, -(hw - kFuelTankInset), cl + kFuelTankRadius}, Axis::kX,
-               kFuelTankRadius, kFuelTankLength, kTankSegments);
+  add_cylinder(mesh, {x_between, -(hw - kFuelTankInset), cl + kFuelTankRadius}, Axis::kX, kFuelTankRadius,
+               kFuelTankLength, kTankSegments);
   if (s.spare_wheel) {
-    add_cylinder(mesh, {x_between, hw - kFuelTankInset, cl + s.wheel_radius}, Axis::kY,
-                 s.wheel_radius, s.wheel_width, kWheelSegments);
+    add_cylinder(mesh, {x_between, hw - kFuelTankInset, cl + s.wheel_radius}, Axis::kY, s.wheel_radius,
+                 s.wheel_width, kWheelSegments);
   }
 }
 
@@ -188,8 +186,7 @@ void build_tracked(const VehicleSpec& s, Mesh* mesh) {
                            {front - s.front_length, top, hw_top},
                            {rear + kHullRearSetback, top, hw_top}});
   add_box(mesh, {rear + kHullRearSetback, -(hw - kEngineDeckInset), top - kOverlap},
-          {rear + kHullRearSetback + kEngineDeckLength, hw - kEngineDeckInset,
-           top + kEngineDeckHeight});
+          {rear + kHullRearSetback + kEngineDeckLength, hw - kEngineDeckInset, top + kEngineDeckHeight});
   if (s.turret) {
     add_turret(mesh, s, top, kTurretTopScale, kBarrelRadius);
   } else {

@@ -48,8 +48,7 @@ void add_loft(Mesh* mesh, const std::vector<Eigen::Vector3d>& ring_a,
 
 void add_box(Mesh* mesh, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
   const std::vector<Eigen::Vector3d> bottom = {
-      {lo.x(), lo.y(), lo.z()}, {hi.x(), lo.y(), lo.z()},
-      {hi.x(), hi.y(), lo.z()}, {lo.x(), hi.y(), lo.z()}};
+      {lo.x(), lo.y(), lo.z()}, {hi.x(), lo.y(), lo.z()}, {hi.x(), hi.y(), lo.z()}, {lo.x(), hi.y(), lo.z()}};
   std::vector<Eigen::Vector3d> top = bottom;
   for (auto& p : top) p.z() = hi.z();
   add_loft(mesh, bottom, top);
@@ -65,8 +64,8 @@ void add_profile_prism(Mesh* mesh, const std::vector<ProfilePoint>& profile, dou
   add_loft(mesh, left, right);
 }
 
-void add_cylinder(Mesh* mesh, const Eigen::Vector3d& center, Axis axis, double radius,
-                  double length, uint32_t segments) {
+void add_cylinder(Mesh* mesh, const Eigen::Vector3d& center, Axis axis, double radius, double length,
+                  uint32_t segments) {
   if (segments < kMinCylinderSegments) segments = kMinCylinderSegments;
   // (u, v, w): two directions across the axis and the axis itself.
   const int w = axis == Axis::kX ? 0 : (axis == Axis::kY ? 1 : 2);
@@ -87,8 +86,8 @@ void add_cylinder(Mesh* mesh, const Eigen::Vector3d& center, Axis axis, double r
   add_loft(mesh, ring_a, ring_b);
 }
 
-void add_plan_frustum(Mesh* mesh, const std::vector<Eigen::Vector2d>& plan,
-                      const Eigen::Vector2d& center_xy, double z0, double z1, double top_scale) {
+void add_plan_frustum(Mesh* mesh, const std::vector<Eigen::Vector2d>& plan, const Eigen::Vector2d& center_xy,
+                      double z0, double z1, double top_scale) {
   std::vector<Eigen::Vector3d> bottom;
   std::vector<Eigen::Vector3d> top;
   for (const Eigen::Vector2d& q : plan) {

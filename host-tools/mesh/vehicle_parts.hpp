@@ -33,17 +33,16 @@ struct ProfilePoint {
 
 // Prism symmetric about y = y_center whose cross-section in x-z is the convex
 // polygon `profile` (counter-clockwise seen from +y, i.e. x right, z up).
-void add_profile_prism(Mesh* mesh, const std::vector<ProfilePoint>& profile,
-                       double y_center = 0.0);
+void add_profile_prism(Mesh* mesh, const std::vector<ProfilePoint>& profile, double y_center = 0.0);
 
 // Closed cylinder (regular polygon of `segments` sides) centred at `center`.
-void add_cylinder(Mesh* mesh, const Eigen::Vector3d& center, Axis axis, double radius,
-                  double length, uint32_t segments);
+void add_cylinder(Mesh* mesh, const Eigen::Vector3d& center, Axis axis, double radius, double length,
+                  uint32_t segments);
 
 // Upright frustum with a convex plan polygon (x, y relative to center_xy,
 // counter-clockwise from above) from z0 to z1, the top scaled by top_scale.
-void add_plan_frustum(Mesh* mesh, const std::vector<Eigen::Vector2d>& plan,
-                      const Eigen::Vector2d& center_xy, double z0, double z1, double top_scale);
+void add_plan_frustum(Mesh* mesh, const std::vector<Eigen::Vector2d>& plan, const Eigen::Vector2d& center_xy,
+                      double z0, double z1, double top_scale);
 
 // Regular hexagonal plan with the given length (x) and width (y): the
 // corners at +-x are cut so it reads as a turret.

@@ -10,7 +10,9 @@
 namespace spinhash::pipeline {
 namespace {
 
-void report_progress(uint32_t done, uint32_t /*total*/, void* user) { static_cast<Progress*>(user)->tick(done); }
+void report_progress(uint32_t done, uint32_t /*total*/, void* user) {
+  static_cast<Progress*>(user)->tick(done);
+}
 
 }  // namespace
 
@@ -21,31 +23,38 @@ void add_build_flags(CLI::App* cmd, BuildSettings* s) {
       ->check(CLI::Range(1u, kMaxSpinBinsPerAxis))
       ->each([f_ptr = &f](const std::string&) { f_ptr->bins_beta = f_ptr->bins_alpha; })
       ->capture_default_str();
-  cmd->add_option("--support-angle", f.support_angle_deg, "support angle, degrees (>= 180: off)")->capture_default_str();
+  cmd->add_option("--support-angle", f.support_angle_deg, "support angle, degrees (>= 180: off)")
+      ->capture_default_str();
   cmd->add_option("--voxel", f.cloud_voxel, "density-equalising voxel, m")->capture_default_str();
   cmd->add_option("--normal-radius", f.normal_radius, "PCA normal radius, m")->capture_default_str();
   cmd->add_option("--basis-spacing", f.basis_spacing, "basis point spacing, m")->capture_default_str();
   cmd->add_option("--lsh-tables", s->options.lsh_tables, "L, LSH tables")
-      ->check(CLI::Range(1u, kMaxLshTables))->capture_default_str();
+      ->check(CLI::Range(1u, kMaxLshTables))
+      ->capture_default_str();
   cmd->add_option("--lsh-bits", s->options.lsh_bits, "K, bits per LSH key")
-      ->check(CLI::Range(1u, kMaxLshBits))->capture_default_str();
+      ->check(CLI::Range(1u, kMaxLshBits))
+      ->capture_default_str();
   cmd->add_option("--grid-cell", s->options.grid_cell, "cell of the per-model feature grids, m")
-      ->check(CLI::Range(0.05, 10.0))->capture_default_str();
-  cmd->add_option("--lsh-range-quantile", s->options.lsh_range_quantile, "quantile of each dimension used as its LSH range C_i")
-      ->check(CLI::Range(0.5, 1.0))->capture_default_str();
+      ->check(CLI::Range(0.05, 10.0))
+      ->capture_default_str();
+  cmd->add_option("--lsh-range-quantile", s->options.lsh_range_quantile,
+                  "quantile of each dimension used as its LSH range C_i")
+      ->check(CLI::Range(0.5, 1.0))
+      ->capture_default_str();
   cmd->add_option("--seed", s->options.seed, "LSH sampling seed")->capture_default_str();
   cmd->add_option("--scan-spacing", s->scan_spacing, "model scan ray spacing at the object, m")
-      ->check(CLI::Range(0.005, 1.0))->capture_default_str();
+      ->check(CLI::Range(0.005, 1.0))
+      ->capture_default_str();
   std::map<std::string, host::ByteOrder> orders{{"native", host::ByteOrder::kNative},
-                                               {"little", host::ByteOrder::kLittle},
-                                               {"big", host::ByteOrder::kBig}};
+                                                {"little", host::ByteOrder::kLittle},
+                                                {"big", host::ByteOrder::kBig}};
   cmd->add_option("--byte-order", s->byte_order, "byte order of the target that reads the blob")
       ->transform(CLI::CheckedTransformer(orders, CLI::ignore_case));
   cmd->add_flag("--quiet", s->quiet, "no progress on stderr");
 }
 
-bool build_database_file(const std::vector<ModelMesh>& meshes, const BuildSettings& s, const std::string& out_path,
-                         BuildSummary* summary, std::string* error) {
+bool build_database_file(const std::vector<ModelMesh>& meshes, const BuildSettings& s,
+                         const std::string& out_path, BuildSummary* summary, std::string* error) {
   auto start = std::chrono::steady_clock::now();
   std::vector<host::ModelCloud> clouds;
   if (!scan_models(meshes, s.scan_spacing, &clouds, error, s.quiet)) return false;

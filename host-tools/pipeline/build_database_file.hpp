@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "blob/byte_order.hpp"
-#include "pipeline/model_sources.hpp"
 #include "db/database_builder.hpp"
+#include "pipeline/model_sources.hpp"
 
 namespace spinhash::pipeline {
 
@@ -29,7 +29,7 @@ struct BuildSummary {
   host::BuildReport report;
 };
 
-bool build_database_file(const std::vector<ModelMesh>& meshes, const BuildSettings& s, const std::string& out_path,
-                         BuildSummary* summary, std::string* error);
+bool build_database_file(const std::vector<ModelMesh>& meshes, const BuildSettings& s,
+                         const std::string& out_path, BuildSummary* summary, std::string* error);
 
 }  // namespace spinhash::pipeline

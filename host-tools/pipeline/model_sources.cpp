@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <set>
 
-#include "pipeline/progress.hpp"
 #include "mesh/mesh_loader.hpp"
+#include "pipeline/progress.hpp"
 #include "scan/scan_simulator.hpp"
 #include "spinhash/limits.hpp"
 

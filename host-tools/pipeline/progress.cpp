@@ -8,8 +8,11 @@ constexpr std::chrono::milliseconds kProgressInterval(2000);
 }
 
 Progress::Progress(std::string stage, uint32_t total, bool quiet)
-    : stage_(std::move(stage)), total_(total), quiet_(quiet),
-      start_(std::chrono::steady_clock::now()), last_(start_) {}
+    : stage_(std::move(stage)),
+      total_(total),
+      quiet_(quiet),
+      start_(std::chrono::steady_clock::now()),
+      last_(start_) {}
 
 void Progress::tick(uint32_t done) {
   auto now = std::chrono::steady_clock::now();

@@ -30,7 +30,9 @@ void add_BOOL(CLI::App* cmd, bool* v, int, int, const char* flag, const char* he
 }
 template <typename T, typename L, typename H>
 void add_number(CLI::App* cmd, T* v, L lo, H hi, const char* flag, const char* help) {
-  cmd->add_option(flag, *v, help)->check(CLI::Range(static_cast<T>(lo), static_cast<T>(hi)))->capture_default_str();
+  cmd->add_option(flag, *v, help)
+      ->check(CLI::Range(static_cast<T>(lo), static_cast<T>(hi)))
+      ->capture_default_str();
 }
 template <typename L, typename H>
 void add_U32(CLI::App* cmd, uint32_t* v, L lo, H hi, const char* flag, const char* help) {

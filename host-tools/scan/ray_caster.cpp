@@ -57,18 +57,16 @@ bool RayCaster::add_mesh(const Mesh& mesh, const Eigen::Vector3d& origin, std::s
   if (committed_) return fail(error, "ray caster: add_mesh after commit");
   const std::string problem = mesh.validate();
   if (!problem.empty()) return fail(error, "ray caster: " + problem);
-  const uint32_t id = geometries_++;  // counted even when empty: ids = call order
+  const uint32_t id = geometries_++;            // counted even when empty: ids = call order
   if (mesh.triangle_count() == 0) return true;  // nothing to hit
 
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
   if (geometry == nullptr) return fail(error, "cannot create an Embree geometry");
   // rtcSetNewGeometryBuffer pads the buffer as Embree's SIMD loads need.
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-      mesh.vertex_count()));
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertex_count()));
   auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t),
-      mesh.triangle_count()));
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), mesh.triangle_count()));
   if (vertices == nullptr || indices == nullptr) {
     rtcReleaseGeometry(geometry);
     return fail(error, "Embree cannot allocate the mesh buffers");
@@ -95,8 +93,7 @@ bool RayCaster::commit(std::string* error) {
   return true;
 }
 
-bool RayCaster::cast(const std::vector<Ray>& rays, std::vector<RayHit>* hits,
-                     std::string* error) const {
+bool RayCaster::cast(const std::vector<Ray>& rays, std::vector<RayHit>* hits, std::string* error) const {
   if (!committed_) return fail(error, "ray caster: cast before commit");
   if (hits == nullptr) return fail(error, "ray caster: null output");
   hits->assign(rays.size(), RayHit{});
@@ -106,8 +103,7 @@ bool RayCaster::cast(const std::vector<Ray>& rays, std::vector<RayHit>* hits,
   for (std::size_t start = 0; start < rays.size(); start += kRayBatch) {
     const std::size_t count = std::min(kRayBatch, rays.size() - start);
     for (std::size_t i = 0; i < count; ++i) batch[i] = to_embree(rays[start + i]);
-    rtcIntersect1M(scene_, &context, batch.data(), static_cast<unsigned>(count),
-                   sizeof(RTCRayHit));
+    rtcIntersect1M(scene_, &context, batch.data(), static_cast<unsigned>(count), sizeof(RTCRayHit));
     for (std::size_t i = 0; i < count; ++i) {
       if (batch[i].hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
       (*hits)[start + i].distance = batch[i].ray.tfar;

@@ -34,10 +34,10 @@ Eigen::Matrix4d draw_pose(const ScanOptions& o) {
   const double tilt = o.random_tilt ? kMaxTiltDeg * kDegToRad : 0.0;
   const double roll = rng.uniform(-tilt, tilt);
   const double pitch = rng.uniform(-tilt, tilt);
-  const Eigen::Matrix3d r = (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
-                             Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
-                             Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
-                                .toRotationMatrix();
+  const Eigen::Matrix3d r =
+      (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+       Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+          .toRotationMatrix();
   pose.topLeftCorner<3, 3>() = r;
   for (int k = 0; k < 3; ++k) {
     pose(k, 3) = rng.uniform(-kPoseTranslationRange, kPoseTranslationRange);
@@ -55,8 +55,8 @@ struct View {
 
 View make_view(double azimuth, double elevation, double distance) {
   View v;
-  const Eigen::Vector3d out(std::cos(elevation) * std::cos(azimuth),
-                            std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
+  const Eigen::Vector3d out(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                            std::sin(elevation));
   v.origin = distance * out;
   v.forward = -out;
   v.right = v.forward.cross(Eigen::Vector3d::UnitZ());
@@ -71,10 +71,10 @@ View make_view(double azimuth, double elevation, double distance) {
 struct ScanContext {
   const ScanOptions* options = nullptr;
   RayCaster caster;
-  double distance = 0.0;     // sensor to object centre
-  double half_angle = 0.0;   // of the ray grid
-  double step = 0.0;         // angle between neighbouring rays
-  uint64_t grid = 0;         // rays per grid row and column
+  double distance = 0.0;    // sensor to object centre
+  double half_angle = 0.0;  // of the ray grid
+  double step = 0.0;        // angle between neighbouring rays
+  uint64_t grid = 0;        // rays per grid row and column
   SeededRandom noise{0};
 };
 
@@ -87,9 +87,8 @@ bool scan_view(ScanContext* ctx, const View& view, ScanResult* out) {
     const double b = -ctx->half_angle + j * ctx->step;
     for (uint64_t i = 0; i < ctx->grid; ++i) {
       const double a = -ctx->half_angle + i * ctx->step;
-      const Eigen::Vector3d d = std::cos(b) * (std::cos(a) * view.forward +
-                                               std::sin(a) * view.right) +
-                                std::sin(b) * view.up;
+      const Eigen::Vector3d d =
+          std::cos(b) * (std::cos(a) * view.forward + std::sin(a) * view.right) + std::sin(b) * view.up;
       rays[i] = {view.origin.cast<float>(), d.cast<float>()};
     }
     if (!ctx->caster.cast(rays, &hits, &out->error)) return false;
@@ -118,9 +117,8 @@ bool plan_grid(ScanContext* ctx, double radius, std::string* error) {
   const double per_side = std::floor(2.0 * ctx->half_angle / ctx->step) + 1.0;
   const double per_view = per_side * per_side;
   if (per_view > double(kMaxRaysPerView) || per_view * o.views > double(kMaxRaysPerScan)) {
-    *error = "point spacing " + std::to_string(o.point_spacing) +
-             " m is too fine for an object of radius " + std::to_string(radius) +
-             " m: " + std::to_string(per_view) +
+    *error = "point spacing " + std::to_string(o.point_spacing) + " m is too fine for an object of radius " +
+             std::to_string(radius) + " m: " + std::to_string(per_view) +
              " rays per view (limits: " + std::to_string(kMaxRaysPerView) + " per view, " +
              std::to_string(kMaxRaysPerScan) + " per scan)";
     return false;

@@ -55,12 +55,12 @@ struct ScanOptions {
 };
 
 struct ScanResult {
-  std::vector<double> xyz;              // x y z per point, output frame
-  std::vector<uint8_t> on_object;       // per point: 1 object, 0 ground
-  std::vector<uint32_t> view_points;    // points kept from each view
+  std::vector<double> xyz;                                  // x y z per point, output frame
+  std::vector<uint8_t> on_object;                           // per point: 1 object, 0 ground
+  std::vector<uint32_t> view_points;                        // points kept from each view
   Eigen::Matrix4d true_pose = Eigen::Matrix4d::Identity();  // model -> output frame
   std::vector<Eigen::Vector3d> viewpoints;                  // sensor positions, output frame
-  std::string error;                    // empty on success
+  std::string error;                                        // empty on success
   bool ok() const { return error.empty(); }
   std::size_t size() const { return xyz.size() / 3; }
 };

@@ -18,26 +18,26 @@ constexpr uint32_t kSectionAlignment = 64;
 struct Header {
   char magic[8];
   uint32_t version;
-  uint32_t byte_order;           // kByteOrderMark in the writer's order
-  uint64_t total_size;           // bytes, the whole blob
-  uint64_t config_fingerprint;   // FNV-1a 64 of the Params section bytes
-  uint32_t section_count;        // <= kMaxSections
-  uint32_t header_crc;           // CRC-32C of header (this field as 0) + section table
-  uint8_t reserved[24];          // zero
+  uint32_t byte_order;          // kByteOrderMark in the writer's order
+  uint64_t total_size;          // bytes, the whole blob
+  uint64_t config_fingerprint;  // FNV-1a 64 of the Params section bytes
+  uint32_t section_count;       // <= kMaxSections
+  uint32_t header_crc;          // CRC-32C of header (this field as 0) + section table
+  uint8_t reserved[24];         // zero
 };
 static_assert(sizeof(Header) == 64, "header is 64 bytes");
 
 enum SectionId : uint32_t {
-  kParams = 1,        // Params, one
-  kModels = 2,        // ModelRecord[model_count]
-  kFeatPositions = 3, // float[3 * feature_count], model frame, metres
-  kFeatNormals = 4,   // int16[3 * feature_count], unit normal * 32767
-  kFeatModels = 5,    // uint16[feature_count], model index of each feature
-  kFeatSpins = 6,     // uint8[spin_dims * feature_count], quantised spin images
-  kGridOffsets = 7,   // uint32[grid_offset_count], per-model CSR cell offsets
-  kLshBits = 8,       // LshBit[lsh_tables * lsh_bits]
-  kLshOffsets = 9,    // uint32[lsh_tables * (lsh_buckets + 1)], CSR per table
-  kLshEntries = 10,   // uint32[lsh_tables * feature_count], feature indices
+  kParams = 1,         // Params, one
+  kModels = 2,         // ModelRecord[model_count]
+  kFeatPositions = 3,  // float[3 * feature_count], model frame, metres
+  kFeatNormals = 4,    // int16[3 * feature_count], unit normal * 32767
+  kFeatModels = 5,     // uint16[feature_count], model index of each feature
+  kFeatSpins = 6,      // uint8[spin_dims * feature_count], quantised spin images
+  kGridOffsets = 7,    // uint32[grid_offset_count], per-model CSR cell offsets
+  kLshBits = 8,        // LshBit[lsh_tables * lsh_bits]
+  kLshOffsets = 9,     // uint32[lsh_tables * (lsh_buckets + 1)], CSR per table
+  kLshEntries = 10,    // uint32[lsh_tables * feature_count], feature indices
 };
 constexpr uint32_t kSectionIdCount = 10;
 
@@ -58,19 +58,19 @@ struct Params {
   uint32_t feature_count;
   uint32_t bins_alpha;
   uint32_t bins_beta;
-  uint32_t lsh_tables;        // L
-  uint32_t lsh_bits;          // K
-  uint32_t lsh_buckets;       // buckets per table, a power of two
-  uint32_t grid_offset_count; // entries of kGridOffsets
+  uint32_t lsh_tables;         // L
+  uint32_t lsh_bits;           // K
+  uint32_t lsh_buckets;        // buckets per table, a power of two
+  uint32_t grid_offset_count;  // entries of kGridOffsets
   float cloud_voxel;
   float normal_radius;
-  float basis_spacing;        // spacing used for the model features
+  float basis_spacing;  // spacing used for the model features
   float support_radius;
   float support_angle_deg;
   float spin_quant_scale;
-  float lsh_dc;               // d_c of eq. 2: sum of per-dimension ranges, quantised units
-  float grid_cell;            // m, cell edge of every model's feature grid
-  uint8_t reserved[64];       // zero
+  float lsh_dc;          // d_c of eq. 2: sum of per-dimension ranges, quantised units
+  float grid_cell;       // m, cell edge of every model's feature grid
+  uint8_t reserved[64];  // zero
 };
 static_assert(sizeof(Params) == 128, "params are 128 bytes");
 
@@ -80,13 +80,13 @@ struct ModelRecord {
   char name[kMaxModelNameBytes];  // NUL-terminated, rest zero
   uint32_t first_feature;
   uint32_t feature_count;
-  uint32_t grid_dims[3];          // cells along x, y, z (each >= 1)
-  uint32_t grid_offset_base;      // index into kGridOffsets; cells+1 entries,
-                                  // values relative to first_feature, last == feature_count
-  float grid_origin[3];           // m, model frame, min corner of cell (0,0,0)
-  float bbox_min[3];              // m, of the model cloud
+  uint32_t grid_dims[3];      // cells along x, y, z (each >= 1)
+  uint32_t grid_offset_base;  // index into kGridOffsets; cells+1 entries,
+                              // values relative to first_feature, last == feature_count
+  float grid_origin[3];       // m, model frame, min corner of cell (0,0,0)
+  float bbox_min[3];          // m, of the model cloud
   float bbox_max[3];
-  uint8_t reserved[20];           // zero (pads the record to 128 bytes)
+  uint8_t reserved[20];  // zero (pads the record to 128 bytes)
 };
 static_assert(sizeof(ModelRecord) == 128, "model record is 128 bytes");
 
@@ -111,8 +111,7 @@ inline uint64_t mix64(uint64_t x) {  // splitmix64 finaliser
   return x;
 }
 inline uint32_t bucket_of(uint64_t key, uint32_t table, uint32_t buckets) {
-  return static_cast<uint32_t>(mix64(key ^ (static_cast<uint64_t>(table + 1) * kTableSalt)) &
-                               (buckets - 1u));
+  return static_cast<uint32_t>(mix64(key ^ (static_cast<uint64_t>(table + 1) * kTableSalt)) & (buckets - 1u));
 }
 
 }  // namespace blob

@@ -15,7 +15,8 @@ struct FeatureParams {
   uint32_t bins_alpha = 10;         // radial bins (paper: 10x10)
   uint32_t bins_beta = 10;          // elevation bins, beta in [-R, R)
   float support_angle_deg = 60.0f;  // neighbours whose normal differs more are ignored; >= 180 disables
-  float spin_quant_scale = 1000.0f; // quantised bin = min(255, round(value * scale)), value normalised to sum 1
+  float spin_quant_scale =
+      1000.0f;  // quantised bin = min(255, round(value * scale)), value normalised to sum 1
 };
 
 inline uint32_t spin_dims(const FeatureParams& p) { return p.bins_alpha * p.bins_beta; }  // d
@@ -30,7 +31,7 @@ enum class Mode : uint8_t {
 // thresholds and budgets. Defaults are the paper's setting where it gives one.
 struct RecognizerConfig {
   Mode mode = Mode::kBran;
-  uint64_t seed = 1;                 // deterministic sampling
+  uint64_t seed = 1;  // deterministic sampling
 
   // Capacities: inputs above them are refused (points) or thinned (features).
   uint32_t max_points = 32768;       // raw query points used (more: thinned evenly, or refused)
@@ -45,27 +46,27 @@ struct RecognizerConfig {
   // the cloud (z up), that slab is dropped up to this height above the
   // ground: 5 sigma of 5 cm noise, taking the bottom of the wheels too
   // (geometry/ground.hpp; not in the paper). 0 keeps every point.
-  float ground_clearance = 0.25f;    // m
+  float ground_clearance = 0.25f;  // m
 
   // Spin-image pruning (section 5).
-  uint32_t top_w = 50;               // W for BRAN (paper: 50)
-  uint32_t top_w_sran = 5;           // W for SRAN, per model (paper: 5)
-  uint32_t top_w_sind = 1;           // W for SIND (paper: 1)
-  uint32_t max_bucket_scan = 1024;   // LSH entries scanned per query feature, at most (shared by the L tables)
+  uint32_t top_w = 50;              // W for BRAN (paper: 50)
+  uint32_t top_w_sran = 5;          // W for SRAN, per model (paper: 5)
+  uint32_t top_w_sind = 1;          // W for SIND (paper: 1)
+  uint32_t max_bucket_scan = 1024;  // LSH entries scanned per query feature, at most (shared by the L tables)
 
   // Doublets (section 7, Figure 5 and eq. 3).
-  float d_min = 0.5f;                // d_min, m
-  float theta_min_deg = 10.0f;       // theta_min between the two normals
-  float tol_distance = 0.30f;        // |d - d'| allowed, m
-  float tol_angle_deg = 25.0f;       // |a - a'|, |b - b'|, |c - c'| allowed
-  float tol_handedness = 0.5f;       // |t - t'| allowed, t = (n1 x n2) . u  (rejects mirror images)
+  float d_min = 0.5f;           // d_min, m
+  float theta_min_deg = 10.0f;  // theta_min between the two normals
+  float tol_distance = 0.30f;   // |d - d'| allowed, m
+  float tol_angle_deg = 25.0f;  // |a - a'|, |b - b'|, |c - c'| allowed
+  float tol_handedness = 0.5f;  // |t - t'| allowed, t = (n1 x n2) . u  (rejects mirror images)
 
   // Likelihood (section 8, eqs. 4-7).
-  float sigma = 0.15f;               // sigma, m: sensor noise plus basis-point sampling offset
-  float delta = 0.30f;               // Delta, m: inlier radius
-  float delta_max = 0.60f;           // Delta_max, m: spread of outliers
-  float eta_max_deg = 35.0f;         // eta_max: normal agreement
-  float spin_lambda = 0.5f;          // p_s = exp(-L1 / lambda), L1 of sum-normalised spin images
+  float sigma = 0.15f;        // sigma, m: sensor noise plus basis-point sampling offset
+  float delta = 0.30f;        // Delta, m: inlier radius
+  float delta_max = 0.60f;    // Delta_max, m: spread of outliers
+  float eta_max_deg = 35.0f;  // eta_max: normal agreement
+  float spin_lambda = 0.5f;   // p_s = exp(-L1 / lambda), L1 of sum-normalised spin images
 
   // Hypotheses are scored on at most this many query features (evenly
   // spread; the paper's "all or a percentage of all query features"); the
@@ -93,10 +94,10 @@ struct RecognizerConfig {
   float min_mean_log_likelihood = -3.0f;
 
   // Work budget (bounded time): whichever runs out first stops recognition.
-  uint32_t max_trials = 800;         // BRAN: doublet draws
-  uint32_t sran_trials = 100;        // SRAN: doublet draws per model
-  uint32_t max_hypotheses = 6000;    // poses verified: BRAN all models together, SRAN per model
-  uint32_t max_pair_checks = 2000000;// candidate pairs put through the cascade
+  uint32_t max_trials = 800;           // BRAN: doublet draws
+  uint32_t sran_trials = 100;          // SRAN: doublet draws per model
+  uint32_t max_hypotheses = 6000;      // poses verified: BRAN all models together, SRAN per model
+  uint32_t max_pair_checks = 2000000;  // candidate pairs put through the cascade
 
   // Optional sensor position in input coordinates: normals are turned towards it.
   bool has_viewpoint = false;

@@ -28,65 +28,71 @@
 #ifndef SPINHASH_CONFIG_FIELDS_H
 #define SPINHASH_CONFIG_FIELDS_H
 
-#define SPINHASH_CONFIG_FIELDS(X)                                                                          \
-  X(MODE, mode, 0, 2, "--mode", "bran (batch RANSAC), sran (per-model RANSAC) or sind (LSH voting)")        \
-  X(U64, seed, 0u, 0xFFFFFFFFFFFFFFFFull, "--seed", "sampling seed")                                        \
-  X(U32, max_points, 1u, kMaxQueryPointsLimit, "--max-points", "largest cloud used (more: thinned or refused)") \
+#define SPINHASH_CONFIG_FIELDS(X)                                                                            \
+  X(MODE, mode, 0, 2, "--mode", "bran (batch RANSAC), sran (per-model RANSAC) or sind (LSH voting)")         \
+  X(U64, seed, 0u, 0xFFFFFFFFFFFFFFFFull, "--seed", "sampling seed")                                         \
+  X(U32, max_points, 1u, kMaxQueryPointsLimit, "--max-points",                                               \
+    "largest cloud used (more: thinned or refused)")                                                         \
   X(BOOL, thin_large_clouds, 0, 1, "!--no-thin", "refuse a cloud above --max-points instead of thinning it") \
-  X(U32, max_features, 2u, kMaxQueryFeaturesLimit, "--max-features", "query basis points kept")            \
-  X(U32, max_models, 1u, kMaxModels, "--max-models", "models the workspace supports")                      \
-  X(U32, max_spin_dims, 1u, kMaxSpinDims, "--max-spin-dims", "largest spin image (bins) the workspace supports") \
-  X(F32, query_basis_spacing, 0.0f, 100.0f, "--query-spacing", "query basis point spacing, m (0: the database's)") \
-  X(F32, ground_clearance, 0.0f, kMaxGroundClearance, "--ground-clearance",                                \
-    "m of ground dropped from the bottom of the cloud, z up (0: keep the ground)")                          \
-  X(U32, top_w, 1u, kMaxCandidates, "-W,--top-w", "W: candidates per query feature (BRAN)")                 \
-  X(U32, top_w_sran, 1u, kMaxCandidates, "--top-w-sran", "W per model (SRAN)")                              \
-  X(U32, top_w_sind, 1u, kMaxCandidates, "--top-w-sind", "W (SIND)")                                        \
-  X(U32, max_bucket_scan, 1u, 1u << 24, "--max-bucket-scan", "LSH entries scanned per query feature")       \
-  X(F32, d_min, 0.0f, 100.0f, "--d-min", "d_min of eq. 3, m")                                               \
-  X(F32, theta_min_deg, 0.0f, 180.0f, "--theta-min", "theta_min of eq. 3, degrees")                         \
-  X(F32, tol_distance, 0.0f, 100.0f, "--tol-distance", "doublet distance tolerance |d - d'|, m")            \
-  X(F32, tol_angle_deg, 0.0f, 180.0f, "--tol-angle", "doublet angle tolerance, degrees")                    \
-  X(F32, tol_handedness, 0.0f, 2.0f, "--tol-handedness", "doublet handedness tolerance (rejects mirror images)") \
-  X(F32, sigma, 1e-4f, 100.0f, "--sigma", "sigma of eq. 5, m")                                              \
-  X(F32, delta, 1e-4f, 100.0f, "--delta", "Delta of eq. 5, m")                                              \
-  X(F32, delta_max, 1e-4f, 100.0f, "--delta-max", "Delta_max of eq. 5, m (at least Delta)")                 \
-  X(F32, eta_max_deg, 0.0f, 180.0f, "--eta-max", "eta_max of eq. 6, degrees")                               \
-  X(F32, spin_lambda, 1e-3f, 1e3f, "--spin-lambda", "p_s = exp(-L1 / lambda) of eq. 4")                     \
-  X(U32, verify_features, 1u, kMaxQueryFeaturesLimit, "--verify-features", "query features scored per hypothesis") \
-  X(U32, transfer_models, 0u, kMaxTransferModels, "--transfer-models",                                      \
-    "look-alikes each leading pose is also tried on (BRAN; 0: off, the paper's BRAN)")                      \
-  X(BOOL, refine_poses, 0, 1, "!--no-refine", "skip the least-squares pose refinement")                     \
-  X(F32, min_inlier_fraction, 0.0f, 1.0f, "--min-inlier-fraction", "share of the query explained for a confident answer") \
-  X(F32, min_mean_log_likelihood, -1e6f, 0.0f, "--min-mean-log-likelihood",                                 \
-    "log-likelihood per query feature for a confident answer")                                              \
-  X(U32, max_trials, 0u, 0xFFFFFFFFu, "--trials", "doublet draws (BRAN)")                                   \
-  X(U32, sran_trials, 0u, 0xFFFFFFFFu, "--sran-trials", "doublet draws per model (SRAN)")                   \
+  X(U32, max_features, 2u, kMaxQueryFeaturesLimit, "--max-features", "query basis points kept")              \
+  X(U32, max_models, 1u, kMaxModels, "--max-models", "models the workspace supports")                        \
+  X(U32, max_spin_dims, 1u, kMaxSpinDims, "--max-spin-dims",                                                 \
+    "largest spin image (bins) the workspace supports")                                                      \
+  X(F32, query_basis_spacing, 0.0f, 100.0f, "--query-spacing",                                               \
+    "query basis point spacing, m (0: the database's)")                                                      \
+  X(F32, ground_clearance, 0.0f, kMaxGroundClearance, "--ground-clearance",                                  \
+    "m of ground dropped from the bottom of the cloud, z up (0: keep the ground)")                           \
+  X(U32, top_w, 1u, kMaxCandidates, "-W,--top-w", "W: candidates per query feature (BRAN)")                  \
+  X(U32, top_w_sran, 1u, kMaxCandidates, "--top-w-sran", "W per model (SRAN)")                               \
+  X(U32, top_w_sind, 1u, kMaxCandidates, "--top-w-sind", "W (SIND)")                                         \
+  X(U32, max_bucket_scan, 1u, 1u << 24, "--max-bucket-scan", "LSH entries scanned per query feature")        \
+  X(F32, d_min, 0.0f, 100.0f, "--d-min", "d_min of eq. 3, m")                                                \
+  X(F32, theta_min_deg, 0.0f, 180.0f, "--theta-min", "theta_min of eq. 3, degrees")                          \
+  X(F32, tol_distance, 0.0f, 100.0f, "--tol-distance", "doublet distance tolerance |d - d'|, m")             \
+  X(F32, tol_angle_deg, 0.0f, 180.0f, "--tol-angle", "doublet angle tolerance, degrees")                     \
+  X(F32, tol_handedness, 0.0f, 2.0f, "--tol-handedness",                                                     \
+    "doublet handedness tolerance (rejects mirror images)")                                                  \
+  X(F32, sigma, 1e-4f, 100.0f, "--sigma", "sigma of eq. 5, m")                                               \
+  X(F32, delta, 1e-4f, 100.0f, "--delta", "Delta of eq. 5, m")                                               \
+  X(F32, delta_max, 1e-4f, 100.0f, "--delta-max", "Delta_max of eq. 5, m (at least Delta)")                  \
+  X(F32, eta_max_deg, 0.0f, 180.0f, "--eta-max", "eta_max of eq. 6, degrees")                                \
+  X(F32, spin_lambda, 1e-3f, 1e3f, "--spin-lambda", "p_s = exp(-L1 / lambda) of eq. 4")                      \
+  X(U32, verify_features, 1u, kMaxQueryFeaturesLimit, "--verify-features",                                   \
+    "query features scored per hypothesis")                                                                  \
+  X(U32, transfer_models, 0u, kMaxTransferModels, "--transfer-models",                                       \
+    "look-alikes each leading pose is also tried on (BRAN; 0: off, the paper's BRAN)")                       \
+  X(BOOL, refine_poses, 0, 1, "!--no-refine", "skip the least-squares pose refinement")                      \
+  X(F32, min_inlier_fraction, 0.0f, 1.0f, "--min-inlier-fraction",                                           \
+    "share of the query explained for a confident answer")                                                   \
+  X(F32, min_mean_log_likelihood, -1e6f, 0.0f, "--min-mean-log-likelihood",                                  \
+    "log-likelihood per query feature for a confident answer")                                               \
+  X(U32, max_trials, 0u, 0xFFFFFFFFu, "--trials", "doublet draws (BRAN)")                                    \
+  X(U32, sran_trials, 0u, 0xFFFFFFFFu, "--sran-trials", "doublet draws per model (SRAN)")                    \
   X(U32, max_hypotheses, 0u, 0xFFFFFFFFu, "--max-hypotheses", "poses verified (BRAN total, SRAN per model)") \
-  X(U32, max_pair_checks, 0u, 0xFFFFFFFFu, "--max-pair-checks", "candidate pairs through the cascade")      \
-  X(BOOL, has_viewpoint, 0, 1, "", "set by --viewpoint")                                                    \
+  X(U32, max_pair_checks, 0u, 0xFFFFFFFFu, "--max-pair-checks", "candidate pairs through the cascade")       \
+  X(BOOL, has_viewpoint, 0, 1, "", "set by --viewpoint")                                                     \
   X(VEC3D, viewpoint, 0, 0, "", "set by --viewpoint X Y Z: sensor position, normals turn towards it")
 
-#define SPINHASH_STATS_FIELDS(S)                                  \
-  S(U32, points_in, extract.points_in, "points")                  \
-  S(U32, points_thinned, extract.points_thinned, "points_thinned") \
-  S(U32, points_nonfinite, extract.points_nonfinite, "points_nonfinite") \
-  S(U32, points_ground, extract.points_ground, "points_ground")   \
-  S(U32, points_equalised, extract.points_equalised, "points_equalised") \
-  S(U32, points_oriented, extract.points_oriented, "points_oriented") \
-  S(U32, basis_points, extract.basis_points, "basis_points")      \
-  S(BOOL, features_thinned, extract.features_thinned, "features_thinned") \
-  S(U32, features, features, "features")                          \
-  S(U32, salient_features, salient_features, "salient_features")  \
-  S(U64, candidates, candidates, "candidates")                    \
-  S(U64, bucket_entries, bucket_entries, "bucket_entries")        \
-  S(U32, trials, trials, "trials")                                \
-  S(U64, pair_checks, pair_checks, "doublets_tried")              \
-  S(U64, doublets_passed, doublets_passed, "doublets_passed")     \
-  S(U32, hypotheses, hypotheses, "hypotheses")                    \
-  S(U32, transferred, transferred, "transferred")                 \
-  S(U32, refinements, refinements, "refinements")                 \
-  S(BOOL, budget_exhausted, budget_exhausted, "budget_exhausted") \
+#define SPINHASH_STATS_FIELDS(S)                                                 \
+  S(U32, points_in, extract.points_in, "points")                                 \
+  S(U32, points_thinned, extract.points_thinned, "points_thinned")               \
+  S(U32, points_nonfinite, extract.points_nonfinite, "points_nonfinite")         \
+  S(U32, points_ground, extract.points_ground, "points_ground")                  \
+  S(U32, points_equalised, extract.points_equalised, "points_equalised")         \
+  S(U32, points_oriented, extract.points_oriented, "points_oriented")            \
+  S(U32, basis_points, extract.basis_points, "basis_points")                     \
+  S(BOOL, features_thinned, extract.features_thinned, "features_thinned")        \
+  S(U32, features, features, "features")                                         \
+  S(U32, salient_features, salient_features, "salient_features")                 \
+  S(U64, candidates, candidates, "candidates")                                   \
+  S(U64, bucket_entries, bucket_entries, "bucket_entries")                       \
+  S(U32, trials, trials, "trials")                                               \
+  S(U64, pair_checks, pair_checks, "doublets_tried")                             \
+  S(U64, doublets_passed, doublets_passed, "doublets_passed")                    \
+  S(U32, hypotheses, hypotheses, "hypotheses")                                   \
+  S(U32, transferred, transferred, "transferred")                                \
+  S(U32, refinements, refinements, "refinements")                                \
+  S(BOOL, budget_exhausted, budget_exhausted, "budget_exhausted")                \
   S(BOOL, bucket_scan_truncated, bucket_scan_truncated, "bucket_scan_truncated") \
   S(U64, workspace_used, workspace_used, "workspace_used")
 

@@ -27,8 +27,8 @@ class Database {
   uint32_t spin_dims() const noexcept { return params_->bins_alpha * params_->bins_beta; }
   const blob::ModelRecord& model(uint32_t i) const noexcept { return models_[i]; }
 
-  const float* positions() const noexcept { return positions_; }    // 3 per feature
-  const int16_t* normals() const noexcept { return normals_; }      // 3 per feature, * 1/32767
+  const float* positions() const noexcept { return positions_; }  // 3 per feature
+  const int16_t* normals() const noexcept { return normals_; }    // 3 per feature, * 1/32767
   const uint16_t* feature_models() const noexcept { return feature_models_; }
   const uint8_t* spin(uint32_t feature) const noexcept {
     return spins_ + static_cast<size_t>(feature) * spin_dims();

@@ -25,7 +25,7 @@ struct ExtractorCapacity {
   uint32_t max_points = 32768;    // raw points accepted
   uint32_t max_features = 1024;   // basis points kept (deterministically thinned above)
   uint32_t max_spin_dims = 256;   // bins_alpha * bins_beta supported
-  bool thin_large_clouds = true;        // above max_points: keep max_points spread evenly (else refuse)
+  bool thin_large_clouds = true;  // above max_points: keep max_points spread evenly (else refuse)
   float ground_clearance = 0.0f;  // m: level ground and this much above it dropped (queries; 0: kept)
 };
 
@@ -38,10 +38,10 @@ struct OrientationHint {
 // Features live in the arena; positions are relative to `origin`.
 struct FeatureSet {
   uint32_t count = 0;
-  uint32_t dims = 0;          // d = bins_alpha * bins_beta
-  float* positions = nullptr; // 3 per feature
-  float* normals = nullptr;   // 3 per feature, unit length
-  float* spins = nullptr;     // dims per feature, normalised to sum 1
+  uint32_t dims = 0;           // d = bins_alpha * bins_beta
+  float* positions = nullptr;  // 3 per feature
+  float* normals = nullptr;    // 3 per feature, unit length
+  float* spins = nullptr;      // dims per feature, normalised to sum 1
   double origin[3] = {0.0, 0.0, 0.0};
 };
 

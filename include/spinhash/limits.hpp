@@ -6,24 +6,24 @@
 
 namespace spinhash {
 
-constexpr size_t kBufferAlignment = 64;        // blob and workspace base alignment
-constexpr uint32_t kMaxSpinBinsPerAxis = 32;    // spin image bins along alpha or beta
+constexpr size_t kBufferAlignment = 64;       // blob and workspace base alignment
+constexpr uint32_t kMaxSpinBinsPerAxis = 32;  // spin image bins along alpha or beta
 constexpr uint32_t kMaxSpinDims = kMaxSpinBinsPerAxis * kMaxSpinBinsPerAxis;  // d
-constexpr uint32_t kMaxLshBits = 64;            // K: bits per key (one uint64 key)
-constexpr uint32_t kMaxLshTables = 64;          // L
-constexpr uint32_t kMaxCandidates = 128;        // W: candidates kept per query feature
+constexpr uint32_t kMaxLshBits = 64;      // K: bits per key (one uint64 key)
+constexpr uint32_t kMaxLshTables = 64;    // L
+constexpr uint32_t kMaxCandidates = 128;  // W: candidates kept per query feature
 // Largest ground clearance, m (RecognizerConfig::ground_clearance).
 constexpr float kMaxGroundClearance = 10.0f;
 // Largest RecognizerConfig::transfer_models (look-alike pose transfer).
 constexpr uint32_t kMaxTransferModels = 64;
-constexpr uint32_t kMaxModelNameBytes = 48;     // including the terminating NUL
-constexpr uint32_t kMaxModels = 65535;          // model ids are stored as uint16
-constexpr uint32_t kMaxFeatures = 0x7FFFFFFF;   // feature ids are uint32
-constexpr uint32_t kMaxQueryPointsLimit = 1u << 22;   // hard ceiling for config.max_points
-constexpr uint32_t kMaxQueryFeaturesLimit = 1u << 14; // hard ceiling for config.max_features
-constexpr uint32_t kMaxSections = 16;           // section table entries in a blob
-constexpr uint32_t kMinNormalNeighbours = 5;    // fewer -> the point gets no normal
-constexpr uint32_t kMaxStabilityRetries = 32;   // attempts to draw a stable doublet (eq. 3)
+constexpr uint32_t kMaxModelNameBytes = 48;            // including the terminating NUL
+constexpr uint32_t kMaxModels = 65535;                 // model ids are stored as uint16
+constexpr uint32_t kMaxFeatures = 0x7FFFFFFF;          // feature ids are uint32
+constexpr uint32_t kMaxQueryPointsLimit = 1u << 22;    // hard ceiling for config.max_points
+constexpr uint32_t kMaxQueryFeaturesLimit = 1u << 14;  // hard ceiling for config.max_features
+constexpr uint32_t kMaxSections = 16;                  // section table entries in a blob
+constexpr uint32_t kMinNormalNeighbours = 5;           // fewer -> the point gets no normal
+constexpr uint32_t kMaxStabilityRetries = 32;          // attempts to draw a stable doublet (eq. 3)
 constexpr uint32_t kMaxGridCellsPerModel = 1u << 20;
 
 }  // namespace spinhash

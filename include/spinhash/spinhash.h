@@ -109,24 +109,24 @@ typedef struct spinhash_stats {
 /* One recognition. The ranking it refers to lives in the recognizer's
  * workspace: valid until the next recognize call on that recognizer. */
 typedef struct spinhash_result {
-  int32_t status;        /* spinhash_status */
+  int32_t status; /* spinhash_status */
   uint32_t ranking_count;
-  uint32_t confident;    /* 1: the best model explains enough of the query */
+  uint32_t confident; /* 1: the best model explains enough of the query */
   spinhash_stats stats;
-  const void* ranking_;  /* private */
+  const void* ranking_;               /* private */
   const spinhash_database* database_; /* private: for model names */
 } spinhash_result;
 
 /* One ranked model. pose is row-major 4x4, model frame -> query frame (in
  * the input's coordinates, georeferenced included): x_q = R x_m + t. */
 typedef struct spinhash_ranked_model {
-  uint32_t model;      /* index into the database's model table */
-  float score;         /* larger is better */
-  uint32_t has_pose;   /* 0 for SIND */
+  uint32_t model;    /* index into the database's model table */
+  float score;       /* larger is better */
+  uint32_t has_pose; /* 0 for SIND */
   uint32_t hypotheses;
   uint32_t inliers;
   double pose[16];
-  const char* name;    /* NUL-terminated, inside the blob */
+  const char* name; /* NUL-terminated, inside the blob */
 } spinhash_ranked_model;
 
 /* Log levels passed to the hook. */
@@ -149,7 +149,8 @@ void spinhash_default_config(spinhash_config* config) SPINHASH_NOEXCEPT;
 size_t spinhash_workspace_bytes(const spinhash_config* config) SPINHASH_NOEXCEPT;
 
 /* Validates the blob once (every offset, count and checksum) and fills *db. */
-spinhash_status spinhash_database_open(spinhash_database* db, const void* bytes, size_t size) SPINHASH_NOEXCEPT;
+spinhash_status spinhash_database_open(spinhash_database* db, const void* bytes,
+                                       size_t size) SPINHASH_NOEXCEPT;
 uint32_t spinhash_database_model_count(const spinhash_database* db) SPINHASH_NOEXCEPT;
 /* Name of model `index`, or a null pointer when out of range / not open. */
 const char* spinhash_database_model_name(const spinhash_database* db, uint32_t index) SPINHASH_NOEXCEPT;

@@ -7,11 +7,11 @@ namespace spinhash {
 
 enum class Status : int32_t {
   kOk = 0,
-  kInvalidArgument = 1,      // null pointer, zero size, config out of range
-  kWorkspaceTooSmall = 2,    // caller's buffer < required_workspace_bytes(config)
-  kMisalignedBuffer = 3,     // blob or workspace not aligned to kBufferAlignment
+  kInvalidArgument = 1,    // null pointer, zero size, config out of range
+  kWorkspaceTooSmall = 2,  // caller's buffer < required_workspace_bytes(config)
+  kMisalignedBuffer = 3,   // blob or workspace not aligned to kBufferAlignment
   // Database::open
-  kBlobTruncated = 10,       // shorter than its header, table or declared size
+  kBlobTruncated = 10,  // shorter than its header, table or declared size
   kBlobBadMagic = 11,
   kBlobUnsupportedVersion = 12,
   kBlobWrongByteOrder = 13,  // written for the other byte order
@@ -31,10 +31,10 @@ enum class Status : int32_t {
   kDatabaseTooLarge = 27,    // more models than config.max_models
   kBlobUnknownSection = 28,  // section id not defined by the format version
   // recognize
-  kEmptyCloud = 40,          // no finite points
-  kTooManyPoints = 41,       // more points than config.max_points (refused)
-  kNotEnoughFeatures = 42,   // too few usable oriented points / basis points
-  kNotOpen = 43,             // recognizer used without a valid database/workspace
+  kEmptyCloud = 40,         // no finite points
+  kTooManyPoints = 41,      // more points than config.max_points (refused)
+  kNotEnoughFeatures = 42,  // too few usable oriented points / basis points
+  kNotOpen = 43,            // recognizer used without a valid database/workspace
 };
 
 // Short English name of a status; "unknown" for values not listed.

@@ -52,7 +52,8 @@ TEST_CASE("C API: the default config and workspace size equal the C++ ones") {
 }
 
 TEST_CASE("C API: status names come from the core for every value") {
-  for (int32_t v = -1; v < 64; ++v) CHECK(std::strcmp(spinhash_status_name(v), status_name(static_cast<Status>(v))) == 0);
+  for (int32_t v = -1; v < 64; ++v)
+    CHECK(std::strcmp(spinhash_status_name(v), status_name(static_cast<Status>(v))) == 0);
   CHECK(std::strcmp(spinhash_status_name(SPINHASH_BLOB_UNKNOWN_SECTION), "blob section id unknown") == 0);
 }
 
@@ -71,7 +72,8 @@ TEST_CASE("C API: the golden blob opens, recognises in float and double, and nam
 
   const golden::GoldenQuery& want = golden::kGoldenQueries[0];
   const std::vector<float> xyz = test::golden_query_points();
-  std::vector<float> f(xyz.begin() + 3 * want.first_point, xyz.begin() + 3 * (want.first_point + want.point_count));
+  std::vector<float> f(xyz.begin() + 3 * want.first_point,
+                       xyz.begin() + 3 * (want.first_point + want.point_count));
   std::vector<double> d(f.begin(), f.end());
   spinhash_result r32, r64;
   REQUIRE(spinhash_recognize_f32(&rec, f.data(), want.point_count, &r32) == SPINHASH_OK);
@@ -107,7 +109,8 @@ TEST_CASE("C API: bad arguments are statuses, never crashes") {
   spinhash_recognizer rec;
   spinhash_config cfg = golden_c_config();
   alignas(SPINHASH_BUFFER_ALIGNMENT) static unsigned char small[256];
-  CHECK(spinhash_recognizer_init(&rec, &db, &cfg, small, sizeof small) == SPINHASH_INVALID_ARGUMENT);  // db not open
+  CHECK(spinhash_recognizer_init(&rec, &db, &cfg, small, sizeof small) ==
+        SPINHASH_INVALID_ARGUMENT);  // db not open
   spinhash_result r;
   const float p[3] = {0, 0, 0};
   CHECK(spinhash_recognize_f32(&rec, p, 1, &r) == SPINHASH_NOT_OPEN);

@@ -57,7 +57,8 @@ constexpr size_t listed_config_initializers() {
 }
 constexpr size_t listed_stats(bool in_extract) {
   size_t n = 0;
-#define SPINHASH_COUNT(kind, name, member, json) n += starts_with(#member, "extract.") == in_extract ? 1u : 0u;
+#define SPINHASH_COUNT(kind, name, member, json) \
+  n += starts_with(#member, "extract.") == in_extract ? 1u : 0u;
   SPINHASH_STATS_FIELDS(SPINHASH_COUNT)
 #undef SPINHASH_COUNT
   return n;
@@ -89,14 +90,16 @@ constexpr bool stat_fits(const char* kind) {
                                    : std::is_unsigned<T>::value && !std::is_same<T, bool>::value &&
                                          sizeof(T) <= (starts_with(kind, "U32") ? 4u : 8u);
 }
-#define SPINHASH_STAT_TYPE(kind, name, member, json)                                      \
+#define SPINHASH_STAT_TYPE(kind, name, member, json)                                     \
   static_assert(stat_fits<std::remove_cv_t<decltype(RecognitionStats{}.member)>>(#kind), \
                 #member ": another type in RecognitionStats than in config_fields.h");
 SPINHASH_STATS_FIELDS(SPINHASH_STAT_TYPE)
 #undef SPINHASH_STAT_TYPE
 
 // --- A value other than v for each kind (the k-th field gets its own).
-Mode changed(Mode v, int) { return v == Mode::kSind ? Mode::kBran : static_cast<Mode>(static_cast<int>(v) + 1); }
+Mode changed(Mode v, int) {
+  return v == Mode::kSind ? Mode::kBran : static_cast<Mode>(static_cast<int>(v) + 1);
+}
 bool changed(bool v, int) { return !v; }
 uint32_t changed(uint32_t v, int k) { return v + 7u + static_cast<uint32_t>(k); }
 uint64_t changed(uint64_t v, int k) { return v + 0x100000000ull + static_cast<uint64_t>(k); }
@@ -132,12 +135,12 @@ TEST_CASE("config fields: every field survives C++ -> C -> C++ with a non-defaul
   to_c_config(defaults, &c_defaults);
   RecognizerConfig back;  // defaults: a field the bridge skips keeps its default and differs
   REQUIRE(from_c_config(c, &back));
-#define SPINHASH_ROUND_TRIP(kind, name, lo, hi, flag, help)        \
-  {                                                                \
-    INFO("field " #name);                                          \
-    CHECK_FALSE(same(edited.name, c_defaults.name));      \
-    CHECK(same(edited.name, c.name));                              \
-    CHECK(same(back.name, c.name));                                \
+#define SPINHASH_ROUND_TRIP(kind, name, lo, hi, flag, help) \
+  {                                                         \
+    INFO("field " #name);                                   \
+    CHECK_FALSE(same(edited.name, c_defaults.name));        \
+    CHECK(same(edited.name, c.name));                       \
+    CHECK(same(back.name, c.name));                         \
   }
   SPINHASH_CONFIG_FIELDS(SPINHASH_ROUND_TRIP)
 #undef SPINHASH_ROUND_TRIP
@@ -168,10 +171,10 @@ TEST_CASE("config fields: every statistic reaches the C struct") {
   spinhash_stats c;
   std::memset(&c, 0, sizeof c);
   to_c_stats(st, &c);
-#define SPINHASH_CHECK_STAT(kind, name, member, json) \
-  {                                                   \
-    INFO("statistic " #name);                         \
-    CHECK(c.name != 0u);                              \
+#define SPINHASH_CHECK_STAT(kind, name, member, json)          \
+  {                                                            \
+    INFO("statistic " #name);                                  \
+    CHECK(c.name != 0u);                                       \
     CHECK(c.name == static_cast<decltype(c.name)>(st.member)); \
   }
   SPINHASH_STATS_FIELDS(SPINHASH_CHECK_STAT)

@@ -25,8 +25,7 @@ constexpr uint32_t kFeaturesPerModel = 20;
 constexpr uint64_t kSeed = 7;
 
 const host::BlobContent& tiny() {
-  static const host::BlobContent content =
-      host::make_tiny_blob_content(kModels, kFeaturesPerModel, kSeed);
+  static const host::BlobContent content = host::make_tiny_blob_content(kModels, kFeaturesPerModel, kSeed);
   return content;
 }
 
@@ -141,8 +140,8 @@ TEST_CASE("an unaligned base pointer is refused with kMisalignedBuffer") {
 
 TEST_CASE("truncated blobs are refused with kBlobTruncated") {
   BlobPatch b = fresh();
-  for (size_t length : {size_t{1}, size_t{63}, size_t{64}, size_t{100}, size_t{384},
-                        b.size() / 2, b.size() - 1}) {
+  for (size_t length :
+       {size_t{1}, size_t{63}, size_t{64}, size_t{100}, size_t{384}, b.size() / 2, b.size() - 1}) {
     CAPTURE(length);
     CHECK(b.open_prefix(length) == Status::kBlobTruncated);
   }
@@ -436,26 +435,29 @@ TEST_CASE("bad grids are kBlobBadModelTable") {
   };
   const Case cases[] = {
       {"zero dimension", [](BlobPatch& b) { b.model(0).grid_dims[2] = 0; }},
-      {"too many cells", [](BlobPatch& b) {
+      {"too many cells",
+       [](BlobPatch& b) {
          b.model(2).grid_dims[0] = 1u << 10;
          b.model(2).grid_dims[1] = 1u << 10;
          b.model(2).grid_dims[2] = 2;
        }},
-      {"dims whose product wraps 32 bits", [](BlobPatch& b) {
+      {"dims whose product wraps 32 bits",
+       [](BlobPatch& b) {
          b.model(2).grid_dims[0] = 1u << 16;
          b.model(2).grid_dims[1] = 1u << 16;
        }},
       {"offsets past the section", [](BlobPatch& b) { b.model(2).grid_offset_base += 1; }},
       {"ranges overlapping", [](BlobPatch& b) { b.model(1).grid_offset_base -= 1; }},
-      {"non-monotonic", [](BlobPatch& b) {
+      {"non-monotonic",
+       [](BlobPatch& b) {
          uint32_t* off = b.section<uint32_t>(blob::kGridOffsets) + b.model(1).grid_offset_base;
          off[1] = kFeaturesPerModel;
          off[2] = 0;
        }},
-      {"not starting at 0", [](BlobPatch& b) {
-         b.section<uint32_t>(blob::kGridOffsets)[b.model(0).grid_offset_base] = 1;
-       }},
-      {"not ending at the feature count", [](BlobPatch& b) {
+      {"not starting at 0",
+       [](BlobPatch& b) { b.section<uint32_t>(blob::kGridOffsets)[b.model(0).grid_offset_base] = 1; }},
+      {"not ending at the feature count",
+       [](BlobPatch& b) {
          uint32_t* off = b.section<uint32_t>(blob::kGridOffsets) + b.model(1).grid_offset_base;
          off[4] = kFeaturesPerModel - 1u;
        }},
@@ -478,13 +480,16 @@ TEST_CASE("bad features are kBlobBadFeature") {
     void (*patch)(BlobPatch&);
   };
   const Case cases[] = {
-      {"NaN position", [](BlobPatch& b) { b.section<float>(blob::kFeatPositions)[3 * 5 + 1] = std::nanf(""); }},
+      {"NaN position",
+       [](BlobPatch& b) { b.section<float>(blob::kFeatPositions)[3 * 5 + 1] = std::nanf(""); }},
       {"infinite position", [](BlobPatch& b) { b.section<float>(blob::kFeatPositions)[0] = -INFINITY; }},
-      {"zero normal", [](BlobPatch& b) {
+      {"zero normal",
+       [](BlobPatch& b) {
          int16_t* n = b.section<int16_t>(blob::kFeatNormals) + 3 * 7;
          n[0] = n[1] = n[2] = 0;
        }},
-      {"long normal", [](BlobPatch& b) {
+      {"long normal",
+       [](BlobPatch& b) {
          int16_t* n = b.section<int16_t>(blob::kFeatNormals) + 3 * 59;
          n[0] = n[1] = n[2] = 32767;
        }},
@@ -506,21 +511,26 @@ TEST_CASE("bad LSH bits, offsets or entries are kBlobBadIndex") {
     void (*patch)(BlobPatch&);
   };
   const Case cases[] = {
-      {"entry = feature_count", [](BlobPatch& b) {
-         b.section<uint32_t>(blob::kLshEntries)[kModels * kFeaturesPerModel + 3] = kModels * kFeaturesPerModel;
+      {"entry = feature_count",
+       [](BlobPatch& b) {
+         b.section<uint32_t>(blob::kLshEntries)[kModels * kFeaturesPerModel + 3] =
+             kModels * kFeaturesPerModel;
        }},
       {"entry huge", [](BlobPatch& b) { b.section<uint32_t>(blob::kLshEntries)[0] = 0xFFFFFFFFu; }},
-      {"bit dimension = spin dims", [](BlobPatch& b) {
-         b.section<blob::LshBit>(blob::kLshBits)[4].dim = static_cast<uint16_t>(b.params().bins_alpha * b.params().bins_beta);
+      {"bit dimension = spin dims",
+       [](BlobPatch& b) {
+         b.section<blob::LshBit>(blob::kLshBits)[4].dim =
+             static_cast<uint16_t>(b.params().bins_alpha * b.params().bins_beta);
        }},
       {"threshold 256", [](BlobPatch& b) { b.section<blob::LshBit>(blob::kLshBits)[0].threshold = 256; }},
-      {"offsets not starting at 0", [](BlobPatch& b) {
+      {"offsets not starting at 0",
+       [](BlobPatch& b) {
          b.section<uint32_t>(blob::kLshOffsets)[b.params().lsh_buckets + 1u] = 1;  // table 1
        }},
-      {"offsets not ending at feature_count", [](BlobPatch& b) {
-         b.section<uint32_t>(blob::kLshOffsets)[b.params().lsh_buckets] += 1;
-       }},
-      {"offsets decreasing", [](BlobPatch& b) {
+      {"offsets not ending at feature_count",
+       [](BlobPatch& b) { b.section<uint32_t>(blob::kLshOffsets)[b.params().lsh_buckets] += 1; }},
+      {"offsets decreasing",
+       [](BlobPatch& b) {
          uint32_t* off = b.section<uint32_t>(blob::kLshOffsets);
          off[1] = off[b.params().lsh_buckets];
          off[2] = 0;
@@ -563,7 +573,7 @@ TEST_CASE("the writer refuses inconsistent content and says why") {
   CHECK(error.find(spinhash::status_name(Status::kBlobBadFeature)) != std::string::npos);
 
   host::BlobContent ok = tiny();
-  ok.params.reserved[0] = 9;  // reserved bytes are written as zero
+  ok.params.reserved[0] = 9;                   // reserved bytes are written as zero
   std::memset(ok.models[0].name + 7, 'q', 8);  // after the NUL: zeroed too
   REQUIRE(host::serialize_blob(ok, host::ByteOrder::kNative, &out, &error));
   CHECK(out == tiny_blob());
@@ -608,9 +618,9 @@ TEST_CASE("versions 0 and 0xFFFFFFFF are kBlobUnsupportedVersion") {
 
 TEST_CASE("every float parameter NaN, +inf or -inf is kBlobBadParameter") {
   float blob::Params::*const fields[] = {
-      &blob::Params::cloud_voxel,       &blob::Params::normal_radius,    &blob::Params::basis_spacing,
-      &blob::Params::support_radius,    &blob::Params::support_angle_deg, &blob::Params::spin_quant_scale,
-      &blob::Params::lsh_dc,            &blob::Params::grid_cell};
+      &blob::Params::cloud_voxel,    &blob::Params::normal_radius,     &blob::Params::basis_spacing,
+      &blob::Params::support_radius, &blob::Params::support_angle_deg, &blob::Params::spin_quant_scale,
+      &blob::Params::lsh_dc,         &blob::Params::grid_cell};
   const float values[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
                           -std::numeric_limits<float>::infinity()};
   for (size_t f = 0; f < sizeof fields / sizeof fields[0]; ++f) {
@@ -658,7 +668,8 @@ TEST_CASE("every truncation of a valid blob is refused") {
   BlobPatch b = fresh();
   CHECK(b.open_prefix(0) == Status::kInvalidArgument);
   uint32_t accepted = 0;
-  for (size_t length = 1; length < b.size(); ++length) accepted += b.open_prefix(length) == Status::kOk ? 1u : 0u;
+  for (size_t length = 1; length < b.size(); ++length)
+    accepted += b.open_prefix(length) == Status::kOk ? 1u : 0u;
   CHECK(accepted == 0);
 }
 
@@ -728,7 +739,8 @@ TEST_CASE("single-byte corruptions re-sealed past the checksums never escape the
     CHECK(inside(db.spin(0), n * db.spin_dims()));
     CHECK(inside(db.grid_offsets(), p.grid_offset_count * sizeof(uint32_t)));
     CHECK(inside(db.lsh_bits(0), static_cast<size_t>(p.lsh_tables) * p.lsh_bits * sizeof(blob::LshBit)));
-    CHECK(inside(db.lsh_offsets(0), static_cast<size_t>(p.lsh_tables) * (p.lsh_buckets + 1u) * sizeof(uint32_t)));
+    CHECK(inside(db.lsh_offsets(0),
+                 static_cast<size_t>(p.lsh_tables) * (p.lsh_buckets + 1u) * sizeof(uint32_t)));
     CHECK(inside(db.lsh_entries(), static_cast<size_t>(p.lsh_tables) * n * sizeof(uint32_t)));
     for (uint32_t m = 0; m < db.model_count(); ++m)
       CHECK(db.model(m).first_feature + db.model(m).feature_count <= n);

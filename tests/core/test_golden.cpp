@@ -56,11 +56,11 @@ TEST_CASE("golden: the blob of this target's byte order reproduces the recorded 
     for (uint32_t i = 0; i < r.ranking_count && i < golden::kMaxGoldenRanked; ++i) {
       CAPTURE(i);
       CHECK(r.ranking[i].model == want.ranking[i].model);
-      CHECK_MESSAGE(score_close(r.ranking[i].score, want.ranking[i].score),
-                    "score ", r.ranking[i].score, " recorded ", want.ranking[i].score);
+      CHECK_MESSAGE(score_close(r.ranking[i].score, want.ranking[i].score), "score ", r.ranking[i].score,
+                    " recorded ", want.ranking[i].score);
       const double w = static_cast<double>(want.ranking[i].score);
-      worst_score = std::fmax(worst_score, std::fabs(static_cast<double>(r.ranking[i].score) - w) /
-                                               std::fmax(1.0, std::fabs(w)));
+      worst_score = std::fmax(
+          worst_score, std::fabs(static_cast<double>(r.ranking[i].score) - w) / std::fmax(1.0, std::fabs(w)));
     }
     const Pose& p = r.ranking[0].pose;
     for (int i = 0; i < 12; ++i) {

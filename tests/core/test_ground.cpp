@@ -99,7 +99,8 @@ TEST_CASE("a cloud that is all level ground is kNotEnoughFeatures or not confide
   test::ToyDatabase toy;
   REQUIRE(test::make_toy_database(&toy));
   std::vector<float> ground = test::plane_grid(8.0f, 0.1f);
-  for (size_t i = 2; i < ground.size(); i += 3) ground[i] += 0.01f * static_cast<float>((i / 3) % 7);  // rough
+  for (size_t i = 2; i < ground.size(); i += 3)
+    ground[i] += 0.01f * static_cast<float>((i / 3) % 7);  // rough
   RecognizerConfig cfg;
   host::AlignedBytes ws(required_workspace_bytes(cfg));
   Recognizer r;

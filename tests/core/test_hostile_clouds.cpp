@@ -20,11 +20,11 @@ namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr uint32_t kQueryModel = 3;     // the tank-like toy: distinct from the others
+constexpr uint32_t kQueryModel = 3;  // the tank-like toy: distinct from the others
 constexpr double kQueryYaw = 0.7;
-constexpr double kNoise = 0.02;         // m
+constexpr double kNoise = 0.02;  // m
 constexpr uint64_t kNoiseSeed = 11;
-constexpr float kToySpacing = 0.05f;    // m, as the toy database's model clouds
+constexpr float kToySpacing = 0.05f;  // m, as the toy database's model clouds
 
 const test::ToyDatabase& toy() {
   static test::ToyDatabase db;
@@ -61,7 +61,8 @@ struct Session {
 };
 
 std::vector<double> known_query(const double offset[3]) {
-  return test::toy_query(test::toy_vehicle_points(kQueryModel, kToySpacing), kQueryYaw, offset, kNoise, kNoiseSeed);
+  return test::toy_query(test::toy_vehicle_points(kQueryModel, kToySpacing), kQueryYaw, offset, kNoise,
+                         kNoiseSeed);
 }
 
 std::vector<double> known_query() {
@@ -147,7 +148,8 @@ TEST_CASE("NaN and infinite points are dropped, counted, and change nothing else
 
   // Appended bad points: the kept finite points are exactly the clean ones.
   std::vector<double> dirty = clean;
-  const double bad[][3] = {{kNaN, 0, 0}, {0, kInf, 0}, {0, 0, -kInf}, {kNaN, kNaN, kNaN}, {kInf, -kInf, kNaN}};
+  const double bad[][3] = {
+      {kNaN, 0, 0}, {0, kInf, 0}, {0, 0, -kInf}, {kNaN, kNaN, kNaN}, {kInf, -kInf, kNaN}};
   for (const auto& p : bad) dirty.insert(dirty.end(), p, p + 3);
   const Result r = s.run(dirty);
   REQUIRE(r.status == Status::kOk);
@@ -161,7 +163,8 @@ TEST_CASE("NaN and infinite points are dropped, counted, and change nothing else
   std::vector<float> f(clean.begin(), clean.end());
   constexpr size_t kEvery = 50;
   uint32_t spoiled = 0;
-  for (size_t i = 0; i + 3 <= f.size(); i += 3 * kEvery, ++spoiled) f[i + spoiled % 3] = spoiled % 2 ? kNaN : -kInf;
+  for (size_t i = 0; i + 3 <= f.size(); i += 3 * kEvery, ++spoiled)
+    f[i + spoiled % 3] = spoiled % 2 ? kNaN : -kInf;
   const Result rf = s.run(f);
   REQUIRE(rf.status == Status::kOk);
   CHECK(rf.stats.extract.points_nonfinite == spoiled);
@@ -193,8 +196,8 @@ TEST_CASE("huge but finite coordinates do not break the pipeline") {
 TEST_CASE("georeferenced views at 1e6 and 1e7 m give the answer found near the origin") {
   Session s;
   const double origin[3] = {0.0, 0.0, 0.0};
-  const double offsets[][3] = {{0.0, 0.0, 0.0}, {1.0e6, 2.0e6, 120.0}, {431000.5, 4020000.25, 87.0},
-                               {-9.5e6, 9.9e6, 3000.0}};
+  const double offsets[][3] = {
+      {0.0, 0.0, 0.0}, {1.0e6, 2.0e6, 120.0}, {431000.5, 4020000.25, 87.0}, {-9.5e6, 9.9e6, 3000.0}};
   const Result near = s.run(known_query(origin));
   REQUIRE(near.status == Status::kOk);
   const uint32_t near_model = near.ranking[0].model;  // the ranking lives in the workspace: copy it
@@ -292,7 +295,7 @@ TEST_CASE("objects smaller than the models are not confident where the scores sa
     REQUIRE(r.status == Status::kOk);
     REQUIRE(r.ranking_count > 0);
     CHECK(mean_score(r) < known_mean - kScoreGap);  // the scores say so...
-    CHECK_FALSE(r.confident);                              // ...and so does the flag
+    CHECK_FALSE(r.confident);                       // ...and so does the flag
   }
 }
 
@@ -373,7 +376,8 @@ TEST_CASE("invalid config values are refused by required_workspace_bytes and ini
       {"top_w 0", [](RecognizerConfig& c) { c.top_w = 0; }},
       {"top_w above kMaxCandidates", [](RecognizerConfig& c) { c.top_w = kMaxCandidates + 1u; }},
       {"max_bucket_scan 0", [](RecognizerConfig& c) { c.max_bucket_scan = 0; }},
-      {"NaN viewpoint", [](RecognizerConfig& c) {
+      {"NaN viewpoint",
+       [](RecognizerConfig& c) {
          c.has_viewpoint = true;
          c.viewpoint[1] = std::numeric_limits<double>::quiet_NaN();
        }},

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "db/lsh_tables.hpp"
-#include "spinhash/internal/lsh_search.hpp"
 #include "spinhash/internal/lsh_probability.hpp"
+#include "spinhash/internal/lsh_search.hpp"
 #include "spinhash/lsh.hpp"
 
 using namespace spinhash;
@@ -80,8 +80,10 @@ TEST_CASE("bit-sampling LSH collides as eq. 2 predicts") {
     const double per_table = static_cast<double>(same_table) / (pairs * tables);
     const double per_group = static_cast<double>(same_group) / (pairs * (tables / groups_of));
     CAPTURE(distance);
-    CHECK(per_table == doctest::Approx(std::pow(1.0 - distance / static_cast<double>(t.d_c), bits)).epsilon(0.08));
-    CHECK(per_group == doctest::Approx(lsh_collision_probability(distance, t.d_c, bits, groups_of)).epsilon(0.08));
+    CHECK(per_table ==
+          doctest::Approx(std::pow(1.0 - distance / static_cast<double>(t.d_c), bits)).epsilon(0.08));
+    CHECK(per_group ==
+          doctest::Approx(lsh_collision_probability(distance, t.d_c, bits, groups_of)).epsilon(0.08));
   }
 }
 

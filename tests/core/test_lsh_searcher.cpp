@@ -30,7 +30,8 @@ struct Searcher {
 
 bool sorted(const Candidate* c, uint32_t n) {
   for (uint32_t i = 1; i < n; ++i)
-    if (c[i - 1].distance > c[i].distance || (c[i - 1].distance == c[i].distance && c[i - 1].feature >= c[i].feature))
+    if (c[i - 1].distance > c[i].distance ||
+        (c[i - 1].distance == c[i].distance && c[i - 1].feature >= c[i].feature))
       return false;
   return true;
 }

@@ -71,7 +71,7 @@ TEST_CASE("normals of a sphere are radial and point away from its centre") {
 TEST_CASE("points with too few neighbours or on a line get no normal") {
   std::vector<float> pts;
   for (int i = 0; i < 40; ++i) pts.insert(pts.end(), {0.02f * static_cast<float>(i), 0.0f, 0.0f});  // a line
-  pts.insert(pts.end(), {10.0f, 10.0f, 10.0f, 10.05f, 10.0f, 10.0f, 10.0f, 10.05f, 10.0f});        // 3 alone
+  pts.insert(pts.end(), {10.0f, 10.0f, 10.0f, 10.05f, 10.0f, 10.0f, 10.0f, 10.05f, 10.0f});         // 3 alone
   Normals nm = estimate(pts);
   CHECK(nm.count == 0u);
   for (uint8_t h : nm.has) CHECK(h == 0u);

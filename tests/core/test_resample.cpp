@@ -28,7 +28,8 @@ constexpr float kCell = 0.2f;
 TEST_CASE("recentre subtracts the double mean, keeps georeferenced precision and drops non-finite points") {
   const double e = 431000.0, n = 4020000.0, z = 85.0;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<double> xyz{e + 1.0, n + 2.0, z + 3.0, nan, n, z, e - 1.0, n - 2.0, z - 3.0, e + 3.0, n, z};
+  const std::vector<double> xyz{e + 1.0, n + 2.0, z + 3.0, nan,     n, z,
+                                e - 1.0, n - 2.0, z - 3.0, e + 3.0, n, z};
   CloudView cloud;
   cloud.xyz_d = xyz.data();
   cloud.count = 4;

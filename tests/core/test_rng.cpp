@@ -10,7 +10,8 @@ using namespace spinhash;
 
 TEST_CASE("PCG32 reproduces the reference sequence of seed 42, stream 54") {
   Pcg32 rng(42u, 54u);
-  const uint32_t reference[6] = {0xa15c02b7u, 0x7b47f409u, 0xba1d3330u, 0x83d2f293u, 0xbfa4784bu, 0xcbed606eu};
+  const uint32_t reference[6] = {0xa15c02b7u, 0x7b47f409u, 0xba1d3330u,
+                                 0x83d2f293u, 0xbfa4784bu, 0xcbed606eu};
   for (uint32_t expected : reference) CHECK(rng.next() == expected);
 }
 

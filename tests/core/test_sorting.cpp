@@ -45,7 +45,8 @@ TEST_CASE("heap_sort equals std::sort for a strict order, at every length") {
   for (uint32_t n = 0; n <= 70; ++n) {
     std::vector<uint32_t> v = tied_values(n, 100 + n);
     std::vector<uint64_t> keys(n), expected(n);
-    for (uint32_t i = 0; i < n; ++i) keys[i] = expected[i] = (static_cast<uint64_t>(v[i]) << 32) | i;  // unique
+    for (uint32_t i = 0; i < n; ++i)
+      keys[i] = expected[i] = (static_cast<uint64_t>(v[i]) << 32) | i;  // unique
     std::sort(expected.begin(), expected.end());
     heap_sort(keys.data(), n, [](uint64_t a, uint64_t b) { return a < b; });
     CHECK(keys == expected);

@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "descriptor/spin_image.hpp"
-#include "support/grid_fixture.hpp"
 #include "support/geometry_fixtures.hpp"
+#include "support/grid_fixture.hpp"
 
 using namespace spinhash;
 

@@ -72,20 +72,24 @@ TEST_CASE_FIXTURE(Fixture, "verification stops as soon as the score to beat is o
 
 TEST_CASE_FIXTURE(Fixture, "another model explains the query worse than its own") {
   const float own = verify_pose(toy.db, kModel, truth, q.view, lp, kNoScoreToBeat, false).log_likelihood;
-  const float other = verify_pose(toy.db, kModel + 1u, truth, q.view, lp, kNoScoreToBeat, false).log_likelihood;
+  const float other =
+      verify_pose(toy.db, kModel + 1u, truth, q.view, lp, kNoScoreToBeat, false).log_likelihood;
   CHECK(other < own - 0.5f * static_cast<float>(q.view.count));
 }
 
 TEST_CASE_FIXTURE(Fixture, "refine_pose, repeated, recovers the pose from a perturbed one") {
   // 1.5 degrees about a tilted axis and 6 cm: most features find their own counterpart at once.
   RigidPose start = truth;
-  start.rotation = Eigen::AngleAxisf(1.5f * kDegree, Eigen::Vector3f(0.3f, 0.5f, 0.8f).normalized()) * truth.rotation;
+  start.rotation =
+      Eigen::AngleAxisf(1.5f * kDegree, Eigen::Vector3f(0.3f, 0.5f, 0.8f).normalized()) * truth.rotation;
   start.translation += Eigen::Vector3f(0.04f, -0.03f, 0.03f);
   REQUIRE(angle_between(start.rotation, truth.rotation) > 1.4f * kDegree);
   RigidPose refined = start;
   REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &refined));
-  CHECK(angle_between(refined.rotation, truth.rotation) < 0.5f * angle_between(start.rotation, truth.rotation));
-  CHECK((refined.translation - truth.translation).norm() < 0.5f * (start.translation - truth.translation).norm());
+  CHECK(angle_between(refined.rotation, truth.rotation) <
+        0.5f * angle_between(start.rotation, truth.rotation));
+  CHECK((refined.translation - truth.translation).norm() <
+        0.5f * (start.translation - truth.translation).norm());
   for (int step = 0; step < kRefineSteps; ++step) REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &refined));
   CHECK(angle_between(refined.rotation, truth.rotation) < 0.05f * kDegree);
   CHECK((refined.translation - truth.translation).norm() < 1e-3f);

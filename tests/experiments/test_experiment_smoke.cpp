@@ -24,9 +24,10 @@ size_t count_lines(const std::string& text) {
 TEST_CASE("experiment accuracy runs end to end on a tiny fleet") {
   TempDir dir("experiment-smoke");
   const std::string out = dir.file("acc");
-  const std::string cmd = "'" SPINHASH_EXPERIMENT_BINARY "' accuracy --models 4 --queries-per-model 1 "
-                          "--noise 0.05 --occlusion 0 --modes bran,sind --max-k 3 --out '" + out + "' 2> '" +
-                          dir.file("stderr.txt") + "'";
+  const std::string cmd = "'" SPINHASH_EXPERIMENT_BINARY
+                          "' accuracy --models 4 --queries-per-model 1 "
+                          "--noise 0.05 --occlusion 0 --modes bran,sind --max-k 3 --out '" +
+                          out + "' 2> '" + dir.file("stderr.txt") + "'";
   REQUIRE(std::system(cmd.c_str()) == 0);
   const std::string curves = read_bytes(out + "/accuracy.csv");
   CHECK(curves.rfind("mode,noise,occlusion,ground,spacing,k,p_correct_within_k,queries\n", 0) == 0);
@@ -41,9 +42,10 @@ TEST_CASE("experiment accuracy runs end to end on a tiny fleet") {
 TEST_CASE("experiment accuracy: look-alike copies in the database, a sparser scan, calibration") {
   TempDir dir("experiment-lookalikes");
   const std::string out = dir.file("acc");
-  const std::string cmd = "'" SPINHASH_EXPERIMENT_BINARY "' accuracy --models 3 --lookalikes 5 --queries-per-model 1 "
-                          "--noise 0.05 --occlusion 0 --spacing 0.1 --modes bran --max-k 3 --out '" + out + "' 2> '" +
-                          dir.file("stderr.txt") + "'";
+  const std::string cmd = "'" SPINHASH_EXPERIMENT_BINARY
+                          "' accuracy --models 3 --lookalikes 5 --queries-per-model 1 "
+                          "--noise 0.05 --occlusion 0 --spacing 0.1 --modes bran --max-k 3 --out '" +
+                          out + "' 2> '" + dir.file("stderr.txt") + "'";
   REQUIRE(std::system(cmd.c_str()) == 0);
   const std::string per_query = read_bytes(out + "/per_query.csv");
   CHECK(count_lines(per_query) == 1u + 3u);  // queries scan the 3 originals only
@@ -54,7 +56,8 @@ TEST_CASE("experiment accuracy: look-alike copies in the database, a sparser sca
   CHECK(summary.find("spacing 10 cm") != std::string::npos);
   CHECK(summary.find("## Confidence") != std::string::npos);
   const std::string calibration = read_bytes(out + "/calibration.csv");
-  CHECK(calibration.rfind("mode,condition,queries,right_first,confident,confident_right,precision,recall,", 0) == 0);
+  CHECK(calibration.rfind("mode,condition,queries,right_first,confident,confident_right,precision,recall,",
+                          0) == 0);
   CHECK(count_lines(calibration) == 1u + 2u);  // all conditions + the one condition
   CHECK(calibration.find("bran,all,3,") != std::string::npos);
 }

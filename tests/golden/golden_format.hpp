@@ -8,7 +8,7 @@
 namespace spinhash {
 namespace golden {
 
-constexpr uint32_t kMaxGoldenRanked = 8;  // ranking entries kept per query
+constexpr uint32_t kMaxGoldenRanked = 8;     // ranking entries kept per query
 constexpr uint32_t kBytesPerCoordinate = 2;  // golden_queries.i16: little-endian int16 millimetres
 constexpr float kMetresPerUnit = 0.001f;
 
@@ -25,15 +25,15 @@ struct GoldenEntry {
 };
 
 struct GoldenQuery {
-  uint32_t first_point;   // index of its first xyz triple in golden_queries.i16
+  uint32_t first_point;  // index of its first xyz triple in golden_queries.i16
   uint32_t point_count;
   Mode mode;
-  uint32_t features;      // stats.features
-  uint32_t hypotheses;    // stats.hypotheses
+  uint32_t features;    // stats.features
+  uint32_t hypotheses;  // stats.hypotheses
   bool budget_exhausted;
   uint32_t ranking_count;
   GoldenEntry ranking[kMaxGoldenRanked];  // the first min(ranking_count, kMaxGoldenRanked)
-  double pose[12];        // best model: rotation row-major, then translation
+  double pose[12];                        // best model: rotation row-major, then translation
 };
 
 }  // namespace golden

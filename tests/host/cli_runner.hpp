@@ -29,7 +29,8 @@ inline std::string shell_quoted(const std::string& path) { return "'" + path + "
 // `args` are passed through the shell: quote paths with shell_quoted().
 inline CliRun run_spinhash(const TempDir& dir, const std::string& args) {
   const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
-  const std::string cmd = "'" SPINHASH_TEST_BINARY "' " + args + " > " + shell_quoted(out) + " 2> " + shell_quoted(err);
+  const std::string cmd =
+      "'" SPINHASH_TEST_BINARY "' " + args + " > " + shell_quoted(out) + " 2> " + shell_quoted(err);
   const int raw = std::system(cmd.c_str());
   CliRun r;
   r.exit_code = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

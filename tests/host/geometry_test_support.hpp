@@ -20,8 +20,7 @@ class TempDir {
  public:
   explicit TempDir(const std::string& tag) {
     std::random_device entropy;
-    path_ = std::filesystem::temp_directory_path() /
-            ("spinhash-" + tag + "-" + std::to_string(entropy()));
+    path_ = std::filesystem::temp_directory_path() / ("spinhash-" + tag + "-" + std::to_string(entropy()));
     std::filesystem::create_directories(path_);
   }
   ~TempDir() {

@@ -55,8 +55,8 @@ struct TempDir {
 std::vector<uint8_t> tiny_blob_bytes() {
   std::vector<uint8_t> bytes;
   std::string error;
-  REQUIRE(host::serialize_blob(host::make_tiny_blob_content(2, 10, 3), host::ByteOrder::kNative,
-                               &bytes, &error));
+  REQUIRE(
+      host::serialize_blob(host::make_tiny_blob_content(2, 10, 3), host::ByteOrder::kNative, &bytes, &error));
   return bytes;
 }
 

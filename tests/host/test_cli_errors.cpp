@@ -41,7 +41,8 @@ struct Fixture {
     REQUIRE(run("generate --count 2 -o " + q(meshes)).exit_code == kExitOk);
     REQUIRE(run("build --quiet -o " + q(good_db) + " " + q(meshes)).exit_code == kExitOk);
     const std::string mesh = fs::directory_iterator(meshes)->path().string();
-    REQUIRE(run("scan " + q(mesh) + " -o " + q(query) + " --views 2 --spacing 0.08 --seed 3").exit_code == kExitOk);
+    REQUIRE(run("scan " + q(mesh) + " -o " + q(query) + " --views 2 --spacing 0.08 --seed 3").exit_code ==
+            kExitOk);
     good_bytes = read_bytes(good_db);
     REQUIRE(!good_bytes.empty());
   }
@@ -63,10 +64,10 @@ const BadInput kBadInputs[] = {
     {"empty.obj", "", false},
     {"point.obj", "v 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 3\n", false},  // zero area
     {"line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", false},   // collinear: zero area
-    {"nomeshes", "", true},                                      // holds only a text file
+    {"nomeshes", "", true},                                        // holds only a text file
     {"nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", false},
-    {"index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", false},    // a face past the vertices
-    {"huge.obj", "v 0 0 0\nv 1e30 0 0\nv 0 1e30 0\nf 1 2 3\n", false},  // far too many rays to scan
+    {"index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", false},         // a face past the vertices
+    {"huge.obj", "v 0 0 0\nv 1e30 0 0\nv 0 1e30 0\nf 1 2 3\n", false},    // far too many rays to scan
     {"tiny.obj", "v 0 0 0\nv 0.001 0 0\nv 0 0.001 0\nf 1 2 3\n", false},  // smaller than a ray step
 };
 
@@ -105,7 +106,8 @@ TEST_CASE("build refuses meshes that won't load, empty or degenerate meshes and 
     CHECK(contains(r.err, fs::path(b.name).stem().string()));  // the file or the model it names
     CHECK_FALSE(fs::exists(out));
   }
-  const Run missing = f.run("build --quiet -o " + f.q(dir.file("x.shdb")) + " " + f.q(dir.file("missing.obj")));
+  const Run missing =
+      f.run("build --quiet -o " + f.q(dir.file("x.shdb")) + " " + f.q(dir.file("missing.obj")));
   CHECK(missing.exit_code == kExitError);
   CHECK(contains(missing.err, "missing.obj"));
 }
@@ -138,10 +140,12 @@ TEST_CASE("outputs that cannot be written are errors with a message") {
     std::string args;
   };
   const Case cases[] = {
-      {"build into a missing directory", "build --quiet -o " + f.q(dir.file("no/such/dir/db.shdb")) + " " + f.q(f.meshes)},
+      {"build into a missing directory",
+       "build --quiet -o " + f.q(dir.file("no/such/dir/db.shdb")) + " " + f.q(f.meshes)},
       {"build under a file", "build --quiet -o " + f.q(under_file + ".shdb") + " " + f.q(f.meshes)},
       {"build onto a directory", "build --quiet -o " + f.q(dir.path().string()) + " " + f.q(f.meshes)},
-      {"scan under a file", "scan " + f.q(fs::directory_iterator(f.meshes)->path().string()) + " -o " + f.q(under_file + ".ply")},
+      {"scan under a file",
+       "scan " + f.q(fs::directory_iterator(f.meshes)->path().string()) + " -o " + f.q(under_file + ".ply")},
       {"generate under a file", "generate --count 1 -o " + f.q(under_file)},
   };
   for (const Case& k : cases) {
@@ -162,15 +166,18 @@ TEST_CASE("recognize: malformed query files give an 'unreadable' JSON line each 
     std::string content;
   };
   const Case cases[] = {
-      {"truncated.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4\n" + xyz3 +
-                            "end_header\n" + std::string("\x00\x00\x80\x3f\x00\x00", 6)},
+      {"truncated.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4\n" + xyz3 + "end_header\n" +
+                            std::string("\x00\x00\x80\x3f\x00\x00", 6)},
       {"fewer.ply", "ply\nformat ascii 1.0\nelement vertex 5\n" + xyz3 + "end_header\n1 2 3\n4 5 6\n"},
       {"more.ply", "ply\nformat ascii 1.0\nelement vertex 1\n" + xyz3 + "end_header\n1 2 3\n4 5 6\n"},
       {"negative.ply", "ply\nformat ascii 1.0\nelement vertex -3\n" + xyz3 + "end_header\n"},
-      {"huge.ply", "ply\nformat binary_big_endian 1.0\nelement vertex 18446744073709551615\n" + xyz3 + "end_header\n"},
-      {"type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\nproperty float y\n"
-                   "property float z\nend_header\n1 2 3\n"},
-      {"noz.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n1 2\n"},
+      {"huge.ply",
+       "ply\nformat binary_big_endian 1.0\nelement vertex 18446744073709551615\n" + xyz3 + "end_header\n"},
+      {"type.ply",
+       "ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\nproperty float y\n"
+       "property float z\nend_header\n1 2 3\n"},
+      {"noz.ply",
+       "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n1 2\n"},
       {"format.ply", "ply\nformat binary_middle_endian 1.0\nelement vertex 0\n" + xyz3 + "end_header\n"},
       {"noend.ply", "ply\nformat ascii 1.0\nelement vertex 1\n" + xyz3},
       {"short.xyz", "1 2\n3 4 5\n"},
@@ -240,8 +247,8 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
     CAPTURE(k.name);
     const std::string path = dir.file(k.name);
     write_bytes(path, k.bytes);
-    for (const std::string& cmd : {"verify " + f.q(path), "info " + f.q(path),
-                                   "recognize --db " + f.q(path) + " " + f.q(f.query)}) {
+    for (const std::string& cmd :
+         {"verify " + f.q(path), "info " + f.q(path), "recognize --db " + f.q(path) + " " + f.q(f.query)}) {
       CAPTURE(cmd);
       const Run r = f.run(cmd);
       CHECK(r.exit_code == kExitError);

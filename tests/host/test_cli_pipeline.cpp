@@ -20,7 +20,8 @@ struct Pipeline {
   TempDir dir{"cli-pipeline"};
   std::string meshes = dir.file("fleet"), db = dir.file("fleet.shdb");
   Pipeline() {
-    REQUIRE(run_spinhash(dir, "generate --count " + std::to_string(kVehicles) + " -o " + shell_quoted(meshes)).exit_code == 0);
+    REQUIRE(run_spinhash(dir, "generate --count " + std::to_string(kVehicles) + " -o " + shell_quoted(meshes))
+                .exit_code == 0);
     CliRun b = run_spinhash(dir, "build --quiet -o " + shell_quoted(db) + " " + shell_quoted(meshes));
     INFO(b.err);
     REQUIRE(b.exit_code == 0);
@@ -47,7 +48,8 @@ TEST_CASE("build writes a database that info describes and verify checks") {
   CHECK(contains(info.out, "models        6"));
   CHECK(contains(info.out, "sedan-00"));
   CHECK(contains(info.out, "10x10 bins, R = 1 m"));
-  CliRun verify = run_spinhash(p.dir, "verify --quiet --queries 1 " + shell_quoted(p.db) + " " + shell_quoted(p.meshes));
+  CliRun verify =
+      run_spinhash(p.dir, "verify --quiet --queries 1 " + shell_quoted(p.db) + " " + shell_quoted(p.meshes));
   INFO(verify.err);
   CHECK(verify.exit_code == 0);
   CHECK(contains(verify.out, "integrity     ok"));
@@ -57,16 +59,18 @@ TEST_CASE("build writes a database that info describes and verify checks") {
 TEST_CASE("a georeferenced airborne scan in a random pose is recognised with its pose, in every mode") {
   const Pipeline& p = pipeline();
   const std::string query = p.dir.file("truck-00.ply"), pose = p.dir.file("truck-00.pose");
-  CliRun scan = run_spinhash(p.dir, "scan " + shell_quoted(p.meshes + "/truck-00.obj") + " -o " + shell_quoted(query) +
-                                        " --noise 0.05 --seed 11 --random-pose --offset 500000 4000000 120"
-                                        " --pose-out " + shell_quoted(pose));
+  CliRun scan =
+      run_spinhash(p.dir, "scan " + shell_quoted(p.meshes + "/truck-00.obj") + " -o " + shell_quoted(query) +
+                              " --noise 0.05 --seed 11 --random-pose --offset 500000 4000000 120"
+                              " --pose-out " +
+                              shell_quoted(pose));
   REQUIRE(scan.exit_code == 0);
   Eigen::Matrix4d truth;
   std::string error;
   REQUIRE(spinhash::host::read_pose(pose, &truth, &error));
   for (const char* mode : {"bran", "sran", "sind"}) {
-    CliRun r = run_spinhash(p.dir, std::string("recognize --top 3 --mode ") + mode + " --db " + shell_quoted(p.db) + " " +
-                                       shell_quoted(query));
+    CliRun r = run_spinhash(p.dir, std::string("recognize --top 3 --mode ") + mode + " --db " +
+                                       shell_quoted(p.db) + " " + shell_quoted(query));
     CAPTURE(mode);
     INFO(r.err);
     REQUIRE(r.exit_code == 0);

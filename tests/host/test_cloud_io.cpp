@@ -94,12 +94,11 @@ TEST_CASE("hand-written binary big-endian PLY with mixed types and extra propert
   ply += raw(35.0, true) + raw(uint8_t(2), true) + raw(int32_t(7), true) + raw(int32_t(8), true);
   const double points[2][3] = {{1.5, -2.25, 3.0}, {500000.125, 4000000.5, -7.0}};
   for (const auto& p : points) {
-    ply += raw(uint8_t(200), true) + raw(float(p[0]), true) + raw(p[1], true) +
-           raw(int16_t(-5), true) + raw(float(p[2]), true);
+    ply += raw(uint8_t(200), true) + raw(float(p[0]), true) + raw(p[1], true) + raw(int16_t(-5), true) +
+           raw(float(p[2]), true);
     ply += raw(uint8_t(1), true) + raw(0.5f, true);
   }
-  ply += raw(uint8_t(3), true) + raw(int32_t(0), true) + raw(int32_t(1), true) +
-         raw(int32_t(0), true);
+  ply += raw(uint8_t(3), true) + raw(int32_t(0), true) + raw(int32_t(1), true) + raw(int32_t(0), true);
   std::vector<double> xyz;
   std::string error;
   REQUIRE_MESSAGE(parse(ply, &xyz, &error), error);
@@ -113,10 +112,11 @@ TEST_CASE("hand-written binary big-endian PLY with mixed types and extra propert
 }
 
 TEST_CASE("face element after the vertices, binary and ascii") {
-  std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
-                       "property float x\nproperty float y\nproperty float z\n"
-                       "element face 2\nproperty list uchar uint vertex_indices\n"
-                       "property uchar flags\nend_header\n";
+  std::string binary =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+      "property float x\nproperty float y\nproperty float z\n"
+      "element face 2\nproperty list uchar uint vertex_indices\n"
+      "property uchar flags\nend_header\n";
   for (float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) binary += raw(v, false);
   for (int f = 0; f < 2; ++f) {
     binary += raw(uint8_t(3), false);
@@ -147,20 +147,31 @@ TEST_CASE("malformed PLY files fail cleanly with a clear message") {
   const std::string header = "ply\nformat binary_little_endian 1.0\n";
   check_rejected(good.substr(0, good.size() - 3), "truncated");
   check_rejected(good + "xx", "unexpected data");
-  check_rejected("ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
-                 "property float y\nproperty float z\nend_header\n" + good.substr(good.find("end_header\n") + 11),
-                 "claims 3 entries");
-  check_rejected(header + "element vertex 1000000000000\nproperty float x\nproperty float y\n"
-                 "property float z\nend_header\n" + std::string(24, '\0'), "claims 1000000000000");
-  check_rejected("ply\nformat ascii 1.0\nelement vertex 1000000000000\nproperty float x\n"
-                 "property float y\nproperty float z\nend_header\n1 2 3\n", "too short");
+  check_rejected(
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nend_header\n" +
+          good.substr(good.find("end_header\n") + 11),
+      "claims 3 entries");
+  check_rejected(header +
+                     "element vertex 1000000000000\nproperty float x\nproperty float y\n"
+                     "property float z\nend_header\n" +
+                     std::string(24, '\0'),
+                 "claims 1000000000000");
+  check_rejected(
+      "ply\nformat ascii 1.0\nelement vertex 1000000000000\nproperty float x\n"
+      "property float y\nproperty float z\nend_header\n1 2 3\n",
+      "too short");
   check_rejected(header + "element vertex 1\nproperty float128 x\nend_header\n", "unknown type");
   check_rejected(header + "element vertex 1\nproperty float x\nproperty float y\nproperty float z\n",
                  "missing end_header");
-  check_rejected(header + "element vertex 1\nproperty float x\nproperty float z\nend_header\n" +
-                 std::string(8, '\0'), "no property y");
-  check_rejected(header + "element vertex 1\nproperty int x\nproperty float y\nproperty float z\n"
-                 "end_header\n" + std::string(12, '\0'), "float or double");
+  check_rejected(
+      header + "element vertex 1\nproperty float x\nproperty float z\nend_header\n" + std::string(8, '\0'),
+      "no property y");
+  check_rejected(header +
+                     "element vertex 1\nproperty int x\nproperty float y\nproperty float z\n"
+                     "end_header\n" +
+                     std::string(12, '\0'),
+                 "float or double");
   check_rejected(header + "element vertex -5\nend_header\n", "invalid element count");
   check_rejected(header + "element vertex 1x\nend_header\n", "invalid element count");
   check_rejected("ply\nformat binary_middle_endian 1.0\nend_header\n", "unknown format");
@@ -172,20 +183,31 @@ TEST_CASE("malformed PLY files fail cleanly with a clear message") {
   check_rejected(header + "element vertex 0\nelement vertex 0\nend_header\n", "duplicate element");
   check_rejected(header + "element face 0\nend_header\n", "no vertex element");
   check_rejected(header + "bogus line\nend_header\n", "unknown keyword");
-  check_rejected(header + "element vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
-                 "element face 1\nproperty list float int idx\nend_header\n", "list count type");
-  check_rejected(header + "element vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
-                 "element face 1\nproperty list uint int idx\nend_header\n" + raw(uint32_t(1u << 30), false),
+  check_rejected(header +
+                     "element vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
+                     "element face 1\nproperty list float int idx\nend_header\n",
+                 "list count type");
+  check_rejected(header +
+                     "element vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
+                     "element face 1\nproperty list uint int idx\nend_header\n" +
+                     raw(uint32_t(1u << 30), false),
                  "truncated in a list");
-  check_rejected("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-                 "property float z\nend_header\n1 2 zz\n", "invalid number");
-  check_rejected("ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
-                 "property float z\nend_header\n1.000 2.000 3.000\n4.000 5.000\n", "ends early");
-  check_rejected("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-                 "property float z\nend_header\n1 2 3\n4 5 6\n", "unexpected data");
-  check_rejected("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-                 "property float z\nelement face 1\nproperty list uchar int i\nend_header\n1 2 3\n-2\n",
-                 "invalid list length");
+  check_rejected(
+      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n1 2 zz\n",
+      "invalid number");
+  check_rejected(
+      "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n1.000 2.000 3.000\n4.000 5.000\n",
+      "ends early");
+  check_rejected(
+      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n1 2 3\n4 5 6\n",
+      "unexpected data");
+  check_rejected(
+      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int i\nend_header\n1 2 3\n-2\n",
+      "invalid list length");
   check_rejected("ply\n" + std::string(sh::ply::kMaxHeaderBytes, 'c') + "\n", "missing end_header");
 }
 
@@ -210,7 +232,9 @@ TEST_CASE("plain text clouds: x y z per line") {
   std::vector<double> xyz;
   std::string error;
   REQUIRE_MESSAGE(parse("x y z intensity\n# a comment\n1 2 3 99\n\n4,5,6\n7\t8\t9 # note\n"
-                        "nan -1e2 +3.5\r\n", &xyz, &error), error);
+                        "nan -1e2 +3.5\r\n",
+                        &xyz, &error),
+                  error);
   REQUIRE(xyz.size() == 12);
   CHECK(xyz[3] == 4.0);
   CHECK(xyz[8] == 9.0);
@@ -248,7 +272,8 @@ TEST_CASE("read_cloud: files on disk and file errors") {
 TEST_CASE("poses round trip exactly; malformed poses are rejected") {
   TempDir dir("cloud");
   Eigen::Matrix4d pose = Eigen::Matrix4d::Identity();
-  pose.topLeftCorner<3, 3>() = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  pose.topLeftCorner<3, 3>() =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   pose.topRightCorner<3, 1>() = Eigen::Vector3d(500000.1, 4000000.2, 100.3);
   std::string error;
   REQUIRE_MESSAGE(sh::write_pose(dir.file("pose.txt"), pose, &error), error);

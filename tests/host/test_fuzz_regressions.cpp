@@ -21,8 +21,8 @@ std::string ply_with_list_count(const std::string& count) {
 TEST_CASE("fuzz_cloud_reader: an ASCII list length beyond uint64 is refused, not cast") {
   // Found by fuzz_cloud_reader: 3.2e78 was cast to uint64_t before any range
   // check (undefined behaviour, reported by UBSan's float-cast-overflow).
-  for (const char* count : {"3.2222222222222222e78", "1e19", "18446744073709551616", "4294967296", "-1", "2.5",
-                            "nan", "inf"}) {
+  for (const char* count :
+       {"3.2222222222222222e78", "1e19", "18446744073709551616", "4294967296", "-1", "2.5", "nan", "inf"}) {
     CAPTURE(count);
     std::vector<double> xyz;
     std::string error;

@@ -58,8 +58,8 @@ TEST_CASE("written OBJ and PLY meshes load back identical in shape") {
   for (const std::string name : {"van.obj", "van.ply"}) {
     CAPTURE(name);
     const std::string path = dir.file(name);
-    const bool written = name.back() == 'j' ? sh::write_obj(path, van, &error)
-                                            : sh::write_mesh_ply(path, van, &error);
+    const bool written =
+        name.back() == 'j' ? sh::write_obj(path, van, &error) : sh::write_mesh_ply(path, van, &error);
     REQUIRE_MESSAGE(written, error);
     CHECK_FALSE(std::filesystem::exists(path + ".tmp"));
     sh::Mesh loaded;

@@ -59,11 +59,14 @@ TEST_CASE("PIE 4 header accepted; malformed files refused with a reason") {
   sh::Mesh m;
   sh::PieInfo info;
   std::string error;
-  CHECK(parse("PIE 4\nLEVELS 1\nLEVEL 1\nPOINTS 3\n0 0 0\n1 0 0\n0 1 0\nPOLYGONS 1\n200 3 0 1 2\n", &m, &info, &error));
+  CHECK(parse("PIE 4\nLEVELS 1\nLEVEL 1\nPOINTS 3\n0 0 0\n1 0 0\n0 1 0\nPOLYGONS 1\n200 3 0 1 2\n", &m, &info,
+              &error));
   CHECK_FALSE(parse("PIE 5\n", &m, &info, &error));
   CHECK_FALSE(parse("OBJ\n", &m, &info, &error));
-  CHECK_FALSE(parse("PIE 3\nLEVEL 1\nPOINTS 3\n0 0 0\n1 0 0\nPOLYGONS 0\n", &m, &info, &error));  // 2 of 3 points
-  CHECK_FALSE(parse("PIE 3\nLEVEL 1\nPOINTS 3\n0 0 0\n1 0 0\n0 1 0\nPOLYGONS 1\n200 3 0 1 3\n", &m, &info, &error));
+  CHECK_FALSE(
+      parse("PIE 3\nLEVEL 1\nPOINTS 3\n0 0 0\n1 0 0\nPOLYGONS 0\n", &m, &info, &error));  // 2 of 3 points
+  CHECK_FALSE(
+      parse("PIE 3\nLEVEL 1\nPOINTS 3\n0 0 0\n1 0 0\n0 1 0\nPOLYGONS 1\n200 3 0 1 3\n", &m, &info, &error));
   CHECK(error.find("out of range") != std::string::npos);
   CHECK_FALSE(parse("PIE 3\nLEVEL 1\nPOINTS 1\n0 nan 0\n", &m, &info, &error));
   CHECK_FALSE(parse("PIE 3\nLEVEL 1\nPOINTS 3\n0 0 0\n1 0 0\n0 1 0\n", &m, &info, &error));  // no polygons

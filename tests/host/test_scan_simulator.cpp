@@ -62,7 +62,7 @@ TEST_CASE("ray caster: hits, misses, geometry ids") {
   sh::RayCaster caster;
   std::string error;
   sh::Mesh empty;
-  REQUIRE(caster.add_mesh(empty, Eigen::Vector3d::Zero(), &error));  // id 0, nothing to hit
+  REQUIRE(caster.add_mesh(empty, Eigen::Vector3d::Zero(), &error));        // id 0, nothing to hit
   REQUIRE(caster.add_mesh(test_box(), Eigen::Vector3d(0, 0, 1), &error));  // id 1, centred
   REQUIRE(caster.commit(&error));
   std::vector<sh::Ray> rays = {{{5, 0, 0}, {-1, 0, 0}}, {{5, 0, 0}, {1, 0, 0}}, {{0, 0, 9}, {0, 0, -2}}};
@@ -138,8 +138,8 @@ TEST_CASE("noise is Gaussian along the rays with the requested sigma") {
     REQUIRE(n > scan.size() * 9 / 10);
     const double mean = sum / n;
     const double std_dev = std::sqrt(sum_sq / n - mean * mean);
-    MESSAGE("noise sigma " << sigma << ": residual along rays mean " << mean << " std "
-                           << std_dev << " over " << n << " points");
+    MESSAGE("noise sigma " << sigma << ": residual along rays mean " << mean << " std " << std_dev << " over "
+                           << n << " points");
     CHECK(std::abs(mean) < 0.1 * sigma);
     CHECK(std_dev == doctest::Approx(sigma).epsilon(0.2));
   }
@@ -281,8 +281,8 @@ TEST_CASE("paper presets and measured scan sizes") {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   REQUIRE(scan.ok());
   MESSAGE("sedan " << sedan.bounding_box().size().x() << " m, 0.05 m spacing: points per view "
-                   << scan.view_points[0] << " " << scan.view_points[1] << " "
-                   << scan.view_points[2] << ", query scan " << ms << " ms");
+                   << scan.view_points[0] << " " << scan.view_points[1] << " " << scan.view_points[2]
+                   << ", query scan " << ms << " ms");
   for (uint32_t n : scan.view_points) {
     CHECK(n > 2000);
     CHECK(n < 6000);

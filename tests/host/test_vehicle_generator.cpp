@@ -141,7 +141,7 @@ TEST_CASE("every generated vehicle is a valid closed solid standing on z = 0") {
     CHECK(closed_and_consistent(mesh));
     for (double v : part_volumes(mesh)) CHECK(v > 0.0);
     const sh::Box3 box = mesh.bounding_box();
-    CHECK(std::abs(box.lo.z()) < 1e-3);      // wheels or tracks touch the ground
+    CHECK(std::abs(box.lo.z()) < 1e-3);        // wheels or tracks touch the ground
     CHECK(std::abs(box.center().y()) < 1e-4);  // left-right symmetric
     if (!spec.barrel && !spec.spare_wheel) CHECK(std::abs(box.center().x()) < 0.15);
     CHECK(box.size().z() == doctest::Approx(spec.height).epsilon(0.12));
@@ -194,8 +194,8 @@ TEST_CASE("ground patch: flat or bumpy square facing up") {
   CHECK(box.lo.x() == doctest::Approx(-10.0));
   for (std::size_t t = 0; t < flat.triangle_count(); ++t) {
     const Eigen::Vector3d a = flat.vertex(flat.triangles[3 * t]);
-    const Eigen::Vector3d n = (flat.vertex(flat.triangles[3 * t + 1]) - a)
-                                  .cross(flat.vertex(flat.triangles[3 * t + 2]) - a);
+    const Eigen::Vector3d n =
+        (flat.vertex(flat.triangles[3 * t + 1]) - a).cross(flat.vertex(flat.triangles[3 * t + 2]) - a);
     REQUIRE(n.z() > 0.0);
   }
   const sh::Mesh bumpy = sh::make_ground_patch(5.0, -0.5, 0.03, 7);

@@ -36,8 +36,8 @@ void BlobPatch::reseal_header() {
   blob::Header& h = header();
   h.header_crc = 0u;
   const size_t table = h.section_count * sizeof(blob::SectionEntry);
-  const size_t covered = sizeof(blob::Header) + table <= size() ? sizeof(blob::Header) + table
-                                                                : sizeof(blob::Header);
+  const size_t covered =
+      sizeof(blob::Header) + table <= size() ? sizeof(blob::Header) + table : sizeof(blob::Header);
   h.header_crc = crc32c(data(), covered);
 }
 

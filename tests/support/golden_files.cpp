@@ -35,7 +35,8 @@ std::vector<float> golden_query_points() {
   host::AlignedBytes raw = read_golden("golden_queries.i16");
   REQUIRE(raw.size() == static_cast<size_t>(golden::kQueryPoints) * 3u * golden::kBytesPerCoordinate);
   std::vector<float> xyz(raw.size() / golden::kBytesPerCoordinate);
-  for (size_t i = 0; i < xyz.size(); ++i) xyz[i] = golden::decode_mm(raw.data() + golden::kBytesPerCoordinate * i);
+  for (size_t i = 0; i < xyz.size(); ++i)
+    xyz[i] = golden::decode_mm(raw.data() + golden::kBytesPerCoordinate * i);
   return xyz;
 }
 

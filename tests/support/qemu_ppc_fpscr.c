@@ -18,14 +18,14 @@
 
 enum {
   kPrimaryOpcode = 63,
-  kMffsFamilyXo = 583,    /* mffs and its ISA 3.0 variants */
-  kMffscrn = 22,          /* field A selecting the variant */
+  kMffsFamilyXo = 583, /* mffs and its ISA 3.0 variants */
+  kMffscrn = 22,       /* field A selecting the variant */
   kMffscrni = 23,
   kMffsl = 24,
-  kNipIndex = 32,         /* gregs index of the next instruction address */
+  kNipIndex = 32, /* gregs index of the next instruction address */
 };
-static const uint32_t kControlMask = 0xFFu;       /* VE OE UE ZE XE NI RN */
-static const uint32_t kStatusMask = 0x7F000u;     /* FR FI FPRF, returned by mffsl */
+static const uint32_t kControlMask = 0xFFu;   /* VE OE UE ZE XE NI RN */
+static const uint32_t kStatusMask = 0x7F000u; /* FR FI FPRF, returned by mffsl */
 static const uint32_t kRoundingMask = 0x3u;
 
 static uint64_t bits_of(double d) {
@@ -48,7 +48,7 @@ static void emulate_mffs_variant(int sig, siginfo_t* info, void* context) {
   const uint32_t a = (insn >> 16) & 0x1Fu, rt = (insn >> 21) & 0x1Fu, rb = (insn >> 11) & 0x1Fu;
   const int family = (insn >> 26) == kPrimaryOpcode && ((insn >> 1) & 0x3FFu) == kMffsFamilyXo;
   if (!family || (a != kMffscrn && a != kMffscrni && a != kMffsl)) {
-    signal(SIGILL, SIG_DFL);  /* a genuine illegal instruction: die as usual */
+    signal(SIGILL, SIG_DFL); /* a genuine illegal instruction: die as usual */
     return;
   }
   const uint64_t fpscr = bits_of(mc->fpregs.fpscr);

@@ -16,12 +16,12 @@ struct Box {
 
 // Each toy is a hull plus a cabin or turret box; sizes differ by 0.3-1 m.
 const Box kToyParts[kToyModels][2] = {
-    {{0, 0, 0.75f, 4.5f, 1.8f, 0.9f}, {-0.3f, 0, 1.45f, 2.2f, 1.6f, 0.6f}},   // sedan-like
-    {{0, 0, 0.9f, 5.0f, 2.0f, 1.2f}, {1.2f, 0, 1.8f, 1.6f, 1.9f, 0.8f}},       // pickup-like
-    {{0, 0, 1.0f, 6.5f, 2.4f, 1.4f}, {-2.0f, 0, 2.1f, 1.8f, 2.3f, 1.0f}},      // truck-like
-    {{0, 0, 0.8f, 6.0f, 3.0f, 1.0f}, {0.4f, 0, 1.6f, 2.4f, 2.0f, 0.7f}},       // tank-like
-    {{0, 0, 1.1f, 4.8f, 2.0f, 1.6f}, {2.0f, 0, 0.7f, 0.8f, 1.9f, 0.8f}},       // van-like
-    {{0, 0, 0.7f, 3.8f, 1.7f, 0.8f}, {0.2f, 0, 1.3f, 1.5f, 1.5f, 0.5f}},       // small car
+    {{0, 0, 0.75f, 4.5f, 1.8f, 0.9f}, {-0.3f, 0, 1.45f, 2.2f, 1.6f, 0.6f}},  // sedan-like
+    {{0, 0, 0.9f, 5.0f, 2.0f, 1.2f}, {1.2f, 0, 1.8f, 1.6f, 1.9f, 0.8f}},     // pickup-like
+    {{0, 0, 1.0f, 6.5f, 2.4f, 1.4f}, {-2.0f, 0, 2.1f, 1.8f, 2.3f, 1.0f}},    // truck-like
+    {{0, 0, 0.8f, 6.0f, 3.0f, 1.0f}, {0.4f, 0, 1.6f, 2.4f, 2.0f, 0.7f}},     // tank-like
+    {{0, 0, 1.1f, 4.8f, 2.0f, 1.6f}, {2.0f, 0, 0.7f, 0.8f, 1.9f, 0.8f}},     // van-like
+    {{0, 0, 0.7f, 3.8f, 1.7f, 0.8f}, {0.2f, 0, 1.3f, 1.5f, 1.5f, 0.5f}},     // small car
 };
 
 }  // namespace
@@ -43,7 +43,8 @@ bool make_toy_database(ToyDatabase* out, uint32_t twin_of) {
   std::vector<host::ModelCloud> clouds;
   for (uint32_t i = 0; i < kToyModels; ++i)
     clouds.push_back(host::ModelCloud{"toy-" + std::to_string(i), toy_vehicle_points(i, 0.05f)});
-  if (twin_of < kToyModels) clouds.push_back(host::ModelCloud{"toy-twin", toy_vehicle_points(twin_of, 0.05f)});
+  if (twin_of < kToyModels)
+    clouds.push_back(host::ModelCloud{"toy-twin", toy_vehicle_points(twin_of, 0.05f)});
   host::BuildOptions opt;
   host::BlobContent content;
   host::BuildReport report;

@@ -29,10 +29,10 @@ using namespace spinhash;
 
 namespace {
 
-constexpr float kSphereRadius = 1.5f;        // m: vehicle-sized, many basis points
-constexpr uint32_t kSpherePoints = 6000;     // ~0.07 m apart, near the 0.08 m voxel
-constexpr uint32_t kHugeBucketModels = 32;   // identical spheres
-constexpr float kDenseSpacing = 0.02f;       // m: a toy view denser than max_points allows
+constexpr float kSphereRadius = 1.5f;       // m: vehicle-sized, many basis points
+constexpr uint32_t kSpherePoints = 6000;    // ~0.07 m apart, near the 0.08 m voxel
+constexpr uint32_t kHugeBucketModels = 32;  // identical spheres
+constexpr float kDenseSpacing = 0.02f;      // m: a toy view denser than max_points allows
 const char* const kCases[] = {"max_points", "symmetric", "huge_buckets"};
 
 int fail(const std::string& what) {
@@ -94,7 +94,8 @@ int prepare(const std::string& dir) {
   for (uint32_t i = 0; i < kHugeBucketModels; ++i)
     spheres.push_back(host::ModelCloud{"sphere-" + std::to_string(i), sphere(kSphereRadius, kSpherePoints)});
   const std::vector<double> sphere_query = sphere(kSphereRadius, kSpherePoints / 2);
-  const bool ok = write_database(dir + "/max_points.shdb", toy_models()) && write_floats(dir + "/max_points.f32", exact) &&
+  const bool ok = write_database(dir + "/max_points.shdb", toy_models()) &&
+                  write_floats(dir + "/max_points.f32", exact) &&
                   write_database(dir + "/symmetric.shdb", with_sphere) &&
                   write_floats(dir + "/symmetric.f32", sphere_query) &&
                   write_database(dir + "/huge_buckets.shdb", spheres) &&
@@ -110,16 +111,19 @@ int recognise(const Database& db, const float* xyz, uint32_t count, const char* 
   if (rec.init(&db, cfg, workspace.data(), workspace.size()) != Status::kOk) return fail("init failed");
   Result r = rec.recognize(xyz, count);
   const RecognitionStats& s = r.stats;
-  std::printf("%s: status=%s points=%u features=%u trials=%u pair_checks=%llu hypotheses=%u "
-              "bucket_entries=%llu bucket_scan_truncated=%d budget_exhausted=%d\n",
-              name, status_name(r.status), count, s.features, s.trials,
-              static_cast<unsigned long long>(s.pair_checks), s.hypotheses,
-              static_cast<unsigned long long>(s.bucket_entries), s.bucket_scan_truncated ? 1 : 0,
-              s.budget_exhausted ? 1 : 0);
+  std::printf(
+      "%s: status=%s points=%u features=%u trials=%u pair_checks=%llu hypotheses=%u "
+      "bucket_entries=%llu bucket_scan_truncated=%d budget_exhausted=%d\n",
+      name, status_name(r.status), count, s.features, s.trials,
+      static_cast<unsigned long long>(s.pair_checks), s.hypotheses,
+      static_cast<unsigned long long>(s.bucket_entries), s.bucket_scan_truncated ? 1 : 0,
+      s.budget_exhausted ? 1 : 0);
   if (r.status != Status::kOk) return fail(std::string(name) + ": not recognised");
   const bool cap_reached = s.hypotheses >= cfg.max_hypotheses || s.pair_checks >= cfg.max_pair_checks;
-  if (cap_reached != s.budget_exhausted) return fail(std::string(name) + ": budget flag disagrees with the stats");
-  if (must_exhaust && !s.budget_exhausted) return fail(std::string(name) + ": worst case did not reach the budget");
+  if (cap_reached != s.budget_exhausted)
+    return fail(std::string(name) + ": budget flag disagrees with the stats");
+  if (must_exhaust && !s.budget_exhausted)
+    return fail(std::string(name) + ": worst case did not reach the budget");
   return 0;
 }
 
@@ -148,7 +152,8 @@ int golden_queries(const std::string& dir, int only) {
   Database db;
   if (Database::open(blob.data(), blob.size(), &db) != Status::kOk) return fail("golden blob does not open");
   std::vector<float> xyz(raw.size() / golden::kBytesPerCoordinate);
-  for (size_t i = 0; i < xyz.size(); ++i) xyz[i] = golden::decode_mm(raw.data() + golden::kBytesPerCoordinate * i);
+  for (size_t i = 0; i < xyz.size(); ++i)
+    xyz[i] = golden::decode_mm(raw.data() + golden::kBytesPerCoordinate * i);
   int status = 0;
   for (size_t q = 0; q < sizeof(golden::kGoldenQueries) / sizeof(golden::kGoldenQueries[0]); ++q) {
     if (only >= 0 && static_cast<size_t>(only) != q) continue;

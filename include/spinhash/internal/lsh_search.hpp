@@ -28,8 +28,7 @@ class LshSearcher {
   bool carve(Arena& arena, uint32_t max_scan);
   // Union of the query's L buckets, each distinct feature ranked by true
   // distance, best w kept; at most max_scan bucket entries are looked at.
-  uint32_t search(const Database& db, const uint8_t* spin, uint32_t w, Candidate* out,
-                  SearchStats* stats);
+  uint32_t search(const Database& db, const uint8_t* spin, uint32_t w, Candidate* out, SearchStats* stats);
 
  private:
   bool mark_seen(uint32_t feature);
