@@ -22,9 +22,17 @@ struct ScanArgs {
   bool ascii = false;
 };
 
+// ASPRS classes in a written LAS: the scanned object and its ground.
+constexpr uint8_t kObjectClass = 1, kGroundClass = 2;
+
 int run_scan(ScanArgs& a) {
   host::Mesh mesh, ground;
   std::string error;
+  if (host::cloud_format_for(a.output) == host::CloudFormat::kUnknown) {
+    std::fprintf(stderr, "spinhash scan: %s: unknown point-cloud extension (write .ply or .las)\n",
+                 a.output.c_str());
+    return kExitError;
+  }
   if (!host::load_mesh(a.mesh, &mesh, &error)) {
     std::fprintf(stderr, "spinhash scan: %s: %s\n", a.mesh.c_str(), error.c_str());
     return kExitError;
@@ -39,7 +47,9 @@ int run_scan(ScanArgs& a) {
     std::fprintf(stderr, "spinhash scan: %s\n", scan.error.c_str());
     return kExitError;
   }
-  if (!host::write_ply(a.output, scan.xyz, !a.ascii, &error) ||
+  std::vector<uint8_t> classes(scan.on_object.size());
+  for (size_t i = 0; i < classes.size(); ++i) classes[i] = scan.on_object[i] ? kObjectClass : kGroundClass;
+  if (!host::write_cloud(a.output, scan.xyz, classes, a.ascii, &error) ||
       (!a.pose_output.empty() && !host::write_pose(a.pose_output, scan.true_pose, &error))) {
     std::fprintf(stderr, "spinhash scan: %s\n", error.c_str());
     return kExitError;
@@ -56,7 +66,8 @@ void add_scan_command(CLI::App& app, int* exit_code) {
   host::ScanOptions& o = a->options;
   CLI::App* cmd = app.add_subcommand("scan", "simulate an airborne lidar scan of a mesh (PLY out)");
   cmd->add_option("mesh", a->mesh, "mesh file")->required();
-  cmd->add_option("-o,--output", a->output, "PLY file to write")->required();
+  cmd->add_option("-o,--output", a->output, "point cloud to write: .ply or .las (ground classified 2)")
+      ->required();
   cmd->add_option("--views", o.views, "viewpoints on the hemisphere")
       ->check(CLI::Range(1u, host::kMaxScanViews))
       ->capture_default_str();

@@ -1,5 +1,6 @@
 #include "cloud/cloud_reader.hpp"
 
+#include "cloud/las_reader.hpp"
 #include "cloud/ply_body.hpp"
 #include "cloud/ply_header.hpp"
 #include "cloud/text_cloud.hpp"
@@ -26,7 +27,14 @@ bool parse_cloud(const std::string& bytes, std::vector<double>* xyz, std::string
   xyz->clear();
   try {
     bool ok = false;
-    if (starts_with_ply_magic(bytes)) {
+    const std::string foreign = foreign_cloud_format(bytes);
+    if (!foreign.empty()) {
+      if (error) *error = "not a point cloud this reader takes: " + foreign;
+    } else if (is_las(bytes)) {
+      LasCloud las;
+      ok = parse_las(bytes, &las, error);
+      if (ok) *xyz = std::move(las.xyz);
+    } else if (starts_with_ply_magic(bytes)) {
       ply::Header header;
       ok = ply::parse_header(bytes, &header, error) && ply::read_body(bytes, header, xyz, error);
     } else {

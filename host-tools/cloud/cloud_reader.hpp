@@ -1,5 +1,7 @@
-// Query point clouds: PLY (ascii, binary little/big endian; vertex x y z
-// float or double, everything else skipped) and plain "x y z" text.
+// Query point clouds: LAS 1.0-1.4 (cloud/las_reader.hpp), PLY (ascii,
+// binary little/big endian; vertex x y z float or double, everything else
+// skipped) and plain "x y z" text. Compressed and foreign formats (LAZ, E57,
+// PCD, gzip, zip) are refused with how to convert them.
 //
 // Library choice: Assimp reads the meshes, but its ai_real is float, which
 // loses decimetres at UTM coordinates (4,000,000 m), and Debian packages no
@@ -19,8 +21,8 @@ namespace spinhash::host {
 // Largest cloud file read (it is read whole into memory).
 constexpr uint64_t kMaxCloudFileBytes = 4ull << 30;
 
-// Reads x y z per point. A file starting with the "ply" line is PLY,
-// anything else text. NaN coordinates are passed through (the recognizer
+// Reads x y z per point. A file starting with "LASF" is LAS, one starting
+// with the "ply" line PLY, anything else text. NaN coordinates are passed through (the recognizer
 // drops and counts them). A PLY with zero vertices is valid and gives an
 // empty cloud; a text file without a point is an error. Returns false with
 // *error for anything malformed; never throws.

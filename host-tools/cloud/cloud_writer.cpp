@@ -1,5 +1,9 @@
 #include "cloud/cloud_writer.hpp"
 
+#include <cctype>
+
+#include "cloud/las_writer.hpp"
+
 #include "blob/file_io.hpp"
 
 #include <cstdint>
@@ -63,6 +67,24 @@ bool write_pose(const std::string& path, const Eigen::Matrix4d& pose, std::strin
     text += line;
   }
   return write_file_atomically(path, text.data(), text.size(), error);
+}
+
+CloudFormat cloud_format_for(const std::string& path) {
+  const size_t dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == "ply" ? CloudFormat::kPly : ext == "las" ? CloudFormat::kLas : CloudFormat::kUnknown;
+}
+
+bool write_cloud(const std::string& path, const std::vector<double>& xyz,
+                 const std::vector<uint8_t>& classification, bool ascii, std::string* error) {
+  switch (cloud_format_for(path)) {
+    case CloudFormat::kPly: return write_ply(path, xyz, !ascii, error);
+    case CloudFormat::kLas: return write_las(path, xyz, classification, error);
+    default:
+      if (error) *error = path + ": unknown point-cloud extension (write .ply or .las)";
+      return false;
+  }
 }
 
 }  // namespace spinhash::host

@@ -99,3 +99,25 @@ TEST_CASE("a georeferenced airborne scan in a random pose is recognised with its
     CHECK(std::fabs(std::remainder(yaw - true_yaw, 2 * M_PI)) < 0.1);
   }
 }
+
+TEST_CASE("scan writes LAS by the extension, ground classified, and recognize reads it") {
+  const Pipeline& p = pipeline();
+  const std::string query = p.dir.file("van-00.las");
+  CliRun scan =
+      run_spinhash(p.dir, "scan " + shell_quoted(p.meshes + "/van-00.obj") + " -o " + shell_quoted(query) +
+                              " --noise 0.05 --seed 5 --random-pose --ground 3 --offset 431000 4020000 85");
+  INFO(scan.err);
+  REQUIRE(scan.exit_code == 0);
+  std::string bytes, error;
+  REQUIRE(spinhash::host::read_file_bytes(query, spinhash::host::kMaxCloudFileBytes, &bytes, &error));
+  CHECK(bytes.rfind("LASF", 0) == 0);  // LAS, not a PLY under a .las name
+  CliRun r = run_spinhash(p.dir, "recognize --top 2 --db " + shell_quoted(p.db) + " " + shell_quoted(query));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(contains(r.out, "{\"query\":\"van-00\",\"status\":\"ok\",\"ranking\":[{\"model\":\"van-00\""));
+
+  CliRun unknown = run_spinhash(
+      p.dir, "scan " + shell_quoted(p.meshes + "/van-00.obj") + " -o " + shell_quoted(p.dir.file("van.xyz")));
+  CHECK(unknown.exit_code == 1);
+  CHECK(contains(unknown.err, "unknown point-cloud extension (write .ply or .las)"));
+}
