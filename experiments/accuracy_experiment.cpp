@@ -15,6 +15,7 @@
 #include "pipeline/exit_codes.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/recognizer_flags.hpp"
+#include "scan/scan_simulator.hpp"
 #include "spinhash/limits.hpp"
 
 namespace spinhash::experiment {
@@ -31,7 +32,8 @@ struct AccuracyArgs {
   std::vector<double> noise{0.05, 0.10};
   std::vector<double> occlusion{0.0, 0.2, 0.4};
   std::vector<double> spacing{kPaperQuerySpacing};
-  uint32_t lookalikes = 0;  // copies of each model added to the database
+  std::vector<double> slopes{0.0};  // degrees of terrain slope, for the conditions with ground
+  uint32_t lookalikes = 0;          // copies of each model added to the database
   bool ground = false;
   bool ground_kept = false;
   double ground_margin = 3.0;  // m of ground beyond the vehicle on each side
@@ -93,7 +95,7 @@ int run_accuracy(const AccuracyArgs& a) {
   run.queries_per_model = a.queries_per_model;
   run.max_k = a.max_k;
   run.ground_margin = a.ground_margin;
-  run.conditions = make_conditions(a.noise, a.occlusion, a.spacing, a.ground, a.ground_kept);
+  run.conditions = make_conditions(a.noise, a.occlusion, a.spacing, a.slopes, a.ground, a.ground_kept);
   std::vector<pipeline::ModelMesh> meshes;
   std::vector<host::ModelCloud> clouds;
   if (!parse_modes(a.modes, &run.modes, &error) || !make_output_dir(a.out, &error)) {
@@ -166,6 +168,11 @@ void add_accuracy_experiment(CLI::App* parent, int* exit_code) {
                   "query point spacings, m between rays at the object (0.05: 20 m range)")
       ->delimiter(',')
       ->check(CLI::Range(0.01, 0.5))
+      ->capture_default_str();
+  cmd->add_option("--ground-slope", a->slopes,
+                  "terrain slopes, degrees, under the vehicle in the ground conditions")
+      ->delimiter(',')
+      ->check(CLI::Range(0.0, host::kMaxGroundSlopeDeg))
       ->capture_default_str();
   cmd->add_option("--lookalikes", a->lookalikes,
                   "look-alike copies of each model added to the database (queries stay on the originals)")

@@ -37,6 +37,7 @@ std::string condition_title(const QueryCondition& c) {
         : c.ground == Ground::kKept  ? ", ground kept (removal off)"
                                      : "");
   if (c.spacing != kPaperQuerySpacing) s << ", spacing " << c.spacing * 100.0 << " cm";
+  if (c.slope_deg > 0.0) s << ", slope " << c.slope_deg << " deg";
   return s.str();
 }
 
@@ -245,7 +246,8 @@ std::string target_section(const AccuracyRun& run) {
 int matching(const AccuracyRun& run, const QueryCondition& c, Ground ground) {
   for (size_t i = 0; i < run.conditions.size(); ++i) {
     const QueryCondition& o = run.conditions[i];
-    if (o.ground == ground && o.noise == c.noise && o.occlusion == c.occlusion && o.spacing == c.spacing)
+    if (o.ground == ground && o.noise == c.noise && o.occlusion == c.occlusion && o.spacing == c.spacing &&
+        o.slope_deg == 0.0)
       return static_cast<int>(i);
   }
   return -1;

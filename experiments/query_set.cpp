@@ -26,6 +26,7 @@ std::string QueryCondition::label() const {
         : ground == Ground::kKept  ? "_ground_kept"
                                    : "");
   if (spacing != kPaperQuerySpacing) s << "_sp" << spacing;
+  if (slope_deg > 0.0) s << "_slope" << slope_deg;
   return s.str();
 }
 
@@ -42,6 +43,7 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
   opt.random_pose = true;
   opt.occlusion = c.occlusion;
   opt.point_spacing = c.spacing;
+  opt.ground_slope_deg = c.ground == Ground::kNone ? 0.0 : c.slope_deg;
   host::Mesh ground;
   if (c.ground != Ground::kNone) {
     host::Box3 box = mesh.bounding_box();
@@ -64,14 +66,17 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
 
 std::vector<QueryCondition> make_conditions(const std::vector<double>& noise,
                                             const std::vector<double>& occlusion,
-                                            const std::vector<double>& spacing, bool with_ground,
+                                            const std::vector<double>& spacing,
+                                            const std::vector<double>& slopes, bool with_ground,
                                             bool with_kept) {
   std::vector<QueryCondition> out;
+  const std::vector<double> level{0.0};
   for (Ground g : {Ground::kNone, Ground::kScanned, Ground::kKept}) {
     if ((g == Ground::kScanned && !with_ground) || (g == Ground::kKept && !with_kept)) continue;
-    for (double sp : spacing)
-      for (double n : noise)
-        for (double o : occlusion) out.push_back(QueryCondition{n, o, g, sp});
+    for (double sl : g == Ground::kNone ? level : slopes)
+      for (double sp : spacing)
+        for (double n : noise)
+          for (double o : occlusion) out.push_back(QueryCondition{n, o, g, sp, sl});
   }
   return out;
 }

@@ -28,7 +28,9 @@ struct QueryCondition {
   double occlusion = 0.0;  // fraction of the object hidden
   Ground ground = Ground::kNone;
   double spacing = kPaperQuerySpacing;  // m between rays at the object
-  // e.g. "noise0.05_occ0.2_ground"; "_sp0.1" is added for another spacing.
+  double slope_deg = 0.0;               // terrain slope under the vehicle (with ground)
+  // e.g. "noise0.05_occ0.2_ground"; "_sp0.1" is added for another spacing,
+  // "_slope10" for a sloped ground.
   std::string label() const;
 };
 
@@ -50,11 +52,12 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
                     uint64_t base_seed, double ground_margin, Query* out, std::string* error);
 
 // Cartesian product of the lists, ground states outermost: none, then
-// scanned (with_ground), then scanned and kept (with_kept); then spacing,
-// noise, occlusion.
+// scanned (with_ground), then scanned and kept (with_kept); then slope (for
+// the ground states only), spacing, noise, occlusion.
 std::vector<QueryCondition> make_conditions(const std::vector<double>& noise,
                                             const std::vector<double>& occlusion,
-                                            const std::vector<double>& spacing, bool with_ground,
+                                            const std::vector<double>& spacing,
+                                            const std::vector<double>& slopes, bool with_ground,
                                             bool with_kept);
 
 }  // namespace spinhash::experiment

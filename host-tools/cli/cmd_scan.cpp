@@ -92,6 +92,10 @@ void add_scan_command(CLI::App& app, int* exit_code) {
   cmd->add_option("--offset", a->offset, "added to every point, e.g. UTM 500000 4000000 100")->expected(3);
   cmd->add_option("--ground", a->ground_half_size, "scan a ground square of this half size (m) too")
       ->check(CLI::Range(0.0, 1000.0));
+  cmd->add_option("--ground-slope", o.ground_slope_deg,
+                  "with --ground: terrain slope, degrees; the vehicle rests on it (random direction)")
+      ->check(CLI::Range(0.0, host::kMaxGroundSlopeDeg))
+      ->capture_default_str();
   cmd->add_option("--pose-out", a->pose_output, "write the true model->scan pose (4x4) here");
   cmd->add_flag("--ascii", a->ascii, "ASCII PLY instead of binary");
   cmd->callback([a, exit_code]() { *exit_code = run_scan(*a); });

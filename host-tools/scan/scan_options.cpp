@@ -50,6 +50,9 @@ std::string validate_scan_options(const ScanOptions& o) {
     return "point spacing must be a positive number of metres";
   }
   if (!(o.occlusion >= 0.0 && o.occlusion < 1.0)) return "occlusion must be in [0, 1)";
+  if (!(o.ground_slope_deg >= 0.0 && o.ground_slope_deg <= kMaxGroundSlopeDeg))
+    return "ground slope must be in [0, " + std::to_string(static_cast<int>(kMaxGroundSlopeDeg)) +
+           "] degrees";
   for (double v : o.offset) {
     if (!std::isfinite(v)) return "offset must be finite";
   }

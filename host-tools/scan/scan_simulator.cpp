@@ -21,6 +21,7 @@ constexpr uint64_t kPoseStream = 1;
 constexpr uint64_t kAzimuthStream = 2;
 constexpr uint64_t kNoiseStream = 3;
 constexpr uint64_t kOcclusionStream = 4;
+constexpr uint64_t kSlopeStream = 5;
 // Below this |forward x up| the view looks straight down: use x for "right".
 constexpr double kVerticalViewTolerance = 1e-9;
 constexpr int32_t kObjectGeometry = 0;
@@ -43,6 +44,15 @@ Eigen::Matrix4d draw_pose(const ScanOptions& o) {
     pose(k, 3) = rng.uniform(-kPoseTranslationRange, kPoseTranslationRange);
   }
   return pose;
+}
+
+// Terrain slope: a tilt about a horizontal axis of random direction.
+Eigen::Matrix3d slope_rotation(const ScanOptions& o) {
+  if (!(o.ground_slope_deg > 0.0)) return Eigen::Matrix3d::Identity();
+  SeededRandom rng(mix_seed(o.seed, kSlopeStream));
+  const double azimuth = rng.uniform(0.0, 2.0 * kPi);
+  const Eigen::Vector3d axis(std::cos(azimuth), std::sin(azimuth), 0.0);
+  return Eigen::AngleAxisd(o.ground_slope_deg * kDegToRad, axis).toRotationMatrix();
 }
 
 // One view: sensor position and the orthonormal frame it looks along.
@@ -155,7 +165,9 @@ ScanResult run_scan(const Mesh& model, const ScanOptions& o) {
 
   // Local frame: the posed object's bounding-box centre at the origin; the
   // float scene then stays precise whatever the pose and offset.
-  const Eigen::Matrix4d pose = draw_pose(o);
+  Eigen::Matrix4d pose = draw_pose(o);
+  const Eigen::Matrix3d slope = slope_rotation(o);
+  pose.topLeftCorner<3, 3>() = slope * pose.topLeftCorner<3, 3>();
   const Eigen::Matrix3d rotation = pose.topLeftCorner<3, 3>();
   const Eigen::Vector3d model_center = model.bounding_box().center();
   Eigen::Matrix4d to_local = Eigen::Matrix4d::Identity();
@@ -178,9 +190,11 @@ ScanResult run_scan(const Mesh& model, const ScanOptions& o) {
   if (!plan_grid(&ctx, radius, &out.error)) return out;
   if (!ctx.caster.add_mesh(local, Eigen::Vector3d::Zero(), &out.error)) return out;
   if (o.ground) {
-    // Ground is translated with the object, never rotated.
+    // Ground is translated with the object and tilted by the slope, never
+    // turned with its yaw: the object rests on it either way.
     Mesh ground = *o.ground;
     Eigen::Matrix4d shift = Eigen::Matrix4d::Identity();
+    shift.topLeftCorner<3, 3>() = slope;
     shift.topRightCorner<3, 1>() = -rotation * model_center;
     ground.apply_transform(shift);
     if (!ctx.caster.add_mesh(ground, Eigen::Vector3d::Zero(), &out.error)) return out;

@@ -25,6 +25,7 @@ constexpr double kSensorHalfFovDeg = 15.0;
 // roll and pitch (with random_tilt) uniform in +-kMaxTiltDeg.
 constexpr double kPoseTranslationRange = 50.0;
 constexpr double kMaxTiltDeg = 5.0;
+constexpr double kMaxGroundSlopeDeg = 30.0;
 
 struct ScanOptions {
   uint32_t views = 3;
@@ -52,6 +53,11 @@ struct ScanOptions {
   // object's frame. random_pose translates it with the object but never
   // rotates it, so ground stays level under the vehicle.
   const Mesh* ground = nullptr;
+  // Terrain slope (degrees, at most kMaxGroundSlopeDeg): the ground and the
+  // object resting on it are tilted together about a horizontal axis of
+  // random direction (from the seed), so the vehicle's pitch and roll follow
+  // the ground. Part of the true pose.
+  double ground_slope_deg = 0.0;
 };
 
 struct ScanResult {

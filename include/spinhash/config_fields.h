@@ -41,7 +41,7 @@
   X(F32, query_basis_spacing, 0.0f, 100.0f, "--query-spacing",                                               \
     "query basis point spacing, m (0: the database's)")                                                      \
   X(F32, ground_clearance, 0.0f, kMaxGroundClearance, "--ground-clearance",                                  \
-    "m of ground dropped from the bottom of the cloud, z up (0: keep the ground)")                           \
+    "m above the terrain (level or sloped, z up) dropped with it (0: keep the ground)")                      \
   X(U32, top_w, 1u, kMaxCandidates, "-W,--top-w", "W: candidates per query feature (BRAN)")                  \
   X(U32, top_w_sran, 1u, kMaxCandidates, "--top-w-sran", "W per model (SRAN)")                               \
   X(U32, top_w_sind, 1u, kMaxCandidates, "--top-w-sind", "W (SIND)")                                         \

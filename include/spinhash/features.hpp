@@ -26,7 +26,7 @@ struct ExtractorCapacity {
   uint32_t max_features = 1024;   // basis points kept (deterministically thinned above)
   uint32_t max_spin_dims = 256;   // bins_alpha * bins_beta supported
   bool thin_large_clouds = true;  // above max_points: keep max_points spread evenly (else refuse)
-  float ground_clearance = 0.0f;  // m: level ground and this much above it dropped (queries; 0: kept)
+  float ground_clearance = 0.0f;  // m: terrain and this much above it dropped (queries; 0: kept)
 };
 
 // Normal orientation: outward from the cloud centroid, or towards a viewpoint.
@@ -49,7 +49,7 @@ struct ExtractStats {
   uint32_t points_in = 0;
   uint32_t points_thinned = 0;    // dropped to fit max_points (evenly spread)
   uint32_t points_nonfinite = 0;  // dropped NaN / infinite / beyond 1e9 m points (of those kept)
-  uint32_t points_ground = 0;     // dropped as level ground (geometry/ground.hpp)
+  uint32_t points_ground = 0;     // dropped as terrain (geometry/terrain.hpp)
   uint32_t points_equalised = 0;  // after the density voxel
   uint32_t points_oriented = 0;   // with a usable normal
   uint32_t basis_points = 0;      // before thinning to max_features

@@ -1,13 +1,15 @@
-// Level-ground removal (geometry/ground.hpp) on known geometry, and through
-// recognize(): a toy vehicle standing on a ground square is recognised as
-// well as without it.
+// Terrain removal (geometry/terrain.hpp) on known geometry: level, sloped to
+// 15 degrees, bumpy, with a curb; and through recognize(): a toy vehicle
+// standing on a ground square is recognised as well as without it.
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include "blob/aligned_bytes.hpp"
-#include "geometry/ground.hpp"
+
+#include "geometry/terrain.hpp"
 #include "spinhash/recognizer.hpp"
 #include "support/geometry_fixtures.hpp"
 #include "support/toy_database.hpp"
@@ -48,22 +50,78 @@ TEST_CASE("the ground and the lowest clearance of an object on it are dropped, n
   const uint32_t high = count_at_most(pts, n, kClearance + 0.02f);  // at most these
   const uint32_t roof = count_near(pts, n, 1.5f);
   REQUIRE(roof > 0);
-  uint32_t histogram[kGroundHistogramBins];
-  const uint32_t dropped = remove_level_ground(pts.data(), n, kClearance, histogram);
+  std::vector<float> scratch(kTerrainScratchFloats);
+  const uint32_t dropped = remove_terrain(pts.data(), n, kClearance, scratch.data());
   CHECK(dropped >= low);
   CHECK(dropped <= high);
   CHECK(count_at_most(pts, n - dropped, kClearance - 0.02f) == 0);
   CHECK(count_near(pts, n - dropped, 1.5f) == roof);  // the box above the clearance is all kept
 }
 
-TEST_CASE("a cloud without a ground slab is left whole") {
-  std::vector<float> pts = test::box_surface(4.0f, 2.0f, 1.5f, 0.1f);  // no ground: a thin bottom share
+// Ground of +-6 m with bumps (+-4 cm) and a 12 cm curb along x = 3 m, a
+// 4 x 2 x 1.5 m box standing on it, both tilted by slope_deg about a
+// horizontal axis: returns the points; *ground_points counts the ground.
+std::vector<float> box_on_terrain(float slope_deg, uint32_t* ground_points) {
+  std::vector<float> ground = test::plane_grid(6.0f, 0.1f);
+  for (size_t i = 0; i < ground.size(); i += 3) {
+    const float x = ground[i], y = ground[i + 1];
+    ground[i + 2] = 0.04f * std::sin(1.3f * x) * std::cos(0.9f * y) + (x > 3.0f ? 0.12f : 0.0f);
+  }
+  std::vector<float> box = test::box_surface(4.0f, 2.0f, 1.5f, 0.1f);
+  for (size_t i = 2; i < box.size(); i += 3) box[i] += 0.75f;  // bottom face on z = 0
+  for (size_t i = 0; i < box.size(); i += 3) box[i] -= 1.5f;   // clear of the curb
+  *ground_points = static_cast<uint32_t>(ground.size() / 3);
+  std::vector<float> pts = ground;
+  pts.insert(pts.end(), box.begin(), box.end());
+  const Eigen::Matrix3f tilt =
+      Eigen::AngleAxisf(slope_deg * 3.14159265f / 180.0f, Eigen::Vector3f(0.6f, 0.8f, 0.0f))
+          .toRotationMatrix();
+  for (size_t i = 0; i < pts.size(); i += 3) {
+    const Eigen::Vector3f q = tilt * Eigen::Vector3f(pts[i], pts[i + 1], pts[i + 2]);
+    pts[i] = q.x(), pts[i + 1] = q.y(), pts[i + 2] = q.z();
+  }
+  return pts;
+}
+
+TEST_CASE("sloped, bumpy terrain with a curb is dropped and the object on it kept") {
+  for (float slope : {0.0f, 8.0f, 15.0f}) {
+    CAPTURE(slope);
+    uint32_t ground = 0;
+    const std::vector<float> original = box_on_terrain(slope, &ground);
+    std::vector<float> pts = original;
+    const uint32_t n = static_cast<uint32_t>(pts.size() / 3), box = n - ground;
+    // Box points more than the clearance (+2 cm) above its bottom face, in the box's own frame.
+    const Eigen::Matrix3f untilt =
+        Eigen::AngleAxisf(-slope * 3.14159265f / 180.0f, Eigen::Vector3f(0.6f, 0.8f, 0.0f))
+            .toRotationMatrix();
+    uint32_t high = 0;
+    for (uint32_t i = ground; i < n; ++i)
+      high += (untilt * Eigen::Vector3f(pts[3 * i], pts[3 * i + 1], pts[3 * i + 2])).z() > kClearance + 0.02f;
+    std::vector<float> scratch(kTerrainScratchFloats);
+    const uint32_t dropped = remove_terrain(pts.data(), n, kClearance, scratch.data());
+    const uint32_t kept = n - dropped;
+    // Every high box point survives; at most 1% of the ground does.
+    uint32_t kept_high = 0;
+    for (uint32_t i = 0; i < kept; ++i)
+      kept_high +=
+          (untilt * Eigen::Vector3f(pts[3 * i], pts[3 * i + 1], pts[3 * i + 2])).z() > kClearance + 0.02f;
+    CHECK(kept_high >= high);
+    CHECK(kept <= box + ground / 100u);
+    CHECK(kept >= high);
+  }
+}
+
+TEST_CASE("an object seen from the air without ground is left whole") {
+  // The box's sides and top: airborne views never see an underside.
+  std::vector<float> all = test::box_surface(4.0f, 2.0f, 1.5f, 0.1f), pts;
+  for (size_t i = 0; i < all.size(); i += 3)
+    if (all[i + 2] > -0.75f + 1e-4f) pts.insert(pts.end(), {all[i], all[i + 1], all[i + 2]});
   const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
   std::vector<float> before = pts;
-  uint32_t histogram[kGroundHistogramBins];
-  CHECK(remove_level_ground(pts.data(), n, kClearance, histogram) == 0);
+  std::vector<float> scratch(kTerrainScratchFloats);
+  CHECK(remove_terrain(pts.data(), n, kClearance, scratch.data()) == 0);
   CHECK(pts == before);
-  CHECK(remove_level_ground(pts.data(), n, 0.0f, histogram) == 0);  // clearance 0: off
+  CHECK(remove_terrain(pts.data(), n, 0.0f, scratch.data()) == 0);  // clearance 0: off
 }
 
 TEST_CASE("a toy vehicle standing on ground is recognised with the ground removed, and not without") {
