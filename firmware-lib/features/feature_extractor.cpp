@@ -3,9 +3,9 @@
 
 #include "descriptor/spin_image.hpp"
 #include "geometry/cell_grid.hpp"
-#include "geometry/terrain.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/resample.hpp"
+#include "geometry/terrain.hpp"
 #include "spinhash/features.hpp"
 #include "spinhash/limits.hpp"
 #include "util/fixed_math.hpp"
@@ -19,7 +19,7 @@ struct FeatureExtractor::Impl {
   float* equalised = nullptr;  // 3 * max_points
   float* normals = nullptr;    // 3 * max_points
   uint8_t* has_normal = nullptr;
-  uint32_t* basis = nullptr;             // max_points
+  uint32_t* basis = nullptr;         // max_points
   float* terrain_scratch = nullptr;  // kTerrainScratchFloats, when ground is removed
   float* out_positions = nullptr;
   float* out_normals = nullptr;
