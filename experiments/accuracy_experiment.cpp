@@ -42,6 +42,7 @@ struct AccuracyArgs {
   uint64_t fleet_seed = 1;  // procedural vehicles
   uint32_t max_k = 10;
   uint32_t transfer_models = RecognizerConfig{}.transfer_models;
+  float ground_clearance = RecognizerConfig{}.ground_clearance;
   bool models_given = false;
 };
 
@@ -54,7 +55,7 @@ bool open_sessions(const Database& db, const AccuracyArgs& a, const std::vector<
     RecognizerConfig cfg;  // library defaults (but --transfer-models): the experiment measures them
     cfg.mode = m;
     cfg.transfer_models = a.transfer_models;
-    if (keep_ground) cfg.ground_clearance = 0.0f;
+    cfg.ground_clearance = keep_ground ? 0.0f : a.ground_clearance;
     out->push_back(std::make_unique<pipeline::RecognitionSession>());
     if (!out->back()->init(&db, cfg, error)) return false;
   }
@@ -189,6 +190,10 @@ void add_accuracy_experiment(CLI::App* parent, int* exit_code) {
   cmd->add_option("--fleet-seed", a->fleet_seed, "seed of the procedural fleet")->capture_default_str();
   cmd->add_option("--max-k", a->max_k, "largest k of the curves")
       ->check(CLI::Range(1u, 1000u))
+      ->capture_default_str();
+  cmd->add_option("--ground-clearance", a->ground_clearance,
+                  "m above the terrain dropped with it (the recognizer's)")
+      ->check(CLI::Range(0.0f, kMaxGroundClearance))
       ->capture_default_str();
   cmd->add_option("--transfer-models", a->transfer_models,
                   "BRAN's look-alike pose transfer (0: the paper's BRAN)")

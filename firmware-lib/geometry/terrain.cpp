@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "util/fixed_math.hpp"
+#include "util/heap_sort.hpp"
 
 namespace spinhash {
 namespace {
@@ -89,31 +90,89 @@ bool fit_terrain_plane(const Grid& g, const float* lowest, Plane* plane) {
   return std::sqrt(plane->a * plane->a + plane->b * plane->b) <= std::tan(deg_to_rad(kMaxTerrainSlopeDeg));
 }
 
-// Per ground cell, the mean height above the plane of its ground points
-// (those within kGroundBand of its lowest point); other cells take the mean
-// of their ground neighbours', or 0. Returns the number of ground cells.
-uint32_t terrain_levels(const float* xyz, uint32_t n, const Grid& g, const Plane& plane, const float* lowest,
-                        float* sum, float* count, uint32_t* occupied) {
-  for (uint32_t c = 0; c < kTerrainCells; ++c) sum[c] = count[c] = 0.0f;
+// Per cell, over its ground points (those within kRoughnessBand of the
+// lowest point of a cell that rises at most kGroundCellRise above the
+// plane): their mean height above the plane and their spread.
+struct CellStats {
+  float* mean;    // level: becomes the cell's ground level
+  float* spread;  // sigma of the ground points; < 0: no usable ground
+  float* count;   // points; then scratch for the median
+};
+
+void accumulate(const float* xyz, uint32_t n, const Grid& g, const Plane& plane, const float* lowest,
+                const CellStats& cs) {
+  for (uint32_t c = 0; c < kTerrainCells; ++c) cs.mean[c] = cs.spread[c] = cs.count[c] = 0.0f;
   for (uint32_t i = 0; i < n; ++i) {
     const float* p = xyz + 3u * i;
     const uint32_t c = g.cell_of(p);
-    const float base = plane.at(g.centre_x(c), g.centre_y(c));
-    if (lowest[c] - base > kGroundCellRise || p[2] > lowest[c] + kGroundBand) continue;
-    sum[c] += p[2] - plane.at(p[0], p[1]);
-    count[c] += 1.0f;
+    if (lowest[c] - plane.at(g.centre_x(c), g.centre_y(c)) > kGroundCellRise ||
+        p[2] > lowest[c] + kRoughnessBand)
+      continue;
+    const float d = p[2] - plane.at(p[0], p[1]);
+    cs.mean[c] += d;
+    cs.spread[c] += d * d;
+    cs.count[c] += 1.0f;
   }
-  uint32_t ground = 0;
-  *occupied = 0;
   for (uint32_t c = 0; c < kTerrainCells; ++c) {
-    *occupied += lowest[c] != kEmptyCell ? 1u : 0u;
-    if (count[c] > 0.0f) {
-      sum[c] /= count[c];  // sum now holds the level
-      ++ground;
+    if (cs.count[c] < static_cast<float>(kMinRoughnessPoints)) {
+      cs.spread[c] = -1.0f;
+      continue;
     }
+    cs.mean[c] /= cs.count[c];
+    const float var = cs.spread[c] / cs.count[c] - cs.mean[c] * cs.mean[c];
+    cs.spread[c] = std::sqrt(var > 0.0f ? var : 0.0f);
   }
+}
+
+// The ground's roughness: the median spread of the ground cells (objects
+// standing in a minority of them widen theirs, not the median).
+float median_spread(const CellStats& cs, uint32_t* ground_cells) {
+  uint32_t k = 0;
+  for (uint32_t c = 0; c < kTerrainCells; ++c)
+    if (cs.spread[c] >= 0.0f) cs.count[k++] = cs.spread[c];
+  *ground_cells = k;
+  if (k == 0) return 0.0f;
+  heap_sort(cs.count, k, [](float a, float b) { return a < b; });
+  return cs.count[k / 2u];
+}
+
+// Clean ground cells (spread at most kCleanSpreadFactor x the median)
+// flagged in count.
+void mark_clean(const CellStats& cs, float sigma) {
+  const float clean = kCleanSpreadFactor * sigma + kSpreadSlack;
+  for (uint32_t c = 0; c < kTerrainCells; ++c)
+    cs.count[c] = cs.spread[c] >= 0.0f && cs.spread[c] <= clean ? 1.0f : 0.0f;
+}
+
+bool occupied_at(const float* lowest, int32_t i, int32_t j) {
+  const int32_t side = static_cast<int32_t>(kTerrainGridSide);
+  return i >= 0 && j >= 0 && i < side && j < side &&
+         lowest[static_cast<uint32_t>(j * side + i)] != kEmptyCell;
+}
+
+// Share of the footprint's border cells (occupied, with an empty 4-neighbour)
+// that are clean ground: terrain reaches beyond the objects on it, while a
+// bare object's outline is its sides.
+float clean_border_share(const float* lowest, const CellStats& cs) {
+  uint32_t border = 0, clean = 0;
   for (uint32_t c = 0; c < kTerrainCells; ++c) {
-    if (count[c] > 0.0f) continue;
+    if (lowest[c] == kEmptyCell) continue;
+    const int32_t i = static_cast<int32_t>(c % kTerrainGridSide),
+                  j = static_cast<int32_t>(c / kTerrainGridSide);
+    if (occupied_at(lowest, i - 1, j) && occupied_at(lowest, i + 1, j) && occupied_at(lowest, i, j - 1) &&
+        occupied_at(lowest, i, j + 1))
+      continue;
+    ++border;
+    clean += cs.count[c] > 0.0f ? 1u : 0u;
+  }
+  return border > 0 ? static_cast<float>(clean) / static_cast<float>(border) : 0.0f;
+}
+
+// Clean ground cells keep their mean as level; the others take their clean
+// neighbours' mean, or 0.
+void fill_levels(const CellStats& cs) {
+  for (uint32_t c = 0; c < kTerrainCells; ++c) {
+    if (cs.count[c] > 0.0f) continue;
     const int32_t ci = static_cast<int32_t>(c % kTerrainGridSide),
                   cj = static_cast<int32_t>(c / kTerrainGridSide);
     float s = 0.0f, k = 0.0f;
@@ -122,12 +181,11 @@ uint32_t terrain_levels(const float* xyz, uint32_t n, const Grid& g, const Plane
         const int32_t i = ci + di, j = cj + dj, side = static_cast<int32_t>(kTerrainGridSide);
         if (i < 0 || j < 0 || i >= side || j >= side) continue;
         const uint32_t nb = static_cast<uint32_t>(j * side + i);
-        if (count[nb] > 0.0f) s += sum[nb], k += 1.0f;
+        if (cs.count[nb] > 0.0f) s += cs.mean[nb], k += 1.0f;
       }
-    sum[c] = k > 0.0f ? s / k : 0.0f;
-    count[c] = -1.0f;  // filled from neighbours: not a ground cell itself (keeps the fill one pass deep)
+    cs.mean[c] = k > 0.0f ? s / k : 0.0f;
+    cs.count[c] = -1.0f;  // filled: not a source for later cells (the fill stays one cell deep)
   }
-  return ground;
 }
 
 }  // namespace
@@ -135,21 +193,39 @@ uint32_t terrain_levels(const float* xyz, uint32_t n, const Grid& g, const Plane
 uint32_t remove_terrain(float* xyz, uint32_t n, float clearance, float* scratch) {
   if (n == 0 || !(clearance > 0.0f)) return 0;
   float* lowest = scratch;
-  float* level = scratch + kTerrainCells;
-  float* count = scratch + 2u * kTerrainCells;
+  const CellStats cs{scratch + kTerrainCells, scratch + 2u * kTerrainCells, scratch + 3u * kTerrainCells};
   const Grid g = footprint(xyz, n);
   lowest_points(xyz, n, g, lowest);
   Plane plane;
   if (!fit_terrain_plane(g, lowest, &plane)) return 0;
-  uint32_t occupied = 0;
-  const uint32_t ground_cells = terrain_levels(xyz, n, g, plane, lowest, level, count, &occupied);
-  if (static_cast<float>(ground_cells) < kMinGroundCellShare * static_cast<float>(occupied)) return 0;
-  auto on_terrain = [&](const float* p) {
-    return p[2] - plane.at(p[0], p[1]) - level[g.cell_of(p)] <= clearance;
-  };
-  uint32_t near = 0;
-  for (uint32_t i = 0; i < n; ++i) near += on_terrain(xyz + 3u * i) ? 1u : 0u;
-  if (static_cast<float>(near) < kMinGroundShare * static_cast<float>(n)) return 0;
+  uint32_t occupied = 0, ground_cells = 0;
+  for (uint32_t c = 0; c < kTerrainCells; ++c) occupied += lowest[c] != kEmptyCell ? 1u : 0u;
+  accumulate(xyz, n, g, plane, lowest, cs);
+  const float sigma = median_spread(cs, &ground_cells);
+  if (static_cast<float>(ground_cells) < kMinGroundCellShare * static_cast<float>(occupied) ||
+      sigma > kMaxGroundRoughness)
+    return 0;
+  mark_clean(cs, sigma);
+  if (clean_border_share(lowest, cs) < kMinCleanBorderShare) return 0;
+  fill_levels(cs);
+  // kClearanceSigmas of the ground's own roughness, within [kMinClearance, clearance].
+  float drop = kClearanceSigmas * sigma;
+  drop = drop < kMinClearance ? kMinClearance : (drop > clearance ? clearance : drop);
+  auto height = [&](const float* p) { return p[2] - plane.at(p[0], p[1]) - cs.mean[g.cell_of(p)]; };
+  auto on_terrain = [&](const float* p) { return height(p) <= drop; };
+  // Terrain is the lowest surface: a flat part of an object (a hood, a
+  // pickup's bed) has the rest of the object below it.
+  const float below =
+      -(kBelowTerrainSigmas * sigma > kMinBelowTerrain ? kBelowTerrainSigmas * sigma : kMinBelowTerrain);
+  uint32_t near = 0, under = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const float h = height(xyz + 3u * i);
+    near += h <= drop ? 1u : 0u;
+    under += h < below ? 1u : 0u;
+  }
+  if (static_cast<float>(near) < kMinGroundShare * static_cast<float>(n) ||
+      static_cast<float>(under) > kMaxBelowTerrainShare * static_cast<float>(n))
+    return 0;
   uint32_t kept = 0;
   for (uint32_t i = 0; i < n; ++i) {
     if (on_terrain(xyz + 3u * i)) continue;

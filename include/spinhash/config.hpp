@@ -42,11 +42,10 @@ struct RecognizerConfig {
   float query_basis_spacing = 0.0f;  // m between query basis points; 0: the database's spacing
 
   // Airborne scans hold the ground around the vehicle, which no model has.
-  // When the cloud stands on terrain (z up; level or sloped to 35 degrees,
-  // with bumps: a plane fitted to the lowest points of a grid over the
-  // footprint, then a level per cell; geometry/terrain.hpp), the points up
-  // to this height above it are dropped: 5 sigma of 5 cm noise, taking the
-  // bottom of the wheels too (not in the paper). 0 keeps every point.
+  // When the cloud stands on terrain (z up; level or sloped to 18 degrees,
+  // with bumps; geometry/terrain.hpp, docs/api.md), the points within 4.5
+  // sigma of the ground's measured roughness above it are dropped, but at
+  // most this height (not in the paper). 0 keeps every point.
   float ground_clearance = 0.25f;  // m
 
   // Spin-image pruning (section 5).

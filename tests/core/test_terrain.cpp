@@ -3,6 +3,7 @@
 // standing on a ground square is recognised as well as without it.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "spinhash/recognizer.hpp"
 #include "support/geometry_fixtures.hpp"
 #include "support/toy_database.hpp"
+#include "util/rng.hpp"
 
 using namespace spinhash;
 
@@ -43,19 +45,57 @@ uint32_t count_at_most(const std::vector<float>& pts, uint32_t n, float z) {
 
 }  // namespace
 
-TEST_CASE("the ground and the lowest clearance of an object on it are dropped, nothing else") {
+TEST_CASE("noise-free ground and the lowest centimetres of an object on it are dropped, nothing else") {
   std::vector<float> pts = box_on_ground(5.0f);
   const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
-  const uint32_t low = count_at_most(pts, n, kClearance - 0.02f);   // surely dropped
-  const uint32_t high = count_at_most(pts, n, kClearance + 0.02f);  // at most these
+  const uint32_t above = n - count_at_most(pts, n, kClearance);  // certainly kept
   const uint32_t roof = count_near(pts, n, 1.5f);
   REQUIRE(roof > 0);
   std::vector<float> scratch(kTerrainScratchFloats);
   const uint32_t dropped = remove_terrain(pts.data(), n, kClearance, scratch.data());
-  CHECK(dropped >= low);
-  CHECK(dropped <= high);
-  CHECK(count_at_most(pts, n - dropped, kClearance - 0.02f) == 0);
-  CHECK(count_near(pts, n - dropped, 1.5f) == roof);  // the box above the clearance is all kept
+  // No roughness: the minimum clearance, not the configured one, decides.
+  CHECK(count_at_most(pts, n - dropped, kMinClearance - 0.01f) == 0);
+  CHECK(n - dropped >= above);
+  CHECK(count_at_most(pts, n - dropped, 0.2f) > 0);  // the box's lowest 20 cm (but 5) stay
+  CHECK(count_near(pts, n - dropped, 1.5f) == roof);
+}
+
+// Level ground of +-6 m with Gaussian noise of sigma along z, and the box on it.
+std::vector<float> box_on_noisy_ground(float sigma, uint32_t* ground_points) {
+  std::vector<float> ground = test::plane_grid(6.0f, 0.1f);
+  Pcg32 rng(17u);
+  for (size_t i = 2; i < ground.size(); i += 3) {
+    float g = -6.0f;  // sum of 12 uniforms: a normal deviate to within 0.01
+    for (int k = 0; k < 12; ++k) g += rng.uniform();
+    ground[i] = sigma * g;
+  }
+  std::vector<float> box = test::box_surface(4.0f, 2.0f, 1.5f, 0.1f);
+  for (size_t i = 2; i < box.size(); i += 3) box[i] += 0.75f;
+  *ground_points = static_cast<uint32_t>(ground.size() / 3);
+  ground.insert(ground.end(), box.begin(), box.end());
+  return ground;
+}
+
+TEST_CASE("the clearance follows the ground's measured noise, up to the configured one") {
+  for (float sigma : {0.05f, 0.10f}) {
+    CAPTURE(sigma);
+    uint32_t ground = 0;
+    std::vector<float> pts = box_on_noisy_ground(sigma, &ground);
+    const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
+    const float kept_above = std::min(kClearanceSigmas * sigma, kClearance) + 0.05f;
+    uint32_t box_high = 0;
+    for (uint32_t i = ground; i < n; ++i) box_high += pts[3 * i + 2] > kept_above ? 1u : 0u;
+    std::vector<float> scratch(kTerrainScratchFloats);
+    const uint32_t kept = n - remove_terrain(pts.data(), n, kClearance, scratch.data());
+    uint32_t kept_high = 0, kept_low = 0;
+    for (uint32_t i = 0; i < kept; ++i) {
+      kept_high += pts[3 * i + 2] > kept_above ? 1u : 0u;
+      kept_low += pts[3 * i + 2] < 0.0f ? 1u : 0u;  // below the ground's mean: ground for sure
+    }
+    CHECK(kept_high >= box_high);                 // the box above the clearance is whole
+    CHECK(kept <= (n - ground) + ground / 100u);  // at most 1% of the ground is left
+    CHECK(kept_low == 0u);
+  }
 }
 
 // Ground of +-6 m with bumps (+-4 cm) and a 12 cm curb along x = 3 m, a

@@ -19,8 +19,8 @@ struct WorkspaceThreshold {
   size_t points_20000;    // RecognizerConfig{} with max_points = 20000
 };
 // Pointer-sized members make 64-bit layouts larger than 32-bit ones.
-constexpr WorkspaceThreshold kThreshold64 = {6320576, 5490656};
-constexpr WorkspaceThreshold kThreshold32 = {6320464, 5490544};
+constexpr WorkspaceThreshold kThreshold64 = {6324672, 5494752};
+constexpr WorkspaceThreshold kThreshold32 = {6324560, 5494640};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
 constexpr size_t kToleranceBytes = 1024;
