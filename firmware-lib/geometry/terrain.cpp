@@ -1,0 +1,187 @@
+#include "geometry/terrain.hpp"
+
+#include <cmath>
+
+namespace spinhash {
+namespace {
+
+constexpr float kMinCell = 0.05f;       // m: finer grids cost cells and add nothing at lidar densities
+constexpr float kMaxCell = 10.0f;       // m
+constexpr float kMaxWindowM = 500.0f;   // m: the widest window accepted
+
+bool no_data(float v) { return std::isnan(v); }
+
+uint32_t cell_coord(float v, float v0, float cell, uint32_t count) {
+  const float c = (v - v0) / cell;
+  if (!(c > 0.0f)) return 0;
+  const uint32_t i = static_cast<uint32_t>(c);
+  return i < count ? i : count - 1u;
+}
+
+// out[i] = min (erode) or max (dilate) of in over the 2r+1 cells along one
+// axis, skipping cells without data; NaN when the window has none.
+void line_filter(const float* in, float* out, const TerrainGrid& g, uint32_t r, bool along_x, bool erode) {
+  const uint32_t lines = along_x ? g.ny : g.nx;
+  const uint32_t len = along_x ? g.nx : g.ny;
+  const uint32_t step = along_x ? 1u : g.nx;
+  for (uint32_t l = 0; l < lines; ++l) {
+    const uint32_t base = along_x ? l * g.nx : l;
+    for (uint32_t i = 0; i < len; ++i) {
+      const uint32_t lo = i > r ? i - r : 0u;
+      const uint32_t hi = i + r < len ? i + r : len - 1u;
+      float best = NAN;
+      for (uint32_t j = lo; j <= hi; ++j) {
+        const float v = in[base + j * step];
+        if (no_data(v)) continue;
+        if (no_data(best) || (erode ? v < best : v > best)) best = v;
+      }
+      out[base + i * step] = best;
+    }
+  }
+}
+
+// g.opened = opening of `in` by a (2r+1)^2 square: erosion then dilation.
+void open_grid(const float* in, TerrainGrid& g, uint32_t r) {
+  line_filter(in, g.scratch, g, r, true, true);
+  line_filter(g.scratch, g.opened, g, r, false, true);
+  line_filter(g.opened, g.scratch, g, r, true, false);
+  line_filter(g.scratch, g.opened, g, r, false, false);
+}
+
+// Lowest z per cell, then the mean of the points within kTerrainLowBand of
+// it: unbiased on slopes (the lowest point sits at the downhill edge) and
+// steadier under range noise than the minimum alone.
+void fill_low_means(const float* xyz, uint32_t n, TerrainGrid& g) {
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c) {
+    g.value[c] = NAN;
+    g.scratch[c] = 0.0f;  // sum
+    g.opened[c] = 0.0f;   // count
+  }
+  for (uint32_t i = 0; i < n; ++i) {
+    const float* p = xyz + 3u * i;
+    const uint32_t c = cell_coord(p[1], g.y0, g.cell, g.ny) * g.nx + cell_coord(p[0], g.x0, g.cell, g.nx);
+    if (no_data(g.value[c]) || p[2] < g.value[c]) g.value[c] = p[2];
+  }
+  for (uint32_t i = 0; i < n; ++i) {
+    const float* p = xyz + 3u * i;
+    const uint32_t c = cell_coord(p[1], g.y0, g.cell, g.ny) * g.nx + cell_coord(p[0], g.x0, g.cell, g.nx);
+    if (p[2] > g.value[c] + kTerrainLowBand) continue;
+    g.scratch[c] += p[2] - g.value[c];  // relative to the minimum: small sums, no float drift
+    g.opened[c] += 1.0f;
+  }
+  for (uint32_t c = 0; c < cells; ++c)
+    if (g.opened[c] > 0.0f) g.value[c] += g.scratch[c] / g.opened[c];
+}
+
+// The progressive morphological filter: windows of half-width 1, 2, 4, ...
+// cells up to params.max_window; the height tolerance grows with the window
+// by the slope allowance, capped at dh_max. g.surface ends as the last opening.
+uint32_t progressive_filter(TerrainGrid& g, const TerrainParams& params) {
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c) {
+    g.off_ground[c] = 0;
+    g.surface[c] = g.value[c];
+  }
+  uint32_t windows = 0;
+  uint32_t r_prev = 0;
+  for (uint32_t k = 0, r = 1; k < kMaxTerrainWindows; ++k, r *= 2u) {
+    if (static_cast<float>(2u * r + 1u) * g.cell > params.max_window && k > 0) break;
+    open_grid(g.surface, g, r);
+    float dh = params.dh0;
+    if (k > 0) dh += params.slope * static_cast<float>(2u * (r - r_prev)) * g.cell;
+    dh = dh < params.dh_max ? dh : params.dh_max;
+    for (uint32_t c = 0; c < cells; ++c) {
+      if (!no_data(g.value[c]) && g.surface[c] - g.opened[c] > dh) g.off_ground[c] = 1;
+      g.surface[c] = g.opened[c];
+    }
+    r_prev = r;
+    ++windows;
+  }
+  return windows;
+}
+
+}  // namespace
+
+bool terrain_params_valid(const TerrainParams& p) {
+  return p.cell >= kMinCell && p.cell <= kMaxCell && p.max_window >= p.cell && p.max_window <= kMaxWindowM &&
+         p.slope >= 0.0f && p.slope <= 10.0f && p.dh0 >= 0.0f && p.dh_max >= p.dh0 && p.dh_max <= 100.0f &&
+         p.ground_height >= 0.0f && p.ground_height <= 10.0f;
+}
+
+void TerrainGrid::carve(Arena& arena, uint32_t cells) {
+  max_cells = cells;
+  value = arena.alloc<float>(cells);
+  surface = arena.alloc<float>(cells);
+  scratch = arena.alloc<float>(cells);
+  opened = arena.alloc<float>(cells);
+  off_ground = arena.alloc<uint8_t>(cells);
+}
+
+float terrain_height_at(const TerrainGrid& g, float x, float y) {
+  // Cell-centre coordinates: (x - x0) / cell - 0.5.
+  const float fx = (x - g.x0) / g.cell - 0.5f;
+  const float fy = (y - g.y0) / g.cell - 0.5f;
+  const float bx = std::floor(fx), by = std::floor(fy);
+  const float tx = fx - bx, ty = fy - by;
+  float sum = 0.0f, weight = 0.0f;
+  for (int dy = 0; dy < 2; ++dy) {
+    for (int dx = 0; dx < 2; ++dx) {
+      const float cx = bx + static_cast<float>(dx), cy = by + static_cast<float>(dy);
+      if (cx < 0.0f || cy < 0.0f || cx >= static_cast<float>(g.nx) || cy >= static_cast<float>(g.ny)) continue;
+      const float v = g.surface[static_cast<uint32_t>(cy) * g.nx + static_cast<uint32_t>(cx)];
+      if (no_data(v)) continue;
+      const float w = (dx ? tx : 1.0f - tx) * (dy ? ty : 1.0f - ty);
+      sum += w * v;
+      weight += w;
+    }
+  }
+  if (weight > 1e-6f) return sum / weight;
+  return g.surface[cell_coord(y, g.y0, g.cell, g.ny) * g.nx + cell_coord(x, g.x0, g.cell, g.nx)];
+}
+
+Status classify_terrain(const float* xyz, uint32_t n, const TerrainParams& params, TerrainGrid& g,
+                        float* height, uint8_t* ground, TerrainStats* stats) {
+  if (!terrain_params_valid(params) || (n > 0 && (xyz == nullptr || height == nullptr || ground == nullptr)))
+    return Status::kInvalidArgument;
+  TerrainStats st;
+  if (n == 0) {
+    if (stats) *stats = st;
+    return Status::kOk;
+  }
+  float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
+  for (uint32_t i = 1; i < n; ++i)
+    for (uint32_t a = 0; a < 2u; ++a) {
+      const float v = xyz[3u * i + a];
+      lo[a] = v < lo[a] ? v : lo[a];
+      hi[a] = v > hi[a] ? v : hi[a];
+    }
+  const float fx = (hi[0] - lo[0]) / params.cell + 1.0f, fy = (hi[1] - lo[1]) / params.cell + 1.0f;
+  if (!(fx * fy <= static_cast<float>(g.max_cells))) return Status::kTileTooLarge;
+  g.cell = params.cell;
+  g.x0 = lo[0];
+  g.y0 = lo[1];
+  g.nx = static_cast<uint32_t>(fx);
+  g.ny = static_cast<uint32_t>(fy);
+  fill_low_means(xyz, n, g);
+  st.windows = progressive_filter(g, params);
+  // Terrain surface: the ground cells' own values, the last opening elsewhere
+  // (under objects, where it carries the surrounding plane across).
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c) {
+    if (no_data(g.value[c]) || g.off_ground[c]) continue;
+    g.surface[c] = g.value[c];
+    ++st.cells_ground;
+  }
+  for (uint32_t i = 0; i < n; ++i) {
+    const float* p = xyz + 3u * i;
+    height[i] = p[2] - terrain_height_at(g, p[0], p[1]);
+    ground[i] = height[i] <= params.ground_height ? 1u : 0u;
+    st.points_ground += ground[i];
+  }
+  st.cells = cells;
+  if (stats) *stats = st;
+  return Status::kOk;
+}
+
+}  // namespace spinhash
