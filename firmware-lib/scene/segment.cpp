@@ -45,15 +45,16 @@ void link_neighbours(SegmentGrid& g) {
   const int dx[4] = {1, -1, 0, 1};
   const int dy[4] = {0, 1, 1, 1};
   for (uint32_t layer = 0; layer < kLayers; ++layer) {
-    uint32_t* parent = g.parent + layer * cells;
+    const uint32_t base = layer * cells;  // parents hold slots of the whole array
+    uint32_t* parent = g.parent;
     for (uint32_t y = 0; y < g.ny; ++y)
       for (uint32_t x = 0; x < g.nx; ++x) {
-        const uint32_t c = y * g.nx + x;
+        const uint32_t c = base + y * g.nx + x;
         if (parent[c] == kNoObject) continue;
         for (int k = 0; k < 4; ++k) {
           const int nx = static_cast<int>(x) + dx[k], ny = static_cast<int>(y) + dy[k];
           if (nx < 0 || nx >= static_cast<int>(g.nx) || ny >= static_cast<int>(g.ny)) continue;
-          const uint32_t d = static_cast<uint32_t>(ny) * g.nx + static_cast<uint32_t>(nx);
+          const uint32_t d = base + static_cast<uint32_t>(ny) * g.nx + static_cast<uint32_t>(nx);
           if (parent[d] != kNoObject) unite(parent, c, d);
         }
       }
@@ -120,7 +121,7 @@ Status segment_objects(const float* xyz, const float* height, const uint8_t* gro
       const uint32_t s = slot_of(g, xyz + 3u * i, height[i], params.split_height);
       g.parent[s] = s;
     }
-  link_neighbours(g);  // parents are slots of the whole array: layer offset included
+  link_neighbours(g);
   for (uint32_t i = 0; i < n; ++i)
     if (!ground[i]) ++g.object[find_root(g.parent, slot_of(g, xyz + 3u * i, height[i], params.split_height))];
   // Object ids in slot order: deterministic, independent of the point order.
