@@ -47,7 +47,7 @@ struct SceneConfig {
   // cars splits them); points above it the high layer (tree crowns, roofs),
   // so a crown over a car never joins it.
   float segment_cell = 0.25f;        // m: must be below the narrowest gap to split (0.5 m)
-  float layer_split_height = 2.6f;   // m
+  float layer_split_height = 3.0f;   // m: above the tallest vehicle, below most crowns
   uint32_t min_object_points = 30;   // smaller components are noise, not objects
 
   // Size gates (footprint along the object's principal axes; heights above terrain).
