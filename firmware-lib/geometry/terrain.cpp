@@ -101,6 +101,55 @@ uint32_t progressive_filter(TerrainGrid& g, const TerrainParams& params) {
   return windows;
 }
 
+bool is_ground_cell(const TerrainGrid& g, uint32_t c) { return !no_data(g.value[c]) && !g.off_ground[c]; }
+
+// out[c] for each cell off the ground: linear interpolation between the
+// nearest ground cells before and after it along one axis (exact on planes
+// of any slope, unlike the opening where the ground under a wide object is
+// hidden); NaN without ground on both sides within max_gap cells.
+void interpolate_line(TerrainGrid& g, float* out, bool along_x, uint32_t max_gap) {
+  const uint32_t lines = along_x ? g.ny : g.nx;
+  const uint32_t len = along_x ? g.nx : g.ny;
+  const uint32_t step = along_x ? 1u : g.nx;
+  for (uint32_t l = 0; l < lines; ++l) {
+    const uint32_t base = along_x ? l * g.nx : l;
+    uint32_t prev = len;  // none yet
+    for (uint32_t i = 0; i < len; ++i) {
+      const uint32_t c = base + i * step;
+      out[c] = NAN;
+      if (!is_ground_cell(g, c)) continue;
+      out[c] = g.value[c];
+      if (prev < len && i - prev > 1u && i - prev <= max_gap) {
+        const float z0 = g.value[base + prev * step], z1 = g.value[c];
+        for (uint32_t j = prev + 1u; j < i; ++j) {
+          const float t = static_cast<float>(j - prev) / static_cast<float>(i - prev);
+          out[base + j * step] = z0 + t * (z1 - z0);
+        }
+      }
+      prev = i;
+    }
+  }
+}
+
+// Terrain surface: ground cells keep their own value; cells off the ground
+// the mean of the row and column interpolations, or the last opening where
+// neither reaches (g.surface holds it on entry).
+void fill_terrain_surface(TerrainGrid& g, uint32_t max_gap) {
+  interpolate_line(g, g.scratch, true, max_gap);
+  interpolate_line(g, g.opened, false, max_gap);
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c) {
+    if (is_ground_cell(g, c)) {
+      g.surface[c] = g.value[c];
+      continue;
+    }
+    const float a = g.scratch[c], b = g.opened[c];
+    if (!no_data(a) && !no_data(b)) g.surface[c] = 0.5f * (a + b);
+    else if (!no_data(a)) g.surface[c] = a;
+    else if (!no_data(b)) g.surface[c] = b;
+  }
+}
+
 }  // namespace
 
 bool terrain_params_valid(const TerrainParams& p) {
@@ -165,14 +214,9 @@ Status classify_terrain(const float* xyz, uint32_t n, const TerrainParams& param
   g.ny = static_cast<uint32_t>(fy);
   fill_low_means(xyz, n, g);
   st.windows = progressive_filter(g, params);
-  // Terrain surface: the ground cells' own values, the last opening elsewhere
-  // (under objects, where it carries the surrounding plane across).
+  fill_terrain_surface(g, static_cast<uint32_t>(params.max_window / params.cell) + 2u);
   const uint32_t cells = g.nx * g.ny;
-  for (uint32_t c = 0; c < cells; ++c) {
-    if (no_data(g.value[c]) || g.off_ground[c]) continue;
-    g.surface[c] = g.value[c];
-    ++st.cells_ground;
-  }
+  for (uint32_t c = 0; c < cells; ++c) st.cells_ground += is_ground_cell(g, c) ? 1u : 0u;
   for (uint32_t i = 0; i < n; ++i) {
     const float* p = xyz + 3u * i;
     height[i] = p[2] - terrain_height_at(g, p[0], p[1]);

@@ -76,6 +76,7 @@ TEST_CASE("scene: vehicles on an 8 degree slope among clutter are found, recogni
   add_box(tile, t, -8.0, 8.0, 0.3, 14.0, 0.25, 2.0, 0.0, 0.1);  // wall
   add_box(tile, t, -9.0, -8.0, 0.0, 9.0, 7.0, 5.0, 0.0, 0.2);   // building
   add_box(tile, t, 9.0, -9.0, 0.0, 1.0, 1.0, 0.8, 0.0, 0.1);    // crate
+  remove_occluded_ground(tile);
   georeference(tile.xyz);
 
   SceneConfig cfg;

@@ -75,6 +75,7 @@ TEST_CASE("segmentation: two cars 0.6 m apart on an 8 degree slope are two objec
   add_terrain(tile, t, 10.0, 0.15, 0.03, 3);
   add_box(tile, t, 0.0, -1.2, 0.0, 4.5, 1.8, 1.2, 0.3, 0.1);  // y from -2.1 to -0.3
   add_box(tile, t, 0.0, 1.2, 0.0, 4.5, 1.8, 1.2, 0.3, 0.1);   // gap 0.6 m
+  remove_occluded_ground(tile);
   const Segmented s = segment(tile);
   REQUIRE(s.status == Status::kOk);
   double share0 = 0, share1 = 0;
@@ -97,6 +98,7 @@ TEST_CASE("segmentation: a tree crown over a car stays apart from the car") {
   add_terrain(tile, t, 10.0, 0.15, 0.03, 4);
   add_box(tile, t, 0.0, 0.0, 0.7, 4.5, 1.8, 1.2, 0.3, 0.1);
   add_tree(tile, t, 0.5, 0.5, 0.0, 3.0, 5.5, 2.2, 0.15);  // crown from 3.3 to 7.7 m, trunk 2 m beside the car
+  remove_occluded_ground(tile);
   const Segmented s = segment(tile);
   REQUIRE(s.status == Status::kOk);
   double car_share = 0;
@@ -118,6 +120,7 @@ TEST_CASE("segmentation: more objects than the cap is kTooManyObjects, the first
   add_terrain(tile, t, 8.0, 0.2, 0.02, 5);
   add_box(tile, t, -3.0, 0.0, 0.0, 4.0, 1.8, 1.4, 0.3, 0.1);
   add_box(tile, t, 3.0, 0.0, 0.0, 4.0, 1.8, 1.4, 0.3, 0.1);
+  remove_occluded_ground(tile);
   const Segmented all = segment(tile);
   CHECK(all.status == Status::kOk);
   CHECK(all.stats.objects == 2u);

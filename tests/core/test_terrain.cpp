@@ -50,6 +50,7 @@ Tile sample_tile(double slope_deg) {
   add_box(tile, t, 2.0, -2.0, 0.4, 4.5, 1.8, 1.2, 0.3, 0.1);
   add_box(tile, t, 5.0, 6.5, 0.0, 10.0, 7.0, 5.0, 0.0, 0.2);
   add_box(tile, t, -5.0, -4.0, 0.0, 1.0, 1.0, 0.6, 0.0, 0.1);
+  remove_occluded_ground(tile);
   return tile;
 }
 

@@ -23,6 +23,24 @@ void Tile::add(double x, double y, double z, bool is_ground, int obj) {
   object.push_back(obj);
 }
 
+void remove_occluded_ground(Tile& tile) {
+  Tile kept;
+  kept.objects = tile.objects;
+  kept.roofs = tile.roofs;
+  for (size_t i = 0; i < tile.ground.size(); ++i) {
+    const double x = tile.xyz[3 * i], y = tile.xyz[3 * i + 1];
+    bool under = false;
+    for (const Tile::Footprint& f : tile.roofs) {
+      const double dx = x - f.cx, dy = y - f.cy;
+      const double u = std::cos(f.yaw) * dx + std::sin(f.yaw) * dy, v = -std::sin(f.yaw) * dx + std::cos(f.yaw) * dy;
+      under = under || (std::fabs(u) < f.half_x && std::fabs(v) < f.half_y);
+    }
+    if (tile.ground[i] && under) continue;
+    kept.add(x, y, tile.xyz[3 * i + 2], tile.ground[i] != 0, tile.object[i]);
+  }
+  tile = kept;
+}
+
 void add_terrain(Tile& tile, const TerrainShape& t, double half, double spacing, double noise, uint64_t seed) {
   uint64_t state = seed * 6364136223846793005ull + 1442695040888963407ull;
   auto uniform = [&state]() {
@@ -42,6 +60,7 @@ void add_terrain(Tile& tile, const TerrainShape& t, double half, double spacing,
 int add_box(Tile& tile, const TerrainShape& t, double cx, double cy, double yaw, double sx, double sy, double sz,
             double clearance, double spacing) {
   const int id = tile.objects++;
+  tile.roofs.push_back(Tile::Footprint{cx, cy, yaw, 0.5 * sx, 0.5 * sy});
   std::vector<float> s = box_surface(static_cast<float>(sx), static_cast<float>(sy), static_cast<float>(sz),
                                      static_cast<float>(spacing));
   const double c = std::cos(yaw), sn = std::sin(yaw);
@@ -74,6 +93,14 @@ int add_model(Tile& tile, const TerrainShape& t, const std::vector<double>& mode
   const double a = std::atan(std::tan(t.slope_deg * kPi / 180.0));
   const double ca = std::cos(a), sa = std::sin(a), cy_ = std::cos(yaw), sy_ = std::sin(yaw);
   const double base = terrain_z(t, cx, cy);
+  double lo[2] = {1e9, 1e9}, hi[2] = {-1e9, -1e9};
+  for (size_t i = 0; i < model.size(); i += 3)
+    for (int a = 0; a < 2; ++a) {
+      lo[a] = std::fmin(lo[a], model[i + a]);
+      hi[a] = std::fmax(hi[a], model[i + a]);
+    }
+  // Footprint on the ground (the pitch shortens it by cos(a); centred models assumed).
+  tile.roofs.push_back(Tile::Footprint{cx, cy, yaw, 0.5 * (hi[0] - lo[0]) * ca, 0.5 * (hi[1] - lo[1])});
   for (size_t i = 0; i < model.size(); i += 3) {
     if (model[i + 2] < min_z) continue;
     // yaw about z, then pitch so that the plane z = 0 follows the slope along x

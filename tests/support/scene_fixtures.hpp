@@ -25,8 +25,16 @@ struct Tile {
   std::vector<uint8_t> ground;
   std::vector<int> object;  // -1 ground, else the index of the add_* call that made it
   int objects = 0;
+  struct Footprint {
+    double cx, cy, yaw, half_x, half_y;
+  };
+  std::vector<Footprint> roofs;  // footprints of boxes and models: no ground seen under them
   void add(double x, double y, double z, bool is_ground, int obj);
 };
+
+// Drops the ground points under every box and model (the sensor sees roofs, not
+// what lies under them); call once the tile is complete.
+void remove_occluded_ground(Tile& tile);
 
 // Ground points on a square grid over [-half, half]^2 with deterministic noise (m).
 void add_terrain(Tile& tile, const TerrainShape& t, double half, double spacing, double noise, uint64_t seed);
