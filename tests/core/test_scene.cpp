@@ -89,9 +89,11 @@ TEST_CASE("scene: vehicles on an 8 degree slope among clutter are found, recogni
   for (const Placed& c : cars) {
     CAPTURE(c.model);
     const SceneObject* o = nearest(r, c.x, c.y);
-    REQUIRE(o != nullptr);
-    REQUIRE(o->kind == ObjectKind::kVehicleCandidate);
-    REQUIRE(o->ranking_count >= 1u);
+    REQUIRE(o != nullptr);  // REQUIRE does not leave the test here (no exceptions): guard by hand
+    if (o == nullptr) continue;
+    CHECK(o->kind == ObjectKind::kVehicleCandidate);
+    CHECK(o->ranking_count >= 1u);
+    if (o->ranking_count == 0) continue;
     CHECK(o->ranking[0].model == c.model);
     CHECK(o->confident);
     // The pose takes the model's origin to the placed origin, georeferenced.
@@ -105,13 +107,13 @@ TEST_CASE("scene: vehicles on an 8 degree slope among clutter are found, recogni
   CHECK(confident == 3u);  // nothing else
   const SceneObject* wall = nearest(r, -8.0, 8.0);
   REQUIRE(wall != nullptr);
-  CHECK(wall->kind == ObjectKind::kNotVehicleShaped);
+  if (wall) CHECK(wall->kind == ObjectKind::kNotVehicleShaped);
   const SceneObject* building = nearest(r, -9.0, -8.0);
   REQUIRE(building != nullptr);
-  CHECK(building->kind == ObjectKind::kTooLarge);
+  if (building) CHECK(building->kind == ObjectKind::kTooLarge);
   const SceneObject* crate = nearest(r, 9.0, -9.0);
   REQUIRE(crate != nullptr);
-  CHECK(crate->kind == ObjectKind::kTooSmall);
+  if (crate) CHECK(crate->kind == ObjectKind::kTooSmall);
 }
 
 TEST_CASE("scene: a tile over max_tile_points is kTooManyPoints, a footprint over the grid kTileTooLarge") {

@@ -61,6 +61,8 @@ uint32_t object_of(const Tile& tile, const Segmented& s, int id, double* share) 
       ++votes[s.label[i] == kNoObject ? s.objects.size() : s.label[i]];
     }
   uint32_t best = 0;
+  REQUIRE(!s.objects.empty());  // callers index s.objects with the answer
+  if (s.objects.empty()) return 0;
   for (uint32_t k = 1; k < s.objects.size(); ++k) best = votes[k] > votes[best] ? k : best;
   *share = total ? static_cast<double>(votes[best]) / total : 0.0;
   return best;
@@ -78,6 +80,8 @@ TEST_CASE("segmentation: two cars 0.6 m apart on an 8 degree slope are two objec
   remove_occluded_ground(tile);
   const Segmented s = segment(tile);
   REQUIRE(s.status == Status::kOk);
+  REQUIRE(!s.objects.empty());
+  if (s.objects.empty()) return;  // REQUIRE does not leave the test (no exceptions)
   double share0 = 0, share1 = 0;
   const uint32_t a = object_of(tile, s, 0, &share0), b = object_of(tile, s, 1, &share1);
   CHECK(a != b);
@@ -101,6 +105,8 @@ TEST_CASE("segmentation: a tree crown over a car stays apart from the car") {
   remove_occluded_ground(tile);
   const Segmented s = segment(tile);
   REQUIRE(s.status == Status::kOk);
+  REQUIRE(!s.objects.empty());
+  if (s.objects.empty()) return;  // REQUIRE does not leave the test (no exceptions)
   double car_share = 0;
   const uint32_t car = object_of(tile, s, 0, &car_share);
   CHECK(car_share >= 0.95);
@@ -128,5 +134,5 @@ TEST_CASE("segmentation: more objects than the cap is kTooManyObjects, the first
   CHECK(capped.status == Status::kTooManyObjects);
   CHECK(capped.stats.objects == 1u);
   CHECK(capped.stats.dropped == 1u);
-  CHECK(capped.objects[0].points == all.objects[0].points);
+  if (!capped.objects.empty() && !all.objects.empty()) CHECK(capped.objects[0].points == all.objects[0].points);
 }
