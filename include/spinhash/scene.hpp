@@ -55,7 +55,7 @@ struct SceneConfig {
   float min_width = 1.1f, max_width = 3.2f;     // m
   float min_height = 0.9f, max_height = 4.0f;   // m: highest point above the terrain
   float max_clearance = 1.2f;   // m: lowest point above the terrain; higher floats (crowns)
-  float max_size_mismatch = 0.3f;  // confident only if the object's length and width are
+  float max_size_mismatch = 0.15f;  // confident only if the object's length and width are
                                    // within this share of the best model's bounding box
 };
 

@@ -1,6 +1,6 @@
 // SceneRecognizer (include/spinhash/scene.hpp): a georeferenced tile on an
 // 8 degree slope with three toy vehicles (two parked 0.7 m apart, one under
-// a tree), a wall, a building and a crate; each vehicle found and recognised,
+// a tree), a vehicle not in the database, a wall, a building and a crate; each vehicle found and recognised,
 // the clutter named and never confident; capacities refused with a status.
 #include <doctest/doctest.h>
 
@@ -76,6 +76,7 @@ TEST_CASE("scene: vehicles on an 8 degree slope among clutter are found, recogni
   add_box(tile, t, -8.0, 8.0, 0.3, 14.0, 0.25, 2.0, 0.0, 0.1);  // wall
   add_box(tile, t, -9.0, -8.0, 0.0, 9.0, 7.0, 5.0, 0.0, 0.2);   // building
   add_box(tile, t, 9.0, -9.0, 0.0, 1.0, 1.0, 0.8, 0.0, 0.1);    // crate
+  add_box(tile, t, 10.0, -2.0, 1.57, 7.5, 2.6, 2.0, 0.4, 0.1);  // a vehicle not in the database (bus-like)
   remove_occluded_ground(tile);
   georeference(tile.xyz);
 
@@ -85,7 +86,7 @@ TEST_CASE("scene: vehicles on an 8 degree slope among clutter are found, recogni
   const SceneResult r = run.scene.recognize(tile.xyz.data(), static_cast<uint32_t>(tile.ground.size()));
   REQUIRE(r.status == Status::kOk);
   CHECK(r.stats.points_in == tile.ground.size());
-  CHECK(r.stats.objects_by_kind[static_cast<int>(ObjectKind::kVehicleCandidate)] == 3u);
+  CHECK(r.stats.objects_by_kind[static_cast<int>(ObjectKind::kVehicleCandidate)] == 4u);
   for (const Placed& c : cars) {
     CAPTURE(c.model);
     const SceneObject* o = nearest(r, c.x, c.y);
@@ -104,7 +105,10 @@ TEST_CASE("scene: vehicles on an 8 degree slope among clutter are found, recogni
   }
   uint32_t confident = 0;
   for (uint32_t k = 0; k < r.object_count; ++k) confident += r.objects[k].confident ? 1u : 0u;
-  CHECK(confident == 3u);  // nothing else
+  CHECK(confident == 3u);  // nothing else, the unknown vehicle included
+  const SceneObject* bus = nearest(r, 10.0, -2.0);
+  REQUIRE(bus != nullptr);
+  if (bus) CHECK(bus->kind == ObjectKind::kVehicleCandidate);
   const SceneObject* wall = nearest(r, -8.0, 8.0);
   REQUIRE(wall != nullptr);
   if (wall) CHECK(wall->kind == ObjectKind::kNotVehicleShaped);
