@@ -1,44 +1,46 @@
 #include "geometry/ground.hpp"
 
+#include <cmath>
+
 namespace spinhash {
-namespace {
 
-// Height below which `share` of the points lie, to within one histogram bin.
-float percentile_height(const float* xyz, uint32_t n, float z_lo, float z_hi, float share,
-                        uint32_t* histogram) {
-  for (uint32_t b = 0; b < kGroundHistogramBins; ++b) histogram[b] = 0;
-  const float scale = static_cast<float>(kGroundHistogramBins) / (z_hi - z_lo);
-  for (uint32_t i = 0; i < n; ++i) {
-    uint32_t b = static_cast<uint32_t>((xyz[3u * i + 2u] - z_lo) * scale);  // z_lo <= z <= z_hi: no overflow
-    ++histogram[b < kGroundHistogramBins ? b : kGroundHistogramBins - 1u];
-  }
-  const float wanted = share * static_cast<float>(n);
-  uint32_t below = 0;
-  for (uint32_t b = 0; b < kGroundHistogramBins; ++b) {
-    below += histogram[b];
-    if (static_cast<float>(below) >= wanted) return z_lo + static_cast<float>(b + 1u) / scale;
-  }
-  return z_hi;
-}
-
-}  // namespace
-
-uint32_t remove_level_ground(float* xyz, uint32_t n, float clearance, uint32_t* histogram) {
+uint32_t remove_ground(float* xyz, uint32_t n, float clearance, TerrainGrid& grid, float* height, uint8_t* ground) {
   if (n == 0 || !(clearance > 0.0f)) return 0;
-  float z_lo = xyz[2], z_hi = xyz[2];
-  for (uint32_t i = 1; i < n; ++i) {
-    const float z = xyz[3u * i + 2u];
-    z_lo = z < z_lo ? z : z_lo;
-    z_hi = z > z_hi ? z : z_hi;
+  float lo[3] = {xyz[0], xyz[1], xyz[2]}, hi[3] = {xyz[0], xyz[1], xyz[2]};
+  for (uint32_t i = 1; i < n; ++i)
+    for (uint32_t a = 0; a < 3u; ++a) {
+      const float v = xyz[3u * i + a];
+      lo[a] = v < lo[a] ? v : lo[a];
+      hi[a] = v > hi[a] ? v : hi[a];
+    }
+  if (!(hi[2] - lo[2] > clearance)) return 0;  // all within one slab: nothing stands on a ground
+  // Cells of kQueryTerrainCell, or coarser so that the query fits the grid.
+  const float side = std::sqrt(static_cast<float>(grid.max_cells)) - 2.0f;
+  const float span = hi[0] - lo[0] > hi[1] - lo[1] ? hi[0] - lo[0] : hi[1] - lo[1];
+  TerrainParams p;
+  p.cell = span / side > kQueryTerrainCell ? span / side : kQueryTerrainCell;
+  p.max_window = p.max_window > p.cell ? p.max_window : p.cell;
+  p.ground_height = clearance;
+  if (classify_terrain(xyz, n, p, grid, height, ground, nullptr) != Status::kOk) return 0;  // keep all
+  uint32_t on_ground = 0;
+  for (uint32_t i = 0; i < n; ++i) on_ground += ground[i];
+  if (static_cast<float>(on_ground) < kMinGroundShare * static_cast<float>(n)) return 0;
+  // Cells: 0 empty, 1 ground only, 2 anything standing (the opening buffer is free now).
+  const uint32_t cells = grid.nx * grid.ny;
+  for (uint32_t c = 0; c < cells; ++c) grid.scratch[c] = 0.0f;
+  for (uint32_t i = 0; i < n; ++i) {
+    float& mark = grid.scratch[terrain_cell_of(grid, xyz[3u * i], xyz[3u * i + 1u])];
+    mark = ground[i] ? (mark > 1.0f ? mark : 1.0f) : 2.0f;
   }
-  if (!(z_hi - z_lo > clearance)) return 0;  // all within one slab: nothing stands on a ground
-  const float top = percentile_height(xyz, n, z_lo, z_hi, kGroundPercentile, histogram) + clearance;
-  uint32_t in_slab = 0;
-  for (uint32_t i = 0; i < n; ++i) in_slab += xyz[3u * i + 2u] <= top ? 1u : 0u;
-  if (static_cast<float>(in_slab) < kMinGroundShare * static_cast<float>(n)) return 0;
+  uint32_t occupied = 0, open = 0;
+  for (uint32_t c = 0; c < cells; ++c) {
+    occupied += grid.scratch[c] > 0.0f ? 1u : 0u;
+    open += grid.scratch[c] == 1.0f ? 1u : 0u;
+  }
+  if (static_cast<float>(open) < kMinOpenGroundShare * static_cast<float>(occupied)) return 0;
   uint32_t kept = 0;
   for (uint32_t i = 0; i < n; ++i) {
-    if (xyz[3u * i + 2u] <= top) continue;
+    if (ground[i]) continue;
     for (uint32_t a = 0; a < 3u; ++a) xyz[3u * kept + a] = xyz[3u * i + a];
     ++kept;
   }

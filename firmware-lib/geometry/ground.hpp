@@ -1,21 +1,26 @@
-// Level-ground removal for airborne queries (not in the paper). Every
-// airborne scan of a vehicle holds the ground around it, which no model
-// has: its flat spin images crowd the candidates and its points count as
-// outliers in eq. 7. With z up (georeferenced input), the ground is the
-// dense horizontal slab at the bottom of the cloud.
+// Ground removal for airborne queries (not in the paper). Every airborne
+// scan of a vehicle holds the ground around it, which no model has: its flat
+// spin images crowd the candidates and its points count as outliers in eq. 7.
+// The terrain classifier (geometry/terrain.hpp) finds it on slopes, bumps and
+// curbs too; a cloud with too little ground to be sure is left whole.
 #pragma once
 #include <cstdint>
 
+#include "geometry/terrain.hpp"
+
 namespace spinhash {
 
-constexpr uint32_t kGroundHistogramBins = 1024;  // z histogram: ~1 cm bins over a 10 m tall cloud
-constexpr float kGroundPercentile = 0.05f;       // the ground holds far more than 5% of the points
-constexpr float kMinGroundShare = 0.35f;         // slab share that says "there is ground here"
+constexpr float kMinGroundShare = 0.35f;         // ground share that says "there is ground here"
+constexpr float kMinOpenGroundShare = 0.2f;      // share of the occupied cells holding ground only:
+                                                 // ground reaches beyond the object (a box's bottom does not)
+constexpr uint32_t kQueryTerrainCells = 4096;    // 64 x 64 cells: a query of 32 m at 0.5 m
+constexpr float kQueryTerrainCell = 0.5f;        // m: coarser only when the query is wider than 32 m
 
-// When at least kMinGroundShare of the n points lie at most `clearance` m
-// above the kGroundPercentile height of z, drops those points (compacting
-// xyz in place) and returns how many went; otherwise keeps every point and
-// returns 0. `histogram` holds kGroundHistogramBins counters. O(n).
-uint32_t remove_level_ground(float* xyz, uint32_t n, float clearance, uint32_t* histogram);
+// Drops the points at most `clearance` m above the local terrain (compacting
+// xyz in place) when they are at least kMinGroundShare of the n points and
+// at least kMinOpenGroundShare of the occupied cells hold nothing else, and
+// returns how many went; otherwise keeps every point and returns 0. `grid`
+// holds kQueryTerrainCells cells; height and ground hold n entries (scratch).
+uint32_t remove_ground(float* xyz, uint32_t n, float clearance, TerrainGrid& grid, float* height, uint8_t* ground);
 
 }  // namespace spinhash

@@ -42,10 +42,11 @@ struct RecognizerConfig {
   float query_basis_spacing = 0.0f;  // m between query basis points; 0: the database's spacing
 
   // Airborne scans hold the ground around the vehicle, which no model has.
-  // When at least 35% of the points lie in a level slab at the bottom of
-  // the cloud (z up), that slab is dropped up to this height above the
-  // ground: 5 sigma of 5 cm noise, taking the bottom of the wheels too
-  // (geometry/ground.hpp; not in the paper). 0 keeps every point.
+  // When at least 35% of the points are ground (z up; the terrain
+  // classifier of geometry/terrain.hpp: slopes, bumps and curbs too), the
+  // points up to this height above the local terrain are dropped: 5 sigma
+  // of 5 cm noise, taking the bottom of the wheels too (geometry/ground.hpp;
+  // not in the paper). 0 keeps every point.
   float ground_clearance = 0.25f;  // m
 
   // Spin-image pruning (section 5).
