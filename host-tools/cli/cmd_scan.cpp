@@ -6,6 +6,7 @@
 #include "cli/commands.hpp"
 #include "cloud/cloud_writer.hpp"
 #include "mesh/mesh_loader.hpp"
+#include "mesh/seeded_random.hpp"
 #include "mesh/vehicle_generator.hpp"
 #include "scan/scan_simulator.hpp"
 
@@ -19,11 +20,31 @@ struct ScanArgs {
   host::ScanOptions options;
   std::vector<double> offset;
   double ground_half_size = 0.0;
+  double ground_slope_deg = 0.0;  // ground and vehicle tilted together (the vehicle rests on the slope)
   bool ascii = false;
 };
 
 // ASPRS classes in a written LAS: the scanned object and its ground.
 constexpr uint8_t kObjectClass = 1, kGroundClass = 2;
+constexpr uint64_t kSlopeAxisStream = 0x7000;  // seeds the slope's axis apart from the scan's draws
+
+// The rotation by slope_deg about a horizontal axis through the centre of the
+// mesh's base, the axis direction drawn from the seed: the vehicle and its
+// ground tilt together, so it rests on the slope (pitch and roll following
+// it) whatever its heading. Identity for slope 0.
+Eigen::Matrix4d slope_tilt(const host::Mesh& mesh, double slope_deg, uint64_t seed) {
+  Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+  if (slope_deg == 0.0) return t;
+  host::SeededRandom rng(host::mix_seed(seed, kSlopeAxisStream));
+  const double heading = rng.uniform(0.0, 2.0 * M_PI);
+  const Eigen::Vector3d axis(std::cos(heading), std::sin(heading), 0.0);
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(slope_deg * M_PI / 180.0, axis).toRotationMatrix();
+  const host::Box3 box = mesh.bounding_box();
+  const Eigen::Vector3d pivot(box.center().x(), box.center().y(), box.lo.z());
+  t.topLeftCorner<3, 3>() = r;
+  t.topRightCorner<3, 1>() = pivot - r * pivot;
+  return t;
+}
 
 int run_scan(ScanArgs& a) {
   host::Mesh mesh, ground;
@@ -31,6 +52,11 @@ int run_scan(ScanArgs& a) {
   if (host::cloud_format_for(a.output) == host::CloudFormat::kUnknown) {
     std::fprintf(stderr, "spinhash scan: %s: unknown point-cloud extension (write .ply or .las)\n",
                  a.output.c_str());
+    return kExitError;
+  }
+  if (a.ground_slope_deg > 0.0 && a.options.random_pose) {
+    // The random yaw turns the vehicle but not its ground: it would no longer rest on the slope.
+    std::fprintf(stderr, "spinhash scan: --ground-slope cannot be combined with --random-pose\n");
     return kExitError;
   }
   if (!host::load_mesh(a.mesh, &mesh, &error)) {
@@ -42,7 +68,11 @@ int run_scan(ScanArgs& a) {
     ground = host::make_ground_patch(a.ground_half_size, mesh.bounding_box().lo.z());
     a.options.ground = &ground;
   }
+  const Eigen::Matrix4d tilt = slope_tilt(mesh, a.ground_slope_deg, a.options.seed);
+  mesh.apply_transform(tilt);
+  ground.apply_transform(tilt);
   host::ScanResult scan = host::simulate_scan(mesh, a.options);
+  scan.true_pose = scan.true_pose * tilt;  // model -> tilted model -> output frame
   if (!scan.ok()) {
     std::fprintf(stderr, "spinhash scan: %s\n", scan.error.c_str());
     return kExitError;
@@ -92,6 +122,10 @@ void add_scan_command(CLI::App& app, int* exit_code) {
   cmd->add_option("--offset", a->offset, "added to every point, e.g. UTM 500000 4000000 100")->expected(3);
   cmd->add_option("--ground", a->ground_half_size, "scan a ground square of this half size (m) too")
       ->check(CLI::Range(0.0, 1000.0));
+  cmd->add_option("--ground-slope", a->ground_slope_deg,
+                  "tilt the ground and the vehicle on it by this many degrees (axis heading from --seed)")
+      ->check(CLI::Range(0.0, 45.0))
+      ->needs("--ground");
   cmd->add_option("--pose-out", a->pose_output, "write the true model->scan pose (4x4) here");
   cmd->add_flag("--ascii", a->ascii, "ASCII PLY instead of binary");
   cmd->callback([a, exit_code]() { *exit_code = run_scan(*a); });
