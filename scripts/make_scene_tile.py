@@ -67,8 +67,15 @@ def vehicle(path, cx, cy, yaw):
 
 
 half = size / 2
-places = [(-half + 8, -half + 8, 0.0), (-half + 8, -half + 8 + 2.6, 0.0), (0.0, 0.0, 1.1),
+def width(path):
+    ys = [float(line.split()[1]) for line in open(path)]
+    return max(ys) - min(ys)
+
+
+places = [(-half + 8, -half + 8, 0.0), None, (0.0, 0.0, 1.1),
           (half - 9, 4.0, 2.0), (6.0, -half + 9, 0.5), (-6.0, 5.0, -0.7), (10.0, 12.0, 0.3)]
+if len(vehicles) > 1:  # the second parked beside the first, 0.7 m apart
+    places[1] = (-half + 8, -half + 8 + (width(vehicles[0]) + width(vehicles[1])) / 2 + 0.7, 0.0)
 for path, (cx, cy, yaw) in zip(vehicles, places):
     vehicle(path, cx, cy, yaw)
 box(-half + 10, half - 9, 0.0, 12.0, 9.0, 6.0, 0.0, 0.2, "building")

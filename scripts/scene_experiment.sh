@@ -21,7 +21,7 @@ while [ "$t" -lt "$TILES" ]; do
       python3 "$HERE/las_class_filter.py" "$f.las" 1 "$f.xyz"
       files="$files $f.xyz"
     done
-    nice python3 "$HERE/make_scene_tile.py" "$OUT/tile$t.xyz" "$OUT/truth$t.csv" "$slope" 52 $files 2>/dev/null
+    nice python3 "$HERE/make_scene_tile.py" "$OUT/tile$t.xyz" "$OUT/truth$t.csv" "$slope" 50 $files 2>/dev/null
     nice "$S" scene --db "$DB" --top 3 "$OUT/tile$t.xyz" > "$OUT/tile$t.jsonl" 2> "$OUT/tile$t.err" || true
     python3 "$HERE/score_scene.py" "$OUT/truth$t.csv" "$OUT/tile$t.jsonl" "$slope" "$t"
   done

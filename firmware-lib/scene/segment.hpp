@@ -14,7 +14,7 @@ constexpr uint32_t kNoObject = 0xFFFFFFFFu;
 
 struct SegmentParams {
   float cell = 0.25f;               // m
-  float split_height = 3.0f;        // m above terrain: low layer at or below, high layer above
+  float split_height = 3.8f;        // m above terrain: low layer at or below, high layer above
   uint32_t min_points = 30;         // smaller components are fragments
   uint32_t max_objects = 256;
 };

@@ -47,13 +47,13 @@ struct SceneConfig {
   // cars splits them); points above it the high layer (tree crowns, roofs),
   // so a crown over a car never joins it.
   float segment_cell = 0.25f;        // m: must be below the narrowest gap to split (0.5 m)
-  float layer_split_height = 3.0f;   // m: above the tallest vehicle, below most crowns
+  float layer_split_height = 3.8f;   // m: above the tallest vehicle (buses 3.5 m), below most crowns
   uint32_t min_object_points = 30;   // smaller components are noise, not objects
 
   // Size gates (footprint along the object's principal axes; heights above terrain).
-  float min_length = 2.2f, max_length = 9.0f;   // m
-  float min_width = 1.1f, max_width = 3.2f;     // m
-  float min_height = 0.9f, max_height = 4.0f;   // m: highest point above the terrain
+  float min_length = 2.2f, max_length = 13.0f;  // m: buses reach 12 m
+  float min_width = 1.1f, max_width = 4.0f;     // m: tracked vehicles 3.6 m
+  float min_height = 0.9f, max_height = 4.5f;   // m: highest point above the terrain
   float max_clearance = 1.2f;   // m: lowest point above the terrain; higher floats (crowns)
   float max_size_mismatch = 0.15f;  // confident only if the object's length and width are
                                    // within this share of the best model's bounding box

@@ -101,7 +101,7 @@ TEST_CASE("segmentation: a tree crown over a car stays apart from the car") {
   Tile tile;
   add_terrain(tile, t, 10.0, 0.15, 0.03, 4);
   add_box(tile, t, 0.0, 0.0, 0.7, 4.5, 1.8, 1.2, 0.3, 0.1);
-  add_tree(tile, t, 0.5, 0.5, 0.0, 3.0, 5.5, 2.2, 0.15);  // crown from 3.3 to 7.7 m, trunk 2 m beside the car
+  add_tree(tile, t, 0.5, 0.5, 0.0, 3.0, 6.4, 2.2, 0.15);  // crown from 4.2 to 8.6 m, trunk 2 m beside the car
   remove_occluded_ground(tile);
   const Segmented s = segment(tile);
   REQUIRE(s.status == Status::kOk);
@@ -116,7 +116,7 @@ TEST_CASE("segmentation: a tree crown over a car stays apart from the car") {
   CHECK(s.objects[car].hmax < 1.7f);
   CHECK(s.objects[car].length() == doctest::Approx(4.5).epsilon(0.08));
   bool crown_high = false;
-  for (const ObjectShape& o : s.objects) crown_high = crown_high || (o.high_layer && o.hmin > 2.5f && o.hmax > 7.0f);
+  for (const ObjectShape& o : s.objects) crown_high = crown_high || (o.high_layer && o.hmin > 3.5f && o.hmax > 8.0f);
   CHECK(crown_high);
 }
 
