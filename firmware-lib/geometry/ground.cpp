@@ -3,6 +3,30 @@
 #include <cmath>
 
 namespace spinhash {
+namespace {
+
+bool ground_cell(const TerrainGrid& g, uint32_t c) { return !std::isnan(g.value[c]) && !g.off_ground[c]; }
+
+// True when the ground cells join like terrain: few neighbour pairs (right
+// and up) step by more than kMaxGroundStepSlope per m plus kMaxGroundStepExtra.
+bool ground_is_terrain(const TerrainGrid& g) {
+  const float max_step = kMaxGroundStepSlope * g.cell + kMaxGroundStepExtra;
+  uint32_t pairs = 0, steep = 0;
+  for (uint32_t y = 0; y < g.ny; ++y)
+    for (uint32_t x = 0; x < g.nx; ++x) {
+      const uint32_t c = y * g.nx + x;
+      if (!ground_cell(g, c)) continue;
+      const uint32_t next[2] = {x + 1u < g.nx ? c + 1u : c, y + 1u < g.ny ? c + g.nx : c};
+      for (uint32_t d : next) {
+        if (d == c || !ground_cell(g, d)) continue;
+        ++pairs;
+        steep += std::fabs(g.value[d] - g.value[c]) > max_step ? 1u : 0u;
+      }
+    }
+  return static_cast<float>(steep) <= kMaxSteepGroundShare * static_cast<float>(pairs);
+}
+
+}  // namespace
 
 uint32_t remove_ground(float* xyz, uint32_t n, float clearance, TerrainGrid& grid, float* height, uint8_t* ground) {
   if (n == 0 || !(clearance > 0.0f)) return 0;
@@ -25,6 +49,7 @@ uint32_t remove_ground(float* xyz, uint32_t n, float clearance, TerrainGrid& gri
   uint32_t on_ground = 0;
   for (uint32_t i = 0; i < n; ++i) on_ground += ground[i];
   if (static_cast<float>(on_ground) < kMinGroundShare * static_cast<float>(n)) return 0;
+  if (!ground_is_terrain(grid)) return 0;
   // Cells: 0 empty, 1 ground only, 2 anything standing (the opening buffer is free now).
   const uint32_t cells = grid.nx * grid.ny;
   for (uint32_t c = 0; c < cells; ++c) grid.scratch[c] = 0.0f;

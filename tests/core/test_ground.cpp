@@ -79,6 +79,19 @@ TEST_CASE("a cloud without a ground slab is left whole") {
   CHECK(remove(pts, n, 0.0f) == 0);  // clearance 0: off
 }
 
+TEST_CASE("vehicles without ground keep every point (their hood and sides are not terrain)") {
+  for (uint32_t toy = 0; toy < test::kToyModels; ++toy) {
+    CAPTURE(toy);
+    std::vector<double> pts = test::toy_vehicle_points(toy, 0.05f);
+    std::vector<float> seen;  // from the air: no underside
+    for (size_t i = 0; i < pts.size(); i += 3)
+      if (pts[i + 2] > 0.35)
+        for (int a = 0; a < 3; ++a) seen.push_back(static_cast<float>(pts[i + a]));
+    const uint32_t n = static_cast<uint32_t>(seen.size() / 3);
+    CHECK(remove(seen, n, kClearance) == 0);
+  }
+}
+
 TEST_CASE("a toy vehicle standing on ground is recognised with the ground removed, and not without") {
   test::ToyDatabase toy;
   REQUIRE(test::make_toy_database(&toy));
