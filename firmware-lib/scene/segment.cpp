@@ -32,11 +32,54 @@ uint32_t coord(float v, float v0, float cell, uint32_t count) {
   return i < count ? i : count - 1u;
 }
 
-// Slot of a non-ground point: layer * cells + cell.
+uint32_t cell_of(const SegmentGrid& g, const float* p) {
+  return coord(p[1], g.y0, g.cell, g.ny) * g.nx + coord(p[0], g.x0, g.cell, g.nx);
+}
+
+uint32_t height_bin(float h) {
+  const float b = h / kColumnBin;
+  if (!(b > 0.0f)) return 0;
+  return b < static_cast<float>(kColumnBins - 1u) ? static_cast<uint32_t>(b) : kColumnBins - 1u;
+}
+
+// Turns each cell's occupied-bin mask into its low layer's bins: the lowest
+// occupied bin (low byte) and the highest reached from it without
+// kLayerGapBins empty bins on the way (second byte).
+void column_tops(SegmentGrid& g) {
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c) {
+    const uint32_t mask = g.column[c];
+    uint32_t low = 0, top = 0, empty = 0;
+    bool started = false;
+    for (uint32_t b = 0; b < kColumnBins; ++b) {
+      if (mask & (1u << b)) {
+        if (started && empty >= kLayerGapBins) break;
+        if (!started) low = b;
+        started = true;
+        top = b;
+        empty = 0;
+      } else {
+        ++empty;
+      }
+    }
+    g.column[c] = low | top << 8;
+  }
+}
+
+// Slot of a non-ground point: layer * cells + cell. High: above split, or
+// above a gap in its cell's column.
 uint32_t slot_of(const SegmentGrid& g, const float* p, float h, float split) {
   const uint32_t cells = g.nx * g.ny;
-  const uint32_t c = coord(p[1], g.y0, g.cell, g.ny) * g.nx + coord(p[0], g.x0, g.cell, g.nx);
-  return (h > split ? cells : 0u) + c;
+  const uint32_t c = cell_of(g, p);
+  return (h > split || height_bin(h) > (g.column[c] >> 8) ? cells : 0u) + c;
+}
+
+// Low-layer cells join only when their columns overlap in height (within a
+// bin): the low fringe of a crown beside a car does not join the car.
+bool columns_touch(const SegmentGrid& g, uint32_t a, uint32_t b) {
+  const uint32_t lo_a = g.column[a] & 0xFFu, hi_a = g.column[a] >> 8;
+  const uint32_t lo_b = g.column[b] & 0xFFu, hi_b = g.column[b] >> 8;
+  return lo_a <= hi_b + 1u && lo_b <= hi_a + 1u;
 }
 
 void link_neighbours(SegmentGrid& g) {
@@ -55,7 +98,9 @@ void link_neighbours(SegmentGrid& g) {
           const int nx = static_cast<int>(x) + dx[k], ny = static_cast<int>(y) + dy[k];
           if (nx < 0 || nx >= static_cast<int>(g.nx) || ny >= static_cast<int>(g.ny)) continue;
           const uint32_t d = base + static_cast<uint32_t>(ny) * g.nx + static_cast<uint32_t>(nx);
-          if (parent[d] != kNoObject) unite(parent, c, d);
+          if (parent[d] == kNoObject) continue;
+          if (layer == 0 && !columns_touch(g, c, d)) continue;
+          unite(parent, c, d);
         }
       }
   }
@@ -86,6 +131,7 @@ void SegmentGrid::carve(Arena& arena, uint32_t cells) {
   max_cells = cells;
   parent = arena.alloc<uint32_t>(static_cast<size_t>(kLayers) * cells);
   object = arena.alloc<uint32_t>(static_cast<size_t>(kLayers) * cells);
+  column = arena.alloc<uint32_t>(cells);
 }
 
 Status segment_objects(const float* xyz, const float* height, const uint8_t* ground, uint32_t n,
@@ -116,6 +162,10 @@ Status segment_objects(const float* xyz, const float* height, const uint8_t* gro
     g.parent[s] = kNoObject;
     g.object[s] = 0;
   }
+  for (uint32_t c = 0; c < cells; ++c) g.column[c] = 0;
+  for (uint32_t i = 0; i < n; ++i)
+    if (!ground[i]) g.column[cell_of(g, xyz + 3u * i)] |= 1u << height_bin(height[i]);
+  column_tops(g);
   for (uint32_t i = 0; i < n; ++i)
     if (!ground[i]) {
       const uint32_t s = slot_of(g, xyz + 3u * i, height[i], params.split_height);

@@ -1,7 +1,10 @@
 // Objects of a tile: connected components of the above-ground points on a
-// fixed-capacity cell grid (union-find, no recursion), in two layers split
-// at a height above the terrain, so cars parked side by side part at the
-// empty gap between them and a tree crown over a car stays apart from it.
+// fixed-capacity cell grid (union-find, no recursion), in two layers: the
+// low one holds the points up to a height above the terrain that rise from
+// the lowest point of their cell without a vertical gap of kLayerGap; the
+// rest (tree crowns, a crown's part over a car, roofs of tall buildings) is
+// the high layer. Cars parked side by side part at the empty gap between
+// them, and a crown over a car stays apart from it.
 #pragma once
 #include <cstdint>
 
@@ -11,6 +14,9 @@
 namespace spinhash {
 
 constexpr uint32_t kNoObject = 0xFFFFFFFFu;
+constexpr float kColumnBin = 0.25f;      // m: height bins of a cell's column (32 bins: 0-8 m)
+constexpr uint32_t kColumnBins = 32;
+constexpr uint32_t kLayerGapBins = 4;    // kLayerGap = 1 m of empty bins parts a column
 
 struct SegmentParams {
   float cell = 0.25f;               // m
@@ -23,6 +29,7 @@ struct SegmentGrid {
   uint32_t max_cells = 0;
   uint32_t* parent = nullptr;  // 2 layers x max_cells: union-find forest (kNoObject: empty cell)
   uint32_t* object = nullptr;  // 2 layers x max_cells: per root, points, then object id
+  uint32_t* column = nullptr;  // max_cells: occupied height bins, then the top of the low layer
   uint32_t nx = 0, ny = 0;
   float x0 = 0.0f, y0 = 0.0f, cell = 0.25f;
 

@@ -120,6 +120,27 @@ TEST_CASE("segmentation: a tree crown over a car stays apart from the car") {
   CHECK(crown_high);
 }
 
+TEST_CASE("segmentation: a low crown (3.2 m, below the layer split) over a car stays apart from it") {
+  TerrainShape t;
+  t.slope_deg = 10.0;
+  Tile tile;
+  add_terrain(tile, t, 10.0, 0.15, 0.03, 6);
+  add_box(tile, t, 0.0, 0.0, 0.3, 4.5, 1.8, 1.2, 0.3, 0.1);
+  add_tree(tile, t, 0.0, 0.0, 0.0, 3.0, 5.2, 2.0, 0.15);  // crown 3.2-7.2 m right over the car
+  remove_occluded_ground(tile);
+  const Segmented s = segment(tile);
+  REQUIRE(s.status == Status::kOk);
+  REQUIRE(!s.objects.empty());
+  if (s.objects.empty()) return;
+  double car_share = 0;
+  const uint32_t car = object_of(tile, s, 0, &car_share);
+  CHECK(car_share >= 0.95);
+  uint32_t tree_in_car = 0;
+  for (size_t i = 0; i < tile.object.size(); ++i) tree_in_car += tile.object[i] == 1 && s.label[i] == car;
+  CHECK(tree_in_car == 0u);
+  CHECK(s.objects[car].hmax < 1.7f);
+}
+
 TEST_CASE("segmentation: more objects than the cap is kTooManyObjects, the first ones kept") {
   TerrainShape t;
   Tile tile;

@@ -21,8 +21,8 @@ struct WorkspaceThreshold {
   size_t scene_300000;    // SceneConfig{}: a 300 000-point tile, its grids and a default recognizer
 };
 // Pointer-sized members make 64-bit layouts larger than 32-bit ones.
-constexpr WorkspaceThreshold kThreshold64 = {6377984, 5548064, 21702576};
-constexpr WorkspaceThreshold kThreshold32 = {6377872, 5547952, 21702352};
+constexpr WorkspaceThreshold kThreshold64 = {6377984, 5548064, 22751232};
+constexpr WorkspaceThreshold kThreshold32 = {6377872, 5547952, 22750944};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
 constexpr size_t kToleranceBytes = 1024;
