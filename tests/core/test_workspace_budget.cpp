@@ -22,7 +22,7 @@ struct WorkspaceThreshold {
 };
 // Pointer-sized members make 64-bit layouts larger than 32-bit ones.
 constexpr WorkspaceThreshold kThreshold64 = {6377984, 5548064, 22751232};
-constexpr WorkspaceThreshold kThreshold32 = {6377872, 5547952, 22750944};
+constexpr WorkspaceThreshold kThreshold32 = {6377824, 5547904, 22750976};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
 constexpr size_t kToleranceBytes = 1024;
