@@ -31,6 +31,8 @@ const char* status_name(Status s) noexcept {
     case Status::kTooManyPoints: return "cloud larger than the workspace";
     case Status::kNotEnoughFeatures: return "not enough features";
     case Status::kNotOpen: return "not initialised";
+    case Status::kTileTooLarge: return "tile footprint larger than the scene grid";
+    case Status::kTooManyObjects: return "more objects than the scene workspace holds";
   }
   return "unknown";
 }

@@ -56,7 +56,9 @@ static_assert(same(SPINHASH_OK, Status::kOk) && same(SPINHASH_INVALID_ARGUMENT, 
                   same(SPINHASH_EMPTY_CLOUD, Status::kEmptyCloud) &&
                   same(SPINHASH_TOO_MANY_POINTS, Status::kTooManyPoints) &&
                   same(SPINHASH_NOT_ENOUGH_FEATURES, Status::kNotEnoughFeatures) &&
-                  same(SPINHASH_NOT_OPEN, Status::kNotOpen),
+                  same(SPINHASH_NOT_OPEN, Status::kNotOpen) &&
+                  same(SPINHASH_TILE_TOO_LARGE, Status::kTileTooLarge) &&
+                  same(SPINHASH_TOO_MANY_OBJECTS, Status::kTooManyObjects),
               "spinhash_status and spinhash::Status disagree");
 
 spinhash_status to_c(Status s) { return static_cast<spinhash_status>(static_cast<int32_t>(s)); }

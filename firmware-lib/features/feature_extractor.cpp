@@ -4,8 +4,8 @@
 #include "descriptor/spin_image.hpp"
 #include "geometry/cell_grid.hpp"
 #include "geometry/normals.hpp"
+#include "geometry/object_ground.hpp"
 #include "geometry/resample.hpp"
-#include "geometry/terrain.hpp"
 #include "spinhash/features.hpp"
 #include "spinhash/limits.hpp"
 #include "util/fixed_math.hpp"
@@ -20,7 +20,7 @@ struct FeatureExtractor::Impl {
   float* normals = nullptr;    // 3 * max_points
   uint8_t* has_normal = nullptr;
   uint32_t* basis = nullptr;         // max_points
-  float* terrain_scratch = nullptr;  // kTerrainScratchFloats, when ground is removed
+  float* terrain_scratch = nullptr;  // kObjectGroundScratchFloats, when ground is removed
   float* out_positions = nullptr;
   float* out_normals = nullptr;
   float* out_spins = nullptr;
@@ -66,7 +66,7 @@ Status FeatureExtractor::init(const FeatureParams& params, const ExtractorCapaci
   target->normals = arena.alloc<float>(3u * static_cast<size_t>(np));
   target->has_normal = arena.alloc<uint8_t>(np);
   target->basis = arena.alloc<uint32_t>(np);
-  if (cap.ground_clearance > 0.0f) target->terrain_scratch = arena.alloc<float>(kTerrainScratchFloats);
+  if (cap.ground_clearance > 0.0f) target->terrain_scratch = arena.alloc<float>(kObjectGroundScratchFloats);
   target->out_positions = arena.alloc<float>(3u * static_cast<size_t>(nf));
   target->out_normals = arena.alloc<float>(3u * static_cast<size_t>(nf));
   target->out_spins = arena.alloc<float>(static_cast<size_t>(nf) * cap.max_spin_dims);
@@ -92,7 +92,7 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   stats->points_nonfinite = keep - n;
   if (n == 0) return Status::kEmptyCloud;
   if (cap_.ground_clearance > 0.0f) {
-    stats->points_ground = remove_terrain(m.points, n, cap_.ground_clearance, m.terrain_scratch);
+    stats->points_ground = remove_object_ground(m.points, n, cap_.ground_clearance, m.terrain_scratch);
     n -= stats->points_ground;
     if (n == 0) return Status::kNotEnoughFeatures;  // nothing stands on the ground
   }

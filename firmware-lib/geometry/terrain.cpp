@@ -1,238 +1,239 @@
 #include "geometry/terrain.hpp"
 
-#include <Eigen/Cholesky>
-#include <Eigen/Core>
 #include <cmath>
-
-#include "util/fixed_math.hpp"
-#include "util/heap_sort.hpp"
 
 namespace spinhash {
 namespace {
 
-constexpr float kEmptyCell = 3.0e38f;  // lowest point of a cell without points
-constexpr uint32_t kMinPlaneCells = 3;
+constexpr float kMinCell = 0.05f;      // m: finer grids cost cells and add nothing at lidar densities
+constexpr float kMaxCell = 10.0f;      // m
+constexpr float kMaxWindowM = 500.0f;  // m: the widest window accepted
 
-struct Grid {
-  float x0 = 0.0f, y0 = 0.0f, cell = kMinTerrainCell;
-  uint32_t cell_of(const float* p) const {
-    int32_t i = static_cast<int32_t>((p[0] - x0) / cell), j = static_cast<int32_t>((p[1] - y0) / cell);
-    const int32_t last = static_cast<int32_t>(kTerrainGridSide) - 1;
-    i = i < 0 ? 0 : (i > last ? last : i);
-    j = j < 0 ? 0 : (j > last ? last : j);
-    return static_cast<uint32_t>(j) * kTerrainGridSide + static_cast<uint32_t>(i);
-  }
-  float centre_x(uint32_t c) const { return x0 + (static_cast<float>(c % kTerrainGridSide) + 0.5f) * cell; }
-  float centre_y(uint32_t c) const { return y0 + (static_cast<float>(c / kTerrainGridSide) + 0.5f) * cell; }
-};
+bool no_data(float v) { return std::isnan(v); }
 
-struct Plane {
-  float a = 0.0f, b = 0.0f, c = 0.0f;  // z = a x + b y + c
-  float at(float x, float y) const { return a * x + b * y + c; }
-};
+uint32_t cell_coord(float v, float v0, float cell, uint32_t count) {
+  const float c = (v - v0) / cell;
+  if (!(c > 0.0f)) return 0;
+  const uint32_t i = static_cast<uint32_t>(c);
+  return i < count ? i : count - 1u;
+}
 
-Grid footprint(const float* xyz, uint32_t n) {
-  float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
-  for (uint32_t i = 1; i < n; ++i)
-    for (uint32_t a = 0; a < 2; ++a) {
-      const float v = xyz[3u * i + a];
-      lo[a] = v < lo[a] ? v : lo[a];
-      hi[a] = v > hi[a] ? v : hi[a];
+// out[i] = min (erode) or max (dilate) of in over the 2r+1 cells along one
+// axis, skipping cells without data; NaN when the window has none.
+void line_filter(const float* in, float* out, const TerrainGrid& g, uint32_t r, bool along_x, bool erode) {
+  const uint32_t lines = along_x ? g.ny : g.nx;
+  const uint32_t len = along_x ? g.nx : g.ny;
+  const uint32_t step = along_x ? 1u : g.nx;
+  for (uint32_t l = 0; l < lines; ++l) {
+    const uint32_t base = along_x ? l * g.nx : l;
+    for (uint32_t i = 0; i < len; ++i) {
+      const uint32_t lo = i > r ? i - r : 0u;
+      const uint32_t hi = i + r < len ? i + r : len - 1u;
+      float best = NAN;
+      for (uint32_t j = lo; j <= hi; ++j) {
+        const float v = in[base + j * step];
+        if (no_data(v)) continue;
+        if (no_data(best) || (erode ? v < best : v > best)) best = v;
+      }
+      out[base + i * step] = best;
     }
-  Grid g;
-  g.x0 = lo[0];
-  g.y0 = lo[1];
-  const float extent = hi[0] - lo[0] > hi[1] - lo[1] ? hi[0] - lo[0] : hi[1] - lo[1];
-  const float cell = extent / static_cast<float>(kTerrainGridSide);
-  g.cell = cell > kMinTerrainCell ? cell : kMinTerrainCell;
-  return g;
-}
-
-void lowest_points(const float* xyz, uint32_t n, const Grid& g, float* lowest) {
-  for (uint32_t c = 0; c < kTerrainCells; ++c) lowest[c] = kEmptyCell;
-  for (uint32_t i = 0; i < n; ++i) {
-    const uint32_t c = g.cell_of(xyz + 3u * i);
-    lowest[c] = xyz[3u * i + 2u] < lowest[c] ? xyz[3u * i + 2u] : lowest[c];
   }
 }
 
-// Least-squares plane through the lowest points of the cells that rise at
-// most max_rise above `previous` (all occupied cells without one).
-bool fit_plane(const Grid& g, const float* lowest, const Plane* previous, float max_rise, Plane* out) {
-  Eigen::Matrix3f ata = Eigen::Matrix3f::Zero();
-  Eigen::Vector3f atz = Eigen::Vector3f::Zero();
-  uint32_t used = 0;
-  for (uint32_t c = 0; c < kTerrainCells; ++c) {
-    if (lowest[c] == kEmptyCell) continue;
-    const float x = g.centre_x(c), y = g.centre_y(c);
-    if (previous != nullptr && lowest[c] - previous->at(x, y) > max_rise) continue;
-    const Eigen::Vector3f row(x, y, 1.0f);
-    ata.noalias() += row * row.transpose();
-    atz += row * lowest[c];
-    ++used;
-  }
-  if (used < kMinPlaneCells) return false;
-  const Eigen::LDLT<Eigen::Matrix3f> ldlt(ata);
-  if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) return false;
-  const Eigen::Vector3f abc = ldlt.solve(atz);
-  if (!abc.allFinite()) return false;
-  *out = Plane{abc[0], abc[1], abc[2]};
-  return true;
+// g.opened = opening of `in` by a (2r+1)^2 square: erosion then dilation.
+void open_grid(const float* in, TerrainGrid& g, uint32_t r) {
+  line_filter(in, g.scratch, g, r, true, true);
+  line_filter(g.scratch, g.opened, g, r, false, true);
+  line_filter(g.opened, g.scratch, g, r, true, false);
+  line_filter(g.scratch, g.opened, g, r, false, false);
 }
 
-bool fit_terrain_plane(const Grid& g, const float* lowest, Plane* plane) {
-  if (!fit_plane(g, lowest, nullptr, 0.0f, plane)) return false;
-  for (uint32_t round = 1; round < kTerrainFitRounds; ++round) {
-    const Plane previous = *plane;
-    const float rise = round <= kTerrainCoarseRounds ? kObjectCellRise : kGroundCellRise;
-    if (!fit_plane(g, lowest, &previous, rise, plane)) return false;
+// Lowest z per cell, then the mean of the points within kTerrainLowBand of
+// it: unbiased on slopes (the lowest point sits at the downhill edge) and
+// steadier under range noise than the minimum alone.
+void fill_low_means(const float* xyz, uint32_t n, TerrainGrid& g) {
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c) {
+    g.value[c] = NAN;
+    g.scratch[c] = 0.0f;  // sum
+    g.opened[c] = 0.0f;   // count
   }
-  return std::sqrt(plane->a * plane->a + plane->b * plane->b) <= std::tan(deg_to_rad(kMaxTerrainSlopeDeg));
-}
-
-// Per cell, over its ground points (those within kRoughnessBand of the
-// lowest point of a cell that rises at most kGroundCellRise above the
-// plane): their mean height above the plane and their spread.
-struct CellStats {
-  float* mean;    // level: becomes the cell's ground level
-  float* spread;  // sigma of the ground points; < 0: no usable ground
-  float* count;   // points; then scratch for the median
-};
-
-void accumulate(const float* xyz, uint32_t n, const Grid& g, const Plane& plane, const float* lowest,
-                const CellStats& cs) {
-  for (uint32_t c = 0; c < kTerrainCells; ++c) cs.mean[c] = cs.spread[c] = cs.count[c] = 0.0f;
   for (uint32_t i = 0; i < n; ++i) {
     const float* p = xyz + 3u * i;
-    const uint32_t c = g.cell_of(p);
-    if (lowest[c] - plane.at(g.centre_x(c), g.centre_y(c)) > kGroundCellRise ||
-        p[2] > lowest[c] + kRoughnessBand)
-      continue;
-    const float d = p[2] - plane.at(p[0], p[1]);
-    cs.mean[c] += d;
-    cs.spread[c] += d * d;
-    cs.count[c] += 1.0f;
+    const uint32_t c = cell_coord(p[1], g.y0, g.cell, g.ny) * g.nx + cell_coord(p[0], g.x0, g.cell, g.nx);
+    if (no_data(g.value[c]) || p[2] < g.value[c]) g.value[c] = p[2];
   }
-  for (uint32_t c = 0; c < kTerrainCells; ++c) {
-    if (cs.count[c] < static_cast<float>(kMinRoughnessPoints)) {
-      cs.spread[c] = -1.0f;
+  for (uint32_t i = 0; i < n; ++i) {
+    const float* p = xyz + 3u * i;
+    const uint32_t c = cell_coord(p[1], g.y0, g.cell, g.ny) * g.nx + cell_coord(p[0], g.x0, g.cell, g.nx);
+    if (p[2] > g.value[c] + kTerrainLowBand) continue;
+    g.scratch[c] += p[2] - g.value[c];  // relative to the minimum: small sums, no float drift
+    g.opened[c] += 1.0f;
+  }
+  for (uint32_t c = 0; c < cells; ++c)
+    if (g.opened[c] > 0.0f) g.value[c] += g.scratch[c] / g.opened[c];
+}
+
+// The progressive morphological filter: windows of half-width 1, 2, 4, ...
+// cells up to params.max_window; the height tolerance grows with the window
+// by the slope allowance, capped at dh_max. g.surface ends as the last opening.
+uint32_t progressive_filter(TerrainGrid& g, const TerrainParams& params) {
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c) {
+    g.off_ground[c] = 0;
+    g.surface[c] = g.value[c];
+  }
+  uint32_t windows = 0;
+  uint32_t r_prev = 0;
+  for (uint32_t k = 0, r = 1; k < kMaxTerrainWindows; ++k, r *= 2u) {
+    if (static_cast<float>(2u * r + 1u) * g.cell > params.max_window && k > 0) break;
+    open_grid(g.surface, g, r);
+    float dh = params.dh0;
+    if (k > 0) dh += params.slope * static_cast<float>(2u * (r - r_prev)) * g.cell;
+    dh = dh < params.dh_max ? dh : params.dh_max;
+    for (uint32_t c = 0; c < cells; ++c) {
+      if (!no_data(g.value[c]) && g.surface[c] - g.opened[c] > dh) g.off_ground[c] = 1;
+      g.surface[c] = g.opened[c];
+    }
+    r_prev = r;
+    ++windows;
+  }
+  return windows;
+}
+
+bool is_ground_cell(const TerrainGrid& g, uint32_t c) { return !no_data(g.value[c]) && !g.off_ground[c]; }
+
+// out[c] for each cell off the ground: linear interpolation between the
+// nearest ground cells before and after it along one axis (exact on planes
+// of any slope, unlike the opening where the ground under a wide object is
+// hidden); NaN without ground on both sides within max_gap cells.
+void interpolate_line(TerrainGrid& g, float* out, bool along_x, uint32_t max_gap) {
+  const uint32_t lines = along_x ? g.ny : g.nx;
+  const uint32_t len = along_x ? g.nx : g.ny;
+  const uint32_t step = along_x ? 1u : g.nx;
+  for (uint32_t l = 0; l < lines; ++l) {
+    const uint32_t base = along_x ? l * g.nx : l;
+    uint32_t prev = len;  // none yet
+    for (uint32_t i = 0; i < len; ++i) {
+      const uint32_t c = base + i * step;
+      out[c] = NAN;
+      if (!is_ground_cell(g, c)) continue;
+      out[c] = g.value[c];
+      if (prev < len && i - prev > 1u && i - prev <= max_gap) {
+        const float z0 = g.value[base + prev * step], z1 = g.value[c];
+        for (uint32_t j = prev + 1u; j < i; ++j) {
+          const float t = static_cast<float>(j - prev) / static_cast<float>(i - prev);
+          out[base + j * step] = z0 + t * (z1 - z0);
+        }
+      }
+      prev = i;
+    }
+  }
+}
+
+// Terrain surface: ground cells keep their own value; cells off the ground
+// the mean of the row and column interpolations, or the last opening where
+// neither reaches (g.surface holds it on entry).
+void fill_terrain_surface(TerrainGrid& g, uint32_t max_gap) {
+  interpolate_line(g, g.scratch, true, max_gap);
+  interpolate_line(g, g.opened, false, max_gap);
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c) {
+    if (is_ground_cell(g, c)) {
+      g.surface[c] = g.value[c];
       continue;
     }
-    cs.mean[c] /= cs.count[c];
-    const float var = cs.spread[c] / cs.count[c] - cs.mean[c] * cs.mean[c];
-    cs.spread[c] = std::sqrt(var > 0.0f ? var : 0.0f);
-  }
-}
-
-// The ground's roughness: the median spread of the ground cells (objects
-// standing in a minority of them widen theirs, not the median).
-float median_spread(const CellStats& cs, uint32_t* ground_cells) {
-  uint32_t k = 0;
-  for (uint32_t c = 0; c < kTerrainCells; ++c)
-    if (cs.spread[c] >= 0.0f) cs.count[k++] = cs.spread[c];
-  *ground_cells = k;
-  if (k == 0) return 0.0f;
-  heap_sort(cs.count, k, [](float a, float b) { return a < b; });
-  return cs.count[k / 2u];
-}
-
-// Clean ground cells (spread at most kCleanSpreadFactor x the median)
-// flagged in count.
-void mark_clean(const CellStats& cs, float sigma) {
-  const float clean = kCleanSpreadFactor * sigma + kSpreadSlack;
-  for (uint32_t c = 0; c < kTerrainCells; ++c)
-    cs.count[c] = cs.spread[c] >= 0.0f && cs.spread[c] <= clean ? 1.0f : 0.0f;
-}
-
-bool occupied_at(const float* lowest, int32_t i, int32_t j) {
-  const int32_t side = static_cast<int32_t>(kTerrainGridSide);
-  return i >= 0 && j >= 0 && i < side && j < side &&
-         lowest[static_cast<uint32_t>(j * side + i)] != kEmptyCell;
-}
-
-// Share of the footprint's border cells (occupied, with an empty 4-neighbour)
-// that are clean ground: terrain reaches beyond the objects on it, while a
-// bare object's outline is its sides.
-float clean_border_share(const float* lowest, const CellStats& cs) {
-  uint32_t border = 0, clean = 0;
-  for (uint32_t c = 0; c < kTerrainCells; ++c) {
-    if (lowest[c] == kEmptyCell) continue;
-    const int32_t i = static_cast<int32_t>(c % kTerrainGridSide),
-                  j = static_cast<int32_t>(c / kTerrainGridSide);
-    if (occupied_at(lowest, i - 1, j) && occupied_at(lowest, i + 1, j) && occupied_at(lowest, i, j - 1) &&
-        occupied_at(lowest, i, j + 1))
-      continue;
-    ++border;
-    clean += cs.count[c] > 0.0f ? 1u : 0u;
-  }
-  return border > 0 ? static_cast<float>(clean) / static_cast<float>(border) : 0.0f;
-}
-
-// Clean ground cells keep their mean as level; the others take their clean
-// neighbours' mean, or 0.
-void fill_levels(const CellStats& cs) {
-  for (uint32_t c = 0; c < kTerrainCells; ++c) {
-    if (cs.count[c] > 0.0f) continue;
-    const int32_t ci = static_cast<int32_t>(c % kTerrainGridSide),
-                  cj = static_cast<int32_t>(c / kTerrainGridSide);
-    float s = 0.0f, k = 0.0f;
-    for (int32_t dj = -1; dj <= 1; ++dj)
-      for (int32_t di = -1; di <= 1; ++di) {
-        const int32_t i = ci + di, j = cj + dj, side = static_cast<int32_t>(kTerrainGridSide);
-        if (i < 0 || j < 0 || i >= side || j >= side) continue;
-        const uint32_t nb = static_cast<uint32_t>(j * side + i);
-        if (cs.count[nb] > 0.0f) s += cs.mean[nb], k += 1.0f;
-      }
-    cs.mean[c] = k > 0.0f ? s / k : 0.0f;
-    cs.count[c] = -1.0f;  // filled: not a source for later cells (the fill stays one cell deep)
+    const float a = g.scratch[c], b = g.opened[c];
+    if (!no_data(a) && !no_data(b))
+      g.surface[c] = 0.5f * (a + b);
+    else if (!no_data(a))
+      g.surface[c] = a;
+    else if (!no_data(b))
+      g.surface[c] = b;
   }
 }
 
 }  // namespace
 
-uint32_t remove_terrain(float* xyz, uint32_t n, float clearance, float* scratch) {
-  if (n == 0 || !(clearance > 0.0f)) return 0;
-  float* lowest = scratch;
-  const CellStats cs{scratch + kTerrainCells, scratch + 2u * kTerrainCells, scratch + 3u * kTerrainCells};
-  const Grid g = footprint(xyz, n);
-  lowest_points(xyz, n, g, lowest);
-  Plane plane;
-  if (!fit_terrain_plane(g, lowest, &plane)) return 0;
-  uint32_t occupied = 0, ground_cells = 0;
-  for (uint32_t c = 0; c < kTerrainCells; ++c) occupied += lowest[c] != kEmptyCell ? 1u : 0u;
-  accumulate(xyz, n, g, plane, lowest, cs);
-  const float sigma = median_spread(cs, &ground_cells);
-  if (static_cast<float>(ground_cells) < kMinGroundCellShare * static_cast<float>(occupied) ||
-      sigma > kMaxGroundRoughness)
-    return 0;
-  mark_clean(cs, sigma);
-  if (clean_border_share(lowest, cs) < kMinCleanBorderShare) return 0;
-  fill_levels(cs);
-  // kClearanceSigmas of the ground's own roughness, within [kMinClearance, clearance].
-  float drop = kClearanceSigmas * sigma;
-  drop = drop < kMinClearance ? kMinClearance : (drop > clearance ? clearance : drop);
-  auto height = [&](const float* p) { return p[2] - plane.at(p[0], p[1]) - cs.mean[g.cell_of(p)]; };
-  auto on_terrain = [&](const float* p) { return height(p) <= drop; };
-  // Terrain is the lowest surface: a flat part of an object (a hood, a
-  // pickup's bed) has the rest of the object below it.
-  const float below =
-      -(kBelowTerrainSigmas * sigma > kMinBelowTerrain ? kBelowTerrainSigmas * sigma : kMinBelowTerrain);
-  uint32_t near = 0, under = 0;
-  for (uint32_t i = 0; i < n; ++i) {
-    const float h = height(xyz + 3u * i);
-    near += h <= drop ? 1u : 0u;
-    under += h < below ? 1u : 0u;
+bool terrain_params_valid(const TerrainParams& p) {
+  return p.cell >= kMinCell && p.cell <= kMaxCell && p.max_window >= p.cell && p.max_window <= kMaxWindowM &&
+         p.slope >= 0.0f && p.slope <= 10.0f && p.dh0 >= 0.0f && p.dh_max >= p.dh0 && p.dh_max <= 100.0f &&
+         p.ground_height >= 0.0f && p.ground_height <= 10.0f;
+}
+
+void TerrainGrid::carve(Arena& arena, uint32_t cells) {
+  max_cells = cells;
+  value = arena.alloc<float>(cells);
+  surface = arena.alloc<float>(cells);
+  scratch = arena.alloc<float>(cells);
+  opened = arena.alloc<float>(cells);
+  off_ground = arena.alloc<uint8_t>(cells);
+}
+
+uint32_t terrain_cell_of(const TerrainGrid& g, float x, float y) {
+  return cell_coord(y, g.y0, g.cell, g.ny) * g.nx + cell_coord(x, g.x0, g.cell, g.nx);
+}
+
+float terrain_height_at(const TerrainGrid& g, float x, float y) {
+  // Cell-centre coordinates: (x - x0) / cell - 0.5.
+  const float fx = (x - g.x0) / g.cell - 0.5f;
+  const float fy = (y - g.y0) / g.cell - 0.5f;
+  const float bx = std::floor(fx), by = std::floor(fy);
+  const float tx = fx - bx, ty = fy - by;
+  float sum = 0.0f, weight = 0.0f;
+  for (int dy = 0; dy < 2; ++dy) {
+    for (int dx = 0; dx < 2; ++dx) {
+      const float cx = bx + static_cast<float>(dx), cy = by + static_cast<float>(dy);
+      if (cx < 0.0f || cy < 0.0f || cx >= static_cast<float>(g.nx) || cy >= static_cast<float>(g.ny))
+        continue;
+      const float v = g.surface[static_cast<uint32_t>(cy) * g.nx + static_cast<uint32_t>(cx)];
+      if (no_data(v)) continue;
+      const float w = (dx ? tx : 1.0f - tx) * (dy ? ty : 1.0f - ty);
+      sum += w * v;
+      weight += w;
+    }
   }
-  if (static_cast<float>(near) < kMinGroundShare * static_cast<float>(n) ||
-      static_cast<float>(under) > kMaxBelowTerrainShare * static_cast<float>(n))
-    return 0;
-  uint32_t kept = 0;
-  for (uint32_t i = 0; i < n; ++i) {
-    if (on_terrain(xyz + 3u * i)) continue;
-    for (uint32_t a = 0; a < 3u; ++a) xyz[3u * kept + a] = xyz[3u * i + a];
-    ++kept;
+  if (weight > 1e-6f) return sum / weight;
+  return g.surface[cell_coord(y, g.y0, g.cell, g.ny) * g.nx + cell_coord(x, g.x0, g.cell, g.nx)];
+}
+
+Status classify_terrain(const float* xyz, uint32_t n, const TerrainParams& params, TerrainGrid& g,
+                        float* height, uint8_t* ground, TerrainStats* stats) {
+  if (!terrain_params_valid(params) || (n > 0 && (xyz == nullptr || height == nullptr || ground == nullptr)))
+    return Status::kInvalidArgument;
+  TerrainStats st;
+  if (n == 0) {
+    if (stats) *stats = st;
+    return Status::kOk;
   }
-  return n - kept;
+  float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
+  for (uint32_t i = 1; i < n; ++i)
+    for (uint32_t a = 0; a < 2u; ++a) {
+      const float v = xyz[3u * i + a];
+      lo[a] = v < lo[a] ? v : lo[a];
+      hi[a] = v > hi[a] ? v : hi[a];
+    }
+  const float fx = (hi[0] - lo[0]) / params.cell + 1.0f, fy = (hi[1] - lo[1]) / params.cell + 1.0f;
+  if (!(fx * fy <= static_cast<float>(g.max_cells))) return Status::kTileTooLarge;
+  g.cell = params.cell;
+  g.x0 = lo[0];
+  g.y0 = lo[1];
+  g.nx = static_cast<uint32_t>(fx);
+  g.ny = static_cast<uint32_t>(fy);
+  fill_low_means(xyz, n, g);
+  st.windows = progressive_filter(g, params);
+  fill_terrain_surface(g, static_cast<uint32_t>(params.max_window / params.cell) + 2u);
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c) st.cells_ground += is_ground_cell(g, c) ? 1u : 0u;
+  for (uint32_t i = 0; i < n; ++i) {
+    const float* p = xyz + 3u * i;
+    height[i] = p[2] - terrain_height_at(g, p[0], p[1]);
+    ground[i] = height[i] <= params.ground_height ? 1u : 0u;
+    st.points_ground += ground[i];
+  }
+  st.cells = cells;
+  if (stats) *stats = st;
+  return Status::kOk;
 }
 
 }  // namespace spinhash

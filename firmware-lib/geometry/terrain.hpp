@@ -1,50 +1,67 @@
-// Terrain under a cut-out object, on sloped and uneven ground (not in the
-// paper). Every airborne scan of a vehicle holds the ground around it, which
-// no model has: its flat spin images crowd the candidates and its points
-// count as outliers in eq. 7. Real terrain is rarely level within the
-// clearance over a vehicle's footprint, so the ground is not a height slab:
-// the lowest point of each cell of a grid over the footprint, a plane fitted
-// to those lowest points by trimmed least squares (objects rise above it and
-// are trimmed), and per cell the mean level of the ground points near that
-// plane (bumps, curbs), whose spread measures the noise. Points within 3
-// sigma of that noise above the local level are ground. z is up
-// (georeferenced input).
+// Terrain classification for airborne clouds on sloped, uneven ground (not in
+// the paper): a lowest-points grid filtered by a progressive morphological
+// opening (Zhang et al. 2003, the PMF of PDAL), then each point's height
+// above the local terrain surface. Opening preserves planes of any slope and
+// steps (curbs), and removes anything narrower than the window; a cell is
+// off the ground when the opening lowers it by more than the slope allowance
+// of that window. Memory: a few floats per grid cell, carved by the caller.
 #pragma once
 #include <cstdint>
 
+#include "spinhash/arena.hpp"
+#include "spinhash/status.hpp"
+
 namespace spinhash {
 
-constexpr uint32_t kTerrainGridSide = 32;  // cells per axis over the cloud's footprint
-constexpr uint32_t kTerrainCells = kTerrainGridSide * kTerrainGridSide;
-constexpr float kMinTerrainCell = 0.5f;       // m: smaller cells see too few ground points
-constexpr uint32_t kTerrainFitRounds = 5;     // trimmed plane fits
-constexpr uint32_t kTerrainCoarseRounds = 2;  // the first rounds trim only what rises a lot
-constexpr float kObjectCellRise = 0.5f;       // m: a cell whose lowest point rises more holds an object
-constexpr float kGroundCellRise = 0.2f;       // m: ... at most this much (noise, bumps): ground
-constexpr float kRoughnessBand = 0.5f;        // m above a ground cell's lowest point: its ground points
-constexpr uint32_t kMinRoughnessPoints = 5;   // fewer ground points: no spread measured in that cell
-constexpr float kCleanSpreadFactor = 2.0f;    // spread above this times the median: an object stands there
-constexpr float kSpreadSlack = 0.01f;         // m added to that bound (noise-free ground has no spread)
-constexpr float kClearanceSigmas = 4.5f;      // this many sigma of the ground's roughness above it is ground
-constexpr float kMinClearance = 0.05f;        // m: at least this much is ground (noise-free clouds)
-constexpr float kMaxGroundRoughness =
-    0.11f;  // m: rougher "ground" (sigma) is an object's side (10 cm noise: 0.095)
-constexpr float kMinCleanBorderShare =
-    0.45f;  // of the footprint's border cells: terrain reaches past the object
-constexpr float kBelowTerrainSigmas = 4.0f;     // points deeper below the terrain than this many sigma ...
-constexpr float kMinBelowTerrain = 0.3f;        // ... (or this many m) say it is no terrain ...
-constexpr float kMaxBelowTerrainShare = 0.02f;  // ... when more than this share of the points lie there
-constexpr float kMaxTerrainSlopeDeg =
-    18.0f;  // steeper "ground" is a vehicle's side or cargo bed (terrain: to 15)
-constexpr float kMinGroundShare = 0.15f;     // points on the terrain that say "there is ground here"
-constexpr float kMinGroundCellShare = 0.3f;  // occupied cells that are ground, likewise
-constexpr uint32_t kTerrainScratchFloats = 4u * kTerrainCells;  // lowest point, mean, spread, count
+constexpr float kTerrainLowBand = 0.3f;     // m: cell value = mean of the points this close to its lowest
+constexpr uint32_t kMaxTerrainWindows = 8;  // PMF windows (half-widths 1, 2, 4, ... cells)
 
-// When the n points stand on terrain, drops those within 3 sigma of the
-// ground's measured roughness above it (at least kMinClearance, at most
-// `clearance` m), compacting xyz in place, and returns how many went;
-// otherwise (no terrain found, clearance 0) keeps every point and returns 0. `scratch`
-// holds kTerrainScratchFloats floats. O(n) with a bounded number of passes.
-uint32_t remove_terrain(float* xyz, uint32_t n, float clearance, float* scratch);
+struct TerrainParams {
+  float cell = 0.5f;            // m: grid cell edge
+  float max_window = 24.0f;     // m: largest opening window (wider than any building to remove)
+  float slope = 0.35f;          // s of PMF: rise per m allowed between windows (0.35 ~ 19 degrees)
+  float dh0 = 0.2f;             // m: dh_0, height tolerance of the smallest window
+  float dh_max = 2.5f;          // m: dh_max, the cap of the height tolerance
+  float ground_height = 0.25f;  // m: a point at most this far above the terrain is ground
+};
+
+// The grid over a cloud's xy bounding box; its buffers come from an Arena.
+struct TerrainGrid {
+  uint32_t max_cells = 0;
+  float* value = nullptr;    // per cell: low mean z (NaN: no point)
+  float* surface = nullptr;  // per cell: terrain z (NaN: no data within the largest window)
+  float* scratch = nullptr;  // per cell: opening buffers
+  float* opened = nullptr;
+  uint8_t* off_ground = nullptr;  // per cell: 1 when the filter flagged it
+  uint32_t nx = 0, ny = 0;
+  float x0 = 0.0f, y0 = 0.0f;  // min corner of cell (0, 0)
+  float cell = 0.5f;
+
+  // Carves the buffers for `max_cells` cells (counting when the arena does).
+  void carve(Arena& arena, uint32_t cells);
+};
+
+struct TerrainStats {
+  uint32_t cells = 0;          // grid cells used (nx * ny)
+  uint32_t cells_ground = 0;   // non-empty cells the filter kept as ground
+  uint32_t points_ground = 0;  // points at most ground_height above the terrain
+  uint32_t windows = 0;        // PMF windows run
+};
+
+// Classifies the n points of xyz (finite, in a local frame, z up): height[i]
+// = z - terrain(x, y); ground[i] = 1 when height[i] <= params.ground_height.
+// kTileTooLarge when the footprint needs more than grid.max_cells cells (nothing
+// written), kInvalidArgument on a bad parameter. O(n + cells * max_window/cell).
+Status classify_terrain(const float* xyz, uint32_t n, const TerrainParams& params, TerrainGrid& grid,
+                        float* height, uint8_t* ground, TerrainStats* stats);
+
+// Terrain z at (x, y): bilinear over the cell centres around it, skipping
+// cells without data (the point's own cell always has some).
+float terrain_height_at(const TerrainGrid& grid, float x, float y);
+
+bool terrain_params_valid(const TerrainParams& p);
+
+// Index of the grid cell holding (x, y), clamped to the grid.
+uint32_t terrain_cell_of(const TerrainGrid& grid, float x, float y);
 
 }  // namespace spinhash

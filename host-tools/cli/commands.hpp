@@ -18,5 +18,6 @@ void add_verify_command(CLI::App& app, int* exit_code);
 void add_scan_command(CLI::App& app, int* exit_code);
 void add_recognize_command(CLI::App& app, int* exit_code);
 void add_generate_command(CLI::App& app, int* exit_code);
+void add_scene_command(CLI::App& app, int* exit_code);
 
 }  // namespace spinhash::cli

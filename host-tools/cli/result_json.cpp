@@ -16,11 +16,11 @@ const char* status_word(Status s) {
     case Status::kNotEnoughFeatures: return "not_enough_features";
     case Status::kInvalidArgument: return "invalid_argument";
     case Status::kWorkspaceTooSmall: return "workspace_too_small";
+    case Status::kTileTooLarge: return "tile_too_large";
+    case Status::kTooManyObjects: return "too_many_objects";
     default: return "error";
   }
 }
-
-namespace {
 
 std::string pose_json(const Pose& p) {
   std::string s = "[";
@@ -30,6 +30,8 @@ std::string pose_json(const Pose& p) {
   }
   return s + "0,0,0,1]";
 }
+
+namespace {
 
 std::string stat_json(bool v) { return v ? "true" : "false"; }
 std::string stat_json(uint32_t v) { return std::to_string(v); }

@@ -43,7 +43,7 @@ struct RecognizerConfig {
 
   // Airborne scans hold the ground around the vehicle, which no model has.
   // When the cloud stands on terrain (z up; level or sloped to 18 degrees,
-  // with bumps; geometry/terrain.hpp, docs/api.md), the points within 4.5
+  // with bumps; geometry/object_ground.hpp, docs/api.md), the points within 4.5
   // sigma of the ground's measured roughness above it are dropped, but at
   // most this height (not in the paper). 0 keeps every point.
   float ground_clearance = 0.25f;  // m

@@ -49,7 +49,7 @@ struct ExtractStats {
   uint32_t points_in = 0;
   uint32_t points_thinned = 0;    // dropped to fit max_points (evenly spread)
   uint32_t points_nonfinite = 0;  // dropped NaN / infinite / beyond 1e9 m points (of those kept)
-  uint32_t points_ground = 0;     // dropped as terrain (geometry/terrain.hpp)
+  uint32_t points_ground = 0;     // dropped as terrain (geometry/object_ground.hpp)
   uint32_t points_equalised = 0;  // after the density voxel
   uint32_t points_oriented = 0;   // with a usable normal
   uint32_t basis_points = 0;      // before thinning to max_features

@@ -69,7 +69,9 @@ typedef enum spinhash_status {
   SPINHASH_EMPTY_CLOUD = 40,
   SPINHASH_TOO_MANY_POINTS = 41,
   SPINHASH_NOT_ENOUGH_FEATURES = 42,
-  SPINHASH_NOT_OPEN = 43
+  SPINHASH_NOT_OPEN = 43,
+  SPINHASH_TILE_TOO_LARGE = 44,
+  SPINHASH_TOO_MANY_OBJECTS = 45
 } spinhash_status;
 
 typedef enum spinhash_mode {

@@ -35,6 +35,9 @@ enum class Status : int32_t {
   kTooManyPoints = 41,      // more points than config.max_points (refused)
   kNotEnoughFeatures = 42,  // too few usable oriented points / basis points
   kNotOpen = 43,            // recognizer used without a valid database/workspace
+  // SceneRecognizer
+  kTileTooLarge = 44,    // tile's footprint needs more grid cells than the config holds (refused)
+  kTooManyObjects = 45,  // more objects than config.max_objects (objects past the cap not recognised)
 };
 
 // Short English name of a status; "unknown" for values not listed.

@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "spinhash/recognizer.hpp"
+#include "spinhash/scene.hpp"
 
 using namespace spinhash;
 
@@ -17,10 +18,11 @@ namespace {
 struct WorkspaceThreshold {
   size_t default_config;  // RecognizerConfig{}
   size_t points_20000;    // RecognizerConfig{} with max_points = 20000
+  size_t scene_300000;    // SceneConfig{}: a 300 000-point tile, its grids and a default recognizer
 };
 // Pointer-sized members make 64-bit layouts larger than 32-bit ones.
-constexpr WorkspaceThreshold kThreshold64 = {6324672, 5494752};
-constexpr WorkspaceThreshold kThreshold32 = {6324560, 5494640};
+constexpr WorkspaceThreshold kThreshold64 = {6324672, 5494752, 22751232};
+constexpr WorkspaceThreshold kThreshold32 = {6324560, 5494640, 22750976};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
 constexpr size_t kToleranceBytes = 1024;
@@ -46,4 +48,11 @@ TEST_CASE("workspace: a 20 000-point query needs the recorded number of bytes") 
   cfg.max_points = 20000;
   CAPTURE(sizeof(void*));
   check_close(required_workspace_bytes(cfg), kThreshold.points_20000);
+}
+
+TEST_CASE("workspace: a 300 000-point scene tile needs the recorded number of bytes") {
+  SceneConfig cfg;
+  REQUIRE(cfg.max_tile_points == 300000u);
+  CAPTURE(sizeof(void*));
+  check_close(required_scene_workspace_bytes(cfg), kThreshold.scene_300000);
 }

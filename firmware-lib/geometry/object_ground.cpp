@@ -1,0 +1,238 @@
+#include "geometry/object_ground.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <cmath>
+
+#include "util/fixed_math.hpp"
+#include "util/heap_sort.hpp"
+
+namespace spinhash {
+namespace {
+
+constexpr float kEmptyCell = 3.0e38f;  // lowest point of a cell without points
+constexpr uint32_t kMinPlaneCells = 3;
+
+struct Grid {
+  float x0 = 0.0f, y0 = 0.0f, cell = kMinTerrainCell;
+  uint32_t cell_of(const float* p) const {
+    int32_t i = static_cast<int32_t>((p[0] - x0) / cell), j = static_cast<int32_t>((p[1] - y0) / cell);
+    const int32_t last = static_cast<int32_t>(kTerrainGridSide) - 1;
+    i = i < 0 ? 0 : (i > last ? last : i);
+    j = j < 0 ? 0 : (j > last ? last : j);
+    return static_cast<uint32_t>(j) * kTerrainGridSide + static_cast<uint32_t>(i);
+  }
+  float centre_x(uint32_t c) const { return x0 + (static_cast<float>(c % kTerrainGridSide) + 0.5f) * cell; }
+  float centre_y(uint32_t c) const { return y0 + (static_cast<float>(c / kTerrainGridSide) + 0.5f) * cell; }
+};
+
+struct Plane {
+  float a = 0.0f, b = 0.0f, c = 0.0f;  // z = a x + b y + c
+  float at(float x, float y) const { return a * x + b * y + c; }
+};
+
+Grid footprint(const float* xyz, uint32_t n) {
+  float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
+  for (uint32_t i = 1; i < n; ++i)
+    for (uint32_t a = 0; a < 2; ++a) {
+      const float v = xyz[3u * i + a];
+      lo[a] = v < lo[a] ? v : lo[a];
+      hi[a] = v > hi[a] ? v : hi[a];
+    }
+  Grid g;
+  g.x0 = lo[0];
+  g.y0 = lo[1];
+  const float extent = hi[0] - lo[0] > hi[1] - lo[1] ? hi[0] - lo[0] : hi[1] - lo[1];
+  const float cell = extent / static_cast<float>(kTerrainGridSide);
+  g.cell = cell > kMinTerrainCell ? cell : kMinTerrainCell;
+  return g;
+}
+
+void lowest_points(const float* xyz, uint32_t n, const Grid& g, float* lowest) {
+  for (uint32_t c = 0; c < kTerrainCells; ++c) lowest[c] = kEmptyCell;
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint32_t c = g.cell_of(xyz + 3u * i);
+    lowest[c] = xyz[3u * i + 2u] < lowest[c] ? xyz[3u * i + 2u] : lowest[c];
+  }
+}
+
+// Least-squares plane through the lowest points of the cells that rise at
+// most max_rise above `previous` (all occupied cells without one).
+bool fit_plane(const Grid& g, const float* lowest, const Plane* previous, float max_rise, Plane* out) {
+  Eigen::Matrix3f ata = Eigen::Matrix3f::Zero();
+  Eigen::Vector3f atz = Eigen::Vector3f::Zero();
+  uint32_t used = 0;
+  for (uint32_t c = 0; c < kTerrainCells; ++c) {
+    if (lowest[c] == kEmptyCell) continue;
+    const float x = g.centre_x(c), y = g.centre_y(c);
+    if (previous != nullptr && lowest[c] - previous->at(x, y) > max_rise) continue;
+    const Eigen::Vector3f row(x, y, 1.0f);
+    ata.noalias() += row * row.transpose();
+    atz += row * lowest[c];
+    ++used;
+  }
+  if (used < kMinPlaneCells) return false;
+  const Eigen::LDLT<Eigen::Matrix3f> ldlt(ata);
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) return false;
+  const Eigen::Vector3f abc = ldlt.solve(atz);
+  if (!abc.allFinite()) return false;
+  *out = Plane{abc[0], abc[1], abc[2]};
+  return true;
+}
+
+bool fit_terrain_plane(const Grid& g, const float* lowest, Plane* plane) {
+  if (!fit_plane(g, lowest, nullptr, 0.0f, plane)) return false;
+  for (uint32_t round = 1; round < kTerrainFitRounds; ++round) {
+    const Plane previous = *plane;
+    const float rise = round <= kTerrainCoarseRounds ? kObjectCellRise : kGroundCellRise;
+    if (!fit_plane(g, lowest, &previous, rise, plane)) return false;
+  }
+  return std::sqrt(plane->a * plane->a + plane->b * plane->b) <= std::tan(deg_to_rad(kMaxTerrainSlopeDeg));
+}
+
+// Per cell, over its ground points (those within kRoughnessBand of the
+// lowest point of a cell that rises at most kGroundCellRise above the
+// plane): their mean height above the plane and their spread.
+struct CellStats {
+  float* mean;    // level: becomes the cell's ground level
+  float* spread;  // sigma of the ground points; < 0: no usable ground
+  float* count;   // points; then scratch for the median
+};
+
+void accumulate(const float* xyz, uint32_t n, const Grid& g, const Plane& plane, const float* lowest,
+                const CellStats& cs) {
+  for (uint32_t c = 0; c < kTerrainCells; ++c) cs.mean[c] = cs.spread[c] = cs.count[c] = 0.0f;
+  for (uint32_t i = 0; i < n; ++i) {
+    const float* p = xyz + 3u * i;
+    const uint32_t c = g.cell_of(p);
+    if (lowest[c] - plane.at(g.centre_x(c), g.centre_y(c)) > kGroundCellRise ||
+        p[2] > lowest[c] + kRoughnessBand)
+      continue;
+    const float d = p[2] - plane.at(p[0], p[1]);
+    cs.mean[c] += d;
+    cs.spread[c] += d * d;
+    cs.count[c] += 1.0f;
+  }
+  for (uint32_t c = 0; c < kTerrainCells; ++c) {
+    if (cs.count[c] < static_cast<float>(kMinRoughnessPoints)) {
+      cs.spread[c] = -1.0f;
+      continue;
+    }
+    cs.mean[c] /= cs.count[c];
+    const float var = cs.spread[c] / cs.count[c] - cs.mean[c] * cs.mean[c];
+    cs.spread[c] = std::sqrt(var > 0.0f ? var : 0.0f);
+  }
+}
+
+// The ground's roughness: the median spread of the ground cells (objects
+// standing in a minority of them widen theirs, not the median).
+float median_spread(const CellStats& cs, uint32_t* ground_cells) {
+  uint32_t k = 0;
+  for (uint32_t c = 0; c < kTerrainCells; ++c)
+    if (cs.spread[c] >= 0.0f) cs.count[k++] = cs.spread[c];
+  *ground_cells = k;
+  if (k == 0) return 0.0f;
+  heap_sort(cs.count, k, [](float a, float b) { return a < b; });
+  return cs.count[k / 2u];
+}
+
+// Clean ground cells (spread at most kCleanSpreadFactor x the median)
+// flagged in count.
+void mark_clean(const CellStats& cs, float sigma) {
+  const float clean = kCleanSpreadFactor * sigma + kSpreadSlack;
+  for (uint32_t c = 0; c < kTerrainCells; ++c)
+    cs.count[c] = cs.spread[c] >= 0.0f && cs.spread[c] <= clean ? 1.0f : 0.0f;
+}
+
+bool occupied_at(const float* lowest, int32_t i, int32_t j) {
+  const int32_t side = static_cast<int32_t>(kTerrainGridSide);
+  return i >= 0 && j >= 0 && i < side && j < side &&
+         lowest[static_cast<uint32_t>(j * side + i)] != kEmptyCell;
+}
+
+// Share of the footprint's border cells (occupied, with an empty 4-neighbour)
+// that are clean ground: terrain reaches beyond the objects on it, while a
+// bare object's outline is its sides.
+float clean_border_share(const float* lowest, const CellStats& cs) {
+  uint32_t border = 0, clean = 0;
+  for (uint32_t c = 0; c < kTerrainCells; ++c) {
+    if (lowest[c] == kEmptyCell) continue;
+    const int32_t i = static_cast<int32_t>(c % kTerrainGridSide),
+                  j = static_cast<int32_t>(c / kTerrainGridSide);
+    if (occupied_at(lowest, i - 1, j) && occupied_at(lowest, i + 1, j) && occupied_at(lowest, i, j - 1) &&
+        occupied_at(lowest, i, j + 1))
+      continue;
+    ++border;
+    clean += cs.count[c] > 0.0f ? 1u : 0u;
+  }
+  return border > 0 ? static_cast<float>(clean) / static_cast<float>(border) : 0.0f;
+}
+
+// Clean ground cells keep their mean as level; the others take their clean
+// neighbours' mean, or 0.
+void fill_levels(const CellStats& cs) {
+  for (uint32_t c = 0; c < kTerrainCells; ++c) {
+    if (cs.count[c] > 0.0f) continue;
+    const int32_t ci = static_cast<int32_t>(c % kTerrainGridSide),
+                  cj = static_cast<int32_t>(c / kTerrainGridSide);
+    float s = 0.0f, k = 0.0f;
+    for (int32_t dj = -1; dj <= 1; ++dj)
+      for (int32_t di = -1; di <= 1; ++di) {
+        const int32_t i = ci + di, j = cj + dj, side = static_cast<int32_t>(kTerrainGridSide);
+        if (i < 0 || j < 0 || i >= side || j >= side) continue;
+        const uint32_t nb = static_cast<uint32_t>(j * side + i);
+        if (cs.count[nb] > 0.0f) s += cs.mean[nb], k += 1.0f;
+      }
+    cs.mean[c] = k > 0.0f ? s / k : 0.0f;
+    cs.count[c] = -1.0f;  // filled: not a source for later cells (the fill stays one cell deep)
+  }
+}
+
+}  // namespace
+
+uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* scratch) {
+  if (n == 0 || !(clearance > 0.0f)) return 0;
+  float* lowest = scratch;
+  const CellStats cs{scratch + kTerrainCells, scratch + 2u * kTerrainCells, scratch + 3u * kTerrainCells};
+  const Grid g = footprint(xyz, n);
+  lowest_points(xyz, n, g, lowest);
+  Plane plane;
+  if (!fit_terrain_plane(g, lowest, &plane)) return 0;
+  uint32_t occupied = 0, ground_cells = 0;
+  for (uint32_t c = 0; c < kTerrainCells; ++c) occupied += lowest[c] != kEmptyCell ? 1u : 0u;
+  accumulate(xyz, n, g, plane, lowest, cs);
+  const float sigma = median_spread(cs, &ground_cells);
+  if (static_cast<float>(ground_cells) < kMinGroundCellShare * static_cast<float>(occupied) ||
+      sigma > kMaxGroundRoughness)
+    return 0;
+  mark_clean(cs, sigma);
+  if (clean_border_share(lowest, cs) < kMinCleanBorderShare) return 0;
+  fill_levels(cs);
+  // kClearanceSigmas of the ground's own roughness, within [kMinClearance, clearance].
+  float drop = kClearanceSigmas * sigma;
+  drop = drop < kMinClearance ? kMinClearance : (drop > clearance ? clearance : drop);
+  auto height = [&](const float* p) { return p[2] - plane.at(p[0], p[1]) - cs.mean[g.cell_of(p)]; };
+  auto on_terrain = [&](const float* p) { return height(p) <= drop; };
+  // Terrain is the lowest surface: a flat part of an object (a hood, a
+  // pickup's bed) has the rest of the object below it.
+  const float below =
+      -(kBelowTerrainSigmas * sigma > kMinBelowTerrain ? kBelowTerrainSigmas * sigma : kMinBelowTerrain);
+  uint32_t near = 0, under = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const float h = height(xyz + 3u * i);
+    near += h <= drop ? 1u : 0u;
+    under += h < below ? 1u : 0u;
+  }
+  if (static_cast<float>(near) < kMinObjectGroundShare * static_cast<float>(n) ||
+      static_cast<float>(under) > kMaxBelowTerrainShare * static_cast<float>(n))
+    return 0;
+  uint32_t kept = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    if (on_terrain(xyz + 3u * i)) continue;
+    for (uint32_t a = 0; a < 3u; ++a) xyz[3u * kept + a] = xyz[3u * i + a];
+    ++kept;
+  }
+  return n - kept;
+}
+
+}  // namespace spinhash

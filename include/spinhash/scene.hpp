@@ -1,0 +1,124 @@
+// The scene recognizer: an airborne lidar tile in (georeferenced xyz, z up),
+// one answer per object out. Terrain (geometry/terrain.hpp), objects
+// (scene/segment.hpp), size gates, then the Recognizer on each vehicle-sized
+// object. No heap: every buffer comes from the caller's workspace, sized by
+// required_scene_workspace_bytes(config).
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "spinhash/recognizer.hpp"
+
+namespace spinhash {
+
+enum class ObjectKind : uint8_t {
+  kVehicleCandidate = 0,  // within the vehicle size gates: recognised
+  kTooSmall = 1,          // shorter or lower than a vehicle, or few points (crates, posts, trunks)
+  kTooLarge = 2,          // longer or wider than a vehicle (buildings)
+  kNotVehicleShaped = 3,  // thin (walls), tall (trees) or floating high above the terrain (crowns)
+  kUnknown = 4,           // vehicle-sized but recognition failed
+};
+constexpr uint32_t kObjectKinds = 5;
+
+const char* object_kind_name(ObjectKind k) noexcept;
+
+struct SceneConfig {
+  // Recognition of each vehicle candidate. Its ground_clearance is not used:
+  // objects reach the recognizer without their ground.
+  RecognizerConfig recognizer{};
+  uint32_t top_n = 5;  // ranking entries kept per object
+
+  // Capacities.
+  uint32_t max_tile_points = 300000;      // more: kTooManyPoints (refused, never truncated)
+  uint32_t max_objects = 256;             // objects of >= min_object_points points
+  uint32_t max_terrain_cells = 1u << 16;  // terrain grid: 0.5 m cells -> 128 x 128 m
+  uint32_t max_segment_cells = 1u << 18;  // segmentation grid: 0.25 m cells -> 128 x 128 m
+
+  // Terrain (progressive morphological filter).
+  float terrain_cell = 0.5f;     // m
+  float terrain_window = 24.0f;  // m: widest opening (wider than the buildings to lift off)
+  float terrain_slope = 0.35f;   // rise per m between windows (0.35: terrain to ~19 degrees)
+  float terrain_dh0 = 0.2f;      // m
+  float terrain_dh_max = 2.5f;   // m
+  float ground_height = 0.25f;   // m above the terrain that is still ground
+
+  // Segmentation: 8-connected cells. Points up to layer_split_height above
+  // the terrain form the low layer (vehicles; the empty gap between parked
+  // cars splits them); points above it the high layer (tree crowns, roofs),
+  // so a crown over a car never joins it.
+  float segment_cell = 0.25f;       // m: must be below the narrowest gap to split (0.5 m)
+  float layer_split_height = 3.8f;  // m: above the tallest vehicle (buses 3.5 m), below most crowns
+  uint32_t min_object_points = 30;  // smaller components are noise, not objects
+
+  // Size gates (footprint along the object's principal axes; heights above terrain).
+  float min_length = 2.2f, max_length = 13.0f;  // m: buses reach 12 m
+  float min_width = 1.1f, max_width = 4.0f;     // m: tracked vehicles 3.6 m
+  float min_height = 0.9f, max_height = 4.5f;   // m: highest point above the terrain
+  float max_clearance = 1.2f;                   // m: lowest point above the terrain; higher floats (crowns)
+  float max_size_mismatch = 0.15f;              // confident only if the object's length and width are
+                                                // within this share of the best model's bounding box
+};
+
+struct SceneObject {
+  ObjectKind kind = ObjectKind::kUnknown;
+  Status status = Status::kOk;  // recognition status (kOk for objects not recognised)
+  uint32_t points = 0;
+  double center[3] = {0, 0, 0};  // georeferenced: the footprint's centre, z mid-height
+  float extent[3] = {0, 0, 0};   // m: length, width along the principal axes; height above terrain
+  float heading_deg = 0.0f;      // direction of the length axis, degrees from +x
+  float min_height = 0.0f;       // m above the terrain (lowest point)
+  bool high_layer = false;       // made of points above layer_split_height
+  // Vehicle candidates only:
+  const RankedModel* ranking = nullptr;  // in the workspace, best first; valid until the next call
+  uint32_t ranking_count = 0;            // <= top_n
+  bool confident = false;
+  RecognitionStats stats;  // of its recognition
+};
+
+struct SceneStats {
+  uint32_t points_in = 0;
+  uint32_t points_nonfinite = 0;
+  uint32_t points_ground = 0;
+  uint32_t points_in_objects = 0;
+  uint32_t points_fragments = 0;  // in components below min_object_points
+  uint32_t terrain_cells = 0;
+  uint32_t terrain_windows = 0;
+  uint32_t segment_cells = 0;
+  uint32_t components = 0;       // connected components, fragments included
+  uint32_t objects_dropped = 0;  // past max_objects (status kTooManyObjects)
+  uint32_t objects_by_kind[kObjectKinds] = {};
+  uint64_t recognition_hypotheses = 0;  // summed over the candidates
+  uint64_t recognition_candidates = 0;
+  size_t workspace_used = 0;
+};
+
+struct SceneResult {
+  Status status = Status::kNotOpen;      // kOk, or kTooManyObjects with the first max_objects answered
+  const SceneObject* objects = nullptr;  // in the workspace; valid until the next call
+  uint32_t object_count = 0;
+  SceneStats stats;
+};
+
+struct SceneBuffers;  // the workspace layout (firmware-lib/scene)
+
+// Workspace bytes SceneRecognizer::init needs (0 for an invalid config).
+size_t required_scene_workspace_bytes(const SceneConfig& config) noexcept;
+bool scene_config_valid(const SceneConfig& config) noexcept;
+
+class SceneRecognizer {
+ public:
+  Status init(const Database* db, const SceneConfig& config, void* workspace,
+              size_t workspace_bytes) noexcept;
+  // n points of xyz (x0 y0 z0 x1 ...), georeferenced, z up. Non-finite points
+  // are skipped and counted.
+  SceneResult recognize(const double* xyz, uint32_t n) noexcept;
+  size_t used_bytes() const noexcept { return used_bytes_; }
+
+ private:
+  const Database* db_ = nullptr;
+  SceneConfig config_{};
+  size_t used_bytes_ = 0;
+  SceneBuffers* buffers_ = nullptr;
+};
+
+}  // namespace spinhash
