@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return spinhash::pipeline::usage_exit_code(app.exit(e));
   }
   return exit_code;
 }

@@ -4,6 +4,7 @@
 #include "spinhash/scene.hpp"
 
 #include <cmath>
+#include <limits>
 #include <new>
 
 #include "geometry/terrain.hpp"
@@ -171,7 +172,8 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
     return res;
   }
   // Origin: the finite points' minimum corner; local floats keep ~1e-5 m over 100 m.
-  double origin[3] = {INFINITY, INFINITY, INFINITY};
+  constexpr double kFar = std::numeric_limits<double>::infinity();
+  double origin[3] = {kFar, kFar, kFar};
   uint32_t m = 0;
   for (uint32_t i = 0; i < n; ++i) {
     const double* p = xyz + 3u * i;

@@ -15,6 +15,7 @@
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/recognizer_flags.hpp"
 #include "pipeline/scene_session.hpp"
+#include "render/tile_picture.hpp"
 
 namespace spinhash::cli {
 
@@ -25,8 +26,42 @@ namespace {
 struct SceneArgs {
   std::string db_path;
   std::vector<std::string> tiles;
+  std::string picture_dir;  // a top-down PNG per tile, when given
   SceneConfig config;
 };
+
+// The tile's objects as outlined boxes: the model (with "?" when not
+// confident) on vehicle candidates, what it is on the others.
+std::vector<host::PictureBox> picture_boxes(const Database& db, const SceneResult& r) {
+  std::vector<host::PictureBox> boxes;
+  for (uint32_t k = 0; k < r.object_count; ++k) {
+    const SceneObject& o = r.objects[k];
+    host::PictureBox b;
+    b.center[0] = o.center[0], b.center[1] = o.center[1];
+    b.length = o.extent[0], b.width = o.extent[1], b.heading_deg = o.heading_deg;
+    if (o.kind == ObjectKind::kVehicleCandidate && o.ranking_count > 0) {
+      b.label = pipeline::model_name(db, o.ranking[0].model) + (o.confident ? "" : " ?");
+      b.style = o.confident ? host::BoxStyle::kConfident : host::BoxStyle::kUnsure;
+    } else {
+      b.label = object_kind_name(o.kind);
+      b.style = o.kind == ObjectKind::kVehicleCandidate || o.kind == ObjectKind::kUnknown
+                    ? host::BoxStyle::kUnsure
+                    : host::BoxStyle::kNotVehicle;
+    }
+    boxes.push_back(b);
+  }
+  return boxes;
+}
+
+bool write_picture(const SceneArgs& a, const std::string& name, const std::vector<double>& xyz,
+                   const Database& db, const SceneResult& r, std::string* error) {
+  uint32_t confident = 0;
+  for (uint32_t k = 0; k < r.object_count; ++k) confident += r.objects[k].confident ? 1u : 0u;
+  const std::string title =
+      name + ": " + std::to_string(r.object_count) + " objects, " + std::to_string(confident) + " confident";
+  return host::write_tile_picture(a.picture_dir + "/" + name + ".png", xyz, picture_boxes(db, r), title,
+                                  error);
+}
 
 std::string triple_json(const double v[3], int digits) {
   return "[" + json_number(v[0], digits) + "," + json_number(v[1], digits) + "," + json_number(v[2], digits) +
@@ -80,6 +115,10 @@ int run_scene(const SceneArgs& a) {
     std::fprintf(stderr, "spinhash scene: %s: %s; %s; %.1f ms\n", name.c_str(), status_name(r.status),
                  pipeline::scene_stats_text(r.stats).c_str(), session.last_ms());
     if (r.status != Status::kOk) exit_code = kExitCheckFailed;
+    if (!a.picture_dir.empty() && !write_picture(a, name, xyz, file.db, r, &error)) {
+      std::fprintf(stderr, "spinhash scene: %s\n", error.c_str());
+      exit_code = kExitError;
+    }
     progress.tick(static_cast<uint32_t>(t + 1));
   }
   return exit_code;
@@ -99,6 +138,9 @@ void add_scene_command(CLI::App& app, int* exit_code) {
   cmd->add_option("--max-objects", a->config.max_objects,
                   "objects per tile (more: the rest are not recognised)")
       ->check(CLI::Range(1u, 1u << 16));
+  cmd->add_option("--picture-out", a->picture_dir,
+                  "folder for a top-down PNG per tile: objects outlined and labelled (green: confident)")
+      ->check(CLI::ExistingDirectory);
   cmd->add_option("tiles", a->tiles, "point cloud files")->required();
   pipeline::add_recognizer_flags(cmd, &a->config.recognizer);
   cmd->callback([a, exit_code]() { *exit_code = run_scene(*a); });

@@ -121,3 +121,38 @@ TEST_CASE("scan writes LAS by the extension, ground classified, and recognize re
   CHECK(unknown.exit_code == 1);
   CHECK(contains(unknown.err, "unknown point-cloud extension (write .ply or .las)"));
 }
+
+TEST_CASE("scene finds the scanned vehicle on sloped ground, with a georeferenced pose and a picture") {
+  const Pipeline& p = pipeline();
+  const std::string tile = p.dir.file("tile-7.las"), pictures = p.dir.file("pictures");
+  CliRun scan =
+      run_spinhash(p.dir, "scan " + shell_quoted(p.meshes + "/truck-00.obj") + " -o " + shell_quoted(tile) +
+                              " --seed 3 --random-pose --ground-slope 6 --offset 500000 4000000 120");
+  INFO(scan.err);
+  REQUIRE(scan.exit_code == 0);
+  CliRun missing = run_spinhash(p.dir, "scene --db " + shell_quoted(p.db) + " --picture-out " +
+                                           shell_quoted(pictures) + " " + shell_quoted(tile));
+  CHECK(missing.exit_code == 2);  // the folder must exist: refused before any tile is read
+  REQUIRE(std::system(("mkdir " + shell_quoted(pictures)).c_str()) == 0);
+  CliRun r = run_spinhash(p.dir, "scene --db " + shell_quoted(p.db) + " --picture-out " +
+                                     shell_quoted(pictures) + " " + shell_quoted(tile));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  int vehicles = 0;
+  for (const std::string& line : r.lines()) {
+    CHECK(contains(line, "{\"tile\":\"tile-7\",\"object\":"));
+    if (!contains(line, "\"kind\":\"vehicle\"")) continue;
+    ++vehicles;
+    CHECK(contains(line, "\"model\":\"truck-00\""));
+    CHECK(std::fabs(json_field(line, "time_ms")) > 0.0);
+    // The pose is georeferenced: its translation lies near the offset, not near 0.
+    const size_t at = line.find("\"center\":[");
+    REQUIRE(at != std::string::npos);
+    CHECK(std::fabs(std::atof(line.c_str() + at + 10) - 500000.0) < 30.0);
+  }
+  CHECK(vehicles == 1);
+  std::string png, error;
+  REQUIRE(spinhash::host::read_file_bytes(pictures + "/tile-7.png", 1u << 24, &png, &error));
+  CHECK(png.rfind("\x89PNG\r\n\x1a\n", 0) == 0);
+  CHECK(png.size() > 1000);
+}
