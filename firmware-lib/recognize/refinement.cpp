@@ -2,8 +2,9 @@
 // features: the leading models' best poses are rescored on every feature and
 // (optionally) refined by least squares over their inliers
 // (match/refine_pose.hpp), keeping a refined pose where its likelihood is
-// higher; every other model's subset score is extrapolated to all features
-// so the whole ranking is on one scale. Bounded: kRefinedModels models x
+// higher; BRAN then charges each for the upward surface the scan does not
+// show (visible_surface.cpp); every other model's subset score is
+// extrapolated to all features, below the rescored ones. Bounded: kRefinedModels models x
 // (1 + kRefineIterations) full verifications.
 #include "match/refine_pose.hpp"
 #include "recognize/search_context.hpp"
@@ -14,6 +15,7 @@ namespace {
 
 constexpr uint32_t kRefinedModels = 8;
 constexpr uint32_t kRefineIterations = 3;
+constexpr float kBelowFinalised = 1.0f;  // log units: a model not rescored ranks below every rescored one
 
 // Indices of the (up to) kRefinedModels best-scoring models, best first.
 uint32_t leading_models(const SearchContext& ctx, uint32_t* out) {
@@ -47,13 +49,21 @@ void finalise_scores(SearchContext& ctx, bool refine) {
   const uint32_t n = leading_models(ctx, models);
   QueryFeatures all = ctx.query;
   all.verify_count = all.count;
-  for (uint32_t i = 0; i < n; ++i) finalise_model(ctx, models[i], all, refine);
-  // Subset scores of the others, scaled to all features (and kept below the finalised ones).
+  float lowest_final = 0.0f;
+  for (uint32_t i = 0; i < n; ++i) {
+    finalise_model(ctx, models[i], all, refine);
+    ModelBest& b = ctx.buf.best[models[i]];
+    if (ctx.cfg.mode == Mode::kBran) b.score += upward_surface_log_likelihood(ctx, models[i], b.pose);
+    lowest_final = i == 0 || b.score < lowest_final ? b.score : lowest_final;
+  }
+  // Subset scores of the others, scaled to all features and kept below the
+  // finalised ones (which alone were checked for their visible surface).
   const float scale = static_cast<float>(all.count) / static_cast<float>(ctx.query.verify_count);
   for (uint32_t m = 0; m < ctx.db.model_count(); ++m) {
     ModelBest& b = ctx.buf.best[m];
     if (b.has_score && b.hypotheses > 0 && !b.final_score) {
       b.score *= scale;
+      if (n > 0 && b.score >= lowest_final) b.score = lowest_final - kBelowFinalised;
       b.inliers = static_cast<uint32_t>(static_cast<float>(b.inliers) * scale);
     }
   }

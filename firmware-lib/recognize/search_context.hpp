@@ -107,6 +107,10 @@ void transfer_poses(SearchContext& ctx);
 // Rescores the leading models on all query features (refining their poses
 // when asked) and puts every score on the all-features scale (BRAN, SRAN).
 void finalise_scores(SearchContext& ctx, bool refine);
+// Log-likelihood of what the scan shows of the model's upward surface under
+// `pose`: each upward model feature seen (a query feature within Delta) or
+// missed (visible_surface.cpp).
+float upward_surface_log_likelihood(const SearchContext& ctx, uint32_t model, const RigidPose& pose);
 void run_sran(SearchContext& ctx);
 void run_sind(SearchContext& ctx);
 

@@ -39,12 +39,14 @@ std::vector<double> toy_vehicle_points(uint32_t index, float spacing) {
   return out;
 }
 
-bool make_toy_database(ToyDatabase* out, uint32_t twin_of) {
+std::vector<host::ModelCloud> toy_clouds() {
   std::vector<host::ModelCloud> clouds;
   for (uint32_t i = 0; i < kToyModels; ++i)
     clouds.push_back(host::ModelCloud{"toy-" + std::to_string(i), toy_vehicle_points(i, 0.05f)});
-  if (twin_of < kToyModels)
-    clouds.push_back(host::ModelCloud{"toy-twin", toy_vehicle_points(twin_of, 0.05f)});
+  return clouds;
+}
+
+bool make_database(const std::vector<host::ModelCloud>& clouds, ToyDatabase* out) {
   host::BuildOptions opt;
   host::BlobContent content;
   host::BuildReport report;
@@ -54,6 +56,13 @@ bool make_toy_database(ToyDatabase* out, uint32_t twin_of) {
   if (!host::serialize_blob(content, host::ByteOrder::kNative, &bytes, &error)) return false;
   out->bytes = host::AlignedBytes::copy_of(bytes);
   return Database::open(out->bytes.data(), out->bytes.size(), &out->db) == Status::kOk;
+}
+
+bool make_toy_database(ToyDatabase* out, uint32_t twin_of) {
+  std::vector<host::ModelCloud> clouds = toy_clouds();
+  if (twin_of < kToyModels)
+    clouds.push_back(host::ModelCloud{"toy-twin", toy_vehicle_points(twin_of, 0.05f)});
+  return make_database(clouds, out);
 }
 
 std::vector<double> toy_query(const std::vector<double>& model, double yaw, const double t[3], double noise,
