@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# The installed package (docs/firmware.md, "Use it in your firmware"): runs
+# every ```sh ci block of that page, in order, from the repository root:
+# cmake --install of the host build into a fresh prefix, the outside project
+# examples/consumer built against it with find_package and run on the golden
+# data, pkg-config builds of the C and C++ examples, and the same for aarch64
+# with only the toolchain file (run under qemu-user); the bare-metal core
+# installs too. The page's commands are
+# the tested ones; this script only checks they still cover all of that.
+# Reuses ./build (scripts/test.sh builds it); writes build-install/ (prefixes,
+# log) and, afresh each run, build-aarch64, build-cortex-m7 and build-consumer*.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+cd "$root"
+start=$SECONDS
+doc=docs/firmware.md
+work=build-install
+rm -rf "$work" build-aarch64 build-cortex-m7 build-consumer build-consumer-aarch64  # a clean machine's view (ccache keeps it quick)
+mkdir -p "$work"
+script=$work/firmware-doc.sh
+log=$work/stage.log
+
+awk '/^```sh ci$/ { on = 1; next } /^```/ { on = 0 } on' "$doc" >"$script"
+# The page must keep showing (so CI keeps running) each acceptance step.
+required=(
+  'cmake --install build --prefix "$SPINHASH_PREFIX"'
+  '-S examples/consumer -B build-consumer -DCMAKE_PREFIX_PATH'
+  'pkg-config --cflags --libs spinhash'
+  '-DCMAKE_TOOLCHAIN_FILE=toolchains/aarch64-linux-gnu.cmake'
+  'cmake --install build-aarch64 --prefix "$SPINHASH_AARCH64_PREFIX"'
+  'qemu-aarch64 -L /usr/aarch64-linux-gnu build-consumer-aarch64/recognize'
+  'golden_query0.i16 toy-0'
+  'cmake --install build-cortex-m7 --prefix "$SPINHASH_CORTEX_M7_PREFIX"'
+)
+for r in "${required[@]}"; do
+  grep -qF -- "$r" "$script" || { echo "install: $doc has no '$r' in its sh ci blocks"; exit 1; }
+done
+# "The toolchain file alone": the cross configure must not switch the host tools off by hand.
+if grep -q 'SPINHASH_HOST_TOOLS' "$script"; then echo "install: $doc sets SPINHASH_HOST_TOOLS"; exit 1; fi
+
+export SPINHASH_PREFIX=$root/$work/prefix SPINHASH_AARCH64_PREFIX=$root/$work/prefix-aarch64 \
+       SPINHASH_CORTEX_M7_PREFIX=$root/$work/prefix-cortex-m7
+# ccache for the fresh aarch64 build (CMake takes launchers from the
+# environment on a first configure only: ./build keeps its settings).
+if command -v ccache >/dev/null; then
+  export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache
+fi
+if ! bash -euxo pipefail "$script" >"$log" 2>&1; then
+  tail -n 40 "$log"
+  echo "install: a command of $doc FAILED (full log: $log)"
+  exit 1
+fi
+
+# What was installed: the public API without internal/, no research tool.
+status=0
+for f in lib/libspinhash_core.a include/spinhash/spinhash.h include/spinhash/recognizer.hpp \
+         lib/cmake/spinhash/spinhashConfig.cmake lib/cmake/spinhash/spinhashConfigVersion.cmake \
+         lib/pkgconfig/spinhash.pc bin/spinhash share/doc/spinhash/firmware.md; do
+  [[ -e $SPINHASH_PREFIX/$f ]] || { echo "install: $f not installed"; status=1; }
+done
+for f in include/spinhash/internal bin/spinhash-experiment; do
+  [[ ! -e $SPINHASH_PREFIX/$f ]] || { echo "install: $f must not be installed"; status=1; }
+done
+for p in "$SPINHASH_AARCH64_PREFIX" "$SPINHASH_CORTEX_M7_PREFIX"; do
+  [[ -e $p/lib/libspinhash_core.a ]] || { echo "install: no core in $p"; status=1; }
+  [[ ! -e $p/bin/spinhash ]] || { echo "install: host tools built in the cross build ($p)"; status=1; }
+done
+# Each run of the consumer printed its ranking; show the top lines.
+grep -E '^  1\. |^  #1 ' "$log" | sed 's/^ */install: top: /'
+echo "install: $(grep -c '^+ ' "$log") doc commands ran ($((SECONDS - start)) s)"
+exit $status
