@@ -65,6 +65,21 @@ for p in "$SPINHASH_AARCH64_PREFIX" "$SPINHASH_CORTEX_M7_PREFIX"; do
   [[ -e $p/lib/libspinhash_core.a ]] || { echo "install: no core in $p"; status=1; }
   [[ ! -e $p/bin/spinhash ]] || { echo "install: host tools built in the cross build ($p)"; status=1; }
 done
+# The consumer's text reader, on the same query moved to UTM-sized coordinates
+# (read as double: the pose must come back with the offset).
+python3 - tests/golden/golden_query0.i16 >"$work/query0-utm.xyz" <<'PY'
+import struct, sys
+raw = open(sys.argv[1], "rb").read()
+v = struct.unpack("<%dh" % (len(raw) // 2), raw)
+print("# x y z (m): golden query 0 + (431000, 4020000, 85)")
+for i in range(0, len(v), 3):
+    print("%.3f %.3f %.3f" % (v[i] / 1000 + 431000, v[i + 1] / 1000 + 4020000, v[i + 2] / 1000 + 85))
+PY
+if ! build-consumer/recognize tests/golden/golden_le.shdb "$work/query0-utm.xyz" toy-0 >"$work/utm.log" 2>&1 ||
+   ! grep -qE '^  1\. toy-0 .* t = \(4310[0-9][0-9]\.[0-9]+, 40199[0-9][0-9]\.[0-9]+, 8[56]\.' "$work/utm.log"; then
+  cat "$work/utm.log"; echo "install: the consumer failed on the text query in UTM coordinates"; status=1
+fi
+cat "$work/utm.log" >>"$log"
 # Each run of the consumer printed its ranking; show the top lines.
 grep -E '^  1\. |^  #1 ' "$log" | sed 's/^ */install: top: /'
 echo "install: $(grep -c '^+ ' "$log") doc commands ran ($((SECONDS - start)) s)"
