@@ -6,7 +6,8 @@
 # data, pkg-config builds of the C and C++ examples, and the same for aarch64
 # with only the toolchain file (run under qemu-user); the bare-metal core
 # installs too. The page's commands are
-# the tested ones; this script only checks they still cover all of that.
+# the tested ones; this script checks they still cover all of that and that
+# the page's sample output is what the consumer prints.
 # Reuses ./build (scripts/test.sh builds it); writes build-install/ (prefixes,
 # log) and, afresh each run, build-aarch64, build-cortex-m7 and build-consumer*.
 set -euo pipefail
@@ -80,6 +81,14 @@ if ! build-consumer/recognize tests/golden/golden_le.shdb "$work/query0-utm.xyz"
   cat "$work/utm.log"; echo "install: the consumer failed on the text query in UTM coordinates"; status=1
 fi
 cat "$work/utm.log" >>"$log"
+# The page's sample output (its first console block, up to the "...") is
+# what the native consumer printed; a change to recognition must update it.
+expected=$(awk '/^```console$/ { on = 1; next } /^```/ { if (on) exit } on && !/^ *\.\.\.$/' "$doc")
+actual=$(awk -v n="$(printf '%s\n' "$expected" | wc -l)" \
+  '/^\+ build-consumer\/recognize tests/ { on = 1; next } on && /^\+/ { exit } on && n-- > 0' "$log")
+if [[ "$expected" != "$actual" ]]; then
+  echo "install: $doc's sample output is stale; the consumer now prints:"; printf '%s\n' "$actual"; status=1
+fi
 # Each run of the consumer printed its ranking; show the top lines.
 grep -E '^  1\. |^  #1 ' "$log" | sed 's/^ */install: top: /'
 echo "install: $(grep -c '^+ ' "$log") doc commands ran ($((SECONDS - start)) s)"
