@@ -12,6 +12,7 @@ if [[ "${1:-}" == "--cross" ]]; then
   packages+=(g++-aarch64-linux-gnu g++-arm-linux-gnueabihf g++-powerpc-linux-gnu
              gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-user
              valgrind python3)  # callgrind for the work budget, python3 for the stack report
+  packages+=(pkgconf)  # pkg-config for the installed-package stage (scripts/stages/24-install.sh)
 fi
 
 missing=()

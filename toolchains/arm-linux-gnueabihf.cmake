@@ -1,6 +1,7 @@
 # Cross build for 32-bit Armv7 hard-float (little-endian) Linux; tests run under qemu-user (arm) with the target's
 # runtime from /usr/arm-linux-gnueabihf (Debian's cross packages put it there).
-# cmake -S . -B build-cross-arm -DCMAKE_TOOLCHAIN_FILE=toolchains/arm-linux-gnueabihf.cmake -DSPINHASH_HOST_TOOLS=OFF
+# cmake -S . -B build-cross-arm -DCMAKE_TOOLCHAIN_FILE=toolchains/arm-linux-gnueabihf.cmake
+# builds the core and its tests: host tools (SPINHASH_HOST_TOOLS) default to OFF when cross-compiling.
 set(CMAKE_SYSTEM_PROCESSOR arm)
 set(SPINHASH_TRIPLE arm-linux-gnueabihf)
 set(SPINHASH_QEMU_NAME qemu-arm)
