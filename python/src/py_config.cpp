@@ -137,6 +137,42 @@ py::tuple field_names() {
   return py::tuple(names);
 }
 
+// The valid range of each numeric setting, (lo, hi) inclusive, as the core checks it.
+py::object range_of(float lo, float hi) { return py::make_tuple(shortest(lo), shortest(hi)); }
+template <typename L, typename H>
+py::object range_of(L lo, H hi) {
+  return py::make_tuple(static_cast<unsigned long long>(lo), static_cast<unsigned long long>(hi));
+}
+py::dict field_ranges() {
+  py::dict ranges;
+#define SPINHASH_PY_RANGE_MODE(name, lo, hi)
+#define SPINHASH_PY_RANGE_BOOL(name, lo, hi)
+#define SPINHASH_PY_RANGE_VEC3D(name, lo, hi)
+#define SPINHASH_PY_RANGE_U32(name, lo, hi) ranges[#name] = range_of(lo, hi);
+#define SPINHASH_PY_RANGE_U64(name, lo, hi) ranges[#name] = range_of(lo, hi);
+#define SPINHASH_PY_RANGE_F32(name, lo, hi) ranges[#name] = range_of(lo, hi);
+#define SPINHASH_PY_RANGE(kind, name, lo, hi, flag, help) SPINHASH_PY_RANGE_##kind(name, lo, hi)
+  SPINHASH_CONFIG_FIELDS(SPINHASH_PY_RANGE)
+#undef SPINHASH_PY_RANGE
+  return ranges;
+}
+
+// The mode words, in the MODE field's range ("bran", "sran", "sind").
+py::tuple mode_names() {
+  py::list names;
+#define SPINHASH_PY_MODES_MODE(lo, hi) \
+  for (int m = lo; m <= hi; ++m) names.append(pipeline::mode_name(Mode(m)));
+#define SPINHASH_PY_MODES_BOOL(lo, hi)
+#define SPINHASH_PY_MODES_U32(lo, hi)
+#define SPINHASH_PY_MODES_U64(lo, hi)
+#define SPINHASH_PY_MODES_F32(lo, hi)
+#define SPINHASH_PY_MODES_VEC3D(lo, hi)
+#define SPINHASH_PY_MODES(kind, name, lo, hi, flag, help) SPINHASH_PY_MODES_##kind(lo, hi)
+  SPINHASH_CONFIG_FIELDS(SPINHASH_PY_MODES)
+#undef SPINHASH_PY_MODES
+  return py::tuple(names);
+}
+
 py::dict as_dict(const RecognizerConfig& c) {
   py::dict d;
 #define SPINHASH_PY_GET(kind, name, lo, hi, flag, help) d[#name] = get_##kind(c.name);
@@ -194,6 +230,8 @@ void bind_config(py::module_& m) {
                                    "the core's RecognizerConfig (Config.fields; docs/api.md).");
   cls.def(py::init(&from_kwargs), "Config(**settings): defaults, with the settings given");
   cls.attr("fields") = field_names();
+  cls.attr("ranges") = field_ranges();
+  cls.attr("modes") = mode_names();
 #define SPINHASH_PY_PROPERTY(kind, name, lo, hi, flag, help)               \
   cls.def_property(                                                        \
       #name, [](const RecognizerConfig& c) { return get_##kind(c.name); }, \

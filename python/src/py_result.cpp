@@ -93,7 +93,10 @@ void bind_result(py::module_& m) {
       .def_readonly("time_ms", &PyResult::time_ms, "wall time of the recognition, ms")
       .def_property_readonly(
           "model",
-          [](const PyResult& r) { return r.ranking.empty() ? py::object(py::none()) : r.ranking[0][0]; },
+          [](const PyResult& r) -> py::object {
+            if (r.ranking.empty()) return py::none();
+            return py::tuple(r.ranking[0])[size_t{0}];  // a bare 0 would be a null const char* key
+          },
           "the best model's name, or None")
       .def("__repr__", [](const PyResult& r) {
         std::string best = r.ranking.empty() ? "None" : std::string(py::repr(r.ranking[0]));
