@@ -92,9 +92,10 @@ class PySceneRecognizer {
     // kTooManyObjects still answers the first max_objects; an empty tile has no objects.
     if (r.status != Status::kOk && r.status != Status::kTooManyObjects && r.status != Status::kEmptyCloud)
       throw py::value_error("scene: " + last_status_ + " (" + status_name(r.status) + ")");
-    if (r.status == Status::kTooManyObjects)
-      PyErr_WarnEx(PyExc_RuntimeWarning, "scene: too_many_objects: only the first max_objects were answered",
-                   1);
+    if (r.status == Status::kTooManyObjects &&
+        PyErr_WarnEx(PyExc_RuntimeWarning,
+                     "scene: too_many_objects: only the first max_objects were answered", 1) < 0)
+      throw py::error_already_set();  // warnings turned into errors
     py::list out;
     for (const SceneObjectCopy& c : objects) out.append(make_scene_object(db_->file.db, c));
     return out;
