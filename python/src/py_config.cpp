@@ -232,10 +232,18 @@ void bind_config(py::module_& m) {
   cls.attr("fields") = field_names();
   cls.attr("ranges") = field_ranges();
   cls.attr("modes") = mode_names();
-#define SPINHASH_PY_PROPERTY(kind, name, lo, hi, flag, help)               \
-  cls.def_property(                                                        \
-      #name, [](const RecognizerConfig& c) { return get_##kind(c.name); }, \
-      [](RecognizerConfig& c, py::handle v) { set_##kind(&c, &c.name, lo, hi, #name, v); }, help);
+// A BOOL field's help describes its CLI flag, which sets it to false.
+#define SPINHASH_PY_DOC_MODE(help) help
+#define SPINHASH_PY_DOC_BOOL(help) "False: " help
+#define SPINHASH_PY_DOC_U32(help) help
+#define SPINHASH_PY_DOC_U64(help) help
+#define SPINHASH_PY_DOC_F32(help) help
+#define SPINHASH_PY_DOC_VEC3D(help) help
+#define SPINHASH_PY_PROPERTY(kind, name, lo, hi, flag, help)                                \
+  cls.def_property(                                                                         \
+      #name, [](const RecognizerConfig& c) { return get_##kind(c.name); },                  \
+      [](RecognizerConfig& c, py::handle v) { set_##kind(&c, &c.name, lo, hi, #name, v); }, \
+      SPINHASH_PY_DOC_##kind(help));
   SPINHASH_CONFIG_FIELDS(SPINHASH_PY_PROPERTY)
 #undef SPINHASH_PY_PROPERTY
   cls.def("to_dict", &as_dict, "every setting by name");
