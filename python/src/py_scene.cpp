@@ -67,7 +67,7 @@ py::dict scene_stats(const SceneStats& st) {
 
 class PySceneRecognizer {
  public:
-  PySceneRecognizer(DatabasePtr db, const SceneConfig& cfg) : db_(std::move(db)) {
+  PySceneRecognizer(DatabasePtr db, const SceneConfig& cfg) : db_(std::move(db)), config_(cfg) {
     std::string error;
     if (!session_.init(&db_->file.db, cfg, &error)) throw py::value_error(error);
   }
@@ -102,10 +102,12 @@ class PySceneRecognizer {
   }
 
   const std::string& last_status() const { return last_status_; }
+  const SceneConfig& config() const { return config_; }
   const py::dict& last_stats() const { return last_stats_; }
 
  private:
   DatabasePtr db_;
+  SceneConfig config_;
   std::mutex busy_;
   pipeline::SceneSession session_;
   std::string last_status_ = "none";
@@ -145,7 +147,15 @@ void bind_scene(py::module_& m) {
       .def_property_readonly("last_status", &PySceneRecognizer::last_status,
                              "status word of the last tile ('ok', 'too_many_objects', 'empty_cloud', ...)")
       .def_property_readonly("last_stats", &PySceneRecognizer::last_stats,
-                             "stage statistics of the last tile");
+                             "stage statistics of the last tile")
+      .def_property_readonly(
+          "config", [](const PySceneRecognizer& s) { return s.config().recognizer; },
+          "a copy of the settings each vehicle candidate is recognised with")
+      .def_property_readonly("top_n", [](const PySceneRecognizer& s) { return s.config().top_n; })
+      .def_property_readonly("max_tile_points",
+                             [](const PySceneRecognizer& s) { return s.config().max_tile_points; })
+      .def_property_readonly("max_objects",
+                             [](const PySceneRecognizer& s) { return s.config().max_objects; });
   m.attr("SceneRecognizer").attr("settings") =
       py::make_tuple(kSceneSettings[0], kSceneSettings[1], kSceneSettings[2]);
 }

@@ -13,7 +13,7 @@ import sysconfig
 import pytest
 
 import spinhash
-from conftest import SOURCE_DIR, cli_path
+from conftest import SOURCE_DIR, cli_path, run_cli
 
 DOC = (SOURCE_DIR / "docs" / "python.md").read_text()
 
@@ -49,6 +49,7 @@ def test_the_install_commands_install_an_importable_module(tmp_path):
                           env={**os.environ, "PYTHONPATH": str(site)}, cwd=tmp_path, capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == spinhash.__version__
+    assert run_cli("--version").strip() == spinhash.__version__  # both are CMake's PROJECT_VERSION
 
 
 def test_the_example_runs_as_written(tmp_path, capsys, monkeypatch):

@@ -52,6 +52,10 @@ def test_the_scene_matches_the_cli(fleet, tile):
 def test_scene_settings_and_refusals(fleet, tile):
     _, points = tile
     db = spinhash.Database(fleet.db)
+    default = spinhash.SceneRecognizer(db)
+    assert default.config.ground_clearance == 0.0  # as `spinhash scene`: the terrain classifier takes the ground
+    assert (default.top_n, default.max_tile_points, default.max_objects) == (5, 300000, 256)
+    assert spinhash.SceneRecognizer(db, ground_clearance=0.2, seed=3).config.seed == 3
     top_two = spinhash.SceneRecognizer(db, top_n=2, mode="bran").recognize(points)
     assert all(len(obj.ranking) <= 2 for obj in top_two)
     small = spinhash.SceneRecognizer(db, max_tile_points=1000)
