@@ -10,6 +10,7 @@ env_file=$build/python/python-env.sh
 [[ -f "$env_file" ]] || { echo "python-tests: $env_file missing (SPINHASH_PYTHON off or not configured)"; exit 1; }
 source "$env_file"
 export PYTHONPATH=$SPINHASH_PYTHON_MODULE_DIR${PYTHONPATH:+:$PYTHONPATH}
+export PYTHONDONTWRITEBYTECODE=1  # no __pycache__ in the source tree
 export SPINHASH_CLI=$build/host-tools/spinhash SPINHASH_BUILD_DIR=$build
 status=0
 "$SPINHASH_PYTHON_EXECUTABLE" -m pytest -q -s -p no:cacheprovider "$root/tests/python" || status=$?

@@ -30,7 +30,9 @@ DatabasePtr open_file(const std::filesystem::path& path) {
 
 DatabasePtr open_bytes(const py::buffer& bytes) {
   const py::buffer_info view = bytes.request();
-  if (view.ndim != 1 || view.itemsize != 1) throw py::type_error("Database.from_bytes needs bytes-like data");
+  if (view.ndim != 1 || view.itemsize != 1 || view.strides[0] != 1)
+    throw py::type_error(
+        "Database.from_bytes needs contiguous bytes-like data (bytes, bytearray, memoryview)");
   auto db = std::make_shared<PyDatabase>();
   db->source = "<bytes>";
   // A 64-byte aligned copy, as Database::open requires; the caller's buffer may go away.

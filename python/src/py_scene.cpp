@@ -20,9 +20,7 @@ namespace py = pybind11;
 namespace spinhash::python {
 namespace {
 
-// The scene's own settings (the CLI's scene options); the others go to the recognizer.
-const char* const kSceneSettings[] = {"top_n", "max_tile_points", "max_objects"};
-
+// The scene's own settings (the CLI's scene options); nullptr for the recognizer's.
 uint32_t* scene_field(SceneConfig* c, const std::string& key) {
   if (key == "top_n") return &c->top_n;
   if (key == "max_tile_points") return &c->max_tile_points;
@@ -156,8 +154,6 @@ void bind_scene(py::module_& m) {
                              [](const PySceneRecognizer& s) { return s.config().max_tile_points; })
       .def_property_readonly("max_objects",
                              [](const PySceneRecognizer& s) { return s.config().max_objects; });
-  m.attr("SceneRecognizer").attr("settings") =
-      py::make_tuple(kSceneSettings[0], kSceneSettings[1], kSceneSettings[2]);
 }
 
 }  // namespace spinhash::python

@@ -95,6 +95,8 @@ def test_bad_databases_are_refused_with_the_reason(fleet, tmp_path):
     assert len(spinhash.Database.from_bytes(memoryview(blob))) == 6
     with pytest.raises(TypeError):
         spinhash.Database.from_bytes("not bytes")
+    with pytest.raises(TypeError, match="contiguous"):
+        spinhash.Database.from_bytes(memoryview(blob)[::2])
 
 
 def test_a_recognizer_keeps_its_database_alive(fleet, truck_query):
