@@ -80,7 +80,7 @@ std::string config_repr(const RecognizerConfig& c) {
 
 RecognizerConfig from_kwargs(const py::kwargs& kwargs) {
   RecognizerConfig c;
-  for (auto item : kwargs) set_config_field(&c, py::cast<std::string>(item.first), item.second);
+  set_config_fields(&c, kwargs);
   return c;
 }
 
@@ -94,6 +94,12 @@ void set_config_field(RecognizerConfig* c, const std::string& key, py::handle va
   throw py::type_error("unknown recognizer setting '" + key + "' (spinhash.Config.fields lists them)");
 }
 
+void set_config_fields(RecognizerConfig* c, const py::dict& settings) {
+  for (auto item : settings) set_config_field(c, py::cast<std::string>(item.first), item.second);
+  // Setting the viewpoint turns it on; an explicit has_viewpoint (as in to_dict()) has the last word.
+  if (settings.contains("has_viewpoint")) set_config_field(c, "has_viewpoint", settings["has_viewpoint"]);
+}
+
 RecognizerConfig recognizer_config(const RecognizerConfig& base, py::handle config,
                                    const py::kwargs& kwargs) {
   RecognizerConfig c = base;
@@ -102,7 +108,7 @@ RecognizerConfig recognizer_config(const RecognizerConfig& base, py::handle conf
       throw py::type_error("config must be a spinhash.Config or None, got " + type_name(config));
     c = config.cast<RecognizerConfig>();
   }
-  for (auto item : kwargs) set_config_field(&c, py::cast<std::string>(item.first), item.second);
+  set_config_fields(&c, kwargs);
   if (c.delta_max < c.delta)
     throw py::value_error("delta_max (" + bound_text(double{c.delta_max}) + ") must be at least delta (" +
                           bound_text(double{c.delta}) + ")");
@@ -134,6 +140,15 @@ void bind_config(py::module_& m) {
 #undef SPINHASH_PY_PROPERTY
   cls.def("to_dict", &as_dict, "every setting by name");
   cls.def("copy", [](const RecognizerConfig& c) { return c; });
+  cls.def("__copy__", [](const RecognizerConfig& c) { return c; });
+  cls.def("__deepcopy__", [](const RecognizerConfig& c, const py::dict&) { return c; });
+  // By settings, so that a Config reaches multiprocessing workers.
+  cls.def(py::pickle([](const RecognizerConfig& c) { return as_dict(c); },
+                     [](const py::dict& settings) {
+                       RecognizerConfig c;
+                       set_config_fields(&c, settings);
+                       return c;
+                     }));
   cls.def("__eq__",
           [](const RecognizerConfig& a, const RecognizerConfig& b) { return as_dict(a).equal(as_dict(b)); });
   cls.def("__repr__", &config_repr);

@@ -160,3 +160,18 @@ def test_defaults_and_ranges_are_the_clis():
         assert getattr(spinhash.Config(), name) == pytest.approx(default, rel=1e-6), name
         checked += 1
     assert checked >= 25
+
+
+def test_a_config_copies_and_pickles_with_every_setting():
+    import copy
+    import pickle
+    config = spinhash.Config(mode="sran", seed=2**63, sigma=0.2, refine_poses=False, viewpoint=(1, 2, 3))
+    for twin in (copy.copy(config), copy.deepcopy(config), config.copy(), pickle.loads(pickle.dumps(config))):
+        assert twin == config and twin is not config
+        assert twin.to_dict() == config.to_dict()
+    default = spinhash.Config()
+    for twin in (pickle.loads(pickle.dumps(default)), spinhash.Config(**default.to_dict())):
+        assert twin == default and not twin.has_viewpoint  # the viewpoint's value does not turn it on here
+    twin = config.copy()
+    twin.seed = 1
+    assert config.seed == 2**63 and twin != config
