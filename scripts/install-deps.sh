@@ -6,6 +6,7 @@ set -euo pipefail
 
 packages=(build-essential cmake doctest-dev libeigen3-dev libassimp-dev libembree-dev
           libcli11-dev gnuplot-nox
+          pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest  # the Python module (python/)
           clang-format  # the layout check (scripts/check_layout.sh)
           clang libclang-rt-14-dev)  # libFuzzer and the sanitizer runtimes (scripts/stages/40-fuzz.sh)
 if [[ "${1:-}" == "--cross" ]]; then

@@ -18,6 +18,9 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$jobs"
 ctest --test-dir build --output-on-failure -j"$jobs"
 
+echo "== python module tests"
+scripts/python-tests.sh build
+
 # Further stages, each a script that exits non-zero on failure.
 for stage in scripts/stages/*.sh; do
   [[ -e "$stage" ]] || continue

@@ -2,25 +2,14 @@
 
 #include "cli/json_line.hpp"
 #include "pipeline/recognition_session.hpp"
+#include "pipeline/status_word.hpp"
 #include "spinhash/config_fields.h"
 
 namespace spinhash::cli {
 
 using pipeline::model_name;
 
-const char* status_word(Status s) {
-  switch (s) {
-    case Status::kOk: return "ok";
-    case Status::kEmptyCloud: return "empty_cloud";
-    case Status::kTooManyPoints: return "too_many_points";
-    case Status::kNotEnoughFeatures: return "not_enough_features";
-    case Status::kInvalidArgument: return "invalid_argument";
-    case Status::kWorkspaceTooSmall: return "workspace_too_small";
-    case Status::kTileTooLarge: return "tile_too_large";
-    case Status::kTooManyObjects: return "too_many_objects";
-    default: return "error";
-  }
-}
+const char* status_word(Status s) { return pipeline::status_word(s); }
 
 std::string pose_json(const Pose& p) {
   std::string s = "[";

@@ -1,0 +1,57 @@
+#include "points.hpp"
+
+#include <string>
+
+namespace py = pybind11;
+
+namespace spinhash::python {
+namespace {
+
+constexpr py::ssize_t kCoordinates = 3;  // x y z per point
+
+std::string shape_text(const py::array& a) {
+  std::string s = "(";
+  for (py::ssize_t d = 0; d < a.ndim(); ++d) s += (d ? ", " : "") + std::to_string(a.shape(d));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+}  // namespace
+
+std::vector<double> points_from_array(py::handle points) {
+  if (!py::isinstance<py::array>(points))
+    throw py::type_error("points must be a numpy array of shape (N, 3), dtype float64; got " +
+                         std::string(py::str(py::type::handle_of(points).attr("__name__"))));
+  const auto a = py::reinterpret_borrow<py::array>(points);
+  if (!py::array_t<double>::check_(a))
+    throw py::type_error("points must have dtype float64, got " + std::string(py::str(a.dtype())) +
+                         " (use points.astype(numpy.float64))");
+  if (a.ndim() != 2 || a.shape(1) != kCoordinates)
+    throw py::value_error("points must have shape (N, 3), got " + shape_text(a));
+  const auto rows = py::reinterpret_borrow<py::array_t<double>>(a).unchecked<2>();  // honours strides
+  std::vector<double> xyz(static_cast<size_t>(rows.shape(0) * kCoordinates));
+  for (py::ssize_t i = 0; i < rows.shape(0); ++i)
+    for (py::ssize_t k = 0; k < kCoordinates; ++k)
+      xyz[static_cast<size_t>(i * kCoordinates + k)] = rows(i, k);
+  return xyz;
+}
+
+py::array_t<double> array_from_points(const std::vector<double>& xyz) {
+  const auto n = static_cast<py::ssize_t>(xyz.size() / kCoordinates);
+  py::array_t<double> out({n, kCoordinates});
+  std::copy(xyz.begin(), xyz.begin() + n * kCoordinates, out.mutable_data());
+  return out;
+}
+
+py::array_t<double> pose_matrix(const Pose& p) {
+  py::array_t<double> m({4, 4});
+  auto w = m.mutable_unchecked<2>();
+  for (py::ssize_t r = 0; r < 3; ++r) {
+    for (py::ssize_t c = 0; c < 3; ++c) w(r, c) = static_cast<double>(p.rotation[3 * r + c]);
+    w(r, 3) = p.translation[r];
+    w(3, r) = 0.0;
+  }
+  w(3, 3) = 1.0;
+  return m;
+}
+
+}  // namespace spinhash::python

@@ -1,0 +1,130 @@
+#include "py_result.hpp"
+
+#include <string>
+
+#include "bindings.hpp"
+#include "pipeline/recognition_session.hpp"
+#include "pipeline/status_word.hpp"
+#include "points.hpp"
+#include "spinhash/config_fields.h"
+
+namespace py = pybind11;
+
+namespace spinhash::python {
+namespace {
+
+py::object stat_value(bool v) { return py::bool_(v); }
+py::object stat_value(uint32_t v) { return py::int_(v); }
+py::object stat_value(uint64_t v) { return py::int_(v); }
+
+// Every entry of SPINHASH_STATS_FIELDS, under its JSON key.
+py::dict stats_dict(const RecognitionStats& st) {
+  py::dict d;
+#define SPINHASH_PY_STAT(kind, name, member, json) d[json] = stat_value(st.member);
+  SPINHASH_STATS_FIELDS(SPINHASH_PY_STAT)
+#undef SPINHASH_PY_STAT
+  return d;
+}
+
+py::list ranking_list(const Database& db, const std::vector<RankedModel>& ranking) {
+  py::list out;
+  for (const RankedModel& m : ranking)
+    out.append(py::make_tuple(pipeline::model_name(db, m.model), static_cast<double>(m.score)));
+  return out;
+}
+
+py::object best_pose(const std::vector<RankedModel>& ranking) {
+  if (ranking.empty() || !ranking[0].has_pose) return py::none();
+  return pose_matrix(ranking[0].pose);
+}
+
+}  // namespace
+
+ResultCopy copy_result(const Result& r, double time_ms) {
+  ResultCopy c;
+  c.result = r;
+  c.result.ranking = nullptr;
+  if (r.ranking != nullptr) c.ranking.assign(r.ranking, r.ranking + r.ranking_count);
+  c.time_ms = time_ms;
+  return c;
+}
+
+PyResult make_result(const Database& db, const ResultCopy& r) {
+  PyResult out;
+  out.status = pipeline::status_word(r.result.status);
+  out.error = r.result.status == Status::kOk ? py::object(py::none()) : py::str(status_name(r.result.status));
+  out.ranking = ranking_list(db, r.ranking);
+  out.pose = best_pose(r.ranking);
+  out.confident = r.result.confident;
+  out.stats = stats_dict(r.result.stats);
+  out.time_ms = r.time_ms;
+  return out;
+}
+
+PySceneObject make_scene_object(const Database& db, const SceneObjectCopy& c) {
+  const SceneObject& o = c.object;
+  PySceneObject out;
+  out.kind = object_kind_name(o.kind);
+  out.status = pipeline::status_word(o.status);
+  const bool ranked = !c.ranking.empty();
+  out.model = ranked ? py::object(py::str(pipeline::model_name(db, c.ranking[0].model))) : py::none();
+  out.score = ranked ? py::object(py::float_(static_cast<double>(c.ranking[0].score))) : py::none();
+  out.ranking = ranking_list(db, c.ranking);
+  out.pose = best_pose(c.ranking);
+  out.confident = o.confident;
+  out.points = o.points;
+  out.center = py::make_tuple(o.center[0], o.center[1], o.center[2]);
+  out.extent = py::make_tuple(static_cast<double>(o.extent[0]), static_cast<double>(o.extent[1]),
+                              static_cast<double>(o.extent[2]));
+  out.heading_deg = static_cast<double>(o.heading_deg);
+  return out;
+}
+
+void bind_result(py::module_& m) {
+  py::class_<PyResult>(m, "Result", "One recognition: the fields of the CLI's JSON line.")
+      .def_readonly("status", &PyResult::status,
+                    "'ok', 'empty_cloud', 'not_enough_features', ... (as the CLI)")
+      .def_readonly("error", &PyResult::error, "why, when status is not 'ok'; else None")
+      .def_readonly("ranking", &PyResult::ranking, "[(model name, score), ...], best first")
+      .def_readonly("pose", &PyResult::pose,
+                    "4x4 float64, model frame -> query frame, of the best model; None without one")
+      .def_readonly("confident", &PyResult::confident, "the best model explains enough of the query")
+      .def_readonly("stats", &PyResult::stats, "the CLI's \"stats\" object as a dict")
+      .def_readonly("time_ms", &PyResult::time_ms, "wall time of the recognition, ms")
+      .def_property_readonly(
+          "model",
+          [](const PyResult& r) -> py::object {
+            if (r.ranking.empty()) return py::none();
+            return py::tuple(r.ranking[0])[size_t{0}];  // a bare 0 would be a null const char* key
+          },
+          "the best model's name, or None")
+      .def("__repr__", [](const PyResult& r) {
+        std::string best = r.ranking.empty() ? "None" : std::string(py::repr(r.ranking[0]));
+        return "spinhash.Result(status=" + std::string(py::repr(r.status)) + ", best=" + best +
+               ", confident=" + (r.confident ? "True" : "False") + ")";
+      });
+  py::class_<PySceneObject>(m, "SceneObject",
+                            "One object of a tile: the fields of a line of `spinhash scene`.")
+      .def_readonly("kind", &PySceneObject::kind,
+                    "'vehicle', 'too small', 'too large', 'not vehicle-shaped', 'unknown'")
+      .def_readonly("status", &PySceneObject::status, "status of its recognition ('ok' when not recognised)")
+      .def_readonly("model", &PySceneObject::model, "best model's name (vehicles), else None")
+      .def_readonly("score", &PySceneObject::score, "best model's score, else None")
+      .def_readonly("ranking", &PySceneObject::ranking, "[(model name, score), ...], best first")
+      .def_readonly("pose", &PySceneObject::pose, "4x4 float64 of the best model, or None")
+      .def_readonly("confident", &PySceneObject::confident,
+                    "a confident recognition that fits the object's size")
+      .def_readonly("points", &PySceneObject::points, "points in the object")
+      .def_readonly("center", &PySceneObject::center, "(x, y, z): footprint centre, z mid-height")
+      .def_readonly("extent", &PySceneObject::extent, "(length, width, height above terrain), m")
+      .def_readonly("heading_deg", &PySceneObject::heading_deg,
+                    "direction of the length axis, degrees from +x")
+      .def("__repr__", [](const PySceneObject& o) {
+        return "spinhash.SceneObject(kind=" + std::string(py::repr(o.kind)) +
+               ", model=" + std::string(py::repr(o.model)) +
+               ", confident=" + (o.confident ? "True" : "False") + ", points=" + std::to_string(o.points) +
+               ")";
+      });
+}
+
+}  // namespace spinhash::python

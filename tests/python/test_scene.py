@@ -1,0 +1,73 @@
+"""spinhash.SceneRecognizer answers a tile as `spinhash scene` prints it:
+two vehicles scanned with their ground, side by side."""
+import numpy as np
+import pytest
+
+import spinhash
+from conftest import json_lines, run_cli
+
+SHIFT_X = 30.0  # m between the two scans: their 24 m ground squares do not overlap
+
+
+@pytest.fixture(scope="module")
+def tile(fleet, tmp_path_factory):
+    """A van and a sedan on their scanned ground, as one georeferenced tile in a text file."""
+    parts = []
+    for k, model in enumerate(("van-00", "sedan-00")):
+        scan = fleet.scan(model, f"tile-{model}.las", "--ground", 12, "--random-pose", "--seed", 3 + k,
+                          "--noise", 0.03, "--offset", 500000, 4000000, 100)
+        part = spinhash.read_cloud(scan)
+        part[:, 0] += k * SHIFT_X
+        parts.append(part)
+    points = np.vstack(parts)
+    path = tmp_path_factory.mktemp("scene") / "tile.xyz"
+    np.savetxt(path, points, fmt="%.17g")
+    return path, spinhash.read_cloud(path)
+
+
+def test_the_scene_matches_the_cli(fleet, tile):
+    path, points = tile
+    lines = json_lines(run_cli("scene", "--db", fleet.db, path))
+    scene = spinhash.SceneRecognizer(spinhash.Database(fleet.db))
+    objects = scene.recognize(points)
+    assert scene.last_status == "ok"
+    assert len(objects) == len(lines) >= 2
+    for obj, line in zip(objects, lines):
+        assert (obj.kind, obj.status, obj.model, obj.confident, obj.points) == \
+            (line["kind"], line["status"], line["model"], line["confident"], line["points"])
+        assert [name for name, _ in obj.ranking] == [entry["model"] for entry in line["ranking"]]
+        for (_, score), entry in zip(obj.ranking, line["ranking"]):
+            assert score == pytest.approx(entry["score"], rel=1e-6)
+        np.testing.assert_allclose(obj.center, line["center"], rtol=0, atol=1e-6)
+        np.testing.assert_allclose(obj.extent, line["extent"], rtol=0, atol=1e-3)  # the CLI prints 4 digits
+        if line["pose"] is None:
+            assert obj.pose is None
+        else:
+            np.testing.assert_allclose(obj.pose, np.reshape(line["pose"], (4, 4)), rtol=0, atol=1e-6)
+    vehicles = {obj.model for obj in objects if obj.kind == "vehicle" and obj.confident}
+    assert vehicles == {"van-00", "sedan-00"}
+    assert scene.last_stats["points_ground"] > len(points) // 3
+
+
+def test_scene_settings_and_refusals(fleet, tile):
+    _, points = tile
+    db = spinhash.Database(fleet.db)
+    default = spinhash.SceneRecognizer(db)
+    assert default.config.ground_clearance == 0.0  # as `spinhash scene`: the terrain classifier takes the ground
+    assert (default.top_n, default.max_tile_points, default.max_objects) == (5, 300000, 256)
+    assert spinhash.SceneRecognizer(db, ground_clearance=0.2, seed=3).config.seed == 3
+    top_two = spinhash.SceneRecognizer(db, top_n=2, mode="bran").recognize(points)
+    assert all(len(obj.ranking) <= 2 for obj in top_two)
+    small = spinhash.SceneRecognizer(db, max_tile_points=1000)
+    with pytest.raises(ValueError, match="scene: too_many_points"):
+        small.recognize(points)
+    assert small.last_status == "too_many_points"
+    with pytest.warns(RuntimeWarning, match="too_many_objects"):
+        one = spinhash.SceneRecognizer(db, max_objects=1).recognize(points)
+    assert len(one) == 1
+    with pytest.raises(ValueError, match="top_n is out of range"):
+        spinhash.SceneRecognizer(db, top_n=0)
+    with pytest.raises(ValueError, match="sigma must be in"):
+        spinhash.SceneRecognizer(db, sigma=-1.0)
+    empty = spinhash.SceneRecognizer(db)
+    assert empty.recognize(np.zeros((0, 3))) == [] and empty.last_status == "empty_cloud"
