@@ -37,12 +37,12 @@ int run_recognize(const RecognizeArgs& a) {
   }
   int exit_code = kExitOk;
   for (const std::string& q : a.queries) {
-    const std::string name = std::filesystem::path(q).stem().string();
+    const std::string name = host::cloud_name(q);
     std::vector<double> xyz;
     if (!host::read_cloud(q, &xyz, &error)) {
       // An unreadable file still gets its line, so readers can pair lines with queries.
-      std::printf("{\"query\":%s,\"status\":\"unreadable\",\"error\":%s,\"ranking\":[],\"pose\":null}\n",
-                  json_string(name).c_str(), json_string(error).c_str());
+      std::printf("{\"query\":%s,\"status\":\"unreadable\",\"error\":%s,\"ranking\":[],\"pose\":null,%s}\n",
+                  json_string(name).c_str(), json_string(error).c_str(), json_version_member().c_str());
       std::fprintf(stderr, "spinhash recognize: %s\n", error.c_str());  // the reader names the file
       exit_code = kExitCheckFailed;
       continue;
@@ -63,9 +63,12 @@ void add_recognize_command(CLI::App& app, int* exit_code) {
       app.add_subcommand("recognize", "recognise point clouds (PLY or x y z text) against a database");
   cmd->add_option("--db", a->db_path, "database file")->required();
   cmd->add_option("--top", a->top, "models listed per query (default: all that got a score)");
-  cmd->add_option("queries", a->queries, "point cloud files")->required();
+  cmd->add_option("queries", a->queries, "point cloud files ('-': stdin)")->required();
   add_recognizer_flags(cmd, &a->config);
-  cmd->callback([a, exit_code]() { *exit_code = run_recognize(*a); });
+  cmd->callback([a, exit_code]() {
+    refuse_repeated_stdin(a->queries);
+    *exit_code = run_recognize(*a);
+  });
 }
 
 }  // namespace spinhash::cli

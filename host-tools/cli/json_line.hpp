@@ -4,7 +4,12 @@
 
 namespace spinhash::cli {
 
-std::string json_string(const std::string& s);      // quoted and escaped
+// Quoted and escaped. Text that is not valid UTF-8 (file names are bytes on
+// POSIX) gets U+FFFD for each byte that does not start a valid sequence, so
+// every line stays valid JSON.
+std::string json_string(const std::string& s);
 std::string json_number(double v, int digits = 9);  // null for NaN / infinity
+// `"version":"X.Y.Z"` (pipeline/version.hpp): the last member of every JSON line.
+std::string json_version_member();
 
 }  // namespace spinhash::cli
