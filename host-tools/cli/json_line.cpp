@@ -72,6 +72,22 @@ std::string json_number(double v, int digits) {
   return buf;
 }
 
+std::string json_member(const char* key, const std::string& raw_value) {
+  return json_string(key) + ":" + raw_value;
+}
+
+std::string json_object(std::initializer_list<std::string> members) {
+  std::string s = "{";
+  for (const std::string& m : members) s += (s.size() > 1 ? "," : "") + m;
+  return s + "}";
+}
+
+std::string json_array(const std::vector<std::string>& raw_values) {
+  std::string s = "[";
+  for (const std::string& v : raw_values) s += (s.size() > 1 ? "," : "") + v;
+  return s + "]";
+}
+
 std::string json_version_member() { return "\"version\":" + json_string(pipeline::version()); }
 
 }  // namespace spinhash::cli

@@ -1,6 +1,8 @@
 // Minimal JSON output for the JSON Lines of `recognize` and friends.
 #pragma once
+#include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace spinhash::cli {
 
@@ -9,6 +11,10 @@ namespace spinhash::cli {
 // every line stays valid JSON.
 std::string json_string(const std::string& s);
 std::string json_number(double v, int digits = 9);  // null for NaN / infinity
+// `"key":raw_value` and `{m1,m2,...}`: raw values are already JSON.
+std::string json_member(const char* key, const std::string& raw_value);
+std::string json_object(std::initializer_list<std::string> members);
+std::string json_array(const std::vector<std::string>& raw_values);
 // `"version":"X.Y.Z"` (pipeline/version.hpp): the last member of every JSON line.
 std::string json_version_member();
 

@@ -158,7 +158,7 @@ TEST_CASE("build names every unreadable mesh at once and writes nothing") {
             f.q(dir.file("broken-b.ply")) + " " + f.q(dir.file("flat-c.obj")));
   CHECK(r.exit_code == kExitError);
   for (const char* name : {"broken-a.obj", "broken-b.ply", "flat-c.obj"})
-    CHECK_MESSAGE(contains(r.err, name), name);
+    CHECK_MESSAGE(contains(r.err, name), std::string(name));
   CHECK(contains(r.err, "3 of 5 meshes unreadable"));
   CHECK_FALSE(fs::exists(out));
 }
