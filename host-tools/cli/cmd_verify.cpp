@@ -119,7 +119,7 @@ int run_verify(const VerifyArgs& a) {
   RecognitionSession session;
   if (!a.meshes.empty() &&
       (!load_model_meshes(a.meshes, &meshes, &error, a.quiet) || !session.init(&file.db, a.config, &error))) {
-    std::fprintf(stderr, "spinhash verify: %s\n", error.c_str());
+    print_error("verify", error);
     return kExitError;
   }
   Progress progress("verify", static_cast<uint32_t>(meshes.size()), a.quiet);

@@ -18,6 +18,9 @@ using pipeline::kExitOk;
 // usage error (CLI::ValidationError, exit 2), as stdin can be read only once.
 void refuse_repeated_stdin(const std::vector<std::string>& clouds);
 
+// A message of one or more lines on stderr, each as "spinhash COMMAND: line".
+void print_error(const char* command, const std::string& message);
+
 void add_build_command(CLI::App& app, int* exit_code);
 void add_info_command(CLI::App& app, int* exit_code);
 void add_verify_command(CLI::App& app, int* exit_code);

@@ -215,3 +215,29 @@ TEST_CASE("list_mesh_files: a file, a directory of supported files, errors") {
   CHECK(sh::list_mesh_files((dir.path() / "sub.obj").string(), &error).empty());
   CHECK(error.find("no mesh files") != std::string::npos);
 }
+
+TEST_CASE(
+    "PLY meshes through the project's reader: polygons fanned, points and lines dropped, bad faces refused") {
+  TempDir dir("mesh");
+  const std::string head =
+      "ply\nformat ascii 1.0\nelement vertex 5\nproperty double x\nproperty double y\nproperty double z\n"
+      "property uchar red\nelement face 3\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0 1\n1 0 0 1\n1 1 0 1\n0 1 0 1\n9 9 9 1\n";
+  write_bytes(dir.file("quad.ply"), head + "4 0 1 2 3\n2 0 1\n1 4\n");
+  sh::Mesh mesh;
+  std::string error;
+  REQUIRE_MESSAGE(sh::load_mesh(dir.file("quad.ply"), &mesh, &error), error);
+  CHECK(mesh.triangle_count() == 2);
+  CHECK(mesh.vertex_count() == 4);  // the unused (9, 9, 9) is not copied
+  CHECK(mesh.surface_area() == doctest::Approx(1.0));
+  write_bytes(dir.file("index.ply"), head + "4 0 1 2 7\n2 0 1\n1 4\n");
+  CHECK_FALSE(sh::load_mesh(dir.file("index.ply"), &mesh, &error));
+  CHECK_MESSAGE(error.find("out of range") != std::string::npos, error);
+  write_bytes(
+      dir.file("cloud.ply"),
+      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+      "end_header\n1 2 3\n");
+  CHECK_FALSE(sh::load_mesh(dir.file("cloud.ply"), &mesh, &error));
+  CHECK_MESSAGE(error.find("no face element") != std::string::npos, error);
+  CHECK(error.find("cloud.ply") != std::string::npos);
+}
