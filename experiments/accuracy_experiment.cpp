@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "accuracy_data.hpp"
+#include "bran_knobs.hpp"
 #include "config_text.hpp"
 #include "experiments.hpp"
 #include "lookalikes.hpp"
@@ -41,7 +42,7 @@ struct AccuracyArgs {
   uint64_t seed = 1;        // query scans
   uint64_t fleet_seed = 1;  // procedural vehicles
   uint32_t max_k = 10;
-  uint32_t transfer_models = RecognizerConfig{}.transfer_models;
+  BranKnobs bran;
   float ground_clearance = RecognizerConfig{}.ground_clearance;
   bool models_given = false;
 };
@@ -52,9 +53,9 @@ using Sessions = std::vector<std::unique_ptr<pipeline::RecognitionSession>>;
 bool open_sessions(const Database& db, const AccuracyArgs& a, const std::vector<Mode>& modes,
                    bool keep_ground, Sessions* out, std::string* error) {
   for (Mode m : modes) {
-    RecognizerConfig cfg;  // library defaults (but --transfer-models): the experiment measures them
+    RecognizerConfig cfg;  // library defaults (but the BRAN knobs): the experiment measures them
     cfg.mode = m;
-    cfg.transfer_models = a.transfer_models;
+    a.bran.apply(&cfg);
     cfg.ground_clearance = keep_ground ? 0.0f : a.ground_clearance;
     out->push_back(std::make_unique<pipeline::RecognitionSession>());
     if (!out->back()->init(&db, cfg, error)) return false;
@@ -195,10 +196,7 @@ void add_accuracy_experiment(CLI::App* parent, int* exit_code) {
                   "m above the terrain dropped with it (the recognizer's)")
       ->check(CLI::Range(0.0f, kMaxGroundClearance))
       ->capture_default_str();
-  cmd->add_option("--transfer-models", a->transfer_models,
-                  "BRAN's look-alike pose transfer (0: the paper's BRAN)")
-      ->check(CLI::Range(0u, kMaxTransferModels))
-      ->capture_default_str();
+  add_bran_knobs(cmd, &a->bran);
   cmd->callback([a, exit_code]() { *exit_code = run_accuracy(*a); });
 }
 

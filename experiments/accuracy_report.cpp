@@ -46,12 +46,17 @@ std::string pct(double p) { return num(100.0 * p, 3); }
 struct ModeSummary {
   uint32_t queries = 0, not_ok = 0, budget = 0;
   double median_ms = 0, mean_ms = 0, median_hyp = 0, mean_hyp = 0, mean_points = 0;
+  double rotation_error_deg = 0, translation_error_m = 0;  // medians over the right answers
 };
 
 ModeSummary summarise(const std::vector<const AccuracyRecord*>& rs) {
   ModeSummary s;
-  std::vector<double> ms, hyp, pts;
+  std::vector<double> ms, hyp, pts, rot, trans;
   for (const AccuracyRecord* r : rs) {
+    if (r->outcome.rank == 1 && std::isfinite(r->outcome.rotation_error_deg)) {
+      rot.push_back(r->outcome.rotation_error_deg);
+      trans.push_back(r->outcome.translation_error_m);
+    }
     ++s.queries;
     s.not_ok += r->outcome.status != Status::kOk ? 1u : 0u;
     s.budget += r->outcome.budget_exhausted ? 1u : 0u;
@@ -64,23 +69,63 @@ ModeSummary summarise(const std::vector<const AccuracyRecord*>& rs) {
   s.median_hyp = median_of(hyp);
   s.mean_hyp = mean_of(hyp);
   s.mean_points = mean_of(pts);
+  s.rotation_error_deg = rot.empty() ? NAN : median_of(rot);
+  s.translation_error_m = trans.empty() ? NAN : median_of(trans);
   return s;
 }
 
 bool write_csvs(const AccuracyRun& run, std::string* error) {
-  CsvTable per_query({"mode", "noise", "occlusion", "ground", "spacing", "model", "name", "query", "points",
-                      "status", "rank", "ms", "hypotheses", "features", "ranked", "best", "confident",
-                      "budget_exhausted"});
+  CsvTable per_query({"mode",
+                      "noise",
+                      "occlusion",
+                      "ground",
+                      "spacing",
+                      "model",
+                      "name",
+                      "query",
+                      "points",
+                      "status",
+                      "rank",
+                      "ms",
+                      "hypotheses",
+                      "features",
+                      "ranked",
+                      "best",
+                      "confident",
+                      "budget_exhausted",
+                      "trials",
+                      "score_first",
+                      "score_second",
+                      "inliers",
+                      "rotation_error_deg",
+                      "translation_error_m"});
   for (const AccuracyRecord& r : run.records) {
     const QueryCondition& c = run.conditions[r.condition];
     const Outcome& o = r.outcome;
-    per_query.add({pipeline::mode_name(run.modes[r.mode]), num(c.noise), num(c.occlusion),
-                   ground_name(c.ground), num(c.spacing), std::to_string(r.model), run.model_names[r.model],
-                   std::to_string(r.query), std::to_string(r.points), status_name(o.status),
-                   std::to_string(o.rank), num(o.ms), std::to_string(o.hypotheses),
-                   std::to_string(o.features), std::to_string(o.ranked),
-                   o.ranked ? run.model_names[o.best_model] : "", o.confident ? "1" : "0",
-                   o.budget_exhausted ? "1" : "0"});
+    per_query.add({pipeline::mode_name(run.modes[r.mode]),
+                   num(c.noise),
+                   num(c.occlusion),
+                   ground_name(c.ground),
+                   num(c.spacing),
+                   std::to_string(r.model),
+                   run.model_names[r.model],
+                   std::to_string(r.query),
+                   std::to_string(r.points),
+                   status_name(o.status),
+                   std::to_string(o.rank),
+                   num(o.ms),
+                   std::to_string(o.hypotheses),
+                   std::to_string(o.features),
+                   std::to_string(o.ranked),
+                   o.ranked ? run.model_names[o.best_model] : "",
+                   o.confident ? "1" : "0",
+                   o.budget_exhausted ? "1" : "0",
+                   std::to_string(o.trials),
+                   num(o.score_first),
+                   num(o.score_second),
+                   std::to_string(o.inliers),
+                   num(o.rotation_error_deg),
+                   num(o.translation_error_m)});
   }
   CsvTable curves({"mode", "noise", "occlusion", "ground", "spacing", "k", "p_correct_within_k", "queries"});
   CsvTable timing({"mode", "noise", "occlusion", "ground", "spacing", "queries", "not_ok", "budget_exhausted",
@@ -310,23 +355,28 @@ std::string summary(const AccuracyRun& run, const std::vector<std::string>& plot
     << " per model x " << run.query_models << " models = " << run.queries_per_model * run.query_models
     << " per condition; 3 views 45 degrees apart at 45 degrees elevation from a random side, random pose"
     << " (yaw, +-50 m), Gaussian noise along the rays, optional slab occluder; the same sides and poses under"
-    << " every condition.\n\n## P(correct model within the top k), time and hypotheses per query\n\n"
+    << " every condition.\n\n## P(correct model within the top k), time and hypotheses per query\n\nBudget "
+       "cut: queries the"
+    << " work budget stopped; pose error: medians over the right answers of the rotation's angle and the"
+    << " translation's distance from the scan's true pose.\n\n"
     << "| condition | mode |";
   std::vector<uint32_t> ks;
   for (uint32_t k : kTableKs)
     if (k <= run.max_k) ks.push_back(k);
   for (uint32_t k : ks) s << " top-" << k << " |";
-  s << " median ms | mean ms | mean hypotheses | failed |\n|---|---|";
+  s << " median ms | mean ms | median hypotheses | budget cut | pose error (deg / m) | failed |\n|---|---|";
   for (size_t i = 0; i < ks.size(); ++i) s << "---|";
-  s << "---|---|---|---|\n";
+  s << "---|---|---|---|---|---|\n";
   for (uint32_t c = 0; c < run.conditions.size(); ++c)
     for (uint32_t m = 0; m < run.modes.size(); ++m) {
       std::vector<double> curve = topk_curve(run, c, m);
       ModeSummary ms = summarise(select(run, c, m));
       s << "| " << condition_title(run.conditions[c]) << " | " << mode_title(run.modes[m]) << " |";
       for (uint32_t k : ks) s << " " << pct(curve[k - 1]) << "% |";
-      s << " " << num(ms.median_ms, 4) << " | " << num(ms.mean_ms, 4) << " | " << num(ms.mean_hyp, 4) << " | "
-        << ms.not_ok << " |\n";
+      s << " " << num(ms.median_ms, 4) << " | " << num(ms.mean_ms, 4) << " | " << num(ms.median_hyp, 4)
+        << " | " << pct(static_cast<double>(ms.budget) / std::max(1u, ms.queries)) << "% | "
+        << num(ms.rotation_error_deg, 3) << " / " << num(ms.translation_error_m, 3) << " | " << ms.not_ok
+        << " |\n";
     }
   s << target_section(run) << ground_section(run) << confidence_section(run) << "\n## Files\n\n"
     << "- `accuracy.csv`: P(correct within top k) per mode, condition and k; `curves/*.csv`: the same, one "

@@ -1,6 +1,23 @@
 #include "query_runner.hpp"
 
+#include <algorithm>
+
 namespace spinhash::experiment {
+namespace {
+
+constexpr double kRadToDeg = 57.29577951308232;
+
+void pose_errors(const Pose& p, const Eigen::Matrix4d& truth, Outcome* o) {
+  Eigen::Matrix3d r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r(i, j) = p.rotation[3 * i + j];
+  const Eigen::Matrix3d d = truth.topLeftCorner<3, 3>().transpose() * r;
+  o->rotation_error_deg = std::acos(std::clamp((d.trace() - 1.0) / 2.0, -1.0, 1.0)) * kRadToDeg;
+  const Eigen::Vector3d t(p.translation[0], p.translation[1], p.translation[2]);
+  o->translation_error_m = (t - truth.topRightCorner<3, 1>()).norm();
+}
+
+}  // namespace
 
 Outcome recognise(pipeline::RecognitionSession& session, const Query& q) {
   Result r = session.recognize(q.xyz);
@@ -11,9 +28,16 @@ Outcome recognise(pipeline::RecognitionSession& session, const Query& q) {
   o.features = r.stats.features;
   o.confident = r.confident;
   o.budget_exhausted = r.stats.budget_exhausted;
+  o.trials = r.stats.trials;
   if (r.status != Status::kOk) return o;
   o.ranked = r.ranking_count;
-  if (r.ranking_count > 0) o.best_model = r.ranking[0].model;
+  if (r.ranking_count > 0) {
+    o.best_model = r.ranking[0].model;
+    o.score_first = r.ranking[0].score;
+    o.inliers = r.ranking[0].inliers;
+    if (r.ranking[0].has_pose) pose_errors(r.ranking[0].pose, q.true_pose, &o);
+  }
+  if (r.ranking_count > 1) o.score_second = r.ranking[1].score;
   for (uint32_t i = 0; i < r.ranking_count; ++i)
     if (r.ranking[i].model == q.model) {
       o.rank = i + 1u;

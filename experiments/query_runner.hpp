@@ -1,5 +1,6 @@
 // One recognition of a simulated query and what the experiments record of it.
 #pragma once
+#include <cmath>
 #include <cstdint>
 
 #include "pipeline/recognition_session.hpp"
@@ -17,6 +18,14 @@ struct Outcome {
   uint32_t best_model = 0;  // ranked first (valid when ranked > 0)
   bool confident = false;
   bool budget_exhausted = false;
+  uint32_t trials = 0;        // doublet draws
+  float score_first = 0.0f;   // log-likelihood of the first model (valid when ranked > 0)
+  float score_second = 0.0f;  // of the runner-up (valid when ranked > 1)
+  uint32_t inliers = 0;       // of the first model
+  // Pose of the first model against the scan's true pose (NaN without a pose):
+  // the rotation's angle (degrees) and the translation's distance (m).
+  double rotation_error_deg = NAN;
+  double translation_error_m = NAN;
 };
 
 Outcome recognise(pipeline::RecognitionSession& session, const Query& q);

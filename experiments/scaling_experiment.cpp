@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "bran_knobs.hpp"
 #include "config_text.hpp"
 #include "experiments.hpp"
 #include "lookalikes.hpp"
@@ -41,7 +42,7 @@ struct ScalingArgs {
   // sizes it runs on the first few queries only (stated in the summary).
   uint32_t sran_queries_large = 10;
   uint32_t sran_large_from = 250;
-  uint32_t transfer_models = RecognizerConfig{}.transfer_models;  // BRAN (0: the paper's BRAN)
+  BranKnobs bran;
 };
 
 bool make_queries(const ScalingArgs& a, const std::vector<pipeline::ModelMesh>& meshes, uint32_t pool,
@@ -77,7 +78,7 @@ bool measure_size(const ScalingArgs& a, const std::vector<host::ModelCloud>& all
   for (uint32_t m = 0; m < run->modes.size(); ++m) {
     RecognizerConfig cfg;
     cfg.mode = run->modes[m];
-    cfg.transfer_models = a.transfer_models;
+    a.bran.apply(&cfg);
     pipeline::RecognitionSession session;
     if (!session.init(&mdb->db, cfg, error)) return false;
     run->recognizer = recognizer_text(session.config());
@@ -178,10 +179,7 @@ void add_scaling_experiment(CLI::App* parent, int* exit_code) {
   cmd->add_option("--sran-queries-large", a->sran_queries_large, "SRAN's queries at the large sizes")
       ->check(CLI::Range(1u, kMaxQueries))
       ->capture_default_str();
-  cmd->add_option("--transfer-models", a->transfer_models,
-                  "BRAN's look-alike pose transfer (0: the paper's BRAN)")
-      ->check(CLI::Range(0u, kMaxTransferModels))
-      ->capture_default_str();
+  add_bran_knobs(cmd, &a->bran);
   cmd->add_option("--sran-large-from", a->sran_large_from, "sizes from which SRAN runs fewer queries")
       ->capture_default_str();
   cmd->callback([a, exit_code]() { *exit_code = run_scaling(*a); });

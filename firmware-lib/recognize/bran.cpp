@@ -1,6 +1,8 @@
 // Batch RANSAC (section 9): candidates of every query feature from the joint
 // index, saliency-weighted doublet draws, and for each draw every candidate
-// pair of one model (the exhaustive W_k x W_l option) through the cascade.
+// pair of one model (the exhaustive W_k x W_l option) through the cascade,
+// until the evidence says the leader is found (evidence_stop.cpp) or the work
+// budget is spent.
 #include <cmath>
 
 #include "recognize/search_context.hpp"
@@ -58,7 +60,12 @@ void run_bran(SearchContext& ctx) {
     uint32_t k = 0, l = 0;
     DoubletShape shape;
     if (!draw_stable_doublet(ctx, &k, &l, &shape)) continue;
+    ++ctx.evidence.draws;
     if (!enumerate_pairs(ctx, k, l, shape, caps)) break;
+    if (evidence_says_stop(ctx)) {
+      ctx.stats.stopped_on_evidence = true;
+      break;
+    }
   }
   transfer_poses(ctx);
 }

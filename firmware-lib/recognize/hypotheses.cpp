@@ -63,6 +63,7 @@ void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose) {
     best.pose = pose;
     best.inliers = v.inliers;
     best.has_score = true;
+    note_leader(ctx, model);
   }
 }
 

@@ -209,7 +209,9 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
       config_.d_min,
       deg_to_rad(config_.theta_min_deg),
       result.stats,
-      Pcg32(config_.seed)};
+      Pcg32(config_.seed),
+      nullptr,
+      EvidenceState{}};
   switch (config_.mode) {
     case Mode::kBran: run_bran(ctx); break;
     case Mode::kSran: run_sran(ctx); break;

@@ -33,6 +33,16 @@ struct RecognizerBuffers {
   uint32_t candidate_stride = 0;        // largest W of any mode
 };
 
+// The leading model as BRAN's stop on evidence follows it (evidence_stop.cpp).
+constexpr uint32_t kNoLeader = 0xFFFFFFFFu;
+struct EvidenceState {
+  uint32_t leader = kNoLeader;
+  float leader_score = 0.0f;
+  bool leader_moved = false;   // a new leader or a better pose since the bound was computed
+  float miss_per_draw = 1.0f;  // 1 - q^2
+  uint32_t draws = 0;          // stable doublets drawn
+};
+
 struct SearchContext {
   const Database& db;
   const RecognizerConfig& cfg;
@@ -45,6 +55,7 @@ struct SearchContext {
   RecognitionStats& stats;
   Pcg32 rng;
   const float* cumulative = nullptr;  // doublet draw weights (running sums); null = uniform
+  EvidenceState evidence;
 
   Candidate* candidates_of(uint32_t feature) const {
     return buf.candidates + static_cast<size_t>(feature) * buf.candidate_stride;
@@ -83,6 +94,11 @@ void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose);
 // matched to model features (fu, fv) of `model`. false once the budget is spent.
 bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l, const DoubletShape& shape,
                    uint32_t fu, uint32_t fv, const HypothesisCaps& caps);
+
+// Records `model`'s new best score for the stop on evidence (BRAN).
+void note_leader(SearchContext& ctx, uint32_t model);
+// true once more draws would most likely not change the leader (cfg.stop_miss_probability).
+bool evidence_says_stop(SearchContext& ctx);
 
 void run_bran(SearchContext& ctx);
 // Lends the leading models' poses to the models whose boxes are nearest

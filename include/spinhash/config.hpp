@@ -99,6 +99,12 @@ struct RecognizerConfig {
   uint32_t max_hypotheses = 6000;      // poses verified: BRAN all models together, SRAN per model
   uint32_t max_pair_checks = 2000000;  // candidate pairs put through the cascade
 
+  // BRAN stops on evidence (RANSAC's termination bound): once the chance
+  // that every draw so far missed an all-correct doublet of the leading
+  // model, at its measured rate of correct candidates, is below this. 0:
+  // run to the work budget (the paper's fixed number of trials).
+  float stop_miss_probability = 0.01f;
+
   // Optional sensor position in input coordinates: normals are turned towards it.
   bool has_viewpoint = false;
   double viewpoint[3] = {0.0, 0.0, 0.0};

@@ -70,6 +70,8 @@
   X(U32, sran_trials, 0u, 0xFFFFFFFFu, "--sran-trials", "doublet draws per model (SRAN)")                    \
   X(U32, max_hypotheses, 0u, 0xFFFFFFFFu, "--max-hypotheses", "poses verified (BRAN total, SRAN per model)") \
   X(U32, max_pair_checks, 0u, 0xFFFFFFFFu, "--max-pair-checks", "candidate pairs through the cascade")       \
+  X(F32, stop_miss_probability, 0.0f, 0.5f, "--stop-miss-probability",                                       \
+    "BRAN stops once an all-correct doublet of the leader was missed with at most this chance (0: never)")   \
   X(BOOL, has_viewpoint, 0, 1, "", "set by --viewpoint")                                                     \
   X(VEC3D, viewpoint, 0, 0, "", "set by --viewpoint X Y Z: sensor position, normals turn towards it")
 
@@ -93,6 +95,7 @@
   S(U32, transferred, transferred, "transferred")                                \
   S(U32, refinements, refinements, "refinements")                                \
   S(BOOL, budget_exhausted, budget_exhausted, "budget_exhausted")                \
+  S(BOOL, stopped_on_evidence, stopped_on_evidence, "stopped_on_evidence")       \
   S(BOOL, bucket_scan_truncated, bucket_scan_truncated, "bucket_scan_truncated") \
   S(U64, workspace_used, workspace_used, "workspace_used")
 

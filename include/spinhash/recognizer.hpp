@@ -41,6 +41,7 @@ struct RecognitionStats {
   uint32_t transferred = 0;            // look-alike pose transfers verified (BRAN, <= 4 x transfer_models)
   uint32_t refinements = 0;            // least-squares pose refinements verified
   bool budget_exhausted = false;       // the work budget cut recognition short
+  bool stopped_on_evidence = false;    // BRAN stopped before the budget (stop_miss_probability)
   bool bucket_scan_truncated = false;  // some LSH lookups hit max_bucket_scan
   size_t workspace_used = 0;
 };

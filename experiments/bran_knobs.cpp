@@ -1,0 +1,18 @@
+#include "bran_knobs.hpp"
+
+#include "spinhash/limits.hpp"
+
+namespace spinhash::experiment {
+
+void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs) {
+  cmd->add_option("--transfer-models", knobs->transfer_models,
+                  "BRAN's look-alike pose transfer (0: the paper's BRAN)")
+      ->check(CLI::Range(0u, kMaxTransferModels))
+      ->capture_default_str();
+  cmd->add_option("--stop-miss-probability", knobs->stop_miss_probability,
+                  "BRAN's stop on evidence (0: the paper's fixed trials)")
+      ->check(CLI::Range(0.0f, 0.5f))
+      ->capture_default_str();
+}
+
+}  // namespace spinhash::experiment

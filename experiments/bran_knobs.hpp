@@ -1,0 +1,21 @@
+// BRAN's additions to the paper that the experiments switch (--transfer-models,
+// --stop-miss-probability), so one run can compare them with the paper's BRAN.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include "spinhash/config.hpp"
+
+namespace spinhash::experiment {
+
+struct BranKnobs {
+  uint32_t transfer_models = RecognizerConfig{}.transfer_models;
+  float stop_miss_probability = RecognizerConfig{}.stop_miss_probability;
+  void apply(RecognizerConfig* cfg) const {
+    cfg->transfer_models = transfer_models;
+    cfg->stop_miss_probability = stop_miss_probability;
+  }
+};
+
+void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs);
+
+}  // namespace spinhash::experiment
