@@ -87,7 +87,11 @@ bool parse_field(std::string_view field, Separator s, double* value, std::string
   const char* end = field.data() + field.size();
   const auto result = std::from_chars(field.data(), end, *value);
   if (field.empty() || result.ec != std::errc() || result.ptr != end) {
-    if (error) *error = "not a number: " + quoted(field);
+    if (error)
+      *error = "not a number: " + quoted(field) +
+               (field.find(',') != std::string_view::npos
+                    ? " (decimal commas are read only where ';' or tab separates)"
+                    : "");
     return false;
   }
   return true;

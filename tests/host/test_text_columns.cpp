@@ -55,6 +55,7 @@ TEST_CASE("text clouds: what could be read two ways is refused with a clear mess
   // Commas and spaces both between values: decimal commas or separators?
   check_refused("1,5 2,5 3,5\n", "ambiguous");
   check_refused("x,y,z\n1,5 2,5 3,5\n", "ambiguous");
+  check_refused("x y z\n1,5 2,5 3,5\n", "decimal commas are read only where");  // spaces: '.' only
   check_refused("1.000,5;2;3\n", "decimal");         // a point and a comma in one number
   check_refused("a,b,c\n1,2,3\n", "no x, y and z");  // a header without the coordinates
   check_refused("id,x,y\n1,2,3\n", "no x, y and z");
