@@ -1,5 +1,5 @@
-// spinhash recognize --db DB.shdb [--mode bran|sran|sind] [--top N] QUERY...
-// One JSON object per query per line on stdout; progress and errors on stderr.
+// spinhash recognize --db DB.shdb [--mode bran|sran|sind] [--top N] [--overlay-out F.ply] [--picture-out
+// F.png] QUERY... One JSON object per query per line on stdout; progress and errors on stderr.
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
@@ -101,8 +101,8 @@ int run_recognize(const RecognizeArgs& a) {
 
 void add_recognize_command(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<RecognizeArgs>();
-  CLI::App* cmd =
-      app.add_subcommand("recognize", "recognise point clouds (PLY or x y z text) against a database");
+  CLI::App* cmd = app.add_subcommand(
+      "recognize", "recognise point clouds (PLY, LAS or text; '-': stdin) against a database");
   cmd->add_option("--db", a->db_path, "database file")->required();
   cmd->add_option("--top", a->top, "models listed per query (default: all that got a score)");
   cmd->add_option(
