@@ -1,5 +1,6 @@
-// spinhash recognize --db DB.shdb [--mode bran|sran|sind] [--top N] [--overlay-out F.ply] [--picture-out
-// F.png] QUERY... One JSON object per query per line on stdout; progress and errors on stderr.
+// spinhash recognize --db DB.shdb [--mode bran|sran|sind] [--top N]
+//                    [--overlay-out F.ply] [--picture-out F.png] QUERY...
+// One JSON object per query per line on stdout; progress and errors on stderr.
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
