@@ -163,6 +163,23 @@ TEST_CASE("build names every unreadable mesh at once and writes nothing") {
   CHECK_FALSE(fs::exists(out));
 }
 
+TEST_CASE("build takes a generated binary PLY vehicle whose first body byte is a line end") {
+  const Fixture& f = fx();
+  TempDir dir("cli-papercuts-ply");
+  const std::string meshes = dir.file("ply");
+  REQUIRE(f.run("generate --count 1 --format ply -o " + f.q(meshes)).exit_code == kExitOk);
+  const std::string mesh = fs::directory_iterator(meshes)->path().string();
+  std::string bytes = read_bytes(mesh);
+  const size_t body = bytes.find("end_header\n");
+  REQUIRE(body != std::string::npos);
+  bytes[body + 11] = '\n';  // the low byte of the first x: moves it by about 1e-7 of itself
+  write_bytes(mesh, bytes);
+  const CliRun r = f.run("build --quiet -o " + f.q(dir.file("ply.shdb")) + " " + f.q(meshes));
+  INFO(r.err);
+  CHECK(r.exit_code == kExitOk);  // Assimp 5.2.5: "mIndices[0] is out of range"
+  CHECK(fs::exists(dir.file("ply.shdb")));
+}
+
 namespace {
 
 // The overlay PLY: binary little-endian double x y z, uchar red green blue.
