@@ -25,9 +25,12 @@ int run_build(const BuildArgs& a) {
   std::string error;
   std::vector<ModelMesh> meshes;
   BuildSummary summary;
-  if (!load_model_meshes(a.inputs, &meshes, &error, a.settings.quiet) ||
-      !build_database_file(meshes, a.settings, a.output, &summary, &error)) {
-    std::fprintf(stderr, "spinhash build: %s\n", error.c_str());
+  if (!load_model_meshes(a.inputs, &meshes, &error, a.settings.quiet)) {
+    print_error("build", error + "; " + a.output + " not written");
+    return kExitError;
+  }
+  if (!build_database_file(meshes, a.settings, a.output, &summary, &error)) {
+    print_error("build", error);
     return kExitError;
   }
   std::fprintf(

@@ -1,5 +1,7 @@
-// spinhash recognize --db DB.shdb [--mode bran|sran|sind] [--top N] QUERY...
+// spinhash recognize --db DB.shdb [--mode bran|sran|sind] [--top N]
+//                    [--overlay-out F.ply] [--picture-out F.png] QUERY...
 // One JSON object per query per line on stdout; progress and errors on stderr.
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -8,6 +10,7 @@
 #include "cli/json_line.hpp"
 #include "cli/result_json.hpp"
 #include "cloud/cloud_reader.hpp"
+#include "pipeline/answer_overlay.hpp"
 #include "pipeline/database_file.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/recognizer_flags.hpp"
@@ -23,9 +26,45 @@ namespace {
 struct RecognizeArgs {
   std::string db_path;
   std::vector<std::string> queries;
-  uint32_t top = 0;  // 0: every model that got a score
+  uint32_t top = 0;         // 0: every model that got a score
+  std::string overlay_out;  // FILE.ply: the query and the posed model, coloured
+  std::string picture_out;  // FILE.png: the same, top-down and side-on
   RecognizerConfig config;
 };
+
+// FILE.ext for one query; FILE-NAME.ext for each of several.
+std::string output_for(const std::string& file, const std::string& query_name, size_t queries) {
+  if (queries == 1) return file;
+  const std::filesystem::path p(file);
+  return (p.parent_path() / (p.stem().string() + "-" + query_name + p.extension().string())).string();
+}
+
+// The overlay and picture of one answer, when asked for; false with *error.
+bool write_answer_views(const RecognizeArgs& a, const std::string& name, const Database& db,
+                        const std::vector<double>& xyz, const Result& r, std::string* error) {
+  if (a.overlay_out.empty() && a.picture_out.empty()) return true;
+  const pipeline::AnswerOverlay o = pipeline::make_answer_overlay(db, xyz, r);
+  if (o.model.empty())
+    std::fprintf(stderr,
+                 "spinhash recognize: %s: no posed model to show; the overlay holds the query alone\n",
+                 name.c_str());
+  const size_t n = a.queries.size();
+  return (a.overlay_out.empty() ||
+          pipeline::write_overlay_ply(output_for(a.overlay_out, name, n), o, error)) &&
+         (a.picture_out.empty() ||
+          pipeline::write_overlay_picture(output_for(a.picture_out, name, n), name, o, error));
+}
+
+// A CLI11 check that a file name ends in `extension` (any case).
+CLI::Validator extension_check(const std::string& extension) {
+  return CLI::Validator(
+      [extension](std::string& path) {
+        std::string ext = std::filesystem::path(path).extension().string();
+        for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        return ext == extension ? std::string() : "must end in " + extension + ": " + path;
+      },
+      "FILE" + extension);
+}
 
 int run_recognize(const RecognizeArgs& a) {
   DatabaseFile file;
@@ -37,12 +76,12 @@ int run_recognize(const RecognizeArgs& a) {
   }
   int exit_code = kExitOk;
   for (const std::string& q : a.queries) {
-    const std::string name = std::filesystem::path(q).stem().string();
+    const std::string name = host::cloud_name(q);
     std::vector<double> xyz;
     if (!host::read_cloud(q, &xyz, &error)) {
       // An unreadable file still gets its line, so readers can pair lines with queries.
-      std::printf("{\"query\":%s,\"status\":\"unreadable\",\"error\":%s,\"ranking\":[],\"pose\":null}\n",
-                  json_string(name).c_str(), json_string(error).c_str());
+      std::printf("{\"query\":%s,\"status\":\"unreadable\",\"error\":%s,\"ranking\":[],\"pose\":null,%s}\n",
+                  json_string(name).c_str(), json_string(error).c_str(), json_version_member().c_str());
       std::fprintf(stderr, "spinhash recognize: %s\n", error.c_str());  // the reader names the file
       exit_code = kExitCheckFailed;
       continue;
@@ -51,6 +90,10 @@ int run_recognize(const RecognizeArgs& a) {
     std::printf("%s\n", result_json(name, file.db, r, a.top, session.last_ms()).c_str());
     std::fflush(stdout);  // a line per query as soon as it is known
     if (r.status != Status::kOk) exit_code = kExitCheckFailed;
+    if (!write_answer_views(a, name, file.db, xyz, r, &error)) {
+      std::fprintf(stderr, "spinhash recognize: %s\n", error.c_str());
+      exit_code = kExitError;
+    }
   }
   return exit_code;
 }
@@ -59,13 +102,25 @@ int run_recognize(const RecognizeArgs& a) {
 
 void add_recognize_command(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<RecognizeArgs>();
-  CLI::App* cmd =
-      app.add_subcommand("recognize", "recognise point clouds (PLY or x y z text) against a database");
+  CLI::App* cmd = app.add_subcommand(
+      "recognize", "recognise point clouds (PLY, LAS or text; '-': stdin) against a database");
   cmd->add_option("--db", a->db_path, "database file")->required();
   cmd->add_option("--top", a->top, "models listed per query (default: all that got a score)");
-  cmd->add_option("queries", a->queries, "point cloud files")->required();
+  cmd->add_option(
+         "--overlay-out", a->overlay_out,
+         "PLY of the query (grey-blue) and the best model's points in its pose (orange), georeferenced; "
+         "several queries: FILE-NAME.ply each")
+      ->check(extension_check(".ply"));
+  cmd->add_option("--picture-out", a->picture_out,
+                  "PNG of the same, top-down and side-on, titled with the model and its confidence; "
+                  "several queries: FILE-NAME.png each")
+      ->check(extension_check(".png"));
+  cmd->add_option("queries", a->queries, "point cloud files ('-': stdin)")->required();
   add_recognizer_flags(cmd, &a->config);
-  cmd->callback([a, exit_code]() { *exit_code = run_recognize(*a); });
+  cmd->callback([a, exit_code]() {
+    refuse_repeated_stdin(a->queries);
+    *exit_code = run_recognize(*a);
+  });
 }
 
 }  // namespace spinhash::cli

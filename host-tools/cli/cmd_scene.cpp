@@ -84,7 +84,8 @@ std::string object_json(const std::string& tile, uint32_t k, const Database& db,
   s += "],\"pose\":" + (ranked && o.ranking[0].has_pose ? pose_json(o.ranking[0].pose) : std::string("null"));
   const double extent[3] = {o.extent[0], o.extent[1], o.extent[2]};
   s += ",\"points\":" + std::to_string(o.points) + ",\"center\":" + triple_json(o.center, 15) +
-       ",\"extent\":" + triple_json(extent, 4) + ",\"time_ms\":" + json_number(time_ms, 6) + "}";
+       ",\"extent\":" + triple_json(extent, 4) + ",\"time_ms\":" + json_number(time_ms, 6) + "," +
+       json_version_member() + "}";
   return s;
 }
 
@@ -100,7 +101,7 @@ int run_scene(const SceneArgs& a) {
   pipeline::Progress progress("scene", static_cast<uint32_t>(a.tiles.size()));
   for (size_t t = 0; t < a.tiles.size(); ++t) {
     const std::string& path = a.tiles[t];
-    const std::string name = std::filesystem::path(path).stem().string();
+    const std::string name = host::cloud_name(path);
     std::vector<double> xyz;
     if (!host::read_cloud(path, &xyz, &error)) {
       std::fprintf(stderr, "spinhash scene: %s\n", error.c_str());  // the reader names the file
@@ -141,9 +142,12 @@ void add_scene_command(CLI::App& app, int* exit_code) {
   cmd->add_option("--picture-out", a->picture_dir,
                   "folder for a top-down PNG per tile: objects outlined and labelled (green: confident)")
       ->check(CLI::ExistingDirectory);
-  cmd->add_option("tiles", a->tiles, "point cloud files")->required();
+  cmd->add_option("tiles", a->tiles, "point cloud files ('-': stdin)")->required();
   pipeline::add_recognizer_flags(cmd, &a->config.recognizer);
-  cmd->callback([a, exit_code]() { *exit_code = run_scene(*a); });
+  cmd->callback([a, exit_code]() {
+    refuse_repeated_stdin(a->tiles);
+    *exit_code = run_scene(*a);
+  });
 }
 
 }  // namespace spinhash::cli

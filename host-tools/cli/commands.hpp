@@ -3,6 +3,8 @@
 //   kExitOk, kExitError or kExitCheckFailed (pipeline/exit_codes.hpp).
 #pragma once
 #include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
 
 #include "pipeline/exit_codes.hpp"
 
@@ -11,6 +13,13 @@ namespace spinhash::cli {
 using pipeline::kExitCheckFailed;
 using pipeline::kExitError;
 using pipeline::kExitOk;
+
+// Clouds named on a command line may include "-" (stdin) once: a second is a
+// usage error (CLI::ValidationError, exit 2), as stdin can be read only once.
+void refuse_repeated_stdin(const std::vector<std::string>& clouds);
+
+// A message of one or more lines on stderr, each as "spinhash COMMAND: line".
+void print_error(const char* command, const std::string& message);
 
 void add_build_command(CLI::App& app, int* exit_code);
 void add_info_command(CLI::App& app, int* exit_code);

@@ -53,7 +53,7 @@ std::string result_json(const std::string& query, const Database& db, const Resu
   s += r.ranking_count > 0 && r.ranking[0].has_pose ? pose_json(r.ranking[0].pose) : std::string("null");
   s += std::string(",\"confident\":") + (r.confident ? "true" : "false");
   s += ",\"time_ms\":" + json_number(time_ms, 4) + ",\"hypotheses\":" + std::to_string(r.stats.hypotheses);
-  s += ",\"stats\":" + stats_json(r.stats) + "}";
+  s += ",\"stats\":" + stats_json(r.stats) + "," + json_version_member() + "}";
   return s;
 }
 

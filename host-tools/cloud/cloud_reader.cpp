@@ -5,6 +5,7 @@
 #include "cloud/ply_header.hpp"
 #include "cloud/text_cloud.hpp"
 
+#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -17,7 +18,32 @@ bool starts_with_ply_magic(const std::string& bytes) {
   return bytes.rfind("ply\n", 0) == 0 || bytes.rfind("ply\r\n", 0) == 0;
 }
 
+// All of standard input, binary; false past max_bytes.
+bool read_stdin_bytes(uint64_t max_bytes, std::string* bytes, std::string* error) {
+  constexpr std::size_t kChunk = 1 << 16;
+  bytes->clear();
+  char chunk[kChunk];
+  for (std::size_t got; (got = std::fread(chunk, 1, kChunk, stdin)) > 0;) {
+    if (bytes->size() + got > max_bytes) {
+      if (error)
+        *error =
+            std::string(kStdinName) + " is larger than the limit of " + std::to_string(max_bytes) + " bytes";
+      return false;
+    }
+    bytes->append(chunk, got);
+  }
+  if (std::ferror(stdin)) {
+    if (error) *error = std::string("cannot read ") + kStdinName;
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
+
+std::string cloud_name(const std::string& path) {
+  return path == kStdinPath ? kStdinName : std::filesystem::path(path).stem().string();
+}
 
 bool parse_cloud(const std::string& bytes, std::vector<double>* xyz, std::string* error) {
   if (xyz == nullptr) {
@@ -86,9 +112,12 @@ bool read_cloud(const std::string& path, std::vector<double>* xyz, std::string* 
   try {
     std::string bytes;
     std::string why;
-    if (!read_file_bytes(path, kMaxCloudFileBytes, &bytes, error)) return false;
+    const bool from_stdin = path == kStdinPath;
+    if (from_stdin ? !read_stdin_bytes(kMaxCloudFileBytes, &bytes, error)
+                   : !read_file_bytes(path, kMaxCloudFileBytes, &bytes, error))
+      return false;
     if (parse_cloud(bytes, xyz, &why)) return true;
-    if (error) *error = path + ": " + why;
+    if (error) *error = (from_stdin ? std::string(kStdinName) : path) + ": " + why;
   } catch (const std::exception& e) {
     if (error) *error = path + ": " + e.what();
   }

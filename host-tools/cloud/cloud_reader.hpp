@@ -21,7 +21,15 @@ namespace spinhash::host {
 // Largest cloud file read (it is read whole into memory).
 constexpr uint64_t kMaxCloudFileBytes = 4ull << 30;
 
-// Reads x y z per point. A file starting with "LASF" is LAS, one starting
+// The path that means standard input ("-"), and the name such a cloud goes by.
+constexpr const char* kStdinPath = "-";
+constexpr const char* kStdinName = "stdin";
+
+// The name of a cloud in JSON and messages: the file stem, or "stdin" for "-".
+std::string cloud_name(const std::string& path);
+
+// Reads x y z per point ("-": all of standard input, binary, up to
+// kMaxCloudFileBytes). A file starting with "LASF" is LAS, one starting
 // with the "ply" line PLY, anything else text. NaN coordinates are passed through (the recognizer
 // drops and counts them). A PLY with zero vertices is valid and gives an
 // empty cloud; a text file without a point is an error. Returns false with

@@ -47,6 +47,36 @@ bool check_vertex(const Header& h, std::size_t* vertex, std::vector<int>* axis, 
   return true;
 }
 
+// Where the body's values go: the vertex element's x y z, and optionally the
+// items of one list property (a mesh's face indices).
+struct Targets {
+  std::size_t vertex = 0;
+  std::vector<int> axis;  // axis (0..2) of each vertex property, or -1
+  std::vector<double>* xyz = nullptr;
+  std::size_t list_element = static_cast<std::size_t>(-1);
+  std::size_t list_property = 0;
+  std::vector<double>* list_items = nullptr;
+
+  std::vector<double>* items_of(std::size_t element, std::size_t property) const {
+    return element == list_element && property == list_property ? list_items : nullptr;
+  }
+};
+
+// The face element's index list ("vertex_indices" or "vertex_index"), if any.
+bool find_face_list(const Header& h, Targets* t, std::string* error) {
+  for (std::size_t i = 0; i < h.elements.size(); ++i) {
+    if (h.elements[i].name != "face") continue;
+    int p = find_property(h.elements[i], "vertex_indices");
+    if (p < 0) p = find_property(h.elements[i], "vertex_index");
+    if (p < 0 || !h.elements[i].properties[p].is_list || !is_integer(h.elements[i].properties[p].type))
+      return fail(error, "face element has no integer list property vertex_indices");
+    t->list_element = i;
+    t->list_property = static_cast<std::size_t>(p);
+    return true;
+  }
+  return fail(error, "no face element (a point cloud, not a mesh)");
+}
+
 // ---- binary ----
 
 struct BinaryCursor {
@@ -98,8 +128,9 @@ std::size_t min_binary_size(const Element& e) {
   return size;
 }
 
-bool read_binary_property(BinaryCursor* c, const Property& p, double* value, const std::string& where,
-                          std::string* error) {
+// A list's items go to *items (count first, then the items) when items is not null.
+bool read_binary_property(BinaryCursor* c, const Property& p, double* value, std::vector<double>* items,
+                          const std::string& where, std::string* error) {
   if (!p.is_list) {
     if (c->remaining() < type_size(p.type)) return fail(error, "data truncated in " + where);
     *value = decode(p.type, c->take_bits(type_size(p.type)));
@@ -113,12 +144,20 @@ bool read_binary_property(BinaryCursor* c, const Property& p, double* value, con
   if (bytes > static_cast<double>(c->remaining())) {
     return fail(error, "data truncated in a list of " + where);
   }
-  c->pos += static_cast<std::size_t>(bytes);
+  if (items == nullptr) {
+    c->pos += static_cast<std::size_t>(bytes);
+    return true;
+  }
+  items->push_back(count);
+  for (uint64_t i = 0; i < static_cast<uint64_t>(count); ++i)
+    items->push_back(decode(p.type, c->take_bits(type_size(p.type))));
   return true;
 }
 
-bool read_binary(const std::string& bytes, const Header& h, std::size_t vertex, const std::vector<int>& axis,
-                 std::vector<double>* xyz, std::string* error) {
+bool read_binary(const std::string& bytes, const Header& h, const Targets& t, std::string* error) {
+  const std::size_t vertex = t.vertex;
+  const std::vector<int>& axis = t.axis;
+  std::vector<double>* xyz = t.xyz;
   BinaryCursor c{reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), h.data_offset,
                  h.format == Format::kBinaryBigEndian};
   for (std::size_t ei = 0; ei < h.elements.size(); ++ei) {
@@ -135,7 +174,7 @@ bool read_binary(const std::string& bytes, const Header& h, std::size_t vertex, 
     for (uint64_t n = 0; n < e.count; ++n) {
       for (std::size_t p = 0; p < e.properties.size(); ++p) {
         double value = 0.0;
-        if (!read_binary_property(&c, e.properties[p], &value, where, error)) return false;
+        if (!read_binary_property(&c, e.properties[p], &value, t.items_of(ei, p), where, error)) return false;
         if (ei == vertex && axis[p] >= 0) point[axis[p]] = value;
       }
       if (ei == vertex) xyz->insert(xyz->end(), point, point + kAxes);
@@ -182,8 +221,8 @@ bool read_ascii_value(TextCursor* c, double* value, const std::string& where, st
   return true;
 }
 
-bool read_ascii_property(TextCursor* c, const Property& p, double* value, const std::string& where,
-                         std::string* error) {
+bool read_ascii_property(TextCursor* c, const Property& p, double* value, std::vector<double>* items,
+                         const std::string& where, std::string* error) {
   if (!read_ascii_value(c, value, where, error)) return false;
   if (!p.is_list) return true;
   const double count = *value;
@@ -194,16 +233,20 @@ bool read_ascii_property(TextCursor* c, const Property& p, double* value, const 
       count != static_cast<double>(static_cast<uint64_t>(count))) {
     return fail(error, "invalid list length in " + where);
   }
+  if (items != nullptr) items->push_back(count);
   // Each item consumes a token or fails, so the loop is bounded by the file.
   for (uint64_t i = 0; i < static_cast<uint64_t>(count); ++i) {
     double item = 0.0;
     if (!read_ascii_value(c, &item, where, error)) return false;
+    if (items != nullptr) items->push_back(item);
   }
   return true;
 }
 
-bool read_ascii(const std::string& bytes, const Header& h, std::size_t vertex, const std::vector<int>& axis,
-                std::vector<double>* xyz, std::string* error) {
+bool read_ascii(const std::string& bytes, const Header& h, const Targets& t, std::string* error) {
+  const std::size_t vertex = t.vertex;
+  const std::vector<int>& axis = t.axis;
+  std::vector<double>* xyz = t.xyz;
   TextCursor c{bytes, h.data_offset};
   for (std::size_t ei = 0; ei < h.elements.size(); ++ei) {
     const Element& e = h.elements[ei];
@@ -220,7 +263,7 @@ bool read_ascii(const std::string& bytes, const Header& h, std::size_t vertex, c
     for (uint64_t n = 0; n < e.count; ++n) {
       for (std::size_t p = 0; p < e.properties.size(); ++p) {
         double value = 0.0;
-        if (!read_ascii_property(&c, e.properties[p], &value, where, error)) return false;
+        if (!read_ascii_property(&c, e.properties[p], &value, t.items_of(ei, p), where, error)) return false;
         if (ei == vertex && axis[p] >= 0) point[axis[p]] = value;
       }
       if (ei == vertex) xyz->insert(xyz->end(), point, point + kAxes);
@@ -230,17 +273,33 @@ bool read_ascii(const std::string& bytes, const Header& h, std::size_t vertex, c
   return true;
 }
 
+bool read_targets(const std::string& bytes, const Header& header, const Targets& t, std::string* error) {
+  if (header.data_offset > bytes.size()) return fail(error, "header offset beyond the file");
+  return header.format == Format::kAscii ? read_ascii(bytes, header, t, error)
+                                         : read_binary(bytes, header, t, error);
+}
+
 }  // namespace
 
 bool read_body(const std::string& bytes, const Header& header, std::vector<double>* xyz, std::string* error) {
   xyz->clear();
-  std::size_t vertex = 0;
-  std::vector<int> axis;
-  if (!check_vertex(header, &vertex, &axis, error)) return false;
-  if (header.data_offset > bytes.size()) return fail(error, "header offset beyond the file");
-  const bool ok = header.format == Format::kAscii ? read_ascii(bytes, header, vertex, axis, xyz, error)
-                                                  : read_binary(bytes, header, vertex, axis, xyz, error);
+  Targets t;
+  t.xyz = xyz;
+  const bool ok = check_vertex(header, &t.vertex, &t.axis, error) && read_targets(bytes, header, t, error);
   if (!ok) xyz->clear();
+  return ok;
+}
+
+bool read_mesh_body(const std::string& bytes, const Header& header, std::vector<double>* xyz,
+                    std::vector<double>* faces, std::string* error) {
+  xyz->clear();
+  faces->clear();
+  Targets t;
+  t.xyz = xyz;
+  t.list_items = faces;
+  const bool ok = check_vertex(header, &t.vertex, &t.axis, error) && find_face_list(header, &t, error) &&
+                  read_targets(bytes, header, t, error);
+  if (!ok) xyz->clear(), faces->clear();
   return ok;
 }
 

@@ -12,4 +12,11 @@ namespace spinhash::host::ply {
 
 bool read_body(const std::string& bytes, const Header& header, std::vector<double>* xyz, std::string* error);
 
+// A mesh: the vertices' x y z as above, and the face element's index lists
+// (property vertex_indices or vertex_index) as they are, each one's count
+// first, then its indices: "3 0 1 2 4 0 2 3 5 ...". False with *error when
+// there is no face element; index values are not checked here.
+bool read_mesh_body(const std::string& bytes, const Header& header, std::vector<double>* xyz,
+                    std::vector<double>* faces, std::string* error);
+
 }  // namespace spinhash::host::ply

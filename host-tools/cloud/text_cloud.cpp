@@ -1,44 +1,68 @@
 #include "cloud/text_cloud.hpp"
 
-#include <charconv>
+#include <cctype>
 #include <cstddef>
 #include <string_view>
+
+#include "cloud/text_fields.hpp"
 
 namespace spinhash::host {
 namespace {
 
 constexpr int kAxes = 3;
-constexpr std::size_t kMaxQuotedChars = 40;  // of a bad token, in messages
-
-bool is_separator(char ch) {
-  return ch == ' ' || ch == '\t' || ch == '\r' || ch == ',' || ch == '\v' || ch == '\f';
-}
-
-// Splits the first `wanted` tokens of a line.
-int split_tokens(std::string_view line, std::string_view* tokens, int wanted) {
-  int found = 0;
-  std::size_t pos = 0;
-  while (found < wanted) {
-    while (pos < line.size() && is_separator(line[pos])) ++pos;
-    if (pos >= line.size()) break;
-    const std::size_t start = pos;
-    while (pos < line.size() && !is_separator(line[pos])) ++pos;
-    tokens[found++] = line.substr(start, pos - start);
-  }
-  return found;
-}
-
-bool parse_number(std::string_view token, double* value) {
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  const char* end = token.data() + token.size();
-  const auto result = std::from_chars(token.data(), end, *value);
-  return !token.empty() && result.ec == std::errc() && result.ptr == end;
-}
+constexpr const char* kAxisNames[kAxes] = {"x", "y", "z"};
 
 bool fail(std::string* error, std::size_t line, const std::string& message) {
   if (error) *error = "text cloud line " + std::to_string(line) + ": " + message;
   return false;
 }
+
+bool names_axis(std::string_view field, int axis) {
+  return field.size() == 1 && std::tolower(static_cast<unsigned char>(field[0])) == kAxisNames[axis][0];
+}
+
+bool is_header(const std::vector<std::string_view>& fields, text::Separator s) {
+  for (std::string_view f : fields) {
+    double ignored = 0.0;
+    if (text::parse_field(f, s, &ignored, nullptr)) return false;
+  }
+  return true;
+}
+
+// The column of each axis, from the header's names.
+bool header_columns(const std::vector<std::string_view>& fields, std::size_t column[kAxes],
+                    std::string* why) {
+  bool found[kAxes] = {false, false, false};
+  for (std::size_t c = 0; c < fields.size(); ++c) {
+    for (int a = 0; a < kAxes; ++a) {
+      if (!names_axis(fields[c], a)) continue;
+      if (found[a]) {
+        *why = std::string("header names column ") + kAxisNames[a] + " twice";
+        return false;
+      }
+      found[a] = true;
+      column[a] = c;
+    }
+  }
+  if (!found[0] || !found[1] || !found[2]) {
+    *why = "the header has no x, y and z columns (names are x y z, any case)";
+    return false;
+  }
+  return true;
+}
+
+// Next line at *pos without its comment and line end; false at the end of the text.
+bool next_line(const std::string& text, std::size_t* pos, std::string_view* line) {
+  if (*pos >= text.size()) return false;
+  std::size_t end = text.find('\n', *pos);
+  if (end == std::string::npos) end = text.size();
+  *line = std::string_view(text).substr(*pos, end - *pos);
+  *line = line->substr(0, line->find('#'));
+  *pos = end + 1;
+  return true;
+}
+
+bool blank(std::string_view line) { return line.find_first_not_of(" \t\r\v\f") == std::string_view::npos; }
 
 }  // namespace
 
@@ -48,31 +72,35 @@ bool read_text_cloud(const std::string& text, std::vector<double>* xyz, std::str
     if (error) *error = "binary data in a text point cloud (neither PLY nor x y z text)";
     return false;
   }
-  bool may_skip_header = true;
-  std::size_t line_number = 0;
-  for (std::size_t pos = 0; pos < text.size();) {
-    std::size_t end = text.find('\n', pos);
-    if (end == std::string::npos) end = text.size();
-    std::string_view line = std::string_view(text).substr(pos, end - pos);
-    pos = end + 1;
-    ++line_number;
-    line = line.substr(0, line.find('#'));
-    std::string_view tokens[kAxes];
-    const int found = split_tokens(line, tokens, kAxes);
-    if (found == 0) continue;
-    double point[kAxes] = {0.0, 0.0, 0.0};
-    bool numeric = found == kAxes;
-    for (int k = 0; k < found && numeric; ++k) numeric = parse_number(tokens[k], &point[k]);
-    if (!numeric && may_skip_header && !parse_number(tokens[0], &point[0])) {
-      may_skip_header = false;  // a column-name line, once, before any point
+  bool first = true;
+  text::Separator sep = text::Separator::kSpaces;
+  std::size_t column[kAxes] = {0, 1, 2};
+  std::vector<std::string_view> fields;
+  std::string why;
+  std::size_t number = 0;
+  std::string_view line;
+  for (std::size_t pos = 0; next_line(text, &pos, &line);) {
+    ++number;
+    if (blank(line)) continue;
+    if (first) {
+      const std::size_t start = line.find_first_not_of(" \t");
+      if (line.substr(start, 2) == "//") line.remove_prefix(start + 2);  // CloudCompare's header
+      sep = text::choose_separator(line);
+    }
+    if (!text::split_fields(line, sep, &fields, &why)) return fail(error, number, why);
+    if (first && (first = false, is_header(fields, sep))) {
+      if (!header_columns(fields, column, &why)) return fail(error, number, why);
       continue;
     }
-    if (found < kAxes) return fail(error, line_number, "fewer than 3 values");
-    if (!numeric) {
-      return fail(error, line_number,
-                  "not a number in '" + std::string(line.substr(0, kMaxQuotedChars)) + "'");
+    double point[kAxes];
+    for (int a = 0; a < kAxes; ++a) {
+      if (column[a] >= fields.size()) {
+        return fail(error, number,
+                    "fewer values than the columns x y z need (separator " +
+                        std::string(text::separator_name(sep)) + ")");
+      }
+      if (!text::parse_field(fields[column[a]], sep, &point[a], &why)) return fail(error, number, why);
     }
-    may_skip_header = false;
     xyz->insert(xyz->end(), point, point + kAxes);
   }
   if (xyz->empty()) {

@@ -1,10 +1,13 @@
 #include "mesh/mesh_loader.hpp"
 
+#include "mesh/ply_mesh_reader.hpp"
+
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <exception>
 #include <filesystem>
@@ -60,6 +63,31 @@ bool append_triangles(const aiMesh& source, Mesh* out, std::string* error) {
   return true;
 }
 
+bool is_ply(const std::string& path) {
+  std::string extension = fs::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".ply";
+}
+
+// Every mesh of the scene, node transforms applied, triangulated and merged.
+bool load_with_assimp(const std::string& path, Mesh* mesh, std::string* error) {
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(path, kImportFlags);
+  if (scene == nullptr) {
+    set_error(error, "cannot read mesh " + path + ": " + importer.GetErrorString());
+    return false;
+  }
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    if (scene->mMeshes[m] == nullptr) continue;
+    std::string part_error;
+    if (!append_triangles(*scene->mMeshes[m], mesh, &part_error)) {
+      set_error(error, "invalid mesh " + path + ": " + part_error);
+      return false;
+    }
+  }
+  return true;
+}
+
 bool load_scene(const std::string& path, Mesh* out, std::string* error) {
   std::error_code ec;
   if (!fs::exists(path, ec)) {
@@ -70,22 +98,9 @@ bool load_scene(const std::string& path, Mesh* out, std::string* error) {
     set_error(error, "is a directory, not a mesh file: " + path);
     return false;
   }
-  Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(path, kImportFlags);
-  if (scene == nullptr) {
-    set_error(error, "cannot read mesh " + path + ": " + importer.GetErrorString());
-    return false;
-  }
   Mesh mesh;
+  if (is_ply(path) ? !read_ply_mesh(path, &mesh, error) : !load_with_assimp(path, &mesh, error)) return false;
   mesh.name = fs::path(path).stem().string();
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    if (scene->mMeshes[m] == nullptr) continue;
-    std::string part_error;
-    if (!append_triangles(*scene->mMeshes[m], &mesh, &part_error)) {
-      set_error(error, "invalid mesh " + path + ": " + part_error);
-      return false;
-    }
-  }
   if (mesh.triangle_count() == 0) {
     set_error(error, "no triangles in " + path);
     return false;

@@ -1,5 +1,6 @@
-// Loads model meshes through Assimp (every format it reads: OBJ, PLY, STL,
-// OFF, glTF, Collada, AC3D, ...) into one merged triangle mesh.
+// Loads model meshes into one merged triangle mesh: PLY through the project's
+// own reader (mesh/ply_mesh_reader.hpp), every other format Assimp reads (OBJ,
+// STL, OFF, glTF, Collada, AC3D, ...) through Assimp.
 #pragma once
 
 #include "mesh/mesh.hpp"

@@ -12,37 +12,39 @@ namespace spinhash::pipeline {
 
 bool load_model_meshes(const std::vector<std::string>& inputs, std::vector<ModelMesh>* out,
                        std::string* error, bool quiet) {
-  std::vector<std::string> files;
+  std::vector<std::string> files, problems;  // problems: one line per input or file that failed
   for (const std::string& in : inputs) {
-    std::vector<std::string> found = host::list_mesh_files(in, error);
-    if (found.empty()) {
-      if (error->empty()) *error = in + ": no mesh files";
-      return false;
-    }
+    std::string why;
+    std::vector<std::string> found = host::list_mesh_files(in, &why);
+    if (found.empty()) problems.push_back(why.empty() ? in + ": no mesh files" : why);
     files.insert(files.end(), found.begin(), found.end());
   }
   std::set<std::string> names;
   Progress progress("load meshes", static_cast<uint32_t>(files.size()), quiet);
-  for (const std::string& f : files) {
+  for (size_t i = 0; i < files.size(); ++i) {
+    const std::string& f = files[i];
     ModelMesh m;
     m.name = std::filesystem::path(f).stem().string();
-    if (m.name.empty() || m.name.size() >= kMaxModelNameBytes) {
-      *error = f + ": model name must be 1 to " + std::to_string(kMaxModelNameBytes - 1) + " bytes";
-      return false;
-    }
-    if (!names.insert(m.name).second) {
-      *error = f + ": a second model named '" + m.name + "'";
-      return false;
-    }
     std::string why;
-    if (!host::load_mesh(f, &m.mesh, &why)) {
-      *error = f + ": " + why;
-      return false;
+    if (m.name.empty() || m.name.size() >= kMaxModelNameBytes) {
+      problems.push_back(f + ": model name must be 1 to " + std::to_string(kMaxModelNameBytes - 1) +
+                         " bytes");
+    } else if (!names.insert(m.name).second) {
+      problems.push_back(f + ": a second model named '" + m.name + "'");
+    } else if (!host::load_mesh(f, &m.mesh, &why)) {
+      problems.push_back(f + ": " + why);
+    } else {
+      out->push_back(std::move(m));
     }
-    out->push_back(std::move(m));
-    progress.tick(static_cast<uint32_t>(out->size()));
+    progress.tick(static_cast<uint32_t>(i + 1));
   }
-  return true;
+  if (problems.empty()) return true;
+  error->clear();
+  for (const std::string& p : problems) *error += p + "\n";
+  const size_t empty_inputs = problems.size() - (files.size() - out->size());  // missing or mesh-less
+  *error += std::to_string(problems.size()) + " of " + std::to_string(files.size() + empty_inputs) +
+            " meshes unreadable";
+  return false;
 }
 
 bool scan_models(const std::vector<ModelMesh>& meshes, double spacing, std::vector<host::ModelCloud>* out,

@@ -15,9 +15,11 @@ struct ModelMesh {
   host::Mesh mesh;
 };
 
-// Files and directories (their mesh files) to loaded meshes; false with a
-// message naming the file on the first one that is missing or won't load,
-// or on two files with the same stem.
+// Files and directories (their mesh files) to loaded meshes. Tries every
+// file; false when any input is missing or holds no mesh, a file won't load
+// or has a bad name (empty, too long, a second file with the same stem):
+// then *error has one line per such input or file, naming it, and a last
+// line "N of M meshes unreadable".
 bool load_model_meshes(const std::vector<std::string>& inputs, std::vector<ModelMesh>* out,
                        std::string* error, bool quiet);
 

@@ -43,4 +43,19 @@ inline bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
+// True when every line of `text` is one strict JSON object: valid UTF-8, no
+// NaN or Infinity (Python's json module, told to refuse those constants).
+inline bool strict_json_lines(const TempDir& dir, const std::string& text) {
+  const std::string path = dir.file("json-lines.txt");
+  write_bytes(path, text);
+  const std::string cmd =
+      "python3 -c 'import json,sys\n"
+      "def bad(c): raise ValueError(c)\n"
+      "lines = [l for l in open(sys.argv[1], \"rb\").read().split(b\"\\n\") if l]\n"
+      "assert lines\n"
+      "for l in lines: assert isinstance(json.loads(l.decode(\"utf-8\"), parse_constant=bad), dict)' " +
+      shell_quoted(path) + " 2>&1";
+  return std::system(cmd.c_str()) == 0;
+}
+
 }  // namespace spinhash::host::test

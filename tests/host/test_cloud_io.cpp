@@ -231,7 +231,7 @@ TEST_CASE("no truncation or byte flip of a PLY file crashes the reader") {
 TEST_CASE("plain text clouds: x y z per line") {
   std::vector<double> xyz;
   std::string error;
-  REQUIRE_MESSAGE(parse("x y z intensity\n# a comment\n1 2 3 99\n\n4,5,6\n7\t8\t9 # note\n"
+  REQUIRE_MESSAGE(parse("x y z intensity\n# a comment\n1 2 3 99\n\n4 5 6\n7\t8\t9 # note\n"
                         "nan -1e2 +3.5\r\n",
                         &xyz, &error),
                   error);

@@ -5,12 +5,14 @@
 
 #include <string>
 
+#include "cli/report_keys.hpp"
 #include "cli_runner.hpp"
 #include "spinhash/config_fields.h"
 
 namespace {
 
 using spinhash::host::test::read_bytes;
+using spinhash::host::test::write_bytes;
 
 // "-W,--top-w" -> "--top-w"; "!--no-refine" -> "--no-refine".
 std::string long_flag(const std::string& spec) {
@@ -51,4 +53,35 @@ TEST_CASE("every statistic has its JSON key in docs/cli.md") {
   }
   SPINHASH_STATS_FIELDS(SPINHASH_STAT_DOCUMENTED)
 #undef SPINHASH_STAT_DOCUMENTED
+}
+
+TEST_CASE("every key of info and verify --format json is in their output and in docs/cli.md") {
+  namespace t = spinhash::host::test;
+  const t::TempDir dir("field-mirrors-json");
+  const std::string meshes = dir.file("meshes"), db = dir.file("two.shdb");
+  REQUIRE(t::run_spinhash(dir, "generate --count 2 -o " + t::shell_quoted(meshes)).exit_code == 0);
+  REQUIRE(t::run_spinhash(dir, "build --quiet -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
+              .exit_code == 0);
+  write_bytes(dir.file("bad.shdb"), "not a database");
+  const std::string docs = read_bytes(SPINHASH_SOURCE_DIR "/docs/cli.md");
+  const t::CliRun info = t::run_spinhash(dir, "info --format json " + t::shell_quoted(db));
+  for (const char* key : spinhash::cli::info_keys::kAll) {
+    INFO("info key ", std::string(key));
+    CHECK(t::contains(info.out, "\"" + std::string(key) + "\":"));
+    CHECK(t::contains(docs, "`" + std::string(key) + "`"));
+  }
+  // Every verify key shows up in one of: a passing check, a failing one (0.9 m noise: both
+  // vehicles ranked second, deterministically for the seed), a corrupt blob.
+  const t::CliRun verify = t::run_spinhash(
+      dir, "verify --quiet --queries 1 --format json " + t::shell_quoted(db) + " " + t::shell_quoted(meshes));
+  const t::CliRun noisy = t::run_spinhash(dir, "verify --quiet --queries 1 --noise 0.9 --format json " +
+                                                   t::shell_quoted(db) + " " + t::shell_quoted(meshes));
+  const t::CliRun corrupt =
+      t::run_spinhash(dir, "verify --format json " + t::shell_quoted(dir.file("bad.shdb")));
+  const std::string all = verify.out + noisy.out + corrupt.out;
+  for (const char* key : spinhash::cli::verify_keys::kAll) {
+    INFO("verify key ", std::string(key));
+    CHECK(t::contains(all, "\"" + std::string(key) + "\":"));
+    CHECK(t::contains(docs, "`" + std::string(key) + "`"));
+  }
 }

@@ -1,0 +1,62 @@
+// The keys of `info --format json` and `verify --format json`, defined once:
+// the writers (cmd_info.cpp, cmd_verify.cpp) use these constants and
+// tests/host/test_field_mirrors.cpp checks every one against docs/cli.md and
+// the command's output.
+#pragma once
+
+namespace spinhash::cli {
+
+namespace info_keys {
+constexpr const char* kFormat = "format";  // blob format version
+constexpr const char* kBytes = "bytes";
+constexpr const char* kBytesPerFeature = "bytes_per_feature";
+constexpr const char* kFingerprint = "fingerprint";  // config fingerprint, 16 hex digits
+constexpr const char* kModels = "models";
+constexpr const char* kFeatures = "features";
+constexpr const char* kSpinImages = "spin_images";  // object: bins, radius, support_angle, quant_scale
+constexpr const char* kBins = "bins";
+constexpr const char* kRadius = "radius";
+constexpr const char* kSupportAngle = "support_angle";
+constexpr const char* kQuantScale = "quant_scale";
+constexpr const char* kSampling = "sampling";  // object: voxel, normal_radius, basis_spacing
+constexpr const char* kVoxel = "voxel";
+constexpr const char* kNormalRadius = "normal_radius";
+constexpr const char* kBasisSpacing = "basis_spacing";
+constexpr const char* kLsh = "lsh";  // object: tables, bits, buckets, d_c
+constexpr const char* kTables = "tables";
+constexpr const char* kBits = "bits";
+constexpr const char* kBuckets = "buckets";
+constexpr const char* kDc = "d_c";
+constexpr const char* kGrid = "grid";  // object: cell, offsets
+constexpr const char* kCell = "cell";
+constexpr const char* kOffsets = "offsets";
+constexpr const char* kModelList = "model_list";  // [{name, features, extent}]
+constexpr const char* kName = "name";
+constexpr const char* kExtent = "extent";
+constexpr const char* kAll[] = {
+    kFormat,       kBytes,   kBytesPerFeature, kFingerprint, kModels,   kFeatures, kSpinImages,
+    kBins,         kRadius,  kSupportAngle,    kQuantScale,  kSampling, kVoxel,    kNormalRadius,
+    kBasisSpacing, kLsh,     kTables,          kBits,        kBuckets,  kDc,       kGrid,
+    kCell,         kOffsets, kModelList,       kName,        kExtent};
+}  // namespace info_keys
+
+namespace verify_keys {
+constexpr const char* kIntegrity = "integrity";  // "ok" or "failed"
+constexpr const char* kError = "error";          // why, when integrity failed
+constexpr const char* kModels = "models";
+constexpr const char* kFeatures = "features";
+constexpr const char* kMode = "mode";
+constexpr const char* kNoise = "noise";
+constexpr const char* kScans = "scans";      // self-recognition scans made (0 without meshes)
+constexpr const char* kHits = "hits";        // of them, ranked their own model first
+constexpr const char* kMissing = "missing";  // meshes whose model is not in the database
+constexpr const char* kMisses = "misses";    // [{model, scan, ranked_first | status}]
+constexpr const char* kModel = "model";
+constexpr const char* kScan = "scan";
+constexpr const char* kRankedFirst = "ranked_first";
+constexpr const char* kStatus = "status";
+constexpr const char* kAll[] = {kIntegrity, kError,   kModels, kFeatures, kMode, kNoise,       kScans,
+                                kHits,      kMissing, kMisses, kModel,    kScan, kRankedFirst, kStatus};
+}  // namespace verify_keys
+
+}  // namespace spinhash::cli
