@@ -90,11 +90,18 @@ void reset(ModelBest& best) {
   best.final_score = false;
 }
 
+// The runner-up's lead is a likelihood ratio only for BRAN and SRAN (SIND
+// ranks by votes); a lone ranked model leads by definition.
+bool leads_runner_up(const Result& r, const RecognizerConfig& cfg, float n) {
+  if (cfg.mode == Mode::kSind || r.ranking_count < 2) return true;
+  return r.ranking[0].score - r.ranking[1].score >= cfg.min_margin * n;
+}
+
 bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features) {
   if (r.ranking_count == 0 || !r.ranking[0].has_pose) return false;
   const float n = static_cast<float>(features);
   return static_cast<float>(r.ranking[0].inliers) >= cfg.min_inlier_fraction * n &&
-         r.ranking[0].score >= cfg.min_mean_log_likelihood * n;
+         r.ranking[0].score >= cfg.min_mean_log_likelihood * n && leads_runner_up(r, cfg, n);
 }
 
 Pose identity_pose() {

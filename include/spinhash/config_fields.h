@@ -66,6 +66,8 @@
     "share of the query explained for a confident answer")                                                   \
   X(F32, min_mean_log_likelihood, -1e6f, 0.0f, "--min-mean-log-likelihood",                                  \
     "log-likelihood per query feature for a confident answer")                                               \
+  X(F32, min_margin, 0.0f, 1e6f, "--min-margin",                                                             \
+    "lead over the runner-up, log-likelihood per query feature, for a confident answer (BRAN, SRAN)")        \
   X(U32, max_trials, 0u, 0xFFFFFFFFu, "--trials", "doublet draws (BRAN)")                                    \
   X(U32, sran_trials, 0u, 0xFFFFFFFFu, "--sran-trials", "doublet draws per model (SRAN)")                    \
   X(U32, max_hypotheses, 0u, 0xFFFFFFFFu, "--max-hypotheses", "poses verified (BRAN total, SRAN per model)") \

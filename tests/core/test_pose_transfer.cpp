@@ -1,5 +1,6 @@
 // Look-alike pose transfer (recognize/pose_transfer.cpp): a model crowded out
-// of the W candidates by an identical twin still gets the twin's pose.
+// of the W candidates by an identical twin still gets the twin's pose, and an
+// answer tied with its twin is not confident.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -70,4 +71,18 @@ TEST_CASE_FIXTURE(Twinned, "pose transfer scores the twin at the leading pose, a
   for (int k = 0; k < 3; ++k) CHECK(std::fabs(a->pose.translation[k] - b->pose.translation[k]) < 0.05);
   CHECK(std::fabs(a->pose.rotation[0] - b->pose.rotation[0]) < 0.01f);
   CHECK(std::fabs(a->pose.rotation[3] - b->pose.rotation[3]) < 0.01f);
+}
+
+TEST_CASE_FIXTURE(Twinned, "an answer its exact twin ties is not confident, whatever its fit") {
+  Result r = recognize(8);
+  REQUIRE(r.ranking_count >= 2);
+  CHECK_FALSE(r.confident);  // the lead over the runner-up (the twin) is 0 < min_margin
+  CHECK(r.ranking[0].inliers * 2u >= r.stats.features);  // the fit itself would pass
+}
+
+TEST_CASE_FIXTURE(Twinned, "without its twin in the running the same fit is confident") {
+  Result r = recognize(0);
+  REQUIRE(r.ranking_count >= 1);
+  CHECK(r.ranking[0].model == kTwinned);
+  CHECK(r.confident);
 }
