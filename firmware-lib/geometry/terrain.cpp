@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "geometry/xy_frame.hpp"
+
 namespace spinhash {
 namespace {
 
@@ -206,20 +208,7 @@ Status classify_terrain(const float* xyz, uint32_t n, const TerrainParams& param
     if (stats) *stats = st;
     return Status::kOk;
   }
-  float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
-  for (uint32_t i = 1; i < n; ++i)
-    for (uint32_t a = 0; a < 2u; ++a) {
-      const float v = xyz[3u * i + a];
-      lo[a] = v < lo[a] ? v : lo[a];
-      hi[a] = v > hi[a] ? v : hi[a];
-    }
-  const float fx = (hi[0] - lo[0]) / params.cell + 1.0f, fy = (hi[1] - lo[1]) / params.cell + 1.0f;
-  if (!(fx * fy <= static_cast<float>(g.max_cells))) return Status::kTileTooLarge;
-  g.cell = params.cell;
-  g.x0 = lo[0];
-  g.y0 = lo[1];
-  g.nx = static_cast<uint32_t>(fx);
-  g.ny = static_cast<uint32_t>(fy);
+  if (!fit_xy_frame(xyz, n, params.cell, g)) return Status::kTileTooLarge;
   fill_low_means(xyz, n, g);
   st.windows = progressive_filter(g, params);
   fill_terrain_surface(g, static_cast<uint32_t>(params.max_window / params.cell) + 2u);

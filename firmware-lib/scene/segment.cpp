@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "geometry/xy_frame.hpp"
+
 namespace spinhash {
 namespace {
 
@@ -144,20 +146,7 @@ Status segment_objects(const float* xyz, const float* height, const uint8_t* gro
     if (stats) *stats = st;
     return Status::kOk;
   }
-  float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
-  for (uint32_t i = 1; i < n; ++i)
-    for (uint32_t a = 0; a < 2u; ++a) {
-      const float v = xyz[3u * i + a];
-      lo[a] = v < lo[a] ? v : lo[a];
-      hi[a] = v > hi[a] ? v : hi[a];
-    }
-  const float fx = (hi[0] - lo[0]) / params.cell + 1.0f, fy = (hi[1] - lo[1]) / params.cell + 1.0f;
-  if (!(fx * fy <= static_cast<float>(g.max_cells))) return Status::kTileTooLarge;
-  g.cell = params.cell;
-  g.x0 = lo[0];
-  g.y0 = lo[1];
-  g.nx = static_cast<uint32_t>(fx);
-  g.ny = static_cast<uint32_t>(fy);
+  if (!fit_xy_frame(xyz, n, params.cell, g)) return Status::kTileTooLarge;
   const uint32_t cells = g.nx * g.ny;
   st.cells = cells;
   for (uint32_t s = 0; s < kLayers * cells; ++s) {

@@ -1,0 +1,31 @@
+// The xy frame of a per-cell grid laid over a cloud's footprint (the terrain
+// grid, the segmentation grid): origin at the footprint's min corner, square
+// cells, refused when the footprint needs more cells than were carved.
+#pragma once
+#include <cstdint>
+
+namespace spinhash {
+
+// Min corner and size in cells of `n` xyz points' footprint at cells of
+// `cell` m; false when that exceeds `max_cells` (the tile is too large for
+// the workspace: never truncated). n > 0.
+template <class Grid>
+bool fit_xy_frame(const float* xyz, uint32_t n, float cell, Grid& g) {
+  float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
+  for (uint32_t i = 1; i < n; ++i)
+    for (uint32_t a = 0; a < 2u; ++a) {
+      const float v = xyz[3u * i + a];
+      lo[a] = v < lo[a] ? v : lo[a];
+      hi[a] = v > hi[a] ? v : hi[a];
+    }
+  const float fx = (hi[0] - lo[0]) / cell + 1.0f, fy = (hi[1] - lo[1]) / cell + 1.0f;
+  if (!(fx * fy <= static_cast<float>(g.max_cells))) return false;
+  g.cell = cell;
+  g.x0 = lo[0];
+  g.y0 = lo[1];
+  g.nx = static_cast<uint32_t>(fx);
+  g.ny = static_cast<uint32_t>(fy);
+  return true;
+}
+
+}  // namespace spinhash
