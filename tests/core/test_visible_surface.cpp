@@ -36,6 +36,7 @@ std::vector<double> boxed_truck() {
 
 struct LookAlikes {
   test::ToyDatabase toy;
+  host::AlignedBytes ws;  // the ranking lives here: kept until the next recognize
   LookAlikes() {
     std::vector<host::ModelCloud> clouds = test::toy_clouds();
     clouds.push_back(host::ModelCloud{"toy-2-boxed", boxed_truck()});
@@ -44,7 +45,7 @@ struct LookAlikes {
 
   Result recognize(const std::vector<double>& model, uint64_t seed) {
     RecognizerConfig cfg;
-    host::AlignedBytes ws(required_workspace_bytes(cfg));
+    ws = host::AlignedBytes(required_workspace_bytes(cfg));
     Recognizer r;
     REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
     const double t[3] = {-60.0, 25.0, 2.0};
