@@ -4,20 +4,21 @@
 # time, for BRAN, SRAN and SIND on the same simulated queries.
 #
 #   scripts/instructions-per-query.sh [--sizes 56,1000] [--queries 3] [--modes bran,sran,sind]
-#       [--sran-queries-large 1] [--out DIR] [--spinhash BIN]
+#       [--sran-queries-large 1] [--spacing 0.05] [--out DIR] [--spinhash BIN]
 #
 # Counts cover Recognizer::run (feature extraction through ranking), not
 # process start-up or database loading. SRAN is linear in the models and
 # ~50x slower under callgrind: at sizes above 100 it runs only the first
-# --sran-queries-large queries. Writes DIR/instructions.csv and prints a
+# --sran-queries-large queries. --spacing: the queries' point spacing (m;
+# 0.10 is an airborne sensor's at about 40 m). Writes DIR/instructions.csv and prints a
 # Markdown table of the means.
 set -euo pipefail
 
-usage() { sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
 sizes="56,1000" queries=3 modes="bran,sran,sind" sran_large=1 out="instructions-out"
 sran_large_from=100
-noise=0.05
+noise=0.05 spacing=0.05
 root=$(cd "$(dirname "$0")/.." && pwd)
 spinhash="${SPINHASH:-}"
 while [[ $# -gt 0 ]]; do
@@ -26,6 +27,7 @@ while [[ $# -gt 0 ]]; do
     --queries) queries="$2"; shift 2 ;;
     --modes) modes="$2"; shift 2 ;;
     --sran-queries-large) sran_large="$2"; shift 2 ;;
+    --spacing) spacing="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --spinhash) spinhash="$2"; shift 2 ;;
     *) usage ;;
@@ -46,7 +48,7 @@ IFS=, read -r -a mode_list <<< "$modes"
 "$spinhash" generate -o "$out/first" --count "$queries" 2>/dev/null
 mapfile -t first < <(ls "$out/first"/*.obj | sort)
 for ((q = 0; q < queries; q++)); do
-  "$spinhash" scan "${first[$q]}" -o "$out/q$q.ply" --noise "$noise" --random-pose --seed $((q + 1)) 2>/dev/null
+  "$spinhash" scan "${first[$q]}" -o "$out/q$q.ply" --noise "$noise" --spacing "$spacing" --random-pose --seed $((q + 1)) 2>/dev/null
   basename "${first[$q]}" .obj > "$out/q$q.model"
 done
 
