@@ -4,8 +4,8 @@
 // (match/refine_pose.hpp), keeping a refined pose where its likelihood is
 // higher; BRAN then charges each for the upward surface the scan does not
 // show (visible_surface.cpp); every other model's subset score is
-// extrapolated to all features, below the rescored ones. Bounded: kRefinedModels models x
-// (1 + kRefineIterations) full verifications.
+// extrapolated to all features, below the rescored ones. Bounded:
+// kRefinedModels models x (1 + kRefineIterations) full verifications.
 #include "match/refine_pose.hpp"
 #include "recognize/search_context.hpp"
 #include "util/top_n.hpp"

@@ -20,14 +20,6 @@ constexpr float kUpwardNormalZ = 0.7071f;
 constexpr float kLogSeen = -0.35667f;    // log(1 - 0.3)
 constexpr float kLogMissed = -1.20397f;  // log(0.3)
 
-bool faces_up(const SearchContext& ctx, uint32_t f, const RigidPose& pose) {
-  const int16_t* n = ctx.db.normals() + 3u * f;
-  const Eigen::Vector3f normal =
-      pose.rotation *
-      Eigen::Vector3f(static_cast<float>(n[0]), static_cast<float>(n[1]), static_cast<float>(n[2]));
-  return normal[2] >= kUpwardNormalZ * 32767.0f;
-}
-
 bool near_query(const SearchContext& ctx, const Eigen::Vector3f& x) {
   const float* q = ctx.query.positions;
   for (uint32_t l = 0; l < ctx.query.count; ++l, q += 3) {
@@ -43,10 +35,9 @@ float upward_surface_log_likelihood(const SearchContext& ctx, uint32_t model, co
   const blob::ModelRecord& rec = ctx.db.model(model);
   float sum = 0.0f;
   for (uint32_t f = rec.first_feature; f < rec.first_feature + rec.feature_count; ++f) {
-    if (!faces_up(ctx, f, pose)) continue;
-    const float* p = ctx.db.positions() + 3u * f;
-    const bool seen = near_query(ctx, pose.rotation * Eigen::Vector3f(p[0], p[1], p[2]) + pose.translation);
-    sum += seen ? kLogSeen : kLogMissed;
+    const OrientedPoint m = ctx.model_point(f);
+    if ((pose.rotation * m.n)[2] < kUpwardNormalZ) continue;
+    sum += near_query(ctx, pose.rotation * m.p + pose.translation) ? kLogSeen : kLogMissed;
   }
   return sum;
 }
