@@ -114,14 +114,15 @@ uint32_t spread_stride(uint32_t n) {
 
 Verification verify_pose(const Database& db, uint32_t model, const RigidPose& pose,
                          const QueryFeatures& query, const LikelihoodParams& lp, float to_beat,
-                         bool preemptive) {
+                         float reference) {
   Verification v;
   const blob::ModelRecord& rec = db.model(model);
   const Eigen::Matrix3f rt = pose.rotation.transpose();
   const uint32_t n = query.count;
   const uint32_t used = query.verify_count < n ? query.verify_count : n;
   const uint32_t stride = n > 1u ? spread_stride(n) : 1u;
-  const float best_mean = to_beat / static_cast<float>(used > 0u ? used : 1u);
+  const bool preemptive = reference > kNoScoreToBeat;
+  const float best_mean = reference / static_cast<float>(used > 0u ? used : 1u);
   uint32_t l = 0;
   for (uint32_t i = 0; i < used; ++i, l = (l + stride) % n) {
     if (v.log_likelihood < to_beat) return v;  // remaining terms are <= 0

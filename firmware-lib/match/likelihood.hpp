@@ -74,11 +74,14 @@ struct Verification {
 };
 
 // Scores `pose` of `model` on query.verify_count features visited in an
-// evenly spread order (all of them when verify_count == count). Stops early once even perfect remaining
-// features (log p <= 0 each) could not lift the sum above `to_beat`, or, when `preemptive`, once the first
-// few dozen features say the pose is clearly worse than `to_beat`.
+// evenly spread order (all of them when verify_count == count). Stops early
+// once even perfect remaining features (log p <= 0 each) could not lift the
+// sum above `to_beat`, or once the first few dozen features say the pose is
+// clearly worse than `reference` (a score on the same features; the model's
+// own best, or the pose's source when a look-alike borrows it;
+// kNoScoreToBeat: never).
 Verification verify_pose(const Database& db, uint32_t model, const RigidPose& pose,
                          const QueryFeatures& query, const LikelihoodParams& lp, float to_beat,
-                         bool preemptive);
+                         float reference);
 
 }  // namespace spinhash

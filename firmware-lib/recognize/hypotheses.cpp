@@ -53,11 +53,12 @@ bool draw_stable_doublet(SearchContext& ctx, uint32_t* k, uint32_t* l, DoubletSh
   return false;
 }
 
-void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose) {
+void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose, float source_score) {
   ModelBest& best = ctx.buf.best[model];
   ++best.hypotheses;
   const float to_beat = best.has_score ? best.score : kNoScoreToBeat;
-  Verification v = verify_pose(ctx.db, model, pose, ctx.query, ctx.likelihood, to_beat, best.has_score);
+  const float reference = best.has_score ? best.score : source_score;
+  Verification v = verify_pose(ctx.db, model, pose, ctx.query, ctx.likelihood, to_beat, reference);
   if (v.complete && (!best.has_score || v.log_likelihood > best.score)) {
     best.score = v.log_likelihood;
     best.pose = pose;

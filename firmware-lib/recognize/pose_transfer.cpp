@@ -5,7 +5,9 @@
 // the same likelihood, on the models whose bounding boxes (each in its own
 // frame) are nearest the posed model's; the least-squares refinement of the
 // leading models then settles the fit. A model in another frame convention
-// just scores badly at a lent pose and changes nothing. Bounded:
+// just scores badly at a lent pose and changes nothing; it is dropped after
+// a few dozen features when clearly worse than the pose's source (the
+// preemptive checks of verify_pose), which most of them are. Bounded:
 // kTransferPoses x kMaxTransferModels extra verifications, after the
 // hypothesis budget (counted in RecognitionStats::transferred).
 #include <cmath>
@@ -39,7 +41,11 @@ void transfer_poses(SearchContext& ctx) {
       model_count, kTransferPoses, sources, [&](uint32_t m) { return has_hypothesis(ctx, m); },
       [&](uint32_t a, uint32_t b) { return scores_higher(ctx, a, b); });
   RigidPose poses[kTransferPoses];  // copied: consider_pose may replace a source's own pose
-  for (uint32_t i = 0; i < n_sources; ++i) poses[i] = ctx.buf.best[sources[i]].pose;
+  float scores[kTransferPoses];
+  for (uint32_t i = 0; i < n_sources; ++i) {
+    poses[i] = ctx.buf.best[sources[i]].pose;
+    scores[i] = ctx.buf.best[sources[i]].score;
+  }
   uint32_t targets[kMaxTransferModels];
   for (uint32_t i = 0; i < n_sources; ++i) {
     const blob::ModelRecord& src = ctx.db.model(sources[i]);
@@ -51,7 +57,7 @@ void transfer_poses(SearchContext& ctx) {
         model_count, wanted, targets, [&](uint32_t m) { return m != sources[i]; }, nearer);
     for (uint32_t t = 0; t < n; ++t) {
       ++ctx.stats.transferred;
-      consider_pose(ctx, targets[t], poses[i]);
+      consider_pose(ctx, targets[t], poses[i], scores[i]);
     }
   }
 }

@@ -26,14 +26,15 @@ uint32_t leading_models(const SearchContext& ctx, uint32_t* out) {
 
 void finalise_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, bool refine) {
   ModelBest& best = ctx.buf.best[model];
-  Verification full = verify_pose(ctx.db, model, best.pose, all, ctx.likelihood, kNoScoreToBeat, false);
+  Verification full =
+      verify_pose(ctx.db, model, best.pose, all, ctx.likelihood, kNoScoreToBeat, kNoScoreToBeat);
   best.score = full.log_likelihood;
   best.inliers = full.inliers;
   best.final_score = true;
   for (uint32_t it = 0; refine && it < kRefineIterations; ++it) {
     RigidPose pose = best.pose;
     if (!refine_pose(ctx.db, model, all, ctx.likelihood, &pose)) return;
-    Verification v = verify_pose(ctx.db, model, pose, all, ctx.likelihood, kNoScoreToBeat, false);
+    Verification v = verify_pose(ctx.db, model, pose, all, ctx.likelihood, kNoScoreToBeat, kNoScoreToBeat);
     ++ctx.stats.refinements;
     if (!(v.log_likelihood > best.score)) return;
     best.score = v.log_likelihood;

@@ -87,8 +87,11 @@ inline bool scores_higher(const SearchContext& ctx, uint32_t a, uint32_t b) {
 }
 
 // Verifies `pose` of `model` and keeps it as gamma_model if it scores higher
-// (the caller counts it in the stats).
-void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose);
+// (the caller counts it in the stats). Dropped early when clearly worse than
+// the model's best or, for a model without one, than `source_score` (the
+// score of the look-alike a transferred pose comes from).
+void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose,
+                   float source_score = kNoScoreToBeat);
 
 // Cascade, pose, verification and gamma_i update for query features (k, l)
 // matched to model features (fu, fv) of `model`. false once the budget is spent.

@@ -39,7 +39,7 @@ float angle_between(const Eigen::Matrix3f& a, const Eigen::Matrix3f& b) {
 }  // namespace
 
 TEST_CASE_FIXTURE(Fixture, "the exact pose explains every feature at the likelihood's maximum") {
-  const Verification v = verify_pose(toy.db, kModel, truth, q.view, lp, kNoScoreToBeat, false);
+  const Verification v = verify_pose(toy.db, kModel, truth, q.view, lp, kNoScoreToBeat, kNoScoreToBeat);
   CHECK(v.complete);
   CHECK(v.inliers == q.view.count);
   // Each term is -r^2 / (2 sigma^2) - L1 / lambda with r ~ 1e-6 m and L1 = 0: the maximum, 0.
@@ -50,7 +50,7 @@ TEST_CASE_FIXTURE(Fixture, "the exact pose explains every feature at the likelih
 TEST_CASE_FIXTURE(Fixture, "a pose far from the model gives every feature the floor term exactly") {
   RigidPose far = truth;
   far.translation += Eigen::Vector3f(500.0f, 0.0f, 0.0f);
-  const Verification v = verify_pose(toy.db, kModel, far, q.view, lp, kNoScoreToBeat, false);
+  const Verification v = verify_pose(toy.db, kModel, far, q.view, lp, kNoScoreToBeat, kNoScoreToBeat);
   CHECK(v.complete);
   CHECK(v.inliers == 0u);
   CHECK(lp.floor < 0.0f);
@@ -59,21 +59,23 @@ TEST_CASE_FIXTURE(Fixture, "a pose far from the model gives every feature the fl
 
 TEST_CASE_FIXTURE(Fixture, "verification stops as soon as the score to beat is out of reach") {
   // Terms are <= 0, so nothing beats +1: stopped before the first feature.
-  const Verification v = verify_pose(toy.db, kModel, truth, q.view, lp, 1.0f, false);
+  const Verification v = verify_pose(toy.db, kModel, truth, q.view, lp, 1.0f, kNoScoreToBeat);
   CHECK_FALSE(v.complete);
   CHECK(v.inliers == 0u);
   // Preemption drops a far pose against the exact pose's score at its first checkpoint.
   RigidPose far = truth;
   far.translation += Eigen::Vector3f(500.0f, 0.0f, 0.0f);
-  const float exact = verify_pose(toy.db, kModel, truth, q.view, lp, kNoScoreToBeat, false).log_likelihood;
-  const Verification pre = verify_pose(toy.db, kModel, far, q.view, lp, exact, true);
+  const float exact =
+      verify_pose(toy.db, kModel, truth, q.view, lp, kNoScoreToBeat, kNoScoreToBeat).log_likelihood;
+  const Verification pre = verify_pose(toy.db, kModel, far, q.view, lp, exact, exact);
   CHECK_FALSE(pre.complete);
 }
 
 TEST_CASE_FIXTURE(Fixture, "another model explains the query worse than its own") {
-  const float own = verify_pose(toy.db, kModel, truth, q.view, lp, kNoScoreToBeat, false).log_likelihood;
+  const float own =
+      verify_pose(toy.db, kModel, truth, q.view, lp, kNoScoreToBeat, kNoScoreToBeat).log_likelihood;
   const float other =
-      verify_pose(toy.db, kModel + 1u, truth, q.view, lp, kNoScoreToBeat, false).log_likelihood;
+      verify_pose(toy.db, kModel + 1u, truth, q.view, lp, kNoScoreToBeat, kNoScoreToBeat).log_likelihood;
   CHECK(other < own - 0.5f * static_cast<float>(q.view.count));
 }
 
