@@ -153,12 +153,21 @@ class Layout {
   SeededRandom rng_;
 };
 
-// Marks every vehicle that some crown overhangs.
+// Marks every vehicle over whose footprint some crown vertex lies.
 void mark_under_trees(std::vector<PlacedObject>* placed) {
   for (PlacedObject& v : *placed) {
     if (!is_vehicle(v.truth.kind)) continue;
     for (const PlacedObject& tree : *placed) {
-      if (tree.has_crown && footprints_overlap(tree.crown, v.base, 0.0)) v.truth.flags |= kUnderTree;
+      if (!tree.has_crown || !footprints_overlap(tree.crown, v.base, 0.0)) continue;
+      for (std::size_t i = 0; i < tree.mesh.vertex_count(); ++i) {
+        const Eigen::Vector2d d = tree.mesh.vertex(i).head<2>() - v.base.center;
+        if (std::abs(d.dot(v.base.axis())) < v.base.half.x() &&
+            std::abs(d.dot(v.base.lateral())) < v.base.half.y() &&
+            tree.mesh.vertex(i).z() > tree.crown_bottom - kCrownClearance) {
+          v.truth.flags |= kUnderTree;
+          break;
+        }
+      }
     }
   }
 }
