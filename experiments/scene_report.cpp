@@ -22,8 +22,9 @@ constexpr double kTargetTop1 = 0.90;
 constexpr double kTargetAlarmsPerTile = 0.5;
 constexpr double kTargetMaxSlope = 12.0;
 constexpr int kPlotWidth = 640, kPlotHeight = 420;
-constexpr double kXPadding = 0.05;  // of the swept range, each side
-constexpr double kMinXPad = 0.01;   // a single value
+constexpr double kXPadding = 0.05;   // of the swept range, each side
+constexpr double kMinXPad = 0.01;    // a single value
+constexpr double kY2Headroom = 1.1;  // false alarms axis above its largest value
 
 struct Totals {
   uint32_t tiles = 0, vehicles = 0, found = 0, top1 = 0, confident_right = 0, confident_wrong = 0, alarms = 0;
@@ -127,6 +128,12 @@ bool write_plots(const SceneRun& run, std::vector<std::string>* made, std::strin
   if (!plot_format().available()) return true;  // no gnuplot: the CSVs stand alone
   for (const Sweep& s : sweeps(run)) {
     const auto [lo, hi] = std::minmax_element(s.values->begin(), s.values->end());
+    double most_alarms = 0.0;
+    for (double v : *s.values) {
+      const SceneCondition c = at(run, s, v);
+      most_alarms = std::max(
+          most_alarms, totals(run, [&](const SceneCondition& d) { return same(c, d); }).alarms_per_tile());
+    }
     const double pad = *hi > *lo ? kXPadding * (*hi - *lo) : std::max(kXPadding * std::abs(*lo), kMinXPad);
     std::ostringstream p;
     p << plot_style_lines() << "set xrange [" << *lo - pad << ":" << *hi + pad << "]\n"
@@ -134,7 +141,8 @@ bool write_plots(const SceneRun& run, std::vector<std::string>* made, std::strin
       << "set title 'scene: " << run.tiles << " tiles per point, " << s.name
       << " swept (others at the reference)'\n"
       << "set xlabel '" << s.x_title << "'\nset ylabel '% of database vehicles'\nset yrange [0:105]\n"
-      << "set y2label 'false alarms per tile'\nset y2range [0:1<*]\nset y2tics\nset ytics nomirror\n"
+      << "set y2label 'false alarms per tile'\nset y2range [0:" << std::max(1.0, kY2Headroom * most_alarms)
+      << "]\nset y2tics\nset ytics nomirror\n"
       << "plot 'plot_" << s.name << ".csv' using 1:2 with linespoints ls 1 title 'found',"
       << " '' using 1:3 with linespoints ls 2 title 'ranked right first',"
       << " '' using 1:4 with linespoints ls 3 title 'confident and right',"
