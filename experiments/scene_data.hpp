@@ -40,6 +40,10 @@ struct SceneVehicleRecord {
   std::string answer;  // first-ranked model; empty when not found or not ranked
   bool confident = false;
   double score = 0.0;
+  // When not found: the nearest vehicle-sized object beyond reach (within
+  // kNearestReach), to tell a miss from a detection off the footprint centre.
+  double nearest_m = -1.0;  // -1: none
+  std::string nearest_answer;
 };
 
 // A confident answer not on a database vehicle.
@@ -66,6 +70,7 @@ struct SceneRun {
 // A detection matches a vehicle when its centre is this close (xy) to the
 // vehicle's footprint centre.
 constexpr double kMatchDistance = 1.5;  // m
+constexpr double kNearestReach = 5.0;   // m: reported for the vehicles not found
 
 // Scores one tile's answers against its truth and appends the records.
 void score_tile(const host::SceneScan& scan, const SceneResult& result, const Database& db,

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "cloud/cloud_writer.hpp"
 #include "config_text.hpp"
 #include "experiments.hpp"
 #include "memory_database.hpp"
@@ -40,6 +41,7 @@ struct SceneArgs {
   uint64_t seed = 1, fleet_seed = 1;
   std::string mode = "bran";
   bool models_given = false;
+  bool save_tiles = false;  // OUT/tiles/: each tile's LAS and truth, for `spinhash scene --picture-out`
 };
 
 // The reference, then each sweep's other values (the reference is run once).
@@ -99,6 +101,14 @@ host::SceneOptions tile_options(const SceneArgs& a, const SceneCondition& c, uin
   return o;
 }
 
+bool save_tile(const SceneArgs& a, uint32_t condition, uint32_t tile, const host::SceneScan& scan,
+               std::string* error) {
+  const std::string stem = a.out + "/tiles/c" + std::to_string(condition) + "-t" + std::to_string(tile);
+  return make_output_dir(a.out + "/tiles", error) &&
+         host::write_cloud(stem + ".las", scan.xyz, scan.classification, false, error) &&
+         host::write_scene_truth(stem + ".truth.csv", scan.objects, error);
+}
+
 // Every tile of every condition: simulate, recognise, score.
 bool run_tiles(const SceneArgs& a, const Fleet& fleet, uint32_t unknown, const Database& db,
                SceneSession& session, SceneRun* run, std::string* error) {
@@ -114,6 +124,7 @@ bool run_tiles(const SceneArgs& a, const Fleet& fleet, uint32_t unknown, const D
         *error = "tile " + std::to_string(t) + " of " + cond.label() + ": " + scan.error;
         return false;
       }
+      if (a.save_tiles && !save_tile(a, c, t, scan, error)) return false;
       const SceneResult r = session.recognize(scan.xyz);
       if (r.status != Status::kOk && r.status != Status::kTooManyObjects)
         std::fprintf(stderr, "spinhash-experiment scene: tile %u of %s: %s\n", t, cond.label().c_str(),
@@ -230,6 +241,8 @@ void add_scene_experiment(CLI::App* parent, int* exit_code) {
   cmd->add_option("--mode", a->mode, "bran, sran or sind")->capture_default_str();
   cmd->add_option("--seed", a->seed, "first tile's seed")->capture_default_str();
   cmd->add_option("--fleet-seed", a->fleet_seed, "seed of the procedural fleet")->capture_default_str();
+  cmd->add_flag("--save-tiles", a->save_tiles,
+                "write each tile (LAS) and its truth (CSV) to OUT/tiles/cCONDITION-tTILE.*");
   cmd->callback([a, exit_code]() { *exit_code = run_scene(*a); });
 }
 

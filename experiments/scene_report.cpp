@@ -96,13 +96,15 @@ bool write_tables(const SceneRun& run, std::string* error) {
     if (!plot.write(run.out_dir + "/plot_" + s.name + ".csv", error)) return false;
   }
   CsvTable objects({"slope_deg", "spacing", "noise", "tile", "kind", "model", "side_by_side", "under_tree",
-                    "points", "found", "distance_m", "answer", "confident", "score"});
+                    "points", "found", "distance_m", "answer", "confident", "score", "nearest_m",
+                    "nearest_answer"});
   for (const SceneVehicleRecord& v : run.vehicles)
     objects.add({num(run.conditions[v.condition].slope_deg), num(run.conditions[v.condition].spacing),
                  num(run.conditions[v.condition].noise), std::to_string(v.tile),
                  host::scene_object_kind_name(v.kind), v.model, (v.flags & host::kSideBySide) ? "1" : "0",
                  (v.flags & host::kUnderTree) ? "1" : "0", std::to_string(v.points), v.found ? "1" : "0",
-                 num(v.distance, 3), v.answer, v.confident ? "1" : "0", num(v.score, 5)});
+                 num(v.distance, 3), v.answer, v.confident ? "1" : "0", num(v.score, 5),
+                 v.nearest_m < 0 ? "" : num(v.nearest_m, 3), v.nearest_answer});
   CsvTable alarms(
       {"slope_deg", "spacing", "noise", "tile", "on", "answer", "score", "length", "width", "height"});
   for (const SceneFalseAlarm& a : run.alarms)
@@ -173,6 +175,18 @@ void targets_section(const SceneRun& run, std::ostringstream& md) {
      << " (" << t.alarms << ") | " << yes_no(t.alarms_per_tile() <= kTargetAlarmsPerTile) << " |\n"
      << "| confident and right | | " << pct(t.rate(t.confident_right)) << "% | |\n"
      << "| confident and wrong (database vehicles) | | " << t.confident_wrong << " | |\n\n";
+  uint32_t missed = 0, off_centre = 0;
+  for (const SceneVehicleRecord& v : run.vehicles) {
+    if (v.kind != host::SceneObjectKind::kVehicle || v.found || !in_target(run.conditions[v.condition]))
+      continue;
+    ++missed;
+    off_centre += v.nearest_m >= 0.0 && v.nearest_answer == v.model ? 1u : 0u;
+  }
+  md << "Not found: " << missed << "; of them " << off_centre << " with a vehicle-sized object "
+     << kMatchDistance << "-" << kNearestReach
+     << " m from the footprint centre whose first model is the vehicle's (found off-centre: e.g. a tracked "
+        "vehicle's hull without its gun barrel, which the truth footprint includes; per_object.csv, "
+        "nearest_m).\n\n";
   // By situation, over the same tiles.
   md << "By situation (same tiles):\n\n| vehicles | count | found | ranked right first | confident and right "
         "|\n"

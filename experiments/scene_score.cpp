@@ -59,6 +59,14 @@ void score_tile(const host::SceneScan& scan, const SceneResult& result, const Da
       const double d = xy_distance(result.objects[k].center, v.center);
       if (!used[k] && vehicle_sized(result.objects[k]) && d <= best_d) best = static_cast<int>(k), best_d = d;
     }
+    if (best < 0) {
+      double near = kNearestReach;
+      for (uint32_t k = 0; k < result.object_count; ++k) {
+        const double d = xy_distance(result.objects[k].center, v.center);
+        if (!used[k] && vehicle_sized(result.objects[k]) && d < near)
+          near = d, r.nearest_m = d, r.nearest_answer = first_model(db, result.objects[k]);
+      }
+    }
     if (best >= 0) {
       const SceneObject& o = result.objects[best];
       r.found = true, r.distance = best_d, r.answer = first_model(db, o), r.confident = o.confident;
