@@ -93,6 +93,10 @@ TEST_CASE("experiment scene runs end to end on tiny tiles and scores them agains
     found += line.compare(pos + 1, 2, "1,") == 0 ? 1u : 0u;
   }
   CHECK(found == 4u);
+  // Confident right answers on database vehicles are never false alarms.
+  const std::string alarms = read_bytes(out + "/false_alarms.csv");
+  CHECK(alarms.rfind("slope_deg,spacing,noise,tile,on,answer,", 0) == 0);
+  CHECK(alarms.find(",vehicle,") == std::string::npos);
   const std::string summary = read_bytes(out + "/summary.md");
   CHECK(summary.find("# Scene: simulated airborne tiles") != std::string::npos);
   CHECK(summary.find("## The issue's targets") != std::string::npos);

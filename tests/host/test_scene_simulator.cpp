@@ -157,10 +157,11 @@ TEST_CASE("scan-scene: vehicles rest on the ground, their up axis tilted with th
   CHECK(vehicles == 4);
 }
 
-TEST_CASE("scan-scene: on bumpy terrain a vehicle's lowest vertex touches the surface") {
+TEST_CASE(
+    "scan-scene: on bumpy terrain a vehicle's lowest vertex touches the surface, never across the curb") {
   sh::SceneOptions o = bare_options(8.0);
   o.bump_height = 0.4;
-  o.vehicles = 5;
+  o.vehicles = 8;  // crowded: some would land across the curb
   for (uint64_t seed = 1; seed <= 3; ++seed) {
     o.seed = seed;
     const sh::SceneScan s = sh::simulate_scene(fleet(), {}, o);
@@ -176,6 +177,16 @@ TEST_CASE("scan-scene: on bumpy terrain a vehicle's lowest vertex touches the su
         lowest = std::min(lowest, q.z() - terrain.height(q.x(), q.y()));
       }
       CHECK(std::abs(lowest) < 0.01);
+      // Never across the curb: every footprint corner on one side of it.
+      const double h = t.heading_deg * kPi / 180.0;
+      const Eigen::Vector2d c = (t.center - offset_of(o)).head<2>(), ax(std::cos(h), std::sin(h)),
+                            lat(-ax.y(), ax.x());
+      const double side = terrain.curb_distance(c.x(), c.y());
+      for (double u : {-0.5, 0.5})
+        for (double w : {-0.5, 0.5}) {
+          const Eigen::Vector2d q = c + u * t.extent.x() * ax + w * t.extent.y() * lat;
+          CHECK(terrain.curb_distance(q.x(), q.y()) * side > 0.0);
+        }
       // The ground hits near the vehicle agree with that surface (the mesh interpolates it).
       for (std::size_t i = 0; i < s.size(); ++i) {
         const Eigen::Vector3d q =
