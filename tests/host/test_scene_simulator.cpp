@@ -6,6 +6,7 @@
 #include "mesh/mesh_writer.hpp"
 #include "mesh/vehicle_generator.hpp"
 #include "scan/scan_simulator.hpp"
+#include "scan/scene_layout.hpp"
 #include "scan/scene_simulator.hpp"
 #include "scan/scene_terrain.hpp"
 
@@ -250,6 +251,31 @@ TEST_CASE("scan-scene: two vehicles parked side by side 0.5-1 m apart; a crown o
       most_crown_over = std::max(most_crown_over, crown_over);
     }
     CHECK(most_crown_over > 20);
+  }
+}
+
+TEST_CASE(
+    "scan-scene: a tree's crown stays above the height it is asked to clear; its trunk reaches the ground") {
+  sh::TerrainSpec spec;
+  spec.slope_deg = 10.0;
+  const sh::Terrain terrain(spec);
+  sh::SeededRandom rng(5);
+  for (double clear : {-double(INFINITY), 6.0, 9.5}) {
+    const Eigen::Vector2d at(3.0, -2.0), crown_at(4.5, -1.0);
+    const sh::PlacedObject tree = sh::make_tree(terrain, at, crown_at, clear, &rng);
+    const double ground = terrain.height(at.x(), at.y());
+    CHECK(tree.crown_bottom >= std::max(clear, ground + 4.0));
+    CHECK(tree.crown_bottom <=
+          std::max(clear, ground + 5.0 + 1.0));  // at most 5 m up, plus the slope under it
+    double crown_low = INFINITY, trunk_low = INFINITY;
+    for (std::size_t i = 0; i < tree.mesh.vertex_count(); ++i) {
+      const Eigen::Vector3d p = tree.mesh.vertex(i);
+      if ((p.head<2>() - at).norm() > 0.35) crown_low = std::min(crown_low, p.z());  // off the trunk: crown
+      trunk_low = std::min(trunk_low, p.z());
+    }
+    CHECK(crown_low >= tree.crown_bottom - 1e-4);
+    CHECK(trunk_low < ground);  // sunk into the terrain, no gap on the slope
+    CHECK(tree.top - ground <= std::max(clear - ground, 5.0) + 4.0 + 0.1);  // the crown is at most 4 m deep
   }
 }
 
