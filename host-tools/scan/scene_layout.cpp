@@ -17,8 +17,12 @@ constexpr double kTileMargin = 1.0;      // m: objects stay this far inside the 
 constexpr double kClearance = 1.5;       // m between objects, but the side-by-side pair
 constexpr double kCurbMargin = 0.5;      // m: vehicles stand clear of the curb, not across it
 constexpr double kCrownClearance = 0.5;  // m between a crown's underside and what it overhangs
-constexpr double kTrunkOffsetMin = 1.5, kTrunkOffsetMax = 2.0;  // m from the overhung vehicle's side
-constexpr double kFreeCrownShift = 1.0;                         // m: a free tree's crown off its trunk
+// m from the overhung vehicle's side to its trunk's axis: the clearance,
+// the thickest trunk (scene_clutter.cpp) and a little more.
+constexpr double kTrunkOffsetMin = kClearance + 0.4, kTrunkOffsetMax = kClearance + 0.9;
+constexpr double kFreeCrownShift = 1.0;  // m: a free tree's crown off its trunk
+// m between vehicle centres beyond which a crown over one cannot reach the other.
+constexpr double kCrownReach = 12.0;
 
 bool is_vehicle(SceneObjectKind k) {
   return k == SceneObjectKind::kVehicle || k == SceneObjectKind::kUnknownVehicle;
@@ -81,15 +85,22 @@ class Layout {
   double random_yaw() { return rng_.uniform(0.0, 2.0 * kPi); }
   SeededRandom* rng() { return &rng_; }
 
-  // Draws with make() until the object fits; false with *error after kMaxPlacementAttempts.
+  // Draws with make() until the object fits, at most `attempts` times.
   template <class Make>
-  bool place(const char* what, uint32_t index, Make make, std::string* error) {
-    for (uint32_t attempt = 0; attempt < kMaxPlacementAttempts; ++attempt) {
+  bool try_place(Make make, uint32_t attempts) {
+    for (uint32_t attempt = 0; attempt < attempts; ++attempt) {
       PlacedObject p = make();
       if (!fits(p, *out_, o_.size, t_)) continue;
       out_->push_back(std::move(p));
       return true;
     }
+    return false;
+  }
+
+  // try_place with kMaxPlacementAttempts; false with *error.
+  template <class Make>
+  bool place(const char* what, uint32_t index, Make make, std::string* error) {
+    if (try_place(make, kMaxPlacementAttempts)) return true;
     *error = std::string("cannot place ") + what + " " + std::to_string(index + 1) +
              " clear of the others in a " + std::to_string(o_.size) + " m tile after " +
              std::to_string(kMaxPlacementAttempts) + " attempts: use a larger --size or fewer objects";
@@ -129,21 +140,36 @@ class Layout {
     return false;
   }
 
-  // A tree beside vehicle `v` whose crown overhangs it.
-  bool place_tree_over(std::size_t v, std::string* error) {
-    const PlacedObject target = (*out_)[v];
-    auto make = [&]() {
-      const double side = rng_.chance(0.5) ? 1.0 : -1.0;
-      const Eigen::Vector2d l = side * target.base.lateral();
-      const Eigen::Vector2d at = target.base.center +
-                                 (target.base.half.y() + rng_.uniform(kTrunkOffsetMin, kTrunkOffsetMax)) * l +
-                                 rng_.uniform(-0.5, 0.5) * target.base.half.x() * target.base.axis();
-      const Eigen::Vector2d crown_at = target.base.center + rng_.uniform(0.0, 0.5) * target.base.half.y() * l;
-      return make_tree(t_, at, crown_at, target.top + kCrownClearance, &rng_);
-    };
-    if (!place("tree", 0, make, error)) return false;
-    (*out_)[v].truth.flags |= kUnderTree;
-    return true;
+  // A tree whose crown overhangs one of the `count` vehicles from `first`:
+  // the last if it fits there (its crown inside the tile, its trunk clear of
+  // everything), else the one before, ...
+  bool place_tree_over(std::size_t first, uint32_t count, std::string* error) {
+    for (uint32_t k = count; k-- > 0;) {
+      const PlacedObject target = (*out_)[first + k];
+      // The crown clears every vehicle it may reach, not only its target.
+      double clear = -INFINITY;
+      for (const PlacedObject& q : *out_) {
+        if (is_vehicle(q.truth.kind) && (q.base.center - target.base.center).norm() < kCrownReach)
+          clear = std::max(clear, q.top + kCrownClearance);
+      }
+      auto make = [&]() {
+        const double side = rng_.chance(0.5) ? 1.0 : -1.0;
+        const Eigen::Vector2d l = side * target.base.lateral();
+        const Eigen::Vector2d at =
+            target.base.center + (target.base.half.y() + rng_.uniform(kTrunkOffsetMin, kTrunkOffsetMax)) * l +
+            rng_.uniform(-0.5, 0.5) * target.base.half.x() * target.base.axis();
+        const Eigen::Vector2d crown_at =
+            target.base.center + rng_.uniform(0.0, 0.5) * target.base.half.y() * l;
+        return make_tree(t_, at, crown_at, clear, &rng_);
+      };
+      if (try_place(make, kMaxPlacementAttempts / count + 1)) {
+        (*out_)[first + k].truth.flags |= kUnderTree;
+        return true;
+      }
+    }
+    *error = "cannot place a tree over any vehicle in a " + std::to_string(o_.size) +
+             " m tile: use a larger --size or fewer objects";
+    return false;
   }
 
  private:
@@ -301,7 +327,7 @@ bool lay_out_scene(const std::vector<Mesh>& vehicles, const std::vector<Mesh>& u
   }
   uint32_t trees = 0;
   if (o.trees > 0 && o.vehicles > 0) {
-    if (!lay.place_tree_over(first_vehicle + o.vehicles - 1, error)) return false;
+    if (!lay.place_tree_over(first_vehicle, o.vehicles, error)) return false;
     trees = 1;
   }
   for (; trees < o.trees; ++trees) {

@@ -279,6 +279,34 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("scan-scene: on a steep slope crowded with trees no crown comes down onto a vehicle") {
+  sh::SceneOptions o;
+  o.slope_deg = 30.0;  // the ground under a vehicle can be 2 m above a tree's
+  o.vehicles = 6;
+  o.trees = 8;
+  o.buildings = o.walls = o.crates = 0;
+  o.noise_sigma = 0.0;
+  uint32_t crown_points_over_vehicles = 0;
+  for (uint64_t seed = 1; seed <= 12; ++seed) {
+    o.seed = seed;
+    const sh::SceneScan s = sh::simulate_scene(fleet(), {}, o);
+    REQUIRE_MESSAGE(s.ok(), s.error);
+    for (const sh::SceneTruth& v : s.objects) {
+      if (v.kind != sh::SceneObjectKind::kVehicle) continue;
+      const double h = v.heading_deg * kPi / 180.0;
+      const Eigen::Vector2d ax(std::cos(h), std::sin(h)), lat(-ax.y(), ax.x());
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        if (s.object[i] < 0 || s.objects[s.object[i]].kind != sh::SceneObjectKind::kTree) continue;
+        const Eigen::Vector2d d = Eigen::Vector2d(s.xyz[3 * i], s.xyz[3 * i + 1]) - v.center.head<2>();
+        if (std::abs(d.dot(ax)) > 0.5 * v.extent.x() || std::abs(d.dot(lat)) > 0.5 * v.extent.y()) continue;
+        ++crown_points_over_vehicles;
+        REQUIRE_MESSAGE(s.xyz[3 * i + 2] > v.center.z() + v.extent.z(), "seed " << seed << ", " << v.model);
+      }
+    }
+  }
+  CHECK(crown_points_over_vehicles > 100);
+}
+
 TEST_CASE("scan-scene: every kind is there and no two footprints intersect (crowns may overhang)") {
   sh::SceneOptions o;
   o.unknown_vehicles = 2;
