@@ -40,11 +40,12 @@ int run_scan_scene(ScanSceneArgs& a) {
     return kExitError;
   }
   for (size_t i = 0; i < a.offset.size() && i < 3; ++i) a.options.offset[i] = a.offset[i];
+  if (a.options.unknown_vehicles > 0 && a.unknown.empty()) {
+    print_error(kCommand, "--unknown-vehicles needs --unknown MESHES (vehicles not in the database)");
+    return kExitError;
+  }
   std::vector<host::Mesh> vehicles, unknown;
-  if (!load(a.meshes, &vehicles, &error) ||
-      (a.options.unknown_vehicles > 0 && a.unknown.empty() &&
-       !(error = "--unknown-vehicles needs --unknown MESHES (vehicles not in the database)").empty()) ||
-      (!a.unknown.empty() && !load(a.unknown, &unknown, &error))) {
+  if (!load(a.meshes, &vehicles, &error) || (!a.unknown.empty() && !load(a.unknown, &unknown, &error))) {
     print_error(kCommand, error);
     return kExitError;
   }
