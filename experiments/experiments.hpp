@@ -11,6 +11,9 @@ void add_accuracy_experiment(CLI::App* parent, int* exit_code);
 void add_scaling_experiment(CLI::App* parent, int* exit_code);
 // Eq. 2 against measured collisions; recall of the W candidates.
 void add_lsh_experiment(CLI::App* parent, int* exit_code);
+// Simulated airborne tiles through the scene recognizer: recall, top-1, false
+// alarms and time per tile against slope, point spacing and noise.
+void add_scene_experiment(CLI::App* parent, int* exit_code);
 // Warzone 2100's PIE models (vehicles, structures) to OBJ meshes.
 void add_prepare_warzone(CLI::App* parent, int* exit_code);
 

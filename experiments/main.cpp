@@ -10,13 +10,14 @@
 int main(int argc, char** argv) {
   CLI::App app{
       "spinhash-experiment: reproduce the paper's experiments: accuracy (Fig. 9), scaling (Fig. 10), LSH "
-      "(eq. 2)"};
+      "(eq. 2), scene tiles"};
   app.set_version_flag("--version", spinhash::pipeline::version());
   app.require_subcommand(1);
   int exit_code = spinhash::pipeline::kExitOk;
   spinhash::experiment::add_accuracy_experiment(&app, &exit_code);
   spinhash::experiment::add_scaling_experiment(&app, &exit_code);
   spinhash::experiment::add_lsh_experiment(&app, &exit_code);
+  spinhash::experiment::add_scene_experiment(&app, &exit_code);
   spinhash::experiment::add_prepare_warzone(&app, &exit_code);
   try {
     app.parse(argc, argv);

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   spinhash::cli::add_recognize_command(app, &exit_code);
   spinhash::cli::add_generate_command(app, &exit_code);
   spinhash::cli::add_scene_command(app, &exit_code);
+  spinhash::cli::add_scan_scene_command(app, &exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -3,6 +3,7 @@
 #include "mesh/seeded_random.hpp"
 #include "scan/occluder.hpp"
 #include "scan/ray_caster.hpp"
+#include "scan/ray_grid.hpp"
 
 #include <Eigen/Geometry>
 
@@ -22,8 +23,6 @@ constexpr uint64_t kAzimuthStream = 2;
 constexpr uint64_t kNoiseStream = 3;
 constexpr uint64_t kOcclusionStream = 4;
 constexpr uint64_t kSlopeStream = 5;
-// Below this |forward x up| the view looks straight down: use x for "right".
-constexpr double kVerticalViewTolerance = 1e-9;
 constexpr int32_t kObjectGeometry = 0;
 
 // Rigid pose of the object: rotation about the model origin, then translation.
@@ -55,65 +54,24 @@ Eigen::Matrix3d slope_rotation(const ScanOptions& o) {
   return Eigen::AngleAxisd(o.ground_slope_deg * kDegToRad, axis).toRotationMatrix();
 }
 
-// One view: sensor position and the orthonormal frame it looks along.
-struct View {
-  Eigen::Vector3d origin;
-  Eigen::Vector3d forward;
-  Eigen::Vector3d right;
-  Eigen::Vector3d up;
-};
-
-View make_view(double azimuth, double elevation, double distance) {
-  View v;
-  const Eigen::Vector3d out(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
-                            std::sin(elevation));
-  v.origin = distance * out;
-  v.forward = -out;
-  v.right = v.forward.cross(Eigen::Vector3d::UnitZ());
-  if (v.right.norm() < kVerticalViewTolerance) v.right = Eigen::Vector3d::UnitX();
-  v.right.normalize();
-  v.up = v.right.cross(v.forward);
-  return v;
-}
-
 // State shared by the views of one scan, in the "local" frame: the posed
 // object's centre at the origin, axes of the output frame.
 struct ScanContext {
   const ScanOptions* options = nullptr;
   RayCaster caster;
-  double distance = 0.0;    // sensor to object centre
-  double half_angle = 0.0;  // of the ray grid
-  double step = 0.0;        // angle between neighbouring rays
-  uint64_t grid = 0;        // rays per grid row and column
+  double distance = 0.0;  // sensor to object centre
+  RayGrid grid;
   SeededRandom noise{0};
 };
 
-// Casts one view row by row (bounded memory) and appends its hits.
+// Casts one view and appends its hits.
 bool scan_view(ScanContext* ctx, const View& view, ScanResult* out) {
-  std::vector<Ray> rays(ctx->grid);
-  std::vector<RayHit> hits;
-  uint32_t kept = 0;
-  for (uint64_t j = 0; j < ctx->grid; ++j) {
-    const double b = -ctx->half_angle + j * ctx->step;
-    for (uint64_t i = 0; i < ctx->grid; ++i) {
-      const double a = -ctx->half_angle + i * ctx->step;
-      const Eigen::Vector3d d =
-          std::cos(b) * (std::cos(a) * view.forward + std::sin(a) * view.right) + std::sin(b) * view.up;
-      rays[i] = {view.origin.cast<float>(), d.cast<float>()};
-    }
-    if (!ctx->caster.cast(rays, &hits, &out->error)) return false;
-    for (uint64_t i = 0; i < ctx->grid; ++i) {
-      if (!hits[i].hit()) continue;
-      // The float ray Embree traced, so distance and direction agree.
-      const Eigen::Vector3d dir = rays[i].direction.cast<double>();
-      const double range = hits[i].distance + ctx->options->noise_sigma * ctx->noise.gaussian();
-      const Eigen::Vector3d p = rays[i].origin.cast<double>() + range * dir;
-      out->xyz.insert(out->xyz.end(), {p.x(), p.y(), p.z()});
-      out->on_object.push_back(hits[i].geometry == kObjectGeometry ? 1 : 0);
-      ++kept;
-    }
-  }
-  out->view_points.push_back(kept);
+  std::vector<int32_t> geometry;
+  const int64_t kept = cast_view(ctx->caster, view, ctx->grid, ctx->options->noise_sigma, &ctx->noise,
+                                 &out->xyz, &geometry, &out->error);
+  if (kept < 0) return false;
+  for (int32_t g : geometry) out->on_object.push_back(g == kObjectGeometry ? 1 : 0);
+  out->view_points.push_back(static_cast<uint32_t>(kept));
   return true;
 }
 
@@ -121,19 +79,14 @@ bool scan_view(ScanContext* ctx, const View& view, ScanResult* out) {
 // object's distance and the grid covers the bounding sphere.
 bool plan_grid(ScanContext* ctx, double radius, std::string* error) {
   const ScanOptions& o = *ctx->options;
-  ctx->half_angle = kSensorHalfFovDeg * kDegToRad;
-  ctx->distance = radius / std::sin(ctx->half_angle);
-  ctx->step = o.point_spacing / ctx->distance;
-  const double per_side = std::floor(2.0 * ctx->half_angle / ctx->step) + 1.0;
-  const double per_view = per_side * per_side;
-  if (per_view > double(kMaxRaysPerView) || per_view * o.views > double(kMaxRaysPerScan)) {
+  const double half_angle = kSensorHalfFovDeg * kDegToRad;
+  ctx->distance = radius / std::sin(half_angle);
+  std::string why;
+  if (!plan_ray_grid(half_angle, o.point_spacing / ctx->distance, o.views, &ctx->grid, &why)) {
     *error = "point spacing " + std::to_string(o.point_spacing) + " m is too fine for an object of radius " +
-             std::to_string(radius) + " m: " + std::to_string(per_view) +
-             " rays per view (limits: " + std::to_string(kMaxRaysPerView) + " per view, " +
-             std::to_string(kMaxRaysPerScan) + " per scan)";
+             std::to_string(radius) + " m: " + why;
     return false;
   }
-  ctx->grid = static_cast<uint64_t>(per_side);
   return true;
 }
 

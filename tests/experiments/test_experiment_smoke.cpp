@@ -61,3 +61,44 @@ TEST_CASE("experiment accuracy: look-alike copies in the database, a sparser sca
   CHECK(count_lines(calibration) == 1u + 2u);  // all conditions + the one condition
   CHECK(calibration.find("bran,all,3,") != std::string::npos);
 }
+
+TEST_CASE("experiment scene runs end to end on tiny tiles and scores them against their truth") {
+  TempDir dir("experiment-scene");
+  const std::string out = dir.file("scene");
+  const std::string cmd =
+      "'" SPINHASH_EXPERIMENT_BINARY
+      "' scene --models 6 --tiles 1 --size 30 --vehicles 2 --unknown-vehicles 1 "
+      "--slopes 0,10 --spacings 0.15 --noises 0.05 --ref-slope 0 --ref-spacing 0.15 --out '" +
+      out + "' 2> '" + dir.file("stderr.txt") + "'";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const std::string scene = read_bytes(out + "/scene.csv");
+  CHECK(scene.rfind("sweep,slope_deg,spacing,noise,tiles,vehicles,found,recall,top1,", 0) == 0);
+  CHECK(count_lines(scene) == 1u + 2u + 1u + 1u);  // header + 2 slopes + 1 spacing + 1 noise
+  CHECK(scene.find("\nslope,10,0.15,0.05,1,2,") != std::string::npos);
+  CHECK(scene.find("\nnoise,0,0.15,0.05,1,2,") !=
+        std::string::npos);  // the reference, run once, in every sweep
+  // Two database vehicles and one unknown per tile, in 2 conditions (the reference is run once).
+  const std::string per_object = read_bytes(out + "/per_object.csv");
+  CHECK(count_lines(per_object) == 1u + 2u * 3u);
+  CHECK(per_object.find(",unknown_vehicle,") != std::string::npos);
+  // The pair is side by side; on these easy tiles both database vehicles are found.
+  size_t found = 0;
+  for (size_t at = 0; (at = per_object.find(",vehicle,", at)) != std::string::npos; ++at) {
+    const size_t line_end = per_object.find('\n', at);
+    const std::string line = per_object.substr(at, line_end - at);
+    CHECK(line.find(",1,") != std::string::npos);  // side_by_side
+    // kind,model,side_by_side,under_tree,points,found: the 5th field after kind
+    size_t field = 0, pos = 0;
+    for (; field < 5 && pos != std::string::npos; ++field) pos = line.find(',', pos + 1);
+    found += line.compare(pos + 1, 2, "1,") == 0 ? 1u : 0u;
+  }
+  CHECK(found == 4u);
+  // Confident right answers on database vehicles are never false alarms.
+  const std::string alarms = read_bytes(out + "/false_alarms.csv");
+  CHECK(alarms.rfind("slope_deg,spacing,noise,tile,on,answer,", 0) == 0);
+  CHECK(alarms.find(",vehicle,") == std::string::npos);
+  const std::string summary = read_bytes(out + "/summary.md");
+  CHECK(summary.find("# Scene: simulated airborne tiles") != std::string::npos);
+  CHECK(summary.find("## The issue's targets") != std::string::npos);
+  CHECK(summary.find("| found | >= 95% | 100% (4) | **met** |") != std::string::npos);
+}
