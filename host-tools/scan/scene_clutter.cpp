@@ -117,6 +117,21 @@ void add_ellipsoid(Mesh* mesh, const Eigen::Vector3d& c, const Eigen::Vector3d& 
   }
 }
 
+// A box standing on the terrain (its base sunk to the lowest ground under
+// it), its top `height_min..max` above the highest.
+PlacedObject box_on_ground(SceneObjectKind kind, const char* name, const Terrain& t,
+                           const Eigen::Vector2d& at, double yaw, double length, double width,
+                           double height_min, double height_max, SeededRandom* rng) {
+  const Footprint base = rectangle(at, length, width, yaw);
+  const GroundRange g = ground_under(t, base);
+  const double base_z = g.lo - kFoundationDepth;
+  const double top = g.hi + rng->uniform(height_min, height_max) - base_z;
+  Mesh m;
+  m.name = name;
+  add_box(&m, {-0.5 * length, -0.5 * width, 0.0}, {0.5 * length, 0.5 * width, top});
+  return finish(kind, std::move(m), frame_pose(at, base_z, yaw), base, t);
+}
+
 }  // namespace
 
 PlacedObject make_building(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
@@ -138,28 +153,15 @@ PlacedObject make_building(const Terrain& t, const Eigen::Vector2d& at, double y
 }
 
 PlacedObject make_wall(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
-  const Footprint base = rectangle(at, kWallLength, kWallThickness, yaw);
-  const GroundRange g = ground_under(t, base);
-  const double base_z = g.lo - kFoundationDepth;
-  const double top = g.hi + rng->uniform(kWallHeightMin, kWallHeightMax) - base_z;
-  Mesh m;
-  m.name = "wall";
-  add_box(&m, {-0.5 * kWallLength, -0.5 * kWallThickness, 0.0},
-          {0.5 * kWallLength, 0.5 * kWallThickness, top});
-  return finish(SceneObjectKind::kWall, std::move(m), frame_pose(at, base_z, yaw), base, t);
+  return box_on_ground(SceneObjectKind::kWall, "wall", t, at, yaw, kWallLength, kWallThickness,
+                       kWallHeightMin, kWallHeightMax, rng);
 }
 
 PlacedObject make_crate(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
   const double length = rng->uniform(kCrateSideMin, kCrateSideMax);
   const double width = rng->uniform(kCrateSideMin, kCrateSideMax);
-  const Footprint base = rectangle(at, length, width, yaw);
-  const GroundRange g = ground_under(t, base);
-  const double base_z = g.lo - kFoundationDepth;
-  const double top = g.hi + rng->uniform(kCrateHeightMin, kCrateHeightMax) - base_z;
-  Mesh m;
-  m.name = "crate";
-  add_box(&m, {-0.5 * length, -0.5 * width, 0.0}, {0.5 * length, 0.5 * width, top});
-  return finish(SceneObjectKind::kCrate, std::move(m), frame_pose(at, base_z, yaw), base, t);
+  return box_on_ground(SceneObjectKind::kCrate, "crate", t, at, yaw, length, width, kCrateHeightMin,
+                       kCrateHeightMax, rng);
 }
 
 PlacedObject make_tree(const Terrain& t, const Eigen::Vector2d& at, const Eigen::Vector2d& crown_at,
