@@ -5,13 +5,59 @@
 #include "spinhash/limits.hpp"
 #include "spinhash/lsh.hpp"
 #include "util/fixed_math.hpp"
+#include "util/heap_sort.hpp"
 
 namespace spinhash {
 
+namespace {
+
+// The order of a top-W list: nearer first, equal distances by feature index.
+inline bool before(const Candidate& x, const Candidate& y) {
+  return x.distance < y.distance || (x.distance == y.distance && x.feature < y.feature);
+}
+
+// The LSH scan keeps its top W as a heap whose root is the farthest kept
+// candidate (O(log W) per entering candidate, against O(W) for a sorted
+// list), then sorts it once: the same list as insert_top_w.
+void sift_down_farthest(Candidate* heap, uint32_t n, uint32_t root) {
+  for (uint32_t child = 2u * root + 1u; child < n; child = 2u * root + 1u) {
+    if (child + 1u < n && before(heap[child], heap[child + 1u])) ++child;
+    if (!before(heap[root], heap[child])) return;
+    const Candidate tmp = heap[root];
+    heap[root] = heap[child];
+    heap[child] = tmp;
+    root = child;
+  }
+}
+
+void push_farthest_first(Candidate* heap, uint32_t* count, const Candidate& c) {
+  uint32_t i = (*count)++;
+  heap[i] = c;
+  while (i > 0 && before(heap[(i - 1u) / 2u], heap[i])) {
+    const uint32_t parent = (i - 1u) / 2u;
+    heap[i] = heap[parent];
+    heap[parent] = c;
+    i = parent;
+  }
+}
+
+// Whether c enters a full or filling heap of at most w candidates.
+inline bool enters_heap(const Candidate* heap, uint32_t count, uint32_t w, const Candidate& c) {
+  return count < w || before(c, heap[0]);
+}
+
+void keep_in_heap(Candidate* heap, uint32_t* count, uint32_t w, const Candidate& c) {
+  if (*count < w) {
+    push_farthest_first(heap, count, c);
+    return;
+  }
+  heap[0] = c;  // replaces the farthest
+  sift_down_farthest(heap, w, 0u);
+}
+
+}  // namespace
+
 void insert_top_w(Candidate* list, uint32_t* count, uint32_t w, Candidate c) {
-  auto before = [](const Candidate& x, const Candidate& y) {
-    return x.distance < y.distance || (x.distance == y.distance && x.feature < y.feature);
-  };
   uint32_t n = *count;
   if (n == w && !before(c, list[n - 1u])) return;
   uint32_t i = n < w ? n : w - 1u;  // slot freed at the end
@@ -72,10 +118,15 @@ uint32_t LshSearcher::search(const Database& db, const uint8_t* spin, uint32_t w
     stats->entries_scanned += take;
     for (uint32_t e = 0; e < take; ++e) {
       uint32_t f = entries[first + static_cast<uint32_t>(static_cast<uint64_t>(e) * size / take)];
-      if (!mark_seen(f)) continue;
-      insert_top_w(out, &count, w, Candidate{f, l1_distance(spin, db.spin(f), dims)});
+      const Candidate c{f, l1_distance(spin, db.spin(f), dims)};
+      // Most entries are too far to enter the list: they are dropped before
+      // the seen-set (the list only gets nearer, so a repeat is dropped
+      // again). A repeat that would enter is already in the list.
+      if (w == 0 || !enters_heap(out, count, w, c) || !mark_seen(f)) continue;
+      keep_in_heap(out, &count, w, c);
     }
   }
+  heap_sort(out, count, before);
   return count;
 }
 

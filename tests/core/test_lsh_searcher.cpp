@@ -9,6 +9,7 @@
 #include "spinhash/arena.hpp"
 #include "spinhash/internal/lsh_search.hpp"
 #include "spinhash/internal/spin_quantize.hpp"
+#include "spinhash/lsh.hpp"
 #include "support/toy_database.hpp"
 
 using namespace spinhash;
@@ -36,7 +37,51 @@ bool sorted(const Candidate* c, uint32_t n) {
   return true;
 }
 
+bool before(const Candidate& a, const Candidate& b) {
+  return a.distance < b.distance || (a.distance == b.distance && a.feature < b.feature);
+}
+
+// The distinct features of the probe's L buckets, sorted by (distance, feature).
+std::vector<Candidate> bucket_union_sorted(const Database& db, const uint8_t* probe) {
+  const blob::Params& p = db.params();
+  std::vector<uint32_t> features;
+  for (uint32_t t = 0; t < p.lsh_tables; ++t) {
+    const uint32_t b = blob::bucket_of(lsh_key(db.lsh_bits(t), p.lsh_bits, probe), t, p.lsh_buckets);
+    const uint32_t* entries = db.lsh_entries() + static_cast<size_t>(t) * p.feature_count;
+    for (uint32_t e = db.lsh_offsets(t)[b]; e < db.lsh_offsets(t)[b + 1u]; ++e)
+      features.push_back(entries[e]);
+  }
+  std::sort(features.begin(), features.end());
+  features.erase(std::unique(features.begin(), features.end()), features.end());
+  std::vector<Candidate> all;
+  for (uint32_t f : features) all.push_back(Candidate{f, l1_distance(probe, db.spin(f), db.spin_dims())});
+  std::sort(all.begin(), all.end(), before);
+  return all;
+}
+
 }  // namespace
+
+TEST_CASE("LSH search keeps exactly the W nearest distinct features of the query's buckets") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  Searcher s(1u << 20);
+  Candidate out[128];
+  uint32_t replaced = 0;  // probes whose buckets hold more than W: the list had to evict
+  for (uint32_t w : {1u, 5u, 50u}) {
+    for (uint32_t f = 1; f < toy.db.feature_count(); f += 61) {
+      const std::vector<Candidate> all = bucket_union_sorted(toy.db, toy.db.spin(f));
+      SearchStats st;
+      const uint32_t n = s.lsh.search(toy.db, toy.db.spin(f), w, out, &st);
+      REQUIRE(n == std::min<size_t>(w, all.size()));
+      replaced += all.size() > w ? 1u : 0u;
+      for (uint32_t i = 0; i < n; ++i) {
+        CHECK(out[i].feature == all[i].feature);
+        CHECK(out[i].distance == all[i].distance);
+      }
+    }
+  }
+  CHECK(replaced > 10u);
+}
 
 TEST_CASE("LSH search: a database feature finds itself first, W sorted candidates, no truncation") {
   test::ToyDatabase toy;
