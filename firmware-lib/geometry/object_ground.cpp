@@ -152,11 +152,13 @@ bool occupied_at(const float* lowest, int32_t i, int32_t j) {
 
 // Share of the footprint's border cells (occupied, with an empty 4-neighbour)
 // that are clean ground: terrain reaches beyond the objects on it, while a
-// bare object's outline is its sides.
+// bare object's outline is its sides. Only cells whose spread was measured
+// count: at sparse densities (0.15 m spacing) many edge cells catch fewer
+// than kMinRoughnessPoints ground points, which says nothing either way.
 float clean_border_share(const float* lowest, const CellStats& cs) {
   uint32_t border = 0, clean = 0;
   for (uint32_t c = 0; c < kTerrainCells; ++c) {
-    if (lowest[c] == kEmptyCell) continue;
+    if (lowest[c] == kEmptyCell || cs.spread[c] < 0.0f) continue;
     const int32_t i = static_cast<int32_t>(c % kTerrainGridSide),
                   j = static_cast<int32_t>(c / kTerrainGridSide);
     if (occupied_at(lowest, i - 1, j) && occupied_at(lowest, i + 1, j) && occupied_at(lowest, i, j - 1) &&

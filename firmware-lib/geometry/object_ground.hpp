@@ -28,7 +28,7 @@ constexpr float kMinClearance = 0.05f;        // m: at least this much is ground
 constexpr float kMaxGroundRoughness =
     0.11f;  // m: rougher "ground" (sigma) is an object's side (10 cm noise: 0.095)
 constexpr float kMinCleanBorderShare =
-    0.45f;  // of the footprint's border cells: terrain reaches past the object
+    0.6f;  // of the footprint's measured border cells: terrain reaches past the object
 constexpr float kBelowTerrainSigmas = 4.0f;     // points deeper below the terrain than this many sigma ...
 constexpr float kMinBelowTerrain = 0.3f;        // ... (or this many m) say it is no terrain ...
 constexpr float kMaxBelowTerrainShare = 0.02f;  // ... when more than this share of the points lie there
