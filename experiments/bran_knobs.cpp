@@ -13,6 +13,10 @@ void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs) {
                   "BRAN's stop on evidence (0: the paper's fixed trials)")
       ->check(CLI::Range(0.0f, 0.5f))
       ->capture_default_str();
+  cmd->add_option("--max-bucket-scan", knobs->max_bucket_scan,
+                  "LSH entries scanned per query feature (BRAN, SIND)")
+      ->check(CLI::Range(1u, 1u << 24))
+      ->capture_default_str();
 }
 
 }  // namespace spinhash::experiment

@@ -1,5 +1,6 @@
 // BRAN's additions to the paper that the experiments switch (--transfer-models,
-// --stop-miss-probability), so one run can compare them with the paper's BRAN.
+// --stop-miss-probability), so one run can compare them with the paper's BRAN,
+// and the LSH scan bound (--max-bucket-scan) that sets the index's cost.
 #pragma once
 #include <CLI/CLI.hpp>
 
@@ -10,7 +11,9 @@ namespace spinhash::experiment {
 struct BranKnobs {
   uint32_t transfer_models = RecognizerConfig{}.transfer_models;
   float stop_miss_probability = RecognizerConfig{}.stop_miss_probability;
+  uint32_t max_bucket_scan = RecognizerConfig{}.max_bucket_scan;
   void apply(RecognizerConfig* cfg) const {
+    cfg->max_bucket_scan = max_bucket_scan;
     cfg->transfer_models = transfer_models;
     cfg->stop_miss_probability = stop_miss_probability;
   }

@@ -31,7 +31,7 @@ struct Plane {
   float at(float x, float y) const { return a * x + b * y + c; }
 };
 
-Grid footprint(const float* xyz, uint32_t n) {
+Grid footprint(const float* xyz, uint32_t n, float min_cell) {
   float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
   for (uint32_t i = 1; i < n; ++i)
     for (uint32_t a = 0; a < 2; ++a) {
@@ -44,8 +44,14 @@ Grid footprint(const float* xyz, uint32_t n) {
   g.y0 = lo[1];
   const float extent = hi[0] - lo[0] > hi[1] - lo[1] ? hi[0] - lo[0] : hi[1] - lo[1];
   const float cell = extent / static_cast<float>(kTerrainGridSide);
-  g.cell = cell > kMinTerrainCell ? cell : kMinTerrainCell;
+  g.cell = cell > min_cell ? cell : min_cell;
   return g;
+}
+
+uint32_t occupied_cells(const float* lowest) {
+  uint32_t occupied = 0;
+  for (uint32_t c = 0; c < kTerrainCells; ++c) occupied += lowest[c] != kEmptyCell ? 1u : 0u;
+  return occupied;
 }
 
 void lowest_points(const float* xyz, uint32_t n, const Grid& g, float* lowest) {
@@ -152,13 +158,11 @@ bool occupied_at(const float* lowest, int32_t i, int32_t j) {
 
 // Share of the footprint's border cells (occupied, with an empty 4-neighbour)
 // that are clean ground: terrain reaches beyond the objects on it, while a
-// bare object's outline is its sides. Only cells whose spread was measured
-// count: at sparse densities (0.15 m spacing) many edge cells catch fewer
-// than kMinRoughnessPoints ground points, which says nothing either way.
+// bare object's outline is its sides.
 float clean_border_share(const float* lowest, const CellStats& cs) {
   uint32_t border = 0, clean = 0;
   for (uint32_t c = 0; c < kTerrainCells; ++c) {
-    if (lowest[c] == kEmptyCell || cs.spread[c] < 0.0f) continue;
+    if (lowest[c] == kEmptyCell) continue;
     const int32_t i = static_cast<int32_t>(c % kTerrainGridSide),
                   j = static_cast<int32_t>(c / kTerrainGridSide);
     if (occupied_at(lowest, i - 1, j) && occupied_at(lowest, i + 1, j) && occupied_at(lowest, i, j - 1) &&
@@ -196,12 +200,22 @@ uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* sc
   if (n == 0 || !(clearance > 0.0f)) return 0;
   float* lowest = scratch;
   const CellStats cs{scratch + kTerrainCells, scratch + 2u * kTerrainCells, scratch + 3u * kTerrainCells};
-  const Grid g = footprint(xyz, n);
+  Grid g = footprint(xyz, n, kMinTerrainCell);
   lowest_points(xyz, n, g, lowest);
+  uint32_t occupied = occupied_cells(lowest);
+  // A sparse scan: cells scaled so that they hold kMinPointsPerCell points
+  // on average (the occupied area grows with the cell too, so this is a lower
+  // bound on the scale), once, up to kMaxTerrainCell.
+  const float per_cell = static_cast<float>(n) / static_cast<float>(occupied > 0u ? occupied : 1u);
+  if (per_cell < kMinPointsPerCell && g.cell < kMaxTerrainCell) {
+    const float wanted = g.cell * std::sqrt(kMinPointsPerCell / per_cell);
+    g = footprint(xyz, n, wanted < kMaxTerrainCell ? wanted : kMaxTerrainCell);
+    lowest_points(xyz, n, g, lowest);
+    occupied = occupied_cells(lowest);
+  }
   Plane plane;
   if (!fit_terrain_plane(g, lowest, &plane)) return 0;
-  uint32_t occupied = 0, ground_cells = 0;
-  for (uint32_t c = 0; c < kTerrainCells; ++c) occupied += lowest[c] != kEmptyCell ? 1u : 0u;
+  uint32_t ground_cells = 0;
   accumulate(xyz, n, g, plane, lowest, cs);
   const float sigma = median_spread(cs, &ground_cells);
   if (static_cast<float>(ground_cells) < kMinGroundCellShare * static_cast<float>(occupied) ||

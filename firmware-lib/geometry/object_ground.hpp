@@ -14,7 +14,13 @@ namespace spinhash {
 
 constexpr uint32_t kTerrainGridSide = 32;  // cells per axis over the cloud's footprint
 constexpr uint32_t kTerrainCells = kTerrainGridSide * kTerrainGridSide;
-constexpr float kMinTerrainCell = 0.5f;       // m: smaller cells see too few ground points
+constexpr float kMinTerrainCell = 0.5f;  // m: smaller cells see too few ground points
+constexpr float kMaxTerrainCell = 1.0f;  // m: the coarsest cells a sparse scan gets
+// Points per occupied cell, on average, at least: sparser scans (0.15 m
+// spacing: about 12 in a 0.5 m cell) get coarser cells, so that the cells
+// along the footprint's edge, partly covered, still catch the
+// kMinRoughnessPoints ground points that measure their spread.
+constexpr float kMinPointsPerCell = 25.0f;
 constexpr uint32_t kTerrainFitRounds = 5;     // trimmed plane fits
 constexpr uint32_t kTerrainCoarseRounds = 2;  // the first rounds trim only what rises a lot
 constexpr float kObjectCellRise = 0.5f;       // m: a cell whose lowest point rises more holds an object
@@ -28,7 +34,7 @@ constexpr float kMinClearance = 0.05f;        // m: at least this much is ground
 constexpr float kMaxGroundRoughness =
     0.11f;  // m: rougher "ground" (sigma) is an object's side (10 cm noise: 0.095)
 constexpr float kMinCleanBorderShare =
-    0.6f;  // of the footprint's measured border cells: terrain reaches past the object
+    0.45f;  // of the footprint's border cells: terrain reaches past the object
 constexpr float kBelowTerrainSigmas = 4.0f;     // points deeper below the terrain than this many sigma ...
 constexpr float kMinBelowTerrain = 0.3f;        // ... (or this many m) say it is no terrain ...
 constexpr float kMaxBelowTerrainShare = 0.02f;  // ... when more than this share of the points lie there

@@ -44,6 +44,23 @@ uint32_t count_at_most(const std::vector<float>& pts, uint32_t n, float z) {
   return c;
 }
 
+// Toy vehicle 1 resting on a plane tilted by slope_deg (ground half size 5 m),
+// the ground under it removed as no sensor sees it; *ground: its points.
+test::Tile toy_on_plane(double slope_deg, double ground_spacing, float toy_spacing, double noise,
+                        uint64_t seed, uint32_t* ground) {
+  test::TerrainShape shape;
+  shape.slope_deg = slope_deg;
+  shape.bump_height = 0.0;
+  shape.curb_height = 0.0;
+  test::Tile tile;
+  test::add_terrain(tile, shape, 5.0, ground_spacing, noise, seed);
+  test::add_model(tile, shape, test::toy_vehicle_points(1, toy_spacing), 0.0, 0.0, 0.6, 0.35);
+  test::remove_occluded_ground(tile);
+  *ground = 0;
+  for (uint8_t g : tile.ground) *ground += g;
+  return tile;
+}
+
 }  // namespace
 
 TEST_CASE("noise-free ground and the lowest centimetres of an object on it are dropped, nothing else") {
@@ -211,32 +228,26 @@ TEST_CASE("a cloud that is all level ground is kNotEnoughFeatures or not confide
 // The next two cases come from the scene branch, where they pinned the tile
 // classifier in this path: the same behaviour is asked of this one.
 TEST_CASE("vehicles without ground keep every point (their hood and sides are not terrain)") {
-  for (uint32_t toy = 0; toy < test::kToyModels; ++toy) {
-    CAPTURE(toy);
-    std::vector<double> pts = test::toy_vehicle_points(toy, 0.05f);
-    std::vector<float> seen;  // from the air: no underside
-    for (size_t i = 0; i < pts.size(); i += 3)
-      if (pts[i + 2] > 0.35)
-        for (int a = 0; a < 3; ++a) seen.push_back(static_cast<float>(pts[i + a]));
-    const uint32_t n = static_cast<uint32_t>(seen.size() / 3);
-    std::vector<float> scratch(kObjectGroundScratchFloats);
-    CHECK(remove_object_ground(seen.data(), n, kClearance, scratch.data()) == 0);
-  }
+  for (uint32_t toy = 0; toy < test::kToyModels; ++toy)
+    for (float spacing : {0.05f, 0.1f, 0.15f}) {  // sparse scans get coarser terrain cells
+      CAPTURE(toy);
+      CAPTURE(spacing);
+      std::vector<double> pts = test::toy_vehicle_points(toy, spacing);
+      std::vector<float> seen;  // from the air: no underside
+      for (size_t i = 0; i < pts.size(); i += 3)
+        if (pts[i + 2] > 0.35)
+          for (int a = 0; a < 3; ++a) seen.push_back(static_cast<float>(pts[i + a]));
+      const uint32_t n = static_cast<uint32_t>(seen.size() / 3);
+      std::vector<float> scratch(kObjectGroundScratchFloats);
+      CHECK(remove_object_ground(seen.data(), n, kClearance, scratch.data()) == 0);
+    }
 }
 TEST_CASE("a toy vehicle resting on ground tilted by 15 degrees is recognised with the ground removed") {
   test::ToyDatabase toy;
   REQUIRE(test::make_toy_database(&toy));
-  test::TerrainShape shape;
-  shape.slope_deg = 15.0;
-  shape.bump_height = 0.0;
-  shape.curb_height = 0.0;
-  test::Tile tile;
-  test::add_terrain(tile, shape, 5.0, 0.1, 0.02, 9);
-  test::add_model(tile, shape, test::toy_vehicle_points(1, 0.05f), 0.0, 0.0, 0.6, 0.35);
-  test::remove_occluded_ground(tile);
-  const uint32_t n = static_cast<uint32_t>(tile.ground.size());
   uint32_t truth_ground = 0;
-  for (uint8_t g : tile.ground) truth_ground += g;
+  const test::Tile tile = toy_on_plane(15.0, 0.1, 0.05f, 0.02, 9, &truth_ground);
+  const uint32_t n = static_cast<uint32_t>(tile.ground.size());
   RecognizerConfig cfg;
   host::AlignedBytes ws(required_workspace_bytes(cfg));
   Recognizer r;
@@ -254,23 +265,15 @@ TEST_CASE("a toy vehicle resting on ground tilted by 15 degrees is recognised wi
 // elevation land about 0.21 m apart along the ground) the cells along the
 // footprint's edge catch only a few ground points each: too few to measure a
 // spread, which says nothing about whether the terrain reaches past the
-// object. Ground at 0.24 m failed the border test before only measured
-// cells counted.
+// object. Ground at 0.24 m failed the border test before the cells grew
+// with the scan's spacing.
 TEST_CASE("sparse ground (0.24 m) around a toy vehicle is dropped on level and 15-degree terrain") {
   for (double slope : {0.0, 15.0}) {
     CAPTURE(slope);
-    test::TerrainShape shape;
-    shape.slope_deg = slope;
-    shape.bump_height = 0.0;
-    shape.curb_height = 0.0;
-    test::Tile tile;
-    test::add_terrain(tile, shape, 5.0, 0.24, 0.03, 11);
-    test::add_model(tile, shape, test::toy_vehicle_points(1, 0.15f), 0.0, 0.0, 0.6, 0.35);
-    test::remove_occluded_ground(tile);
+    uint32_t truth_ground = 0;
+    const test::Tile tile = toy_on_plane(slope, 0.24, 0.15f, 0.03, 11, &truth_ground);
     std::vector<float> pts(tile.xyz.begin(), tile.xyz.end());
     const uint32_t n = static_cast<uint32_t>(tile.ground.size());
-    uint32_t truth_ground = 0;
-    for (uint8_t g : tile.ground) truth_ground += g;
     std::vector<float> scratch(kObjectGroundScratchFloats);
     const uint32_t dropped = remove_object_ground(pts.data(), n, kClearance, scratch.data());
     CHECK(dropped >= 0.97 * truth_ground);
