@@ -1,6 +1,8 @@
 // accuracy: is `confident` a statement about correctness? Confident answers
 // against right ones (right = the true model ranked first), per condition
-// and mode and pooled per mode, with the targets of the API's contract.
+// and mode and pooled per mode, with the targets of the API's contract; and
+// whether the look-alike group of an answer that is not confident holds the
+// true model.
 #include <sstream>
 #include <string>
 
@@ -18,6 +20,11 @@ constexpr double kMinConfidentRecall = 0.90;     // right answers flagged confid
 struct Tally {
   uint32_t queries = 0, right = 0, confident = 0, confident_right = 0;
   uint32_t wrong_lookalike = 0;  // wrong, and the answer is a look-alike copy of the truth (or the reverse)
+  uint32_t unsure = 0, unsure_in_group = 0;  // answers not confident; those whose group holds the truth
+  uint64_t unsure_group_sizes = 0;
+
+  double group_recall() const { return unsure ? static_cast<double>(unsure_in_group) / unsure : 1.0; }
+  double mean_group() const { return unsure ? static_cast<double>(unsure_group_sizes) / unsure : 0.0; }
 
   double precision() const { return confident ? static_cast<double>(confident_right) / confident : 1.0; }
   double recall() const { return right ? static_cast<double>(confident_right) / right : 1.0; }
@@ -33,6 +40,11 @@ void count(const AccuracyRun& run, const AccuracyRecord& r, Tally* t) {
   t->right += right ? 1u : 0u;
   t->confident += o.confident ? 1u : 0u;
   t->confident_right += o.confident && right ? 1u : 0u;
+  if (!o.confident && o.ranked > 0) {
+    ++t->unsure;
+    t->unsure_in_group += o.rank >= 1 && o.rank <= o.group_size ? 1u : 0u;
+    t->unsure_group_sizes += o.group_size;
+  }
   if (!right && o.ranked > 0 &&
       base_name(run.model_names[o.best_model]) == base_name(run.model_names[r.model]))
     ++t->wrong_lookalike;
@@ -54,7 +66,8 @@ std::string row(const std::string& label, const std::string& mode, const Tally& 
     << pct(t.queries ? double(t.right) / t.queries : 0) << " | " << t.confident << " | " << pct(t.precision())
     << (t.precision() >= kMinConfidentPrecision ? "" : " (below)") << " | " << pct(t.recall())
     << (t.recall() >= kMinConfidentRecall ? "" : " (below)") << " | " << t.confident - t.confident_right
-    << " | " << t.wrong_lookalike << " |\n";
+    << " | " << t.wrong_lookalike << " | " << pct(t.group_recall()) << " | " << num(t.mean_group(), 3)
+    << " |\n";
   return s.str();
 }
 
@@ -66,8 +79,11 @@ std::string confidence_section(const AccuracyRun& run) {
     << "(target >= " << pct(kMinConfidentPrecision)
     << "); recall: right answers flagged confident (target >= " << pct(kMinConfidentRecall)
     << "). Look-alike errors: wrong answers that name a look-alike copy of the "
-    << "scanned model.\n\n| condition | mode | queries | right first | confident | precision | recall | "
-    << "confident and wrong | look-alike errors |\n|---|---|---|---|---|---|---|---|---|\n";
+    << "scanned model. In group: answers not confident whose look-alike group (the leading models "
+    << "within min_margin of the first) holds the scanned model, and the mean size of that group."
+    << "\n\n| condition | mode | queries | right first | confident | precision | recall | "
+    << "confident and wrong | look-alike errors | in group | mean group |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (uint32_t m = 0; m < run.modes.size(); ++m)
     s << row("**all conditions**", mode_title(run.modes[m]), tally(run, -1, m));
   for (uint32_t c = 0; c < run.conditions.size(); ++c)
@@ -78,14 +94,15 @@ std::string confidence_section(const AccuracyRun& run) {
 
 bool write_calibration_csv(const AccuracyRun& run, std::string* error) {
   CsvTable t({"mode", "condition", "queries", "right_first", "confident", "confident_right", "precision",
-              "recall", "lookalike_errors"});
+              "recall", "lookalike_errors", "unsure", "unsure_in_group", "mean_group"});
   for (int c = -1; c < static_cast<int>(run.conditions.size()); ++c)
     for (uint32_t m = 0; m < run.modes.size(); ++m) {
       const Tally x = tally(run, c, m);
       t.add({pipeline::mode_name(run.modes[m]),
              c < 0 ? "all" : run.conditions[static_cast<size_t>(c)].label(), std::to_string(x.queries),
              std::to_string(x.right), std::to_string(x.confident), std::to_string(x.confident_right),
-             num(x.precision()), num(x.recall()), std::to_string(x.wrong_lookalike)});
+             num(x.precision()), num(x.recall()), std::to_string(x.wrong_lookalike), std::to_string(x.unsure),
+             std::to_string(x.unsure_in_group), num(x.mean_group())});
     }
   return t.write(run.out_dir + "/calibration.csv", error);
 }

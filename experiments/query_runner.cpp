@@ -27,6 +27,7 @@ Outcome recognise(pipeline::RecognitionSession& session, const Query& q) {
   o.hypotheses = r.stats.hypotheses;
   o.features = r.stats.features;
   o.confident = r.confident;
+  o.group_size = r.group_size;
   o.budget_exhausted = r.stats.budget_exhausted;
   o.trials = r.stats.trials;
   if (r.status != Status::kOk) return o;

@@ -17,6 +17,7 @@ struct Outcome {
   uint32_t ranked = 0;      // models in the ranking
   uint32_t best_model = 0;  // ranked first (valid when ranked > 0)
   bool confident = false;
+  uint32_t group_size = 0;  // leading models the scan does not tell apart (Result::group_size)
   bool budget_exhausted = false;
   uint32_t trials = 0;        // doublet draws
   float score_first = 0.0f;   // log-likelihood of the first model (valid when ranked > 0)

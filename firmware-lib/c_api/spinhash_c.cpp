@@ -77,6 +77,7 @@ spinhash_status finish(const RecognizerSlot& sl, const Result& r, spinhash_resul
   out->status = static_cast<int32_t>(r.status);
   out->ranking_count = r.status == Status::kOk ? r.ranking_count : 0u;
   out->confident = r.confident ? 1u : 0u;
+  out->group_size = r.status == Status::kOk ? r.group_size : 0u;
   to_c_stats(r.stats, &out->stats);
   out->ranking_ = r.ranking;
   out->database_ = sl.database;

@@ -90,18 +90,25 @@ void reset(ModelBest& best) {
   best.final_score = false;
 }
 
-// The runner-up's lead is a likelihood ratio only for BRAN and SRAN (SIND
-// ranks by votes); a lone ranked model leads by definition.
-bool leads_runner_up(const Result& r, const RecognizerConfig& cfg, float n) {
-  if (cfg.mode == Mode::kSind || r.ranking_count < 2) return true;
-  return r.ranking[0].score - r.ranking[1].score >= cfg.min_margin * n;
+// The leading models within min_margin per feature of the first. Score
+// gaps are likelihood ratios only for BRAN and SRAN (SIND ranks by votes):
+// there the first stands alone.
+uint32_t lookalike_group_size(const Result& r, const RecognizerConfig& cfg, uint32_t features) {
+  if (r.ranking_count == 0) return 0;
+  if (cfg.mode == Mode::kSind) return 1;
+  const float within = cfg.min_margin * static_cast<float>(features);
+  uint32_t k = 1;
+  while (k < r.ranking_count && r.ranking[0].score - r.ranking[k].score < within) ++k;
+  return k;
 }
 
+// Confident: the first explains enough of the query, well enough, and
+// leads every other model by min_margin (its look-alike group is itself).
 bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features) {
   if (r.ranking_count == 0 || !r.ranking[0].has_pose) return false;
   const float n = static_cast<float>(features);
   return static_cast<float>(r.ranking[0].inliers) >= cfg.min_inlier_fraction * n &&
-         r.ranking[0].score >= cfg.min_mean_log_likelihood * n && leads_runner_up(r, cfg, n);
+         r.ranking[0].score >= cfg.min_mean_log_likelihood * n && r.group_size == 1u;
 }
 
 Pose identity_pose() {
@@ -227,6 +234,7 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
   if (config_.mode != Mode::kSind) finalise_scores(ctx, config_.refine_poses);
   result.ranking = b.ranking;
   result.ranking_count = rank_models(*db_, b, fs.origin);
+  result.group_size = lookalike_group_size(result, config_, fs.count);
   result.confident = is_confident(result, config_, fs.count);
   return result;
 }

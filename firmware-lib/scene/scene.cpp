@@ -259,6 +259,7 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
         }
         out.ranking = dst;
         out.confident = r.confident && size_agrees(o, db_->model(dst[0].model), c.max_size_mismatch);
+        out.group_size = r.group_size;
       }
     }
     ++res.stats.objects_by_kind[static_cast<uint32_t>(out.kind)];

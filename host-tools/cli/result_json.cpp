@@ -52,6 +52,7 @@ std::string result_json(const std::string& query, const Database& db, const Resu
   s += "],\"pose\":";
   s += r.ranking_count > 0 && r.ranking[0].has_pose ? pose_json(r.ranking[0].pose) : std::string("null");
   s += std::string(",\"confident\":") + (r.confident ? "true" : "false");
+  s += ",\"group_size\":" + std::to_string(r.status == Status::kOk ? r.group_size : 0u);
   s += ",\"time_ms\":" + json_number(time_ms, 4) + ",\"hypotheses\":" + std::to_string(r.stats.hypotheses);
   s += ",\"stats\":" + stats_json(r.stats) + "," + json_version_member() + "}";
   return s;

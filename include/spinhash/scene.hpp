@@ -72,7 +72,8 @@ struct SceneObject {
   const RankedModel* ranking = nullptr;  // in the workspace, best first; valid until the next call
   uint32_t ranking_count = 0;            // <= top_n
   bool confident = false;
-  RecognitionStats stats;  // of its recognition
+  uint32_t group_size = 0;  // Result::group_size of its recognition (may exceed ranking_count)
+  RecognitionStats stats;   // of its recognition
 };
 
 struct SceneStats {

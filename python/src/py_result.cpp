@@ -56,6 +56,7 @@ PyResult make_result(const Database& db, const ResultCopy& r) {
   out.ranking = ranking_list(db, r.ranking);
   out.pose = best_pose(r.ranking);
   out.confident = r.result.confident;
+  out.group_size = r.result.status == Status::kOk ? r.result.group_size : 0u;
   out.stats = stats_dict(r.result.stats);
   out.time_ms = r.time_ms;
   return out;
@@ -72,6 +73,7 @@ PySceneObject make_scene_object(const Database& db, const SceneObjectCopy& c) {
   out.ranking = ranking_list(db, c.ranking);
   out.pose = best_pose(c.ranking);
   out.confident = o.confident;
+  out.group_size = o.group_size;
   out.points = o.points;
   out.center = py::make_tuple(o.center[0], o.center[1], o.center[2]);
   out.extent = py::make_tuple(static_cast<double>(o.extent[0]), static_cast<double>(o.extent[1]),
@@ -89,6 +91,9 @@ void bind_result(py::module_& m) {
       .def_readonly("pose", &PyResult::pose,
                     "4x4 float64, model frame -> query frame, of the best model; None without one")
       .def_readonly("confident", &PyResult::confident, "the best model explains enough of the query")
+      .def_readonly("group_size", &PyResult::group_size,
+                    "leading models the scan does not tell apart (within min_margin); 1: the first "
+                    "stands alone")
       .def_readonly("stats", &PyResult::stats, "the CLI's \"stats\" object as a dict")
       .def_readonly("time_ms", &PyResult::time_ms, "wall time of the recognition, ms")
       .def_property_readonly(
@@ -114,6 +119,8 @@ void bind_result(py::module_& m) {
       .def_readonly("pose", &PySceneObject::pose, "4x4 float64 of the best model, or None")
       .def_readonly("confident", &PySceneObject::confident,
                     "a confident recognition that fits the object's size")
+      .def_readonly("group_size", &PySceneObject::group_size,
+                    "leading models its recognition does not tell apart (within min_margin)")
       .def_readonly("points", &PySceneObject::points, "points in the object")
       .def_readonly("center", &PySceneObject::center, "(x, y, z): footprint centre, z mid-height")
       .def_readonly("extent", &PySceneObject::extent, "(length, width, height above terrain), m")

@@ -25,7 +25,8 @@ struct PyResult {
   pybind11::list ranking;  // (model name, score), best first
   pybind11::object pose;   // 4x4 float64 of the best model, or None (SIND, nothing found)
   bool confident = false;
-  pybind11::dict stats;  // SPINHASH_STATS_FIELDS under the CLI's JSON keys
+  uint32_t group_size = 0;  // Result::group_size
+  pybind11::dict stats;     // SPINHASH_STATS_FIELDS under the CLI's JSON keys
   double time_ms = 0.0;
 };
 PyResult make_result(const Database& db, const ResultCopy& r);
@@ -44,6 +45,7 @@ struct PySceneObject {
   pybind11::list ranking;  // (model name, score), best first
   pybind11::object pose;   // 4x4 float64, or None
   bool confident = false;
+  uint32_t group_size = 0;
   uint32_t points = 0;
   pybind11::tuple center;  // georeferenced footprint centre, z mid-height
   pybind11::tuple extent;  // m: length, width, height above terrain

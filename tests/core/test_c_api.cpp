@@ -84,6 +84,9 @@ TEST_CASE("C API: the golden blob opens, recognises in float and double, and nam
   REQUIRE(spinhash_result_entry(&r64, 0, &best64) == SPINHASH_OK);
 
   CHECK(r32.ranking_count == want.ranking_count);
+  CHECK(r32.group_size >= 1u);
+  CHECK(r32.group_size <= r32.ranking_count);
+  CHECK(r64.group_size == r32.group_size);
   CHECK(r32.stats.hypotheses == want.hypotheses);
   CHECK(r32.stats.budget_exhausted == (want.budget_exhausted ? 1u : 0u));
   CHECK(best32.model == want.ranking[0].model);

@@ -1,6 +1,6 @@
 // Look-alike pose transfer (recognize/pose_transfer.cpp): a model crowded out
 // of the W candidates by an identical twin still gets the twin's pose, and an
-// answer tied with its twin is not confident.
+// answer tied with its twin is not confident: its look-alike group holds both.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -25,8 +25,7 @@ struct Twinned {
   const uint32_t twin = test::kToyModels;
   Twinned() { REQUIRE(test::make_toy_database(&toy, kTwinned)); }
 
-  Result recognize(uint32_t transfer_models) {
-    RecognizerConfig cfg;
+  Result recognize(uint32_t transfer_models, RecognizerConfig cfg = RecognizerConfig{}) {
     cfg.top_w = 1;
     cfg.transfer_models = transfer_models;
     ws = host::AlignedBytes(required_workspace_bytes(cfg));
@@ -76,7 +75,9 @@ TEST_CASE_FIXTURE(Twinned, "pose transfer scores the twin at the leading pose, a
 TEST_CASE_FIXTURE(Twinned, "an answer its exact twin ties is not confident, whatever its fit") {
   Result r = recognize(8);
   REQUIRE(r.ranking_count >= 2);
-  CHECK_FALSE(r.confident);  // the lead over the runner-up (the twin) is 0 < min_margin
+  CHECK_FALSE(r.confident);               // the lead over the runner-up (the twin) is 0 < min_margin
+  CHECK(r.group_size >= 2u);              // ... so the answer is the look-alike group: the twins, first
+  CHECK(r.group_size < r.ranking_count);  // not every model: the toys differ by more than the margin
   CHECK(r.ranking[0].inliers * 2u >= r.stats.features);  // the fit itself would pass
 }
 
@@ -84,5 +85,31 @@ TEST_CASE_FIXTURE(Twinned, "without its twin in the running the same fit is conf
   Result r = recognize(0);
   REQUIRE(r.ranking_count >= 1);
   CHECK(r.ranking[0].model == kTwinned);
+  CHECK(r.group_size == 1u);
   CHECK(r.confident);
+}
+
+TEST_CASE_FIXTURE(Twinned, "the look-alike group is every leading model within min_margin of the first") {
+  RecognizerConfig cfg;
+  for (float margin : {0.0f, 0.1f, 1.0f, 100.0f}) {
+    CAPTURE(margin);
+    cfg.min_margin = margin;
+    Result r = recognize(8, cfg);
+    REQUIRE(r.ranking_count >= 2);
+    const float within = margin * static_cast<float>(r.stats.features);
+    uint32_t expected = 1;
+    while (expected < r.ranking_count && r.ranking[0].score - r.ranking[expected].score < within) ++expected;
+    CHECK(r.group_size == expected);
+    if (margin >= 100.0f) CHECK(r.group_size == r.ranking_count);  // nothing is that far behind
+    if (margin == 0.0f) CHECK(r.group_size == 1u);
+  }
+  // A margin that just takes in the third model (its gap is 3/4 of it).
+  Result first = recognize(8);
+  REQUIRE(first.ranking_count >= 3);
+  const float gap = first.ranking[0].score - first.ranking[2].score;
+  const float features = static_cast<float>(first.stats.features);
+  cfg.min_margin = gap / (0.75f * features);
+  CHECK(recognize(8, cfg).group_size >= 3u);
+  cfg.min_margin = gap / (1.25f * features);  // ... and one that just leaves it out
+  CHECK(recognize(8, cfg).group_size == 2u);
 }

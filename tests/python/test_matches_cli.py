@@ -24,6 +24,8 @@ def assert_same_answer(result, line):
         assert result.pose.shape == (4, 4) and result.pose.dtype == np.float64
         np.testing.assert_allclose(result.pose, np.array(line["pose"]).reshape(4, 4), rtol=0, atol=1e-6)
     assert result.confident == line["confident"]
+    assert result.group_size == line["group_size"]
+    assert result.group_size >= (1 if result.ranking else 0)
     assert result.stats == line["stats"]
 
 

@@ -33,8 +33,9 @@ def test_the_scene_matches_the_cli(fleet, tile):
     assert scene.last_status == "ok"
     assert len(objects) == len(lines) >= 2
     for obj, line in zip(objects, lines):
-        assert (obj.kind, obj.status, obj.model, obj.confident, obj.points) == \
-            (line["kind"], line["status"], line["model"], line["confident"], line["points"])
+        assert (obj.kind, obj.status, obj.model, obj.confident, obj.group_size, obj.points) == \
+            (line["kind"], line["status"], line["model"], line["confident"], line["group_size"],
+             line["points"])
         assert [name for name, _ in obj.ranking] == [entry["model"] for entry in line["ranking"]]
         for (_, score), entry in zip(obj.ranking, line["ranking"]):
             assert score == pytest.approx(entry["score"], rel=1e-6)
