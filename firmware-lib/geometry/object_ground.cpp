@@ -31,7 +31,7 @@ struct Plane {
   float at(float x, float y) const { return a * x + b * y + c; }
 };
 
-Grid footprint(const float* xyz, uint32_t n, float min_cell) {
+Grid footprint(const float* xyz, uint32_t n) {
   float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
   for (uint32_t i = 1; i < n; ++i)
     for (uint32_t a = 0; a < 2; ++a) {
@@ -44,7 +44,7 @@ Grid footprint(const float* xyz, uint32_t n, float min_cell) {
   g.y0 = lo[1];
   const float extent = hi[0] - lo[0] > hi[1] - lo[1] ? hi[0] - lo[0] : hi[1] - lo[1];
   const float cell = extent / static_cast<float>(kTerrainGridSide);
-  g.cell = cell > min_cell ? cell : min_cell;
+  g.cell = cell > kMinTerrainCell ? cell : kMinTerrainCell;
   return g;
 }
 
@@ -200,16 +200,17 @@ uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* sc
   if (n == 0 || !(clearance > 0.0f)) return 0;
   float* lowest = scratch;
   const CellStats cs{scratch + kTerrainCells, scratch + 2u * kTerrainCells, scratch + 3u * kTerrainCells};
-  Grid g = footprint(xyz, n, kMinTerrainCell);
+  Grid g = footprint(xyz, n);
   lowest_points(xyz, n, g, lowest);
   uint32_t occupied = occupied_cells(lowest);
   // A sparse scan: cells scaled so that they hold kMinPointsPerCell points
   // on average (the occupied area grows with the cell too, so this is a lower
-  // bound on the scale), once, up to kMaxTerrainCell.
+  // bound on the scale), once, up to kMaxTerrainCell. The grid keeps its
+  // corner; the larger cell still covers the footprint.
   const float per_cell = static_cast<float>(n) / static_cast<float>(occupied > 0u ? occupied : 1u);
   if (per_cell < kMinPointsPerCell && g.cell < kMaxTerrainCell) {
     const float wanted = g.cell * std::sqrt(kMinPointsPerCell / per_cell);
-    g = footprint(xyz, n, wanted < kMaxTerrainCell ? wanted : kMaxTerrainCell);
+    g.cell = wanted < kMaxTerrainCell ? wanted : kMaxTerrainCell;
     lowest_points(xyz, n, g, lowest);
     occupied = occupied_cells(lowest);
   }
