@@ -4,13 +4,13 @@
 #include <cmath>
 
 #include "render/canvas.hpp"
+#include "util/angles.hpp"
 
 namespace spinhash::host {
 namespace {
 
 constexpr int kMarginPx = 30;   // around the tile, room for labels and the title
 constexpr int kLabelScale = 2;  // font pixels per glyph pixel
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
 constexpr Rgb kBackground{18, 18, 24}, kTextColour{240, 240, 240}, kLabelBackdrop{0, 0, 0};
 
 Rgb style_colour(BoxStyle s) {

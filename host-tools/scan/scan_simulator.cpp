@@ -4,6 +4,7 @@
 #include "scan/occluder.hpp"
 #include "scan/ray_caster.hpp"
 #include "scan/ray_grid.hpp"
+#include "util/angles.hpp"
 
 #include <Eigen/Geometry>
 
@@ -14,8 +15,6 @@
 namespace spinhash::host {
 namespace {
 
-constexpr double kPi = 3.141592653589793;
-constexpr double kDegToRad = kPi / 180.0;
 // Independent random streams of one seed (mix_seed), so e.g. changing the
 // noise leaves the pose and the azimuth unchanged.
 constexpr uint64_t kPoseStream = 1;

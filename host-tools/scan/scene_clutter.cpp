@@ -4,6 +4,7 @@
 // them so no gap shows on a slope.
 #include "mesh/vehicle_parts.hpp"
 #include "scan/scene_layout.hpp"
+#include "util/angles.hpp"
 
 #include <Eigen/Geometry>
 
@@ -13,8 +14,6 @@
 namespace spinhash::host {
 namespace {
 
-constexpr double kPi = 3.141592653589793;
-constexpr double kRadToDeg = 180.0 / kPi;
 constexpr uint32_t kTerrainSamples = 7;   // per side of a footprint, for its lowest and highest ground
 constexpr double kFoundationDepth = 0.3;  // m below the lowest ground
 // Building (m): footprint side, eaves above the highest ground, roof rise.

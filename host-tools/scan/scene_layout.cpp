@@ -1,4 +1,5 @@
 #include "scan/scene_layout.hpp"
+#include "util/angles.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
@@ -9,8 +10,6 @@
 namespace spinhash::host {
 namespace {
 
-constexpr double kPi = 3.141592653589793;
-constexpr double kRadToDeg = 180.0 / kPi;
 constexpr uint64_t kLayoutStream = 0x7200;
 constexpr uint32_t kRestSamples = 5;     // per side of a vehicle footprint, for the ground plane fit
 constexpr double kTileMargin = 1.0;      // m: objects stay this far inside the tile

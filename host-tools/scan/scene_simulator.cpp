@@ -6,6 +6,7 @@
 #include "scan/scan_simulator.hpp"
 #include "scan/scene_layout.hpp"
 #include "scan/scene_terrain.hpp"
+#include "util/angles.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,8 +15,6 @@
 namespace spinhash::host {
 namespace {
 
-constexpr double kPi = 3.141592653589793;
-constexpr double kDegToRad = kPi / 180.0;
 constexpr uint64_t kViewStream = 0x7300;
 constexpr uint64_t kNoiseStream = 0x7301;
 constexpr uint8_t kGroundClass = 2, kOtherClass = 1;  // ASPRS

@@ -1,6 +1,7 @@
 #include "scan/scene_terrain.hpp"
 
 #include "mesh/seeded_random.hpp"
+#include "util/angles.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +9,6 @@
 namespace spinhash::host {
 namespace {
 
-constexpr double kPi = 3.141592653589793;
-constexpr double kDegToRad = kPi / 180.0;
 constexpr uint64_t kTerrainStream = 0x7100;
 constexpr double kBumpSigmaMin = 2.0, kBumpSigmaMax = 5.0;  // m: smooth under a vehicle
 constexpr double kCurbRamp = 0.1;                           // m over which the curb rises
