@@ -58,6 +58,7 @@ Status Database::open(const void* bytes, size_t size, Database* out) noexcept {
   db.lsh_bits_ = section_as<blob::LshBit>(sec, blob::kLshBits);
   db.lsh_offsets_ = section_as<uint32_t>(sec, blob::kLshOffsets);
   db.lsh_entries_ = section_as<uint32_t>(sec, blob::kLshEntries);
+  db.nearest_field_ = section_as<uint16_t>(sec, blob::kNearestField);
   *out = db;
   return Status::kOk;
 }

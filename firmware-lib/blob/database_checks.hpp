@@ -19,11 +19,14 @@ static_assert(offsetof(blob::Header, total_size) == 16 && offsetof(blob::Header,
               "header layout");
 static_assert(offsetof(blob::SectionEntry, offset) == 8 && offsetof(blob::SectionEntry, crc) == 24,
               "section entry layout");
-static_assert(offsetof(blob::Params, cloud_voxel) == 32 && offsetof(blob::Params, reserved) == 64,
+static_assert(offsetof(blob::Params, cloud_voxel) == 32 && offsetof(blob::Params, field_entry_count) == 64 &&
+                  offsetof(blob::Params, reserved) == 80,
               "params layout");
 static_assert(offsetof(blob::ModelRecord, first_feature) == 48 &&
                   offsetof(blob::ModelRecord, grid_offset_base) == 68 &&
-                  offsetof(blob::ModelRecord, bbox_max) == 96 && offsetof(blob::ModelRecord, reserved) == 108,
+                  offsetof(blob::ModelRecord, bbox_max) == 96 &&
+                  offsetof(blob::ModelRecord, field_dims) == 108 &&
+                  offsetof(blob::ModelRecord, reserved) == 124,
               "model record layout");
 
 constexpr uint32_t kSlotCount = blob::kSectionIdCount + 1;  // indexed by SectionId; slot 0 unused
@@ -51,7 +54,7 @@ Status check_header(const uint8_t* base, size_t size);
 Status check_sections(const uint8_t* base, Sections* out);
 // Params size, counts, section sizes, float ranges, config fingerprint.
 Status check_params(const blob::Header& header, const Sections& s);
-// Model records: names, feature ranges, grids and their offsets.
+// Model records: names, feature ranges, grids and their offsets, fields and their slots.
 Status check_models(const Sections& s);
 // Per-feature positions, normals and model ids.
 Status check_features(const Sections& s);

@@ -1,6 +1,6 @@
 // Stage 4 of Database::open: the model table. Models own consecutive,
 // non-empty feature ranges that tile [0, feature_count), and consecutive,
-// non-overlapping grid-offset ranges, so this stage (and every later per-model
+// non-overlapping grid-offset and nearest-field ranges, so this stage (and every later per-model
 // loop) costs time proportional to the blob size.
 #include <cmath>
 
@@ -57,18 +57,58 @@ bool grid_offsets_ok(const uint32_t* off, uint64_t cells, uint32_t feature_count
   return true;
 }
 
-// One record; *next_feature and *next_grid advance past what it owns.
-bool model_ok(const blob::ModelRecord& m, const uint32_t* grid, uint64_t grid_count, uint64_t* next_feature,
-              uint64_t* next_grid) {
+// Voxels of the model's nearest-feature field, or 0 if a dimension is 0 or the product is too large.
+uint64_t field_voxels(const blob::ModelRecord& m) {
+  uint64_t voxels = 1;
+  for (uint32_t k = 0; k < 3u; ++k) {
+    const uint32_t d = m.field_dims[k];
+    if (d == 0u || d > kMaxFieldVoxelsPerModel) return 0u;
+    voxels *= d;  // <= 2^24 * 2^24 before the next check: no overflow
+    if (voxels > kMaxFieldVoxelsPerModel) return 0u;
+  }
+  return voxels;
+}
+
+// What the records share, and how far the records so far reach.
+struct TableWalk {
+  const uint32_t* grid;
+  uint64_t grid_count;
+  const uint16_t* field;
+  uint64_t field_count;  // 0: the blob has no field
+  uint32_t field_slots;
+  uint64_t next_feature;
+  uint64_t next_grid;
+  uint64_t next_field;
+};
+
+// The model's field: absent with the blob's, else in range after the
+// previous model's, every slot one of the model's features or empty.
+bool field_of_model_ok(const blob::ModelRecord& m, TableWalk* w) {
+  if (w->field_count == 0u)
+    return m.field_dims[0] == 0u && m.field_dims[1] == 0u && m.field_dims[2] == 0u && m.field_base == 0u;
+  const uint64_t voxels = field_voxels(m);
+  if (voxels == 0u || m.field_base < w->next_field) return false;
+  const uint64_t end = static_cast<uint64_t>(m.field_base) + voxels * w->field_slots;
+  if (end > w->field_count) return false;
+  for (uint64_t e = m.field_base; e < end; ++e) {
+    if (w->field[e] != blob::kNoFieldFeature && w->field[e] >= m.feature_count) return false;
+  }
+  w->next_field = end;
+  return true;
+}
+
+// One record; the walk advances past what it owns.
+bool model_ok(const blob::ModelRecord& m, TableWalk* w) {
   if (!name_ok(m.name) || !geometry_ok(m)) return false;
-  if (m.first_feature != *next_feature || m.feature_count == 0u) return false;
+  if (m.first_feature != w->next_feature || m.feature_count == 0u) return false;
   const uint64_t cells = grid_cells(m);
-  if (cells == 0u || m.grid_offset_base < *next_grid) return false;
+  if (cells == 0u || m.grid_offset_base < w->next_grid) return false;
   const uint64_t grid_end = static_cast<uint64_t>(m.grid_offset_base) + cells + 1u;
-  if (grid_end > grid_count) return false;
-  if (!grid_offsets_ok(grid + m.grid_offset_base, cells, m.feature_count)) return false;
-  *next_feature += m.feature_count;
-  *next_grid = grid_end;
+  if (grid_end > w->grid_count) return false;
+  if (!grid_offsets_ok(w->grid + m.grid_offset_base, cells, m.feature_count)) return false;
+  if (!field_of_model_ok(m, w)) return false;
+  w->next_feature += m.feature_count;
+  w->next_grid = grid_end;
   return true;
 }
 
@@ -77,15 +117,18 @@ bool model_ok(const blob::ModelRecord& m, const uint32_t* grid, uint64_t grid_co
 Status check_models(const Sections& s) {
   const blob::Params& p = params_of(s);
   const blob::ModelRecord* models = section_as<blob::ModelRecord>(s, blob::kModels);
-  const uint32_t* grid = section_as<uint32_t>(s, blob::kGridOffsets);
-  uint64_t next_feature = 0;
-  uint64_t next_grid = 0;
+  TableWalk w{section_as<uint32_t>(s, blob::kGridOffsets),
+              p.grid_offset_count,
+              section_as<uint16_t>(s, blob::kNearestField),
+              p.field_entry_count,
+              p.field_slots,
+              0u,
+              0u,
+              0u};
   for (uint32_t i = 0; i < p.model_count && i < kMaxModels; ++i) {
-    if (!model_ok(models[i], grid, p.grid_offset_count, &next_feature, &next_grid)) {
-      return Status::kBlobBadModelTable;
-    }
+    if (!model_ok(models[i], &w)) return Status::kBlobBadModelTable;
   }
-  return next_feature == p.feature_count ? Status::kOk : Status::kBlobBadModelTable;
+  return w.next_feature == p.feature_count ? Status::kOk : Status::kBlobBadModelTable;
 }
 
 }  // namespace blob_check

@@ -49,6 +49,7 @@ Status check_sizes(const blob::Params& p, const Sections& s) {
       {blob::kLshBits, sizeof(blob::LshBit), tables, p.lsh_bits},
       {blob::kLshOffsets, sizeof(uint32_t), tables, static_cast<uint64_t>(p.lsh_buckets) + 1u},
       {blob::kLshEntries, sizeof(uint32_t), tables, n},
+      {blob::kNearestField, sizeof(uint16_t), p.field_entry_count, 1u},
   };
   for (const SizeRule& r : rules) {
     uint64_t elements = 0;
@@ -61,13 +62,20 @@ Status check_sizes(const blob::Params& p, const Sections& s) {
   return Status::kOk;
 }
 
+// The nearest-feature field is wholly absent (all zero) or wholly described.
+bool field_ok(const blob::Params& p) {
+  if (p.field_entry_count == 0u) return p.field_slots == 0u && p.field_cell == 0.0f && p.field_reach == 0.0f;
+  return in_range(p.field_slots, 1u, kMaxFieldSlots) && positive_finite(p.field_cell) &&
+         std::isfinite(p.field_reach) && p.field_reach >= 0.0f;
+}
+
 Status check_floats(const blob::Params& p) {
   const bool ok = positive_finite(p.cloud_voxel) && positive_finite(p.normal_radius) &&
                   positive_finite(p.basis_spacing) && positive_finite(p.support_radius) &&
                   positive_finite(p.support_angle_deg) && p.support_angle_deg <= kMaxSupportAngleDeg &&
                   positive_finite(p.spin_quant_scale) && std::isfinite(p.lsh_dc) && p.lsh_dc >= 0.0f &&
                   positive_finite(p.grid_cell);
-  return ok ? Status::kOk : Status::kBlobBadParameter;
+  return ok && field_ok(p) ? Status::kOk : Status::kBlobBadParameter;
 }
 
 }  // namespace

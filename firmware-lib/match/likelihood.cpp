@@ -20,26 +20,50 @@ inline float axis_gap2(float v, int32_t c, float cell) {
   return g * g;
 }
 
+// Model feature f against x: becomes best if nearer with an agreeing normal.
+inline void consider_feature(const Database& db, uint32_t f, const Eigen::Vector3f& x,
+                             const Eigen::Vector3f& n, float cos_eta_max, NearestFeature* best) {
+  const float* p = db.positions() + 3u * f;
+  float ex = p[0] - x[0], ey = p[1] - x[1], ez = p[2] - x[2];
+  float d2 = ex * ex + ey * ey + ez * ez;
+  if (d2 >= best->dist2) return;
+  const int16_t* m = db.normals() + 3u * f;
+  float dot =
+      (static_cast<float>(m[0]) * n[0] + static_cast<float>(m[1]) * n[1] + static_cast<float>(m[2]) * n[2]) *
+      (1.0f / 32767.0f);
+  if (dot < cos_eta_max) return;
+  best->dist2 = d2;
+  best->feature = f;
+}
+
 // Features of one grid cell against x: updates best (nearest within best.dist2 with agreeing normal).
 void scan_cell(const Database& db, const blob::ModelRecord& rec, uint32_t cell_index,
                const Eigen::Vector3f& x, const Eigen::Vector3f& n, float cos_eta_max, NearestFeature* best) {
   const uint32_t* offsets = db.grid_offsets() + rec.grid_offset_base;
   const uint32_t end = rec.first_feature + offsets[cell_index + 1u];
-  const float* pos = db.positions();
-  const int16_t* nrm = db.normals();
-  for (uint32_t f = rec.first_feature + offsets[cell_index]; f < end; ++f) {
-    const float* p = pos + 3u * f;
-    float ex = p[0] - x[0], ey = p[1] - x[1], ez = p[2] - x[2];
-    float d2 = ex * ex + ey * ey + ez * ez;
-    if (d2 >= best->dist2) continue;
-    const int16_t* m = nrm + 3u * f;
-    float dot = (static_cast<float>(m[0]) * n[0] + static_cast<float>(m[1]) * n[1] +
-                 static_cast<float>(m[2]) * n[2]) *
-                (1.0f / 32767.0f);
-    if (dot < cos_eta_max) continue;
-    best->dist2 = d2;
-    best->feature = f;
+  for (uint32_t f = rec.first_feature + offsets[cell_index]; f < end; ++f)
+    consider_feature(db, f, x, n, cos_eta_max, best);
+}
+
+// The slots of the field voxel holding x (blob_format.hpp): O(field_slots).
+NearestFeature field_lookup(const Database& db, const blob::ModelRecord& rec, const Eigen::Vector3f& x,
+                            const Eigen::Vector3f& n, const LikelihoodParams& lp) {
+  NearestFeature best;
+  best.dist2 = lp.delta_max2;
+  const blob::Params& p = db.params();
+  uint32_t v[3];
+  for (int a = 0; a < 3; ++a) {
+    const float f = std::floor((x[a] - (rec.grid_origin[a] - p.field_reach)) / p.field_cell);
+    // Outside the field (also inf/NaN from an extreme pose): farther than field_reach from every feature.
+    if (!(f >= 0.0f && f < static_cast<float>(rec.field_dims[a]))) return best;
+    v[a] = static_cast<uint32_t>(f);
   }
+  const uint16_t* slot =
+      db.nearest_field() + rec.field_base +
+      static_cast<size_t>(p.field_slots) * (v[0] + rec.field_dims[0] * (v[1] + rec.field_dims[1] * v[2]));
+  for (uint32_t s = 0; s < p.field_slots && slot[s] != blob::kNoFieldFeature; ++s)
+    consider_feature(db, rec.first_feature + slot[s], x, n, lp.cos_eta_max, &best);
+  return best;
 }
 
 }  // namespace
@@ -47,6 +71,7 @@ void scan_cell(const Database& db, const blob::ModelRecord& rec, uint32_t cell_i
 NearestFeature find_nearest_model_feature(const Database& db, const blob::ModelRecord& rec,
                                           const Eigen::Vector3f& x, const Eigen::Vector3f& n,
                                           const LikelihoodParams& lp) {
+  if (lp.use_field) return field_lookup(db, rec, x, n, lp);
   NearestFeature best;
   best.dist2 = lp.delta_max2;
   const float cell = db.params().grid_cell;
@@ -97,6 +122,7 @@ LikelihoodParams make_likelihood_params(const RecognizerConfig& cfg, const Datab
   lp.floor = -lp.delta2 * lp.inv_two_sigma2 - kMaxNormalisedL1 / cfg.spin_lambda;
   const float reach = std::ceil(cfg.delta_max / db.params().grid_cell);
   lp.reach = reach < static_cast<float>(kMaxGridReach) ? static_cast<uint32_t>(reach) : kMaxGridReach;
+  lp.use_field = db.has_nearest_field() && cfg.delta_max <= db.params().field_reach;
   return lp;
 }
 

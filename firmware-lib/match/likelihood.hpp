@@ -50,12 +50,17 @@ struct LikelihoodParams {
   float spin_weight = 0.0f;  // 1 / (lambda * quant_scale): quantised L1 -> -log p_s
   float floor = 0.0f;        // per-feature log-likelihood of an unexplained feature
   uint32_t reach = 1;        // grid cells searched each way
+  bool use_field = false;    // the blob's nearest-feature field answers (it reaches Delta_max)
 };
 
 LikelihoodParams make_likelihood_params(const RecognizerConfig& cfg, const Database& db);
 
 // Nearest model feature to x (model frame) within Delta_max whose normal n
-// agrees within eta_max; feature < 0 when none.
+// agrees within eta_max; feature < 0 when none. With lp.use_field, among
+// the field voxel's slots (the features nearest the voxel's centre, one per
+// surface orientation: O(slots)); otherwise exact, by searching the grid
+// cells within Delta_max (blobs built without a field, or a Delta_max beyond
+// the field's reach).
 struct NearestFeature {
   int64_t feature = -1;
   float dist2 = 0.0f;

@@ -19,6 +19,7 @@ struct BlobContent {
   std::vector<blob::LshBit> lsh_bits;     // lsh_tables * lsh_bits
   std::vector<uint32_t> lsh_offsets;      // lsh_tables * (lsh_buckets + 1)
   std::vector<uint32_t> lsh_entries;      // lsh_tables * feature_count
+  std::vector<uint16_t> nearest_field;    // field_entry_count
 };
 
 }  // namespace host

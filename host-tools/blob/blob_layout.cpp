@@ -34,6 +34,7 @@ bool plan_blob_layout(const BlobContent& c, BlobLayout* layout, std::string* err
       {blob::kLshOffsets, "lsh_offsets", tables * (static_cast<uint64_t>(p.lsh_buckets) + 1u),
        c.lsh_offsets.size(), sizeof(uint32_t)},
       {blob::kLshEntries, "lsh_entries", tables * n, c.lsh_entries.size(), sizeof(uint32_t)},
+      {blob::kNearestField, "nearest_field", p.field_entry_count, c.nearest_field.size(), sizeof(uint16_t)},
   };
   uint64_t end = sizeof(blob::Header) + blob::kSectionIdCount * sizeof(blob::SectionEntry);
   for (uint32_t i = 0; i < blob::kSectionIdCount; ++i) {

@@ -40,6 +40,10 @@ void swap_fields(blob::Params* p, bool swap) {
   swap_in_place(&p->spin_quant_scale, swap);
   swap_in_place(&p->lsh_dc, swap);
   swap_in_place(&p->grid_cell, swap);
+  swap_in_place(&p->field_entry_count, swap);
+  swap_in_place(&p->field_slots, swap);
+  swap_in_place(&p->field_cell, swap);
+  swap_in_place(&p->field_reach, swap);
 }
 
 void swap_fields(blob::ModelRecord* m, bool swap) {
@@ -50,6 +54,8 @@ void swap_fields(blob::ModelRecord* m, bool swap) {
   swap_array_in_place(m->grid_origin, swap);
   swap_array_in_place(m->bbox_min, swap);
   swap_array_in_place(m->bbox_max, swap);
+  swap_array_in_place(m->field_dims, swap);
+  swap_in_place(&m->field_base, swap);
 }
 
 void swap_fields(blob::LshBit* b, bool swap) {

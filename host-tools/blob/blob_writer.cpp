@@ -78,6 +78,7 @@ void write_payloads(const BlobContent& c, const BlobLayout& l, ImageWriter* w) {
   w->put_all(at(blob::kLshBits), c.lsh_bits);
   w->put_all(at(blob::kLshOffsets), c.lsh_offsets);
   w->put_all(at(blob::kLshEntries), c.lsh_entries);
+  w->put_all(at(blob::kNearestField), c.nearest_field);
 }
 
 // Checksums over the bytes as written (so they verify on the target), table,

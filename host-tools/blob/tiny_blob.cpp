@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numeric>
 
+#include "db/nearest_field.hpp"
 #include "spinhash/database.hpp"
 
 namespace spinhash {
@@ -18,6 +19,8 @@ constexpr uint32_t kBuckets = 16;
 constexpr float kGridCell = 0.5f;
 constexpr uint32_t kMaxSpinValue = 60;  // sum-normalised spins quantised at 1000 stay small
 constexpr uint32_t kMaxNormalDraws = 64;
+constexpr float kFieldCell = 0.25f;  // two field voxels per grid cell
+constexpr uint32_t kFieldSlots = 2;
 
 // splitmix64: the same sequence everywhere, unlike <random> distributions.
 class Rng {
@@ -47,6 +50,9 @@ blob::Params tiny_params(uint32_t models, uint32_t features) {
   p.support_angle_deg = 60.0f;
   p.spin_quant_scale = 1000.0f;
   p.grid_cell = kGridCell;
+  p.field_slots = kFieldSlots;
+  p.field_cell = kFieldCell;
+  p.field_reach = kGridCell;
   return p;
 }
 
@@ -70,6 +76,20 @@ uint32_t cell_of(const float* p, const blob::ModelRecord& m) {
     idx[k] = f <= 0.0f ? 0u : std::min(static_cast<uint32_t>(f), m.grid_dims[k] - 1u);
   }
   return idx[0] + m.grid_dims[0] * (idx[1] + m.grid_dims[1] * idx[2]);
+}
+
+// The model's nearest-feature field from its features as appended.
+void add_field(BlobContent* c, blob::ModelRecord* m) {
+  FieldOptions opt;
+  opt.cell = c->params.field_cell;
+  opt.reach = c->params.field_reach;
+  opt.slots = c->params.field_slots;
+  NearestField f;
+  build_nearest_field(c->positions.data() + 3u * m->first_feature, c->normals.data() + 3u * m->first_feature,
+                      m->feature_count, m->grid_origin, opt, &f);
+  m->field_base = static_cast<uint32_t>(c->nearest_field.size());
+  for (int k = 0; k < 3; ++k) m->field_dims[k] = f.dims[k];
+  c->nearest_field.insert(c->nearest_field.end(), f.entries.begin(), f.entries.end());
 }
 
 // Features of model i: random points in its grid box, sorted by cell, plus the
@@ -112,6 +132,7 @@ void add_model(uint32_t i, uint32_t count, Rng& rng, BlobContent* c) {
   }
   std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
   c->grid_offsets.insert(c->grid_offsets.end(), offsets.begin(), offsets.end());
+  add_field(c, &m);
   c->models.push_back(m);
 }
 
@@ -164,6 +185,7 @@ BlobContent make_tiny_blob_content(uint32_t models, uint32_t features_per_model,
   Rng rng(seed);
   for (uint32_t i = 0; i < models; ++i) add_model(i, features_per_model, rng, &c);
   c.params.grid_offset_count = static_cast<uint32_t>(c.grid_offsets.size());
+  c.params.field_entry_count = static_cast<uint32_t>(c.nearest_field.size());
   add_lsh(rng, &c);
   return c;
 }

@@ -46,6 +46,12 @@ void print_params(const Database& db, uint64_t bytes) {
               p.lsh_bits, p.lsh_buckets, static_cast<double>(p.lsh_dc));
   std::printf("model grids   %g m cells, %u offsets\n", static_cast<double>(p.grid_cell),
               p.grid_offset_count);
+  if (db.has_nearest_field())
+    std::printf("nearest field %g m voxels, reach %g m, %u slots, %u entries (%.1f MB)\n",
+                static_cast<double>(p.field_cell), static_cast<double>(p.field_reach), p.field_slots,
+                p.field_entry_count, 2.0e-6 * p.field_entry_count);
+  else
+    std::printf("nearest field none (verification searches the model grids)\n");
 }
 
 void print_text(const Database& db, uint64_t bytes) {
@@ -103,6 +109,10 @@ std::string info_json(const Database& db, uint64_t bytes) {
                         json_member(k::kBuckets, num(p.lsh_buckets)), json_member(k::kDc, num(p.lsh_dc))})),
        json_member(k::kGrid, json_object({json_member(k::kCell, num(p.grid_cell)),
                                           json_member(k::kOffsets, num(p.grid_offset_count))})),
+       json_member(k::kField, json_object({json_member(k::kCell, num(p.field_cell)),
+                                           json_member(k::kReach, num(p.field_reach)),
+                                           json_member(k::kSlots, num(p.field_slots)),
+                                           json_member(k::kEntries, num(p.field_entry_count))})),
        json_member(k::kModelList, model_list_json(db)), json_version_member()});
 }
 

@@ -30,14 +30,18 @@ constexpr const char* kDc = "d_c";
 constexpr const char* kGrid = "grid";  // object: cell, offsets
 constexpr const char* kCell = "cell";
 constexpr const char* kOffsets = "offsets";
+constexpr const char* kField = "nearest_field";  // object: cell, reach, slots, entries (cell 0: none)
+constexpr const char* kReach = "reach";
+constexpr const char* kSlots = "slots";
+constexpr const char* kEntries = "entries";
 constexpr const char* kModelList = "model_list";  // [{name, features, extent}]
 constexpr const char* kName = "name";
 constexpr const char* kExtent = "extent";
 constexpr const char* kAll[] = {
-    kFormat,       kBytes,   kBytesPerFeature, kFingerprint, kModels,   kFeatures, kSpinImages,
-    kBins,         kRadius,  kSupportAngle,    kQuantScale,  kSampling, kVoxel,    kNormalRadius,
-    kBasisSpacing, kLsh,     kTables,          kBits,        kBuckets,  kDc,       kGrid,
-    kCell,         kOffsets, kModelList,       kName,        kExtent};
+    kFormat, kBytes,        kBytesPerFeature, kFingerprint, kModels, kFeatures,     kSpinImages,   kBins,
+    kRadius, kSupportAngle, kQuantScale,      kSampling,    kVoxel,  kNormalRadius, kBasisSpacing, kLsh,
+    kTables, kBits,         kBuckets,         kDc,          kGrid,   kCell,         kOffsets,      kField,
+    kReach,  kSlots,        kEntries,         kModelList,   kName,   kExtent};
 }  // namespace info_keys
 
 namespace verify_keys {

@@ -86,6 +86,32 @@ void fill_params(const BuildOptions& opt, const BlobContent& c, float scale, con
   p->spin_quant_scale = scale;
   p->lsh_dc = lsh.d_c;
   p->grid_cell = opt.grid_cell;
+  const bool field = !c.nearest_field.empty();
+  p->field_entry_count = static_cast<uint32_t>(c.nearest_field.size());
+  p->field_slots = field ? opt.field.slots : 0u;
+  p->field_cell = field ? opt.field.cell : 0.0f;
+  p->field_reach = field ? opt.field.reach : 0.0f;
+}
+
+// The model's field from its features as appended (blob order, encoded
+// normals), into its record and the content.
+bool append_field(BlobContent* c, const BuildOptions& opt, std::string* error) {
+  blob::ModelRecord& r = c->models.back();
+  NearestField f;
+  if (!build_nearest_field(c->positions.data() + 3u * r.first_feature,
+                           c->normals.data() + 3u * r.first_feature, r.feature_count, r.grid_origin,
+                           opt.field, &f)) {
+    *error = std::string("model '") + r.name + "': too many features or voxels for the nearest-feature field";
+    return false;
+  }
+  if (f.entries.size() > UINT32_MAX - c->nearest_field.size()) {
+    *error = "the nearest-feature field outgrows 32-bit offsets";
+    return false;
+  }
+  r.field_base = static_cast<uint32_t>(c->nearest_field.size());
+  for (int a = 0; a < 3; ++a) r.field_dims[a] = f.dims[a];
+  c->nearest_field.insert(c->nearest_field.end(), f.entries.begin(), f.entries.end());
+  return true;
 }
 
 bool check_inputs(const std::vector<ModelCloud>& models, const BuildOptions& opt, std::string* error) {
@@ -107,6 +133,10 @@ bool check_inputs(const std::vector<ModelCloud>& models, const BuildOptions& opt
   }
   if (!(opt.grid_cell > 0.0f)) {
     *error = "grid cell must be positive";
+    return false;
+  }
+  if (!(opt.field.cell >= 0.0f) || !(opt.field.reach >= 0.0f) || opt.field.slots > kMaxFieldSlots) {
+    *error = "field cell and reach must be >= 0 and slots 0.." + std::to_string(kMaxFieldSlots);
     return false;
   }
   return true;
@@ -142,6 +172,7 @@ bool build_database(const std::vector<ModelCloud>& models, const BuildOptions& o
                                    feats[i].count, g, static_cast<uint32_t>(c.grid_offsets.size()),
                                    feats[i]));
     append_model(&c, static_cast<uint16_t>(i), feats[i], g, scale, dims);
+    if (!append_field(&c, opt, error)) return false;
     report->features_per_model.push_back(feats[i].count);
   }
   const uint32_t total = static_cast<uint32_t>(c.feature_models.size());

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "blob/blob_content.hpp"
+#include "db/nearest_field.hpp"
 #include "spinhash/config.hpp"
 
 namespace spinhash {
@@ -24,6 +25,7 @@ struct BuildOptions {
   float quant_percentile = 0.999f;    // bin value mapped to 255
   float lsh_range_quantile = 0.999f;  // per-dimension range C_i of the LSH bits (eq. 2's d_c = sum C_i)
   float grid_cell = 0.6f;  // m, per-model feature grid (= the default Delta_max: 27 cells per lookup)
+  FieldOptions field;  // nearest-feature field (field.cell = 0: none; a smaller blob, slower verification)
   uint32_t max_points_per_model = 1u << 21;
   uint32_t max_features_per_model = 1u << 14;
   uint64_t seed = 1;  // LSH bit sampling

@@ -37,6 +37,17 @@ void add_build_flags(CLI::App* cmd, BuildSettings* s) {
   cmd->add_option("--grid-cell", s->options.grid_cell, "cell of the per-model feature grids, m")
       ->check(CLI::Range(0.05, 10.0))
       ->capture_default_str();
+  cmd->add_option("--field-cell", s->options.field.cell,
+                  "voxel of the nearest-feature field, m (0: no field; a smaller blob, slower verification)")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  cmd->add_option("--field-reach", s->options.field.reach,
+                  "the largest Delta_max the field answers for, m (a larger one searches the grid)")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  cmd->add_option("--field-slots", s->options.field.slots, "model features per field voxel")
+      ->check(CLI::Range(1u, kMaxFieldSlots))
+      ->capture_default_str();
   cmd->add_option("--lsh-range-quantile", s->options.lsh_range_quantile,
                   "quantile of each dimension used as its LSH range C_i")
       ->check(CLI::Range(0.5, 1.0))

@@ -1,4 +1,4 @@
-// On-disk layout of a spinhash database blob (.shdb), format v1.
+// On-disk layout of a spinhash database blob (.shdb), format v2.
 // docs/blob-format.md is the normative description; these structs mirror it.
 // All integers and floats are stored in the byte order named by the header.
 #pragma once
@@ -10,7 +10,7 @@ namespace spinhash {
 namespace blob {
 
 constexpr char kMagic[8] = {'S', 'P', 'I', 'N', 'H', 'S', 'H', 'D'};
-constexpr uint32_t kFormatVersion = 1;
+constexpr uint32_t kFormatVersion = 2;            // v2: the nearest-feature field (kNearestField)
 constexpr uint32_t kByteOrderMark = 0x01020304u;  // reads 0x04030201 on the other byte order
 constexpr uint32_t kSectionAlignment = 64;
 
@@ -38,8 +38,9 @@ enum SectionId : uint32_t {
   kLshBits = 8,        // LshBit[lsh_tables * lsh_bits]
   kLshOffsets = 9,     // uint32[lsh_tables * (lsh_buckets + 1)], CSR per table
   kLshEntries = 10,    // uint32[lsh_tables * feature_count], feature indices
+  kNearestField = 11,  // uint16[field_entry_count], per-model voxel slots (NearestField below)
 };
-constexpr uint32_t kSectionIdCount = 10;
+constexpr uint32_t kSectionIdCount = 11;
 
 // 32 bytes each, immediately after the header.
 struct SectionEntry {
@@ -68,9 +69,13 @@ struct Params {
   float support_radius;
   float support_angle_deg;
   float spin_quant_scale;
-  float lsh_dc;          // d_c of eq. 2: sum of per-dimension ranges, quantised units
-  float grid_cell;       // m, cell edge of every model's feature grid
-  uint8_t reserved[64];  // zero
+  float lsh_dc;                // d_c of eq. 2: sum of per-dimension ranges, quantised units
+  float grid_cell;             // m, cell edge of every model's feature grid
+  uint32_t field_entry_count;  // entries of kNearestField (0: no field)
+  uint32_t field_slots;        // slots per voxel, <= kMaxFieldSlots (0: no field)
+  float field_cell;            // m, voxel edge of the field (0: no field)
+  float field_reach;           // m, the field holds features within this of a voxel
+  uint8_t reserved[48];        // zero
 };
 static_assert(sizeof(Params) == 128, "params are 128 bytes");
 
@@ -86,9 +91,23 @@ struct ModelRecord {
   float grid_origin[3];       // m, model frame, min corner of cell (0,0,0)
   float bbox_min[3];          // m, of the model cloud
   float bbox_max[3];
-  uint8_t reserved[20];  // zero (pads the record to 128 bytes)
+  uint32_t field_dims[3];  // voxels along x, y, z of the nearest-feature field (0 when none)
+  uint32_t field_base;     // index into kNearestField of voxel (0,0,0)'s first slot
+  uint8_t reserved[4];     // zero (pads the record to 128 bytes)
 };
 static_assert(sizeof(ModelRecord) == 128, "model record is 128 bytes");
+
+// Nearest-feature field (kNearestField): per model, a dense voxel grid of
+// field_dims voxels of edge field_cell whose corner (0,0,0) lies field_reach
+// below grid_origin on every axis; voxel (i, j, k) holds field_slots model
+// features (indices relative to first_feature; kNoFieldFeature pads) at
+// field_base + field_slots * (i + dims[0] * (j + dims[1] * k)). The slots are
+// the features nearest the voxel's centre within field_reach plus the voxel's
+// half-diagonal, one per surface orientation: each slot's normal differs from
+// every nearer slot's by more than the builder's split angle (edges and corners
+// keep a feature of every face). Verification looks a warped query feature up
+// in O(field_slots) instead of searching the grid.
+constexpr uint16_t kNoFieldFeature = 0xFFFFu;
 
 // One sampled bit of eq. 2: bit = spin[dim] > threshold (quantised units).
 struct LshBit {

@@ -41,6 +41,8 @@ class Database {
     return lsh_offsets_ + static_cast<size_t>(table) * (params_->lsh_buckets + 1u);
   }
   const uint32_t* lsh_entries() const noexcept { return lsh_entries_; }  // offsets index this
+  bool has_nearest_field() const noexcept { return params_->field_entry_count > 0u; }
+  const uint16_t* nearest_field() const noexcept { return nearest_field_; }  // blob_format.hpp
 
   // Model index whose name equals `name`, or -1.
   int32_t find_model(const char* name) const noexcept;
@@ -58,6 +60,7 @@ class Database {
   const blob::LshBit* lsh_bits_ = nullptr;
   const uint32_t* lsh_offsets_ = nullptr;
   const uint32_t* lsh_entries_ = nullptr;
+  const uint16_t* nearest_field_ = nullptr;
 };
 
 // CRC-32C (Castagnoli, reflected, init and xorout 0xFFFFFFFF), as in the blob.

@@ -25,5 +25,7 @@ constexpr uint32_t kMaxSections = 16;                  // section table entries 
 constexpr uint32_t kMinNormalNeighbours = 5;           // fewer -> the point gets no normal
 constexpr uint32_t kMaxStabilityRetries = 32;          // attempts to draw a stable doublet (eq. 3)
 constexpr uint32_t kMaxGridCellsPerModel = 1u << 20;
+constexpr uint32_t kMaxFieldVoxelsPerModel = 1u << 24;  // nearest-feature field (blob_format.hpp)
+constexpr uint32_t kMaxFieldSlots = 8;                  // features per field voxel
 
 }  // namespace spinhash

@@ -176,11 +176,13 @@ TEST_CASE("a byte-swapped byte-order mark alone is kBlobWrongByteOrder") {
   CHECK(b.open() == Status::kBlobWrongByteOrder);
 }
 
-TEST_CASE("version 2 is kBlobUnsupportedVersion") {
-  BlobPatch b = fresh();
-  b.header().version = 2;
-  b.reseal_header();
-  CHECK(b.open() == Status::kBlobUnsupportedVersion);
+TEST_CASE("version 1 (no nearest-feature field) and the next version are kBlobUnsupportedVersion") {
+  for (uint32_t version : {1u, blob::kFormatVersion + 1u}) {
+    BlobPatch b = fresh();
+    b.header().version = version;
+    b.reseal_header();
+    CHECK(b.open() == Status::kBlobUnsupportedVersion);
+  }
 }
 
 TEST_CASE("a flipped header CRC or table byte is kBlobHeaderChecksum") {
@@ -253,7 +255,7 @@ TEST_CASE("an offset beyond the end or an overflowing size is kBlobSectionOutOfB
   c.reseal_header();
   CHECK(c.open() == Status::kBlobSectionOutOfBounds);
   BlobPatch d = fresh();
-  d.entry_of(blob::kLshEntries).size += 4;
+  d.entry_of(blob::kNearestField).size += 4;  // the last section
   d.reseal_header();
   CHECK(d.open() == Status::kBlobSectionOutOfBounds);
 }
@@ -471,6 +473,63 @@ TEST_CASE("bad grids are kBlobBadModelTable") {
     k.patch(b);
     b.reseal();
     CHECK(b.open() == Status::kBlobBadModelTable);
+  }
+}
+
+TEST_CASE("bad nearest-feature fields are kBlobBadModelTable") {
+  struct Case {
+    const char* what;
+    void (*patch)(BlobPatch&);
+  };
+  const Case cases[] = {
+      {"zero dimension", [](BlobPatch& b) { b.model(1).field_dims[0] = 0; }},
+      {"dims whose product wraps 32 bits",
+       [](BlobPatch& b) {
+         b.model(2).field_dims[0] = 1u << 16;
+         b.model(2).field_dims[1] = 1u << 16;
+       }},
+      {"entries past the section", [](BlobPatch& b) { b.model(2).field_base += 1; }},
+      {"ranges overlapping", [](BlobPatch& b) { b.model(1).field_base -= 1; }},
+      {"an entry past the model's features",
+       [](BlobPatch& b) {
+         b.section<uint16_t>(blob::kNearestField)[b.model(2).field_base] = kFeaturesPerModel;
+       }},
+      {"a field on a model of a blob without one",
+       [](BlobPatch& b) {
+         b.params().field_entry_count = 0;
+         b.params().field_slots = 0;
+         b.params().field_cell = 0.0f;
+         b.params().field_reach = 0.0f;
+         b.entry_of(blob::kNearestField).size = 0;
+       }},
+  };
+  for (const Case& k : cases) {
+    CAPTURE(k.what);
+    BlobPatch b = fresh();
+    k.patch(b);
+    b.reseal();
+    CHECK(b.open() == Status::kBlobBadModelTable);
+  }
+}
+
+TEST_CASE("a field half described in the params is kBlobBadParameter") {
+  struct Case {
+    const char* what;
+    void (*patch)(blob::Params&);
+  };
+  const Case cases[] = {
+      {"no slots", [](blob::Params& p) { p.field_slots = 0; }},
+      {"too many slots", [](blob::Params& p) { p.field_slots = spinhash::kMaxFieldSlots + 1u; }},
+      {"no cell", [](blob::Params& p) { p.field_cell = 0.0f; }},
+      {"NaN cell", [](blob::Params& p) { p.field_cell = std::nanf(""); }},
+      {"negative reach", [](blob::Params& p) { p.field_reach = -0.1f; }},
+  };
+  for (const Case& k : cases) {
+    CAPTURE(k.what);
+    BlobPatch b = fresh();
+    k.patch(b.params());
+    b.reseal();
+    CHECK(b.open() == Status::kBlobBadParameter);
   }
 }
 
