@@ -2,12 +2,13 @@
 // features (through the blob's nearest-feature field when it has one): the
 // leading models' best poses are rescored on every feature with the exact
 // nearest-feature search (the field's voxel-centre answers blur the
-// centimetres that separate look-alikes: 12 points of right-first lost on
-// the fleet with 0.25 m voxels) and (optionally) refined by least squares over their inliers
-// (match/refine_pose.hpp), keeping a refined pose where its likelihood is
-// higher; BRAN then charges each for the upward surface the scan does not
-// show (visible_surface.cpp); every other model's subset score is
-// extrapolated to all features, below the rescored ones. Bounded:
+// centimetres that separate look-alikes: 11 points of right-first lost on
+// the fleet when 0.25 m voxels also did the final scoring); those within
+// kRefineWindow of the best are (optionally) refined by least squares over
+// their inliers (match/refine_pose.hpp), keeping a refined pose where its
+// likelihood is higher; BRAN then charges each for the upward surface the
+// scan does not show (visible_surface.cpp); every other model's subset score
+// is extrapolated to all features, below the rescored ones. Bounded:
 // kRefinedModels models x (1 + kRefineIterations) full verifications.
 #include "match/refine_pose.hpp"
 #include "recognize/search_context.hpp"
@@ -18,6 +19,10 @@ namespace {
 
 constexpr uint32_t kRefinedModels = 8;
 constexpr uint32_t kRefineIterations = 3;
+// Log units per query feature: a rescored model this far below the best is
+// not refined (the refinement's least squares cost most of the finalisation,
+// and a pose this much worse is a wrong model, not a few centimetres off).
+constexpr float kRefineWindow = 0.5f;
 constexpr float kBelowFinalised = 1.0f;  // log units: a model not rescored ranks below every rescored one
 
 // Indices of the (up to) kRefinedModels best-scoring models, best first.
@@ -27,14 +32,19 @@ uint32_t leading_models(const SearchContext& ctx, uint32_t* out) {
       [&](uint32_t a, uint32_t b) { return scores_higher(ctx, a, b); });
 }
 
-void finalise_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, const LikelihoodParams& lp,
-                    bool refine) {
+// The model's best pose scored on every query feature.
+void rescore(SearchContext& ctx, uint32_t model, const QueryFeatures& all, const LikelihoodParams& lp) {
   ModelBest& best = ctx.buf.best[model];
   Verification full = verify_pose(ctx.db, model, best.pose, all, lp, kNoScoreToBeat, kNoScoreToBeat);
   best.score = full.log_likelihood;
   best.inliers = full.inliers;
   best.final_score = true;
-  for (uint32_t it = 0; refine && it < kRefineIterations; ++it) {
+}
+
+// Least-squares steps while they raise the score.
+void refine_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, const LikelihoodParams& lp) {
+  ModelBest& best = ctx.buf.best[model];
+  for (uint32_t it = 0; it < kRefineIterations; ++it) {
     RigidPose pose = best.pose;
     if (!refine_pose(ctx.db, model, all, lp, &pose)) return;
     Verification v = verify_pose(ctx.db, model, pose, all, lp, kNoScoreToBeat, kNoScoreToBeat);
@@ -55,10 +65,16 @@ void finalise_scores(SearchContext& ctx, bool refine) {
   all.verify_count = all.count;
   LikelihoodParams exact = ctx.likelihood;
   exact.use_field = false;
+  float leading = kNoScoreToBeat;
+  for (uint32_t i = 0; i < n; ++i) {
+    rescore(ctx, models[i], all, exact);
+    leading = ctx.buf.best[models[i]].score > leading ? ctx.buf.best[models[i]].score : leading;
+  }
+  const float refine_from = leading - kRefineWindow * static_cast<float>(all.count);
   float lowest_final = 0.0f;
   for (uint32_t i = 0; i < n; ++i) {
-    finalise_model(ctx, models[i], all, exact, refine);
     ModelBest& b = ctx.buf.best[models[i]];
+    if (refine && b.score >= refine_from) refine_model(ctx, models[i], all, exact);
     if (ctx.cfg.mode == Mode::kBran) b.score += upward_surface_log_likelihood(ctx, models[i], b.pose);
     lowest_final = i == 0 || b.score < lowest_final ? b.score : lowest_final;
   }

@@ -10,7 +10,7 @@ namespace spinhash {
 namespace host {
 
 struct FieldOptions {
-  float cell = 0.25f;       // m, voxel edge (0: no field; the basis spacing: 2.6 MB for the 56-model fleet)
+  float cell = 0.4f;        // m, voxel edge (0: no field); +14.5 B per model feature
   float reach = 0.6f;       // m, the largest Delta_max the field answers for (the default Delta_max)
   uint32_t slots = 3;       // features per voxel: a corner shows three faces
   float split_deg = 35.0f;  // a further slot's normal differs this much from nearer ones (default eta_max)

@@ -23,8 +23,7 @@ namespace {
 
 constexpr float kModelSpacing = 0.05f;  // m between toy surface samples (as the toy tests)
 constexpr float kQuerySpacing = 0.10f;  // ~ cloud_voxel (0.08): denser adds bytes, not information
-// Sparser basis points than the default (0.25 m), and nearest-field voxels to
-// match, keep each blob under 300 KB.
+// Sparser basis points than the default (0.25 m) keep each blob under 300 KB.
 constexpr float kGoldenBasisSpacing = 0.45f;
 
 struct QuerySpec {
@@ -79,7 +78,6 @@ bool record(const std::string& dir) {
   std::string error;
   host::BuildOptions options;
   options.features.basis_spacing = kGoldenBasisSpacing;
-  options.field.cell = kGoldenBasisSpacing;
   if (!host::build_database(clouds, options, &content, &report, &error)) return fail(error);
   std::vector<uint8_t> le, be;
   if (!host::serialize_blob(content, host::ByteOrder::kLittle, &le, &error) ||
