@@ -36,17 +36,22 @@ bool geometry_ok(const blob::ModelRecord& m) {
   return true;
 }
 
-// Cells of the model's grid, or 0 if a dimension is 0 or the product is too large.
-uint64_t grid_cells(const blob::ModelRecord& m) {
-  uint64_t cells = 1;
+// Product of three dimensions, or 0 if one is 0 or the product exceeds
+// limit (<= 2^24: each partial product stays below 2^48, no overflow).
+static_assert(kMaxGridCellsPerModel <= (1u << 24) && kMaxFieldVoxelsPerModel <= (1u << 24),
+              "bounded_volume's products fit in 64 bits");
+uint64_t bounded_volume(const uint32_t (&dims)[3], uint32_t limit) {
+  uint64_t volume = 1;
   for (uint32_t k = 0; k < 3u; ++k) {
-    const uint32_t d = m.grid_dims[k];
-    if (d == 0u || d > kMaxGridCellsPerModel) return 0u;
-    cells *= d;  // <= 2^20 * 2^20 before the next check: no overflow
-    if (cells > kMaxGridCellsPerModel) return 0u;
+    if (dims[k] == 0u || dims[k] > limit) return 0u;
+    volume *= dims[k];
+    if (volume > limit) return 0u;
   }
-  return cells;
+  return volume;
 }
+
+// Cells of the model's grid, or 0 if a dimension is 0 or the product is too large.
+uint64_t grid_cells(const blob::ModelRecord& m) { return bounded_volume(m.grid_dims, kMaxGridCellsPerModel); }
 
 // Offsets of one model: start at 0, never decrease, end at its feature count.
 bool grid_offsets_ok(const uint32_t* off, uint64_t cells, uint32_t feature_count) {
@@ -59,14 +64,7 @@ bool grid_offsets_ok(const uint32_t* off, uint64_t cells, uint32_t feature_count
 
 // Voxels of the model's nearest-feature field, or 0 if a dimension is 0 or the product is too large.
 uint64_t field_voxels(const blob::ModelRecord& m) {
-  uint64_t voxels = 1;
-  for (uint32_t k = 0; k < 3u; ++k) {
-    const uint32_t d = m.field_dims[k];
-    if (d == 0u || d > kMaxFieldVoxelsPerModel) return 0u;
-    voxels *= d;  // <= 2^24 * 2^24 before the next check: no overflow
-    if (voxels > kMaxFieldVoxelsPerModel) return 0u;
-  }
-  return voxels;
+  return bounded_volume(m.field_dims, kMaxFieldVoxelsPerModel);
 }
 
 // What the records share, and how far the records so far reach.

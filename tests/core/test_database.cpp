@@ -408,34 +408,37 @@ TEST_CASE("bad model names are kBlobBadModelTable") {
   CHECK(db.find_model(std::string(spinhash::kMaxModelNameBytes - 1u, 'z').c_str()) == 2);
 }
 
+// A named corruption of a fresh blob; check_corruptions reseals each and
+// expects `open` to give one status.
+struct Corruption {
+  const char* what;
+  void (*patch)(BlobPatch&);
+};
+template <size_t N>
+void check_corruptions(const Corruption (&cases)[N], Status expected) {
+  for (const Corruption& k : cases) {
+    CAPTURE(k.what);
+    BlobPatch b = fresh();
+    k.patch(b);
+    b.reseal();
+    CHECK(b.open() == expected);
+  }
+}
+
 TEST_CASE("feature ranges that do not tile the features are kBlobBadModelTable") {
-  struct Case {
-    const char* what;
-    void (*patch)(BlobPatch&);
-  };
-  const Case cases[] = {
+  const Corruption cases[] = {
       {"gap", [](BlobPatch& b) { b.model(1).first_feature += 1; }},
       {"empty", [](BlobPatch& b) { b.model(2).feature_count = 0; }},
       {"short of the end", [](BlobPatch& b) { b.model(2).feature_count -= 1; }},
       {"past the end", [](BlobPatch& b) { b.model(2).feature_count += 1; }},
       {"out of order", [](BlobPatch& b) { std::swap(b.model(0), b.model(1)); }},
   };
-  for (const Case& k : cases) {
-    CAPTURE(k.what);
-    BlobPatch b = fresh();
-    k.patch(b);
-    b.reseal();
-    CHECK(b.open() == Status::kBlobBadModelTable);
-  }
+  check_corruptions(cases, Status::kBlobBadModelTable);
 }
 
 TEST_CASE("bad grids are kBlobBadModelTable") {
   // Model 1 of the tiny blob has a 2 x 2 x 1 grid: offsets [0, a, b, c, 20].
-  struct Case {
-    const char* what;
-    void (*patch)(BlobPatch&);
-  };
-  const Case cases[] = {
+  const Corruption cases[] = {
       {"zero dimension", [](BlobPatch& b) { b.model(0).grid_dims[2] = 0; }},
       {"too many cells",
        [](BlobPatch& b) {
@@ -467,21 +470,11 @@ TEST_CASE("bad grids are kBlobBadModelTable") {
       {"infinite bbox", [](BlobPatch& b) { b.model(0).bbox_max[0] = INFINITY; }},
       {"inverted bbox", [](BlobPatch& b) { b.model(0).bbox_min[2] = b.model(0).bbox_max[2] + 1.0f; }},
   };
-  for (const Case& k : cases) {
-    CAPTURE(k.what);
-    BlobPatch b = fresh();
-    k.patch(b);
-    b.reseal();
-    CHECK(b.open() == Status::kBlobBadModelTable);
-  }
+  check_corruptions(cases, Status::kBlobBadModelTable);
 }
 
 TEST_CASE("bad nearest-feature fields are kBlobBadModelTable") {
-  struct Case {
-    const char* what;
-    void (*patch)(BlobPatch&);
-  };
-  const Case cases[] = {
+  const Corruption cases[] = {
       {"zero dimension", [](BlobPatch& b) { b.model(1).field_dims[0] = 0; }},
       {"dims whose product wraps 32 bits",
        [](BlobPatch& b) {
@@ -503,13 +496,7 @@ TEST_CASE("bad nearest-feature fields are kBlobBadModelTable") {
          b.entry_of(blob::kNearestField).size = 0;
        }},
   };
-  for (const Case& k : cases) {
-    CAPTURE(k.what);
-    BlobPatch b = fresh();
-    k.patch(b);
-    b.reseal();
-    CHECK(b.open() == Status::kBlobBadModelTable);
-  }
+  check_corruptions(cases, Status::kBlobBadModelTable);
 }
 
 TEST_CASE("a field half described in the params is kBlobBadParameter") {
