@@ -111,3 +111,30 @@ TEST_CASE("the work budget stops recognition and says so") {
   CHECK(r.stats.budget_exhausted);
   CHECK(r.stats.hypotheses == 3);
 }
+
+TEST_CASE("a blob built without the nearest-feature field recognises the toys as one with it") {
+  Session with, without;
+  REQUIRE(test::make_toy_database(&with.toy));
+  host::BuildOptions no_field;
+  no_field.field.cell = 0.0f;  // spinhash build --field-cell 0
+  REQUIRE(test::make_database(test::toy_clouds(), &without.toy, no_field));
+  CHECK(with.toy.db.has_nearest_field());
+  CHECK_FALSE(without.toy.db.has_nearest_field());
+  CHECK(without.toy.bytes.size() < with.toy.bytes.size());
+  RecognizerConfig cfg;
+  REQUIRE(with.init(cfg) == Status::kOk);
+  REQUIRE(without.init(cfg) == Status::kOk);
+  for (uint32_t m = 0; m < test::kToyModels; ++m) {
+    const double t[3] = {12.0, -3.0, 0.5};
+    std::vector<double> q = test::toy_query(test::toy_vehicle_points(m, 0.05f), 0.3 + m, t, 0.03, m + 11);
+    Result a = recognize_without_heap(with.recognizer, q);
+    Result b = recognize_without_heap(without.recognizer, q);
+    CAPTURE(m);
+    REQUIRE(a.ranking_count >= 1);
+    REQUIRE(b.ranking_count >= 1);
+    CHECK(a.ranking[0].model == m);
+    CHECK(b.ranking[0].model == m);  // the exact grid search throughout
+    for (int k = 0; k < 3; ++k)
+      CHECK(std::fabs(a.ranking[0].pose.translation[k] - b.ranking[0].pose.translation[k]) < 0.15);
+  }
+}

@@ -46,12 +46,12 @@ std::vector<host::ModelCloud> toy_clouds() {
   return clouds;
 }
 
-bool make_database(const std::vector<host::ModelCloud>& clouds, ToyDatabase* out) {
-  host::BuildOptions opt;
+bool make_database(const std::vector<host::ModelCloud>& clouds, ToyDatabase* out,
+                   const host::BuildOptions& options) {
   host::BlobContent content;
   host::BuildReport report;
   std::string error;
-  if (!host::build_database(clouds, opt, &content, &report, &error)) return false;
+  if (!host::build_database(clouds, options, &content, &report, &error)) return false;
   std::vector<uint8_t> bytes;
   if (!host::serialize_blob(content, host::ByteOrder::kNative, &bytes, &error)) return false;
   out->bytes = host::AlignedBytes::copy_of(bytes);

@@ -27,7 +27,8 @@ bool make_toy_database(ToyDatabase* out, uint32_t twin_of = kNoTwin);
 // The toys' clouds, named "toy-0".. in index order.
 std::vector<host::ModelCloud> toy_clouds();
 // Builds, serialises (native byte order) and opens a database of `clouds`.
-bool make_database(const std::vector<host::ModelCloud>& clouds, ToyDatabase* out);
+bool make_database(const std::vector<host::ModelCloud>& clouds, ToyDatabase* out,
+                   const host::BuildOptions& options = host::BuildOptions());
 
 // A partial, moved, noisy view of points: keeps those facing direction `view`
 // side (x . view > -keep_depth), applies rotation about z by yaw and the
