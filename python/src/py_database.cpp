@@ -89,6 +89,10 @@ py::dict info(const PyDatabase& d) {
   i["lsh_dc"] = p.lsh_dc;
   i["grid_cell"] = p.grid_cell;
   i["grid_offset_count"] = p.grid_offset_count;
+  i["field_cell"] = p.field_cell;  // 0: no nearest-feature field
+  i["field_reach"] = p.field_reach;
+  i["field_slots"] = p.field_slots;
+  i["field_entry_count"] = p.field_entry_count;
   return i;
 }
 
