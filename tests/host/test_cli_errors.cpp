@@ -4,12 +4,15 @@
 // Runs the built binary (SPINHASH_TEST_BINARY) on small temporary files.
 #include <doctest/doctest.h>
 
+#include <cstddef>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "cli_runner.hpp"
 #include "geometry_test_support.hpp"
+#include "spinhash/blob_format.hpp"
 #include "spinhash/status.hpp"
 
 namespace fs = std::filesystem;
@@ -234,6 +237,11 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
   flipped[flipped.size() - 10] ^= 0x01;  // inside the last section: its CRC no longer matches
   std::string magic = f.good_bytes;
   magic[0] = 'X';
+  // A format-1 header: the version is checked before the header CRC. The
+  // fixture's blob is in native byte order.
+  std::string v1 = f.good_bytes;
+  const uint32_t format1 = 1;
+  std::memcpy(&v1[offsetof(spinhash::blob::Header, version)], &format1, sizeof format1);
   struct Case {
     const char* name;
     std::string bytes;
@@ -243,6 +251,7 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
       {"flipped.shdb", flipped, Status::kBlobSectionChecksum},
       {"truncated.shdb", f.good_bytes.substr(0, f.good_bytes.size() / 2), Status::kBlobTruncated},
       {"magic.shdb", magic, Status::kBlobBadMagic},
+      {"format1.shdb", v1, Status::kBlobUnsupportedVersion},
   };
   for (const Case& k : cases) {
     CAPTURE(k.name);
@@ -257,6 +266,10 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
       CHECK(r.out.find("\"status\":\"ok\"") == std::string::npos);
     }
   }
+  // The older format says which it is and how to get the current one.
+  const Run old = f.run("info " + f.q(dir.file("format1.shdb")));
+  CHECK(contains(old.err,
+                 "format 1; this spinhash reads format 2: rebuild it from its meshes with `spinhash build`"));
   write_bytes(dir.file("empty.shdb"), "");
   const Run empty = f.run("verify " + f.q(dir.file("empty.shdb")));
   CHECK(empty.exit_code == kExitError);
