@@ -84,12 +84,7 @@ void add_field(BlobContent* c, blob::ModelRecord* m) {
   opt.cell = c->params.field_cell;
   opt.reach = c->params.field_reach;
   opt.slots = c->params.field_slots;
-  NearestField f;
-  build_nearest_field(c->positions.data() + 3u * m->first_feature, c->normals.data() + 3u * m->first_feature,
-                      m->feature_count, m->grid_origin, opt, &f);
-  m->field_base = static_cast<uint32_t>(c->nearest_field.size());
-  for (int k = 0; k < 3; ++k) m->field_dims[k] = f.dims[k];
-  c->nearest_field.insert(c->nearest_field.end(), f.entries.begin(), f.entries.end());
+  append_nearest_field(opt, m, c);  // a few features in a small box: always fits
 }
 
 // Features of model i: random points in its grid box, sorted by cell, plus the

@@ -93,25 +93,12 @@ void fill_params(const BuildOptions& opt, const BlobContent& c, float scale, con
   p->field_reach = field ? opt.field.reach : 0.0f;
 }
 
-// The model's field from its features as appended (blob order, encoded
-// normals), into its record and the content.
+// The model's field, from its features as appended, into its record and the content.
 bool append_field(BlobContent* c, const BuildOptions& opt, std::string* error) {
-  blob::ModelRecord& r = c->models.back();
-  NearestField f;
-  if (!build_nearest_field(c->positions.data() + 3u * r.first_feature,
-                           c->normals.data() + 3u * r.first_feature, r.feature_count, r.grid_origin,
-                           opt.field, &f)) {
-    *error = std::string("model '") + r.name + "': too many features or voxels for the nearest-feature field";
-    return false;
-  }
-  if (f.entries.size() > UINT32_MAX - c->nearest_field.size()) {
-    *error = "the nearest-feature field outgrows 32-bit offsets";
-    return false;
-  }
-  r.field_base = static_cast<uint32_t>(c->nearest_field.size());
-  for (int a = 0; a < 3; ++a) r.field_dims[a] = f.dims[a];
-  c->nearest_field.insert(c->nearest_field.end(), f.entries.begin(), f.entries.end());
-  return true;
+  if (append_nearest_field(opt.field, &c->models.back(), c)) return true;
+  *error = std::string("model '") + c->models.back().name +
+           "': too many features or voxels for the nearest-feature field, or a field past 32-bit offsets";
+  return false;
 }
 
 bool check_inputs(const std::vector<ModelCloud>& models, const BuildOptions& opt, std::string* error) {

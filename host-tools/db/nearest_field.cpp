@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
+#include <cstdint>
 
 #include "db/model_grid.hpp"
 #include "spinhash/blob_format.hpp"
@@ -82,39 +82,42 @@ void choose_slots(const std::vector<Candidate>& near, const int16_t* normals, ui
 
 }  // namespace
 
-bool build_nearest_field(const float* positions, const int16_t* normals, uint32_t count,
-                         const float grid_origin[3], const FieldOptions& opt, NearestField* out) {
-  *out = NearestField{};
+bool append_nearest_field(const FieldOptions& opt, blob::ModelRecord* record, BlobContent* content) {
   if (!(opt.cell > 0.0f) || opt.slots == 0u) return true;  // no field asked for
+  const uint32_t count = record->feature_count;
   if (count >= blob::kNoFieldFeature || opt.slots > kMaxFieldSlots || !(opt.reach >= 0.0f)) return false;
-  float hi[3] = {grid_origin[0], grid_origin[1], grid_origin[2]};
-  for (uint32_t f = 0; f < count; ++f)
-    for (int a = 0; a < 3; ++a) hi[a] = std::max(hi[a], positions[3u * f + a]);
+  uint32_t dims[3];
   uint64_t voxels = 1;
   float origin[3];
   for (int a = 0; a < 3; ++a) {
-    origin[a] = grid_origin[a] - opt.reach;
-    out->dims[a] = static_cast<uint32_t>(std::ceil((hi[a] - origin[a] + opt.reach) / opt.cell));
-    out->dims[a] = std::max(out->dims[a], 1u);
-    voxels *= out->dims[a];
+    origin[a] = record->grid_origin[a] - opt.reach;
+    dims[a] = static_cast<uint32_t>(std::ceil((record->bbox_max[a] - origin[a] + opt.reach) / opt.cell));
+    dims[a] = std::max(dims[a], 1u);
+    voxels *= dims[a];
   }
   if (voxels > kMaxFieldVoxelsPerModel) return false;
+  const size_t base = content->nearest_field.size(), entries = static_cast<size_t>(voxels) * opt.slots;
+  if (entries > UINT32_MAX - base) return false;
+  const float* positions = content->positions.data() + 3u * record->first_feature;
+  const int16_t* normals = content->normals.data() + 3u * record->first_feature;
   const float radius = opt.reach + kHalfDiagonal * opt.cell;
   const ModelGrid helper =
       build_model_grid(std::vector<float>(positions, positions + 3u * count), count, radius);
   const float cos_split = static_cast<float>(std::cos(static_cast<double>(opt.split_deg) * kDegToRad));
-  out->entries.assign(static_cast<size_t>(voxels) * opt.slots, blob::kNoFieldFeature);
+  content->nearest_field.resize(base + entries);
   std::vector<Candidate> near;
-  size_t at = 0;
-  for (uint32_t k = 0; k < out->dims[2]; ++k)
-    for (uint32_t j = 0; j < out->dims[1]; ++j)
-      for (uint32_t i = 0; i < out->dims[0]; ++i, at += opt.slots) {
+  size_t at = base;
+  for (uint32_t k = 0; k < dims[2]; ++k)
+    for (uint32_t j = 0; j < dims[1]; ++j)
+      for (uint32_t i = 0; i < dims[0]; ++i, at += opt.slots) {
         const float centre[3] = {origin[0] + (static_cast<float>(i) + 0.5f) * opt.cell,
                                  origin[1] + (static_cast<float>(j) + 0.5f) * opt.cell,
                                  origin[2] + (static_cast<float>(k) + 0.5f) * opt.cell};
         gather(positions, helper, radius, centre, radius * radius, &near);
-        choose_slots(near, normals, opt.slots, cos_split, &out->entries[at]);
+        choose_slots(near, normals, opt.slots, cos_split, &content->nearest_field[at]);
       }
+  record->field_base = static_cast<uint32_t>(base);
+  for (int a = 0; a < 3; ++a) record->field_dims[a] = dims[a];
   return true;
 }
 

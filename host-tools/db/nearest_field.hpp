@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "blob/blob_content.hpp"
+
 namespace spinhash {
 namespace host {
 
@@ -16,17 +18,13 @@ struct FieldOptions {
   float split_deg = 35.0f;  // a further slot's normal differs this much from nearer ones (default eta_max)
 };
 
-struct NearestField {
-  uint32_t dims[3] = {0, 0, 0};
-  std::vector<uint16_t> entries;  // slots per voxel, x fastest; kNoFieldFeature pads
-};
-
-// positions: 3 floats and normals: 3 encoded int16 (encode_normal_component)
-// per feature, in the model's blob order; grid_origin: the model grid's
-// corner (the field starts opt.reach below it). false when the model has too
-// many features for uint16 slots or the field too many voxels.
-bool build_nearest_field(const float* positions, const int16_t* normals, uint32_t count,
-                         const float grid_origin[3], const FieldOptions& opt, NearestField* out);
+// Builds the field of `record`'s model, whose features are already in
+// `content` (blob order, encoded normals), over its grid origin and bounding
+// box, and appends it: the record gets its field_dims and field_base. With
+// opt.cell == 0 the model gets no field. false, with nothing changed, when
+// the model has too many features for uint16 slots, the field too many
+// voxels, or the section would outgrow 32-bit offsets.
+bool append_nearest_field(const FieldOptions& opt, blob::ModelRecord* record, BlobContent* content);
 
 }  // namespace host
 }  // namespace spinhash
