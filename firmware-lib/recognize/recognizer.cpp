@@ -3,6 +3,7 @@
 #include <new>
 
 #include "descriptor/spin_image.hpp"
+#include "recognize/confidence.hpp"
 #include "recognize/search_context.hpp"
 #include "spinhash/config_fields.h"
 #include "spinhash/limits.hpp"
@@ -88,27 +89,6 @@ void reset(ModelBest& best) {
   best.inliers = 0;
   best.has_score = false;
   best.final_score = false;
-}
-
-// The leading models within min_margin per feature of the first. Score
-// gaps are likelihood ratios only for BRAN and SRAN (SIND ranks by votes):
-// there the first stands alone.
-uint32_t lookalike_group_size(const Result& r, const RecognizerConfig& cfg, uint32_t features) {
-  if (r.ranking_count == 0) return 0;
-  if (cfg.mode == Mode::kSind) return 1;
-  const float within = cfg.min_margin * static_cast<float>(features);
-  uint32_t k = 1;
-  while (k < r.ranking_count && r.ranking[0].score - r.ranking[k].score < within) ++k;
-  return k;
-}
-
-// Confident: the first explains enough of the query, well enough, and
-// leads every other model by min_margin (its look-alike group is itself).
-bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features) {
-  if (r.ranking_count == 0 || !r.ranking[0].has_pose) return false;
-  const float n = static_cast<float>(features);
-  return static_cast<float>(r.ranking[0].inliers) >= cfg.min_inlier_fraction * n &&
-         r.ranking[0].score >= cfg.min_mean_log_likelihood * n && r.group_size == 1u;
 }
 
 Pose identity_pose() {
@@ -235,7 +215,10 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
   result.ranking = b.ranking;
   result.ranking_count = rank_models(*db_, b, fs.origin);
   result.group_size = lookalike_group_size(result, config_, fs.count);
-  result.confident = is_confident(result, config_, fs.count);
+  const ExtentFit fit = result.ranking_count > 0 ? extent_fit(ctx.query, db_->model(result.ranking[0].model),
+                                                              b.best[result.ranking[0].model].pose)
+                                                 : ExtentFit{};
+  result.confident = is_confident(result, config_, fs.count, fit);
   return result;
 }
 

@@ -68,6 +68,10 @@
     "log-likelihood per query feature for a confident answer")                                               \
   X(F32, min_margin, 0.0f, 1e6f, "--min-margin",                                                             \
     "lead over the runner-up, log-likelihood per query feature, for a confident answer (BRAN, SRAN)")        \
+  X(F32, max_extent_shortfall, 0.0f, 1e6f, "--max-extent-shortfall",                                         \
+    "m of the model's box ends and top the scan may miss for a confident answer")                            \
+  X(F32, max_extent_overhang, 0.0f, 1e6f, "--max-extent-overhang",                                           \
+    "m the scan may reach beyond the model's box for a confident answer")                                    \
   X(U32, max_trials, 0u, 0xFFFFFFFFu, "--trials", "doublet draws (BRAN)")                                    \
   X(U32, sran_trials, 0u, 0xFFFFFFFFu, "--sran-trials", "doublet draws per model (SRAN)")                    \
   X(U32, max_hypotheses, 0u, 0xFFFFFFFFu, "--max-hypotheses", "poses verified (BRAN total, SRAN per model)") \

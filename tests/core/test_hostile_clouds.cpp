@@ -61,8 +61,8 @@ struct Session {
 };
 
 std::vector<double> known_query(const double offset[3]) {
-  return test::toy_query(test::toy_vehicle_points(kQueryModel, kToySpacing), kQueryYaw, offset, kNoise,
-                         kNoiseSeed);
+  return test::toy_airborne_query(test::toy_vehicle_points(kQueryModel, kToySpacing), kQueryYaw, offset,
+                                  kNoise, kNoiseSeed);
 }
 
 std::vector<double> known_query() {

@@ -186,10 +186,12 @@ TEST_CASE("a toy vehicle standing on ground is recognised with the ground remove
   test::ToyDatabase toy;
   REQUIRE(test::make_toy_database(&toy));
   const double t[3] = {500000.0, 4000000.0, 120.0};
-  std::vector<double> q = test::toy_query(test::toy_vehicle_points(3, 0.05f), 0.9, t, 0.02, 3);
-  std::vector<float> ground = test::plane_grid(6.0f, 0.1f);  // with the view: under max_points, no thinning
+  std::vector<double> q = test::toy_airborne_query(test::toy_vehicle_points(3, 0.05f), 0.9, t, 0.02, 3);
+  std::vector<float> ground = test::plane_grid(6.0f, 0.15f);
   for (size_t i = 0; i < ground.size(); i += 3)
     for (int a = 0; a < 3; ++a) q.push_back(static_cast<double>(ground[i + a]) + t[a]);  // z = model's z = 0
+  REQUIRE(q.size() / 3 <=
+          RecognizerConfig{}.max_points);  // no thinning: every ground point reaches the removal
   for (float clearance : {kClearance, 0.0f}) {
     RecognizerConfig cfg;
     cfg.ground_clearance = clearance;

@@ -65,8 +65,15 @@ bool make_toy_database(ToyDatabase* out, uint32_t twin_of) {
   return make_database(clouds, out);
 }
 
-std::vector<double> toy_query(const std::vector<double>& model, double yaw, const double t[3], double noise,
-                              uint64_t seed) {
+namespace {
+
+constexpr double kHiddenFaceDepth = 0.02;  // m: the back and right faces (and their edges) are not seen
+constexpr double kHiddenBottom = 0.2;      // m: nor those this low
+
+// The points `seen` keeps, moved and noisy.
+template <typename Seen>
+std::vector<double> view(const std::vector<double>& model, double yaw, const double t[3], double noise,
+                         uint64_t seed, Seen seen) {
   std::vector<double> out;
   const double c = std::cos(yaw), s = std::sin(yaw);
   uint64_t state = seed * 6364136223846793005ull + 1442695040888963407ull;
@@ -76,13 +83,34 @@ std::vector<double> toy_query(const std::vector<double>& model, double yaw, cons
   };
   for (size_t i = 0; i < model.size(); i += 3) {
     double x = model[i], y = model[i + 1], z = model[i + 2];
-    if (x < -2.5 || y < -0.5 || z < 0.2) continue;  // seen from the front-left, above: about 2 sides + top
+    if (!seen(x, y, z)) continue;
     double n = noise * (uniform() + uniform() + uniform() - 1.5) * 2.0;  // roughly Gaussian, sd ~ noise
     out.push_back(c * x - s * y + t[0] + n * 0.3);
     out.push_back(s * x + c * y + t[1] + n * 0.3);
     out.push_back(z + t[2] + n);
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<double> toy_query(const std::vector<double>& model, double yaw, const double t[3], double noise,
+                              uint64_t seed) {
+  // Seen from the front-left, above: about 2 sides + top.
+  return view(model, yaw, t, noise, seed,
+              [](double x, double y, double z) { return x >= -2.5 && y >= -0.5 && z >= 0.2; });
+}
+
+std::vector<double> toy_airborne_query(const std::vector<double>& model, double yaw, const double t[3],
+                                       double noise, uint64_t seed) {
+  double back = 1e9, right = 1e9;  // the vehicle's back and right faces
+  for (size_t i = 0; i < model.size(); i += 3) {
+    back = model[i] < back ? model[i] : back;
+    right = model[i + 1] < right ? model[i + 1] : right;
+  }
+  return view(model, yaw, t, noise, seed, [&](double x, double y, double z) {
+    return x >= back + kHiddenFaceDepth && y >= right + kHiddenFaceDepth && z >= kHiddenBottom;
+  });
 }
 
 }  // namespace test

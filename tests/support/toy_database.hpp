@@ -30,11 +30,17 @@ std::vector<host::ModelCloud> toy_clouds();
 bool make_database(const std::vector<host::ModelCloud>& clouds, ToyDatabase* out,
                    const host::BuildOptions& options = host::BuildOptions());
 
-// A partial, moved, noisy view of points: keeps those facing direction `view`
-// side (x . view > -keep_depth), applies rotation about z by yaw and the
-// translation, adds deterministic noise of `noise` m.
+// A partial view of a vehicle's points: keeps those with x >= -2.5 m,
+// y >= -0.5 m and z >= 0.2 m (the front-left half, from above), rotates
+// about z by yaw, translates by t and adds deterministic noise of `noise` m.
 std::vector<double> toy_query(const std::vector<double>& model, double yaw, const double t[3], double noise,
                               uint64_t seed);
+// An airborne view from the front-left: the top whole, the front and the
+// left side; not the back face, the right side or the bottom. Unlike
+// toy_query's, it shows the vehicle's full length and width, which a
+// confident answer needs (recognize/confidence.hpp). Moved and noisy alike.
+std::vector<double> toy_airborne_query(const std::vector<double>& model, double yaw, const double t[3],
+                                       double noise, uint64_t seed);
 
 }  // namespace test
 }  // namespace spinhash

@@ -1,0 +1,34 @@
+// What a Result promises (not in the paper): the look-alike group and the
+// `confident` flag, from the ranking and the first model's fit to the scan.
+#pragma once
+#include <cstdint>
+
+#include "match/likelihood.hpp"
+#include "match/oriented_point.hpp"
+#include "spinhash/blob_format.hpp"
+#include "spinhash/recognizer.hpp"
+
+namespace spinhash {
+
+// How well the query's extent matches the model's box under `pose` (model
+// frame -> query frame), in metres: `shortfall` is the most the query stops
+// short of an end of the box along x or y or of its top (what a longer,
+// wider or taller look-alike could hide there); `overhang` the most the
+// query reaches beyond one of them. The bottom is left out: terrain removal
+// cuts it. 0 / 0 for a query without features.
+struct ExtentFit {
+  float shortfall = 0.0f;
+  float overhang = 0.0f;
+};
+ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model, const RigidPose& pose);
+
+// The leading models within min_margin per feature of the first (1 for SIND,
+// whose votes are no likelihoods; 0 without a ranking).
+uint32_t lookalike_group_size(const Result& r, const RecognizerConfig& cfg, uint32_t features);
+
+// The first model explains enough of the query, well enough, stands alone
+// (its look-alike group is itself) and is pinned by the scan's extent
+// (`fit` under its pose within max_extent_shortfall / max_extent_overhang).
+bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit);
+
+}  // namespace spinhash
