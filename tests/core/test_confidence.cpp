@@ -111,6 +111,42 @@ TEST_CASE("extent fit is measured in the model's frame: the pose's rotation is u
   CHECK(fit_of(turned, identity()).overhang >= 1.0f);  // the same points under the wrong pose
 }
 
+TEST_CASE("confident needs every gate: fit, score, a group of one, and the scan's extent") {
+  const RecognizerConfig cfg;
+  constexpr uint32_t kFeatures = 400;
+  RankedModel first;
+  first.has_pose = true;
+  first.inliers = 300;    // 75 % of the features explained
+  first.score = -600.0f;  // -1.5 per feature
+  Result r;
+  r.ranking = &first;
+  r.ranking_count = 1;
+  r.group_size = 1;
+  const ExtentFit pinned{0.05f, 0.05f};
+  CHECK(is_confident(r, cfg, kFeatures, pinned));
+
+  // The same answer with one thing changed.
+  auto with = [&](auto change) {
+    RankedModel m = first;
+    Result changed = r;
+    changed.ranking = &m;
+    ExtentFit fit = pinned;
+    change(changed, m, fit);
+    return is_confident(changed, cfg, kFeatures, fit);
+  };
+  CHECK_FALSE(with([](Result&, RankedModel& m, ExtentFit&) { m.has_pose = false; }));
+  CHECK_FALSE(with([](Result&, RankedModel& m, ExtentFit&) { m.inliers = 90; }));      // < 25 %
+  CHECK_FALSE(with([](Result&, RankedModel& m, ExtentFit&) { m.score = -1400.0f; }));  // < -3 per feature
+  CHECK_FALSE(
+      with([](Result& c, RankedModel&, ExtentFit&) { c.group_size = 2; }));  // a look-alike within the margin
+  CHECK_FALSE(with([](Result& c, RankedModel&, ExtentFit&) { c.ranking_count = 0; }));
+  CHECK_FALSE(
+      with([&](Result&, RankedModel&, ExtentFit& f) { f.shortfall = cfg.max_extent_shortfall + 0.05f; }));
+  CHECK_FALSE(
+      with([&](Result&, RankedModel&, ExtentFit& f) { f.overhang = cfg.max_extent_overhang + 0.05f; }));
+  CHECK(with([&](Result&, RankedModel&, ExtentFit& f) { f.shortfall = cfg.max_extent_shortfall - 0.05f; }));
+}
+
 TEST_CASE("a scan that hides a toy's end is not confident, whichever toy explains it best") {
   test::ToyDatabase toy;
   REQUIRE(test::make_toy_database(&toy));
