@@ -43,6 +43,28 @@ class CellGrid {
         }
   }
 
+  // true when some point lies within `radius` of q (the same exact test as
+  // for_each_within, over the cells the box [q - radius, q + radius] meets;
+  // stops at the first).
+  bool any_within(const float* q, float radius) const {
+    const float r2 = radius * radius;
+    const int32_t lo[3] = {coord(q[0] - radius), coord(q[1] - radius), coord(q[2] - radius)};
+    const int32_t hi[3] = {coord(q[0] + radius), coord(q[1] + radius), coord(q[2] + radius)};
+    for (int32_t z = lo[2]; z <= hi[2]; ++z)
+      for (int32_t y = lo[1]; y <= hi[1]; ++y)
+        for (int32_t x = lo[0]; x <= hi[0]; ++x) {
+          const int32_t slot = find(pack(x, y, z));
+          if (slot < 0) continue;
+          const uint32_t* it = order_ + first_[slot];
+          for (uint32_t k = 0; k < count_[slot]; ++k) {
+            const float* p = points_ + 3u * it[k];
+            const float ex = p[0] - q[0], ey = p[1] - q[1], ez = p[2] - q[2];
+            if (ex * ex + ey * ey + ez * ez <= r2) return true;
+          }
+        }
+    return false;
+  }
+
  private:
   static constexpr int32_t kCoordBias = 1 << 20;  // 21-bit cell coordinates per axis
   int32_t coord(float v) const;

@@ -61,6 +61,7 @@ Status carve(Arena& arena, const RecognizerConfig& cfg, const FeatureParams& fp,
   b.cumulative = arena.alloc<float>(nf);
   b.best = arena.alloc<ModelBest>(cfg.max_models);
   b.ranking = arena.alloc<RankedModel>(cfg.max_models);
+  b.feature_grid.carve(arena, cfg.max_features);
   return arena.overflowed() ? Status::kWorkspaceTooSmall : Status::kOk;
 }
 

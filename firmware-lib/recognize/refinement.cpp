@@ -71,6 +71,7 @@ void finalise_scores(SearchContext& ctx, bool refine) {
     leading = ctx.buf.best[models[i]].score > leading ? ctx.buf.best[models[i]].score : leading;
   }
   const float refine_from = leading - kRefineWindow * static_cast<float>(all.count);
+  if (ctx.cfg.mode == Mode::kBran) index_query_features(ctx);
   float lowest_final = 0.0f;
   for (uint32_t i = 0; i < n; ++i) {
     ModelBest& b = ctx.buf.best[models[i]];

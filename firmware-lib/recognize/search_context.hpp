@@ -2,6 +2,7 @@
 #pragma once
 #include <cstdint>
 
+#include "geometry/cell_grid.hpp"
 #include "match/doublet.hpp"
 #include "match/likelihood.hpp"
 #include "spinhash/features.hpp"
@@ -31,6 +32,7 @@ struct RecognizerBuffers {
   ModelBest* best = nullptr;            // max_models
   RankedModel* ranking = nullptr;       // max_models
   uint32_t candidate_stride = 0;        // largest W of any mode
+  CellGrid feature_grid;                // the query features (visible_surface.cpp)
 };
 
 // The leading model as BRAN's stop on evidence follows it (evidence_stop.cpp).
@@ -114,6 +116,8 @@ void finalise_scores(SearchContext& ctx, bool refine);
 // `pose`: each upward model feature seen (a query feature within Delta) or
 // missed (visible_surface.cpp).
 float upward_surface_log_likelihood(const SearchContext& ctx, uint32_t model, const RigidPose& pose);
+// Indexes the query features for upward_surface_log_likelihood (once per query).
+void index_query_features(SearchContext& ctx);
 void run_sran(SearchContext& ctx);
 void run_sind(SearchContext& ctx);
 

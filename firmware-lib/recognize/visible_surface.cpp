@@ -4,8 +4,10 @@
 // scan, so larger look-alikes win. From the air the roof, the hood and the
 // deck face the sensor whatever the side scanned: every model feature facing
 // up under the pose should have query features within Delta: each one is
-// seen or missed with the probabilities below. Bounded: the model's features
-// x the query's features (<= max_features), for the kRefinedModels leaders.
+// seen or missed with the probabilities below. Bounded: for each of the
+// kRefinedModels leaders, the model's features x the query features in at
+// most 8 cells of a grid twice Delta wide (found in the query features'
+// grid, built once per query).
 #include "recognize/search_context.hpp"
 
 namespace spinhash {
@@ -20,16 +22,15 @@ constexpr float kUpwardNormalZ = 0.7071f;
 constexpr float kLogSeen = -0.35667f;    // log(1 - 0.3)
 constexpr float kLogMissed = -1.20397f;  // log(0.3)
 
-bool near_query(const SearchContext& ctx, const Eigen::Vector3f& x) {
-  const float* q = ctx.query.positions;
-  for (uint32_t l = 0; l < ctx.query.count; ++l, q += 3) {
-    const float dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
-    if (dx * dx + dy * dy + dz * dz <= ctx.likelihood.delta2) return true;
-  }
-  return false;
-}
+// The query features in cells twice Delta wide: a posed model feature's
+// neighbours within Delta lie in at most 8 of them.
+constexpr float kGridCellsPerDelta = 2.0f;
 
 }  // namespace
+
+void index_query_features(SearchContext& ctx) {
+  ctx.buf.feature_grid.build(ctx.query.positions, ctx.query.count, kGridCellsPerDelta * ctx.cfg.delta);
+}
 
 float upward_surface_log_likelihood(const SearchContext& ctx, uint32_t model, const RigidPose& pose) {
   const blob::ModelRecord& rec = ctx.db.model(model);
@@ -37,7 +38,8 @@ float upward_surface_log_likelihood(const SearchContext& ctx, uint32_t model, co
   for (uint32_t f = rec.first_feature; f < rec.first_feature + rec.feature_count; ++f) {
     const OrientedPoint m = ctx.model_point(f);
     if ((pose.rotation * m.n)[2] < kUpwardNormalZ) continue;
-    sum += near_query(ctx, pose.rotation * m.p + pose.translation) ? kLogSeen : kLogMissed;
+    const Eigen::Vector3f x = pose.rotation * m.p + pose.translation;
+    sum += ctx.buf.feature_grid.any_within(x.data(), ctx.cfg.delta) ? kLogSeen : kLogMissed;
   }
   return sum;
 }
