@@ -5,27 +5,52 @@ namespace {
 
 // Box faces tested: both ends along x and y, and the top (z up in the model).
 constexpr int kTestedFaces = 5;
+constexpr float kFar = 3.0e38f;  // beyond any coordinate: no feature yet
+
+// The query's two outermost features on each side of every axis, in the
+// model's frame: the outermost says how far the scan reaches, the second
+// how far it overhangs (one stray feature, a noise spike or a ground
+// remnant beside the vehicle, does not count).
+struct Outermost {
+  Eigen::Vector3f lo[2], hi[2];  // [0] outermost, [1] second
+  Outermost() {
+    for (int k = 0; k < 2; ++k)
+      lo[k] = Eigen::Vector3f::Constant(kFar), hi[k] = Eigen::Vector3f::Constant(-kFar);
+  }
+  void add(const Eigen::Vector3f& x) {
+    for (int a = 0; a < 3; ++a) {
+      if (x[a] < lo[1][a]) lo[1][a] = x[a] < lo[0][a] ? lo[0][a] : x[a];
+      if (x[a] < lo[0][a]) lo[0][a] = x[a];
+      if (x[a] > hi[1][a]) hi[1][a] = x[a] > hi[0][a] ? hi[0][a] : x[a];
+      if (x[a] > hi[0][a]) hi[0][a] = x[a];
+    }
+  }
+  // Per tested face, how far the k-th outermost feature stops short of it
+  // (> 0) or reaches past it (< 0).
+  void gaps(const blob::ModelRecord& m, int k, float* gap) const {
+    gap[0] = lo[k][0] - m.bbox_min[0];
+    gap[1] = m.bbox_max[0] - hi[k][0];
+    gap[2] = lo[k][1] - m.bbox_min[1];
+    gap[3] = m.bbox_max[1] - hi[k][1];
+    gap[4] = m.bbox_max[2] - hi[k][2];
+  }
+};
 
 }  // namespace
 
 ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model, const RigidPose& pose) {
   ExtentFit fit;
   if (query.count == 0) return fit;
-  Eigen::Vector3f lo = Eigen::Vector3f::Constant(3.0e38f), hi = -lo;
+  Outermost out;
   const Eigen::Matrix3f to_model = pose.rotation.transpose();
-  for (uint32_t f = 0; f < query.count; ++f) {
-    const Eigen::Vector3f x =
-        to_model * (Eigen::Map<const Eigen::Vector3f>(query.positions + 3u * f) - pose.translation);
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  // Per face, how far the query stops short of it (> 0) or reaches past it (< 0).
-  const float gap[kTestedFaces] = {lo[0] - model.bbox_min[0], model.bbox_max[0] - hi[0],
-                                   lo[1] - model.bbox_min[1], model.bbox_max[1] - hi[1],
-                                   model.bbox_max[2] - hi[2]};
-  for (float g : gap) {
-    fit.shortfall = g > fit.shortfall ? g : fit.shortfall;
-    fit.overhang = -g > fit.overhang ? -g : fit.overhang;
+  for (uint32_t f = 0; f < query.count; ++f)
+    out.add(to_model * (Eigen::Map<const Eigen::Vector3f>(query.positions + 3u * f) - pose.translation));
+  float reach[kTestedFaces], second[kTestedFaces];
+  out.gaps(model, 0, reach);
+  out.gaps(model, 1, second);
+  for (int i = 0; i < kTestedFaces; ++i) {
+    fit.shortfall = reach[i] > fit.shortfall ? reach[i] : fit.shortfall;
+    fit.overhang = -second[i] > fit.overhang ? -second[i] : fit.overhang;
   }
   return fit;
 }

@@ -14,8 +14,9 @@ namespace spinhash {
 // frame -> query frame), in metres: `shortfall` is the most the query stops
 // short of an end of the box along x or y or of its top (what a longer,
 // wider or taller look-alike could hide there); `overhang` the most the
-// query reaches beyond one of them. The bottom is left out: terrain removal
-// cuts it. 0 / 0 for a query without features.
+// query's second outermost feature reaches beyond one of them (a single
+// stray feature is noise or a ground remnant). The bottom is left out:
+// terrain removal cuts it. 0 / 0 for a query without features.
 struct ExtentFit {
   float shortfall = 0.0f;
   float overhang = 0.0f;

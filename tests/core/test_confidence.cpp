@@ -64,7 +64,9 @@ std::vector<float> filtered(const std::vector<float>& p, Keep keep) {
 
 }  // namespace
 
-TEST_CASE("extent fit: a whole box is pinned, a cut one falls short by the cut, a shifted one overhangs") {
+TEST_CASE(
+    "extent fit: a whole box is pinned, a cut one falls short, a shifted one overhangs, a stray feature does "
+    "not") {
   const std::vector<float> box = box_points();
   const ExtentFit whole = fit_of(box, identity());
   CHECK(whole.shortfall <= kTolerance);
@@ -84,6 +86,15 @@ TEST_CASE("extent fit: a whole box is pinned, a cut one falls short by the cut, 
   // The bottom is not tested: terrain removal cuts it.
   const ExtentFit raised = fit_of(filtered(box, [](float, float, float z) { return z >= 0.5f; }), identity());
   CHECK(raised.shortfall <= kTolerance);
+
+  // One stray feature 0.6 m above the roof (a noise spike) is not an
+  // overhang; two are.
+  std::vector<float> stray = box;
+  stray.insert(stray.end(), {0.0f, 0.0f, kHeight + 0.6f});
+  CHECK(fit_of(stray, identity()).overhang <= kTolerance);
+  stray.insert(stray.end(), {0.5f, 0.0f, kHeight + 0.6f});
+  CHECK(fit_of(stray, identity()).overhang == doctest::Approx(0.6f).epsilon(0.01));
+  CHECK(fit_of(stray, identity()).shortfall <= kTolerance);
 
   // A pose 0.4 m off along y: the query reaches 0.4 m past one side and
   // stops 0.4 m short of the other.
