@@ -11,6 +11,8 @@ namespace spinhash {
 
 namespace {
 
+constexpr uint32_t kNoBound = 0xFFFFFFFFu;  // a list still filling takes any distance
+
 // The order of a top-W list: nearer first, equal distances by feature index.
 inline bool before(const Candidate& x, const Candidate& y) {
   return x.distance < y.distance || (x.distance == y.distance && x.feature < y.feature);
@@ -118,7 +120,9 @@ uint32_t LshSearcher::search(const Database& db, const uint8_t* spin, uint32_t w
     stats->entries_scanned += take;
     for (uint32_t e = 0; e < take; ++e) {
       uint32_t f = entries[first + static_cast<uint32_t>(static_cast<uint64_t>(e) * size / take)];
-      const Candidate c{f, l1_distance(spin, db.spin(f), dims)};
+      // A candidate farther than the farthest kept cannot enter a full list.
+      const uint32_t bound = w > 0 && count == w ? out[0].distance : kNoBound;
+      const Candidate c{f, l1_distance_within(spin, db.spin(f), dims, bound)};
       // Most entries are too far to enter the list: they are dropped before
       // the seen-set (the list only gets nearer, so a repeat is dropped
       // again). A repeat that would enter is already in the list.

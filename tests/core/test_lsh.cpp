@@ -8,6 +8,7 @@
 #include "db/lsh_tables.hpp"
 #include "spinhash/internal/lsh_probability.hpp"
 #include "spinhash/internal/lsh_search.hpp"
+#include "spinhash/internal/spin_quantize.hpp"
 #include "spinhash/lsh.hpp"
 
 using namespace spinhash;
@@ -107,4 +108,32 @@ TEST_CASE("the W best candidates stay sorted by distance, then feature id") {
   CHECK(list[1].feature == 3);
   CHECK(list[2].feature == 8);
   CHECK(list[3].feature == 7);  // 7 before 9 at equal distance; 1 (90) dropped
+}
+
+TEST_CASE("the bounded L1 distance is exact up to its bound and above it beyond, at any length") {
+  Lcg rng{11};
+  for (uint32_t dims : {1u, 17u, 64u, 100u, 129u, 225u}) {
+    std::vector<uint8_t> a(dims), b(dims);
+    for (uint32_t trial = 0; trial < 50; ++trial) {
+      for (uint32_t i = 0; i < dims; ++i)
+        a[i] = static_cast<uint8_t>(rng.below(256)), b[i] = static_cast<uint8_t>(rng.below(256));
+      uint32_t exact = 0;
+      for (uint32_t i = 0; i < dims; ++i) exact += static_cast<uint32_t>(std::abs(int(a[i]) - int(b[i])));
+      CAPTURE(dims);
+      REQUIRE(l1_distance(a.data(), b.data(), dims) == exact);
+      for (uint32_t bound : {0u, exact / 3u, exact - (exact > 0 ? 1u : 0u), exact, exact + 1u, 0xFFFFFFFFu}) {
+        const uint32_t d = l1_distance_within(a.data(), b.data(), dims, bound);
+        if (exact <= bound)
+          CHECK(d == exact);
+        else
+          CHECK(d > bound);  // stopped early or not: never at or below the bound
+        CHECK(d <= exact);   // a partial sum at most
+      }
+    }
+  }
+  // A partial sum that reaches the bound exactly at a block's end is no
+  // reason to stop: a candidate at the bound may still enter (ties go by
+  // feature index).
+  const std::vector<uint8_t> zeros(kDims, 0), ones(kDims, 1);
+  CHECK(l1_distance_within(zeros.data(), ones.data(), kDims, 64u) == kDims);
 }
