@@ -1,5 +1,7 @@
 #include "recognize/confidence.hpp"
 
+#include <cmath>
+
 namespace spinhash {
 namespace {
 
@@ -58,8 +60,8 @@ ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model,
 uint32_t lookalike_group_size(const Result& r, const RecognizerConfig& cfg, uint32_t features) {
   if (r.ranking_count == 0) return 0;
   if (cfg.mode == Mode::kSind) return 1;
-  const float within = cfg.min_margin * static_cast<float>(features);
   uint32_t k = 1;
+  const float within = cfg.min_margin * std::sqrt(static_cast<float>(features));
   while (k < r.ranking_count && r.ranking[0].score - r.ranking[k].score < within) ++k;
   return k;
 }

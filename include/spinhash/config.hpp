@@ -92,10 +92,12 @@ struct RecognizerConfig {
   // model's surface passes the inlier test but not this one.
   float min_inlier_fraction = 0.25f;
   float min_mean_log_likelihood = -3.0f;
-  // ... and leads the runner-up by at least this log-likelihood per query
-  // feature (BRAN, SRAN): most wrong answers are a look-alike of the right
-  // one, which comes second a little behind ...
-  float min_margin = 0.1f;
+  // ... and leads the runner-up by at least this many times sqrt(features)
+  // log-likelihood (BRAN, SRAN): eq. 7 sums n per-feature terms, so the lead
+  // grows as n and its spread as sqrt(n) (a z-score; per feature it favoured
+  // small scans, in total large ones). Most wrong answers are a look-alike
+  // of the right one, which comes second a little behind ...
+  float min_margin = 2.1f;
   // ... and the scan pins the model's size: the query features, in the
   // model's frame under its pose, reach within max_extent_shortfall of both
   // ends of the model's box along x and along y and of its top, and lie at
@@ -104,9 +106,9 @@ struct RecognizerConfig {
   // terrain removal cuts it). A scan that misses a vehicle's end is explained as
   // well by a longer look-alike, and a shortened one by a shorter model
   // (wrong answers name a longer model 4 times in 5). On the 56-model fleet
-  // (2 x 896 queries, 16 conditions) these keep 98.9% of the confident
-  // answers right and flag 73% of the right ones (margin alone: 95.5% /
-  // 76%).
+  // (3 x 896 queries, 16 conditions) these keep 99.2% of the confident
+  // answers right and flag 75% of the right ones (a margin of 0.1 per
+  // feature alone: 95.5% / 76%).
   float max_extent_shortfall = 0.2f;  // m
   float max_extent_overhang = 0.3f;   // m
 

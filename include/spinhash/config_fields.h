@@ -67,7 +67,7 @@
   X(F32, min_mean_log_likelihood, -1e6f, 0.0f, "--min-mean-log-likelihood",                                  \
     "log-likelihood per query feature for a confident answer")                                               \
   X(F32, min_margin, 0.0f, 1e6f, "--min-margin",                                                             \
-    "lead over the runner-up, log-likelihood per query feature, for a confident answer (BRAN, SRAN)")        \
+    "lead over the runner-up, log-likelihood / sqrt(query features), for a confident answer (BRAN, SRAN)")   \
   X(F32, max_extent_shortfall, 0.0f, 1e6f, "--max-extent-shortfall",                                         \
     "m of the model's box ends and top the scan may miss for a confident answer")                            \
   X(F32, max_extent_overhang, 0.0f, 1e6f, "--max-extent-overhang",                                           \

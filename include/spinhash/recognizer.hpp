@@ -52,7 +52,7 @@ struct Result {
   uint32_t ranking_count = 0;            // models that got a score, best first
   bool confident = false;                // the best model explains >= min_inlier_fraction of the features
   // Look-alike group: the first group_size models of the ranking score within
-  // min_margin log-likelihood per query feature of the first, so the scan
+  // min_margin x sqrt(features) log-likelihood of the first, so the scan
   // does not tell them apart (BRAN, SRAN). 1: the first stands alone (always
   // for SIND, which ranks by votes); 0: no ranking.
   uint32_t group_size = 0;

@@ -114,7 +114,7 @@ typedef struct spinhash_result {
   int32_t status; /* spinhash_status */
   uint32_t ranking_count;
   uint32_t confident; /* 1: the best model explains enough of the query */
-  /* Leading models within min_margin per feature of the first: the scan
+  /* Leading models within min_margin x sqrt(features) of the first: the scan
    * does not tell them apart (1: the first stands alone; 0: no ranking). */
   uint32_t group_size;
   spinhash_stats stats;

@@ -96,25 +96,25 @@ TEST_CASE_FIXTURE(Twinned, "without its twin in the running the same fit is conf
 
 TEST_CASE_FIXTURE(Twinned, "the look-alike group is every leading model within min_margin of the first") {
   RecognizerConfig cfg;
-  for (float margin : {0.0f, 0.1f, 1.0f, 100.0f}) {
+  for (float margin : {0.0f, 2.1f, 20.0f, 1e4f}) {
     CAPTURE(margin);
     cfg.min_margin = margin;
     Result r = recognize(8, cfg);
     REQUIRE(r.ranking_count >= 2);
-    const float within = margin * static_cast<float>(r.stats.features);
+    const float within = margin * std::sqrt(static_cast<float>(r.stats.features));
     uint32_t expected = 1;
     while (expected < r.ranking_count && r.ranking[0].score - r.ranking[expected].score < within) ++expected;
     CHECK(r.group_size == expected);
-    if (margin >= 100.0f) CHECK(r.group_size == r.ranking_count);  // nothing is that far behind
+    if (margin >= 1e4f) CHECK(r.group_size == r.ranking_count);  // nothing is that far behind
     if (margin == 0.0f) CHECK(r.group_size == 1u);
   }
   // A margin that just takes in the third model (its gap is 3/4 of it).
   Result first = recognize(8);
   REQUIRE(first.ranking_count >= 3);
   const float gap = first.ranking[0].score - first.ranking[2].score;
-  const float features = static_cast<float>(first.stats.features);
-  cfg.min_margin = gap / (0.75f * features);
+  const float root = std::sqrt(static_cast<float>(first.stats.features));
+  cfg.min_margin = gap / (0.75f * root);
   CHECK(recognize(8, cfg).group_size >= 3u);
-  cfg.min_margin = gap / (1.25f * features);  // ... and one that just leaves it out
+  cfg.min_margin = gap / (1.25f * root);  // ... and one that just leaves it out
   CHECK(recognize(8, cfg).group_size == 2u);
 }
