@@ -103,12 +103,12 @@ struct RecognizerConfig {
   // ends of the model's box along x and along y and of its top, and lie at
   // most max_extent_overhang beyond them (the second outermost feature: one
   // stray feature is noise or a ground remnant; the bottom is not tested:
-  // terrain removal cuts it). A scan that misses a vehicle's end is explained as
-  // well by a longer look-alike, and a shortened one by a shorter model
-  // (wrong answers name a longer model 4 times in 5). On the 56-model fleet
-  // (3 x 896 queries, 16 conditions) these keep 99.2% of the confident
-  // answers right and flag 75% of the right ones (a margin of 0.1 per
-  // feature alone: 95.5% / 76%).
+  // terrain removal cuts it). A scan that misses a vehicle's end is
+  // explained as well by a longer look-alike, and a shortened one by a
+  // shorter model (wrong answers name a longer model 4 times in 5). On the
+  // 56-model fleet (3 x 896 queries, 16 conditions) these keep 99.2% of the
+  // confident answers right and flag 75% of the right ones (a margin of 0.1
+  // per feature alone: 95.5% / 76%).
   float max_extent_shortfall = 0.2f;  // m
   float max_extent_overhang = 0.3f;   // m
 

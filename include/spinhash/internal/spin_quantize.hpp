@@ -10,10 +10,10 @@ namespace spinhash {
 // q = min(255, round(v * scale)): the database's stored form of a spin image.
 void quantize_spin(const float* image, uint32_t dims, float scale, uint8_t* out);
 
-// Sum of |a[i] - b[i]| over n bytes.
-inline uint32_t l1_run(const uint8_t* a, const uint8_t* b, uint32_t n) {
+// L1 distance between two quantised spin images (exact integer: the same on every target).
+inline uint32_t l1_distance(const uint8_t* a, const uint8_t* b, uint32_t dims) {
   uint32_t sum = 0;
-  for (uint32_t i = 0; i < n; ++i) {
+  for (uint32_t i = 0; i < dims; ++i) {
     int32_t d = static_cast<int32_t>(a[i]) - static_cast<int32_t>(b[i]);
     sum += static_cast<uint32_t>(d < 0 ? -d : d);
   }
@@ -29,13 +29,10 @@ inline uint32_t l1_distance_within(const uint8_t* a, const uint8_t* b, uint32_t 
   constexpr uint32_t kBlock = 64;
   uint32_t sum = 0, i = 0;
   for (; i + kBlock <= dims; i += kBlock) {
-    sum += l1_run(a + i, b + i, kBlock);
+    sum += l1_distance(a + i, b + i, kBlock);
     if (sum > bound) return sum;
   }
-  return sum + l1_run(a + i, b + i, dims - i);
+  return sum + l1_distance(a + i, b + i, dims - i);
 }
-
-// L1 distance between two quantised spin images (exact integer: the same on every target).
-inline uint32_t l1_distance(const uint8_t* a, const uint8_t* b, uint32_t dims) { return l1_run(a, b, dims); }
 
 }  // namespace spinhash
