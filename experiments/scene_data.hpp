@@ -40,6 +40,8 @@ struct SceneVehicleRecord {
   std::string answer;  // first-ranked model; empty when not found or not ranked
   bool confident = false;
   double score = 0.0;
+  double score_second = 0.0;  // the runner-up's (0 without one)
+  uint32_t features = 0;      // query features of the recognition (the margin's sqrt(n))
   // When not found: the nearest vehicle-sized object beyond reach (within
   // kNearestReach), to tell a miss from a detection off the footprint centre.
   double nearest_m = -1.0;  // -1: none

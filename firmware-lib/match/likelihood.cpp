@@ -112,6 +112,16 @@ NearestFeature find_nearest_model_feature(const Database& db, const blob::ModelR
   return best;
 }
 
+namespace {
+
+// Per-feature log-likelihood of an unexplained feature: a match at Delta
+// with the most dissimilar spin image.
+float floor_term(const LikelihoodParams& lp, const RecognizerConfig& cfg) {
+  return -lp.delta2 * lp.inv_two_sigma2 - kMaxNormalisedL1 / cfg.spin_lambda;
+}
+
+}  // namespace
+
 LikelihoodParams make_likelihood_params(const RecognizerConfig& cfg, const Database& db) {
   LikelihoodParams lp;
   lp.inv_two_sigma2 = 1.0f / (2.0f * cfg.sigma * cfg.sigma);
@@ -119,11 +129,33 @@ LikelihoodParams make_likelihood_params(const RecognizerConfig& cfg, const Datab
   lp.delta_max2 = cfg.delta_max * cfg.delta_max;
   lp.cos_eta_max = std::cos(deg_to_rad(cfg.eta_max_deg));
   lp.spin_weight = 1.0f / (cfg.spin_lambda * db.params().spin_quant_scale);
-  lp.floor = -lp.delta2 * lp.inv_two_sigma2 - kMaxNormalisedL1 / cfg.spin_lambda;
+  lp.floor = floor_term(lp, cfg);
   const float reach = std::ceil(cfg.delta_max / db.params().grid_cell);
   lp.reach = reach < static_cast<float>(kMaxGridReach) ? static_cast<uint32_t>(reach) : kMaxGridReach;
   lp.use_field = db.has_nearest_field() && cfg.delta_max <= db.params().field_reach;
   return lp;
+}
+
+LikelihoodParams make_surface_params(const RecognizerConfig& cfg, const Database& db) {
+  LikelihoodParams lp = make_likelihood_params(cfg, db);
+  lp.use_field = false;  // the field's voxel-centre answers blur centimetres
+  lp.inv_two_sigma2 = 1.0f / (2.0f * cfg.sigma_surface * cfg.sigma_surface);
+  lp.surface_patch_radius = kPatchRadiusPerSpacing * db.params().basis_spacing;
+  return lp;
+}
+
+float residual2(const Database& db, uint32_t f, const Eigen::Vector3f& x, float point_to_point2,
+                const LikelihoodParams& lp) {
+  if (lp.surface_patch_radius < 0.0f) return point_to_point2;
+  const float* p = db.positions() + 3u * f;
+  const int16_t* n = db.normals() + 3u * f;
+  const float along_normal = (x[0] - p[0]) * decode_normal_component(n[0]) +
+                             (x[1] - p[1]) * decode_normal_component(n[1]) +
+                             (x[2] - p[2]) * decode_normal_component(n[2]);
+  const float tangential2 = point_to_point2 - along_normal * along_normal;
+  const float tangential = tangential2 > 0.0f ? std::sqrt(tangential2) : 0.0f;
+  const float beyond = tangential > lp.surface_patch_radius ? tangential - lp.surface_patch_radius : 0.0f;
+  return along_normal * along_normal + beyond * beyond;
 }
 
 namespace {
@@ -166,7 +198,8 @@ Verification verify_pose(const Database& db, uint32_t model, const RigidPose& po
       v.log_likelihood += lp.floor;
       continue;
     }
-    float r2 = near.dist2 < lp.delta2 ? near.dist2 : lp.delta2;
+    float r2 = residual2(db, static_cast<uint32_t>(near.feature), x, near.dist2, lp);
+    r2 = r2 < lp.delta2 ? r2 : lp.delta2;
     uint32_t l1 = l1_distance(query.spins + static_cast<size_t>(l) * query.dims,
                               db.spin(static_cast<uint32_t>(near.feature)), query.dims);
     float term = -r2 * lp.inv_two_sigma2 - static_cast<float>(l1) * lp.spin_weight;

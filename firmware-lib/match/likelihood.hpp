@@ -42,6 +42,8 @@ constexpr float kPreemptiveSlackSecond = 0.8f;
 // to this many model-grid cells (a larger Delta_max is searched only this far).
 constexpr uint32_t kMaxGridReach = 4;
 
+constexpr float kPointToPoint = -1.0f;  // LikelihoodParams::surface_patch_radius: the paper's r
+
 struct LikelihoodParams {
   float inv_two_sigma2 = 0.0f;
   float delta2 = 0.0f;      // Delta^2
@@ -51,9 +53,28 @@ struct LikelihoodParams {
   float floor = 0.0f;        // per-feature log-likelihood of an unexplained feature
   uint32_t reach = 1;        // grid cells searched each way
   bool use_field = false;    // the blob's nearest-feature field answers (it reaches Delta_max)
+  // r of eq. 5: < 0, the paper's distance between the query feature and the
+  // nearest model feature; >= 0, the distance to the patch of model surface
+  // that feature stands for: the offset along its normal, plus how far the
+  // query feature lies beyond this radius (m) along the surface.
+  float surface_patch_radius = kPointToPoint;
 };
 
+// A model feature stands for the surface of its basis voxel: up to half the
+// basis spacing away along the surface (an axis-aligned half-width; the
+// corners, up to 0.7 spacing away, pay a little).
+constexpr float kPatchRadiusPerSpacing = 0.5f;
+
+// The hypothesis loop's likelihood (the paper's eqs. 4-7).
 LikelihoodParams make_likelihood_params(const RecognizerConfig& cfg, const Database& db);
+// The final ranking's: the exact nearest-feature search, r to the model's
+// surface patch, and sigma_surface in eq. 5 (the sampling offset that sigma
+// covers is gone); the floor follows.
+LikelihoodParams make_surface_params(const RecognizerConfig& cfg, const Database& db);
+
+// r^2 of eq. 5 for query feature x (model frame) and model feature f.
+float residual2(const Database& db, uint32_t f, const Eigen::Vector3f& x, float point_to_point2,
+                const LikelihoodParams& lp);
 
 // Nearest model feature to x (model frame) within Delta_max whose normal n
 // agrees within eta_max; feature < 0 when none. With lp.use_field, among

@@ -1,23 +1,28 @@
 #include "match/refine_pose.hpp"
 
-#include <Eigen/LU>
-#include <Eigen/SVD>
-
-#include "match/pose_from_doublet.hpp"
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
 
 namespace spinhash {
 namespace {
 
-// Running sums for Kabsch without storing the pairs.
-struct PairSums {
-  Eigen::Vector3f sum_q = Eigen::Vector3f::Zero(), sum_m = Eigen::Vector3f::Zero();
-  Eigen::Matrix3f sum_mq = Eigen::Matrix3f::Zero();
-  float n = 0.0f;
-  void add(const Eigen::Vector3f& m, const Eigen::Vector3f& q) {
-    sum_q += q;
-    sum_m += m;
-    sum_mq.noalias() += m * q.transpose();
-    n += 1.0f;
+using Vector6f = Eigen::Matrix<float, 6, 1>;
+using Matrix6f = Eigen::Matrix<float, 6, 6>;
+
+// Normal equations of the point-to-plane residuals r = n . (x - p) for a
+// small motion x -> x + w x x + v of the query features in the model frame:
+// dr / d(w, v) = (x x n, n).
+struct PlaneSums {
+  Matrix6f jtj = Matrix6f::Zero();
+  Vector6f jtr = Vector6f::Zero();
+  uint32_t matches = 0;
+  void add(const Eigen::Vector3f& x, const Eigen::Vector3f& p, const Eigen::Vector3f& n) {
+    Vector6f j;
+    j.head<3>() = x.cross(n);
+    j.tail<3>() = n;
+    jtj.noalias() += j * j.transpose();
+    jtr += j * n.dot(x - p);
+    ++matches;
   }
 };
 
@@ -27,32 +32,31 @@ bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query,
                  RigidPose* pose) {
   const blob::ModelRecord& rec = db.model(model);
   const Eigen::Matrix3f rt = pose->rotation.transpose();
-  PairSums sums;
-  uint32_t matches = 0;
+  PlaneSums sums;
   for (uint32_t l = 0; l < query.count; ++l) {
-    Eigen::Vector3f qp(query.positions[3u * l], query.positions[3u * l + 1u], query.positions[3u * l + 2u]);
-    Eigen::Vector3f qn(query.normals[3u * l], query.normals[3u * l + 1u], query.normals[3u * l + 2u]);
-    NearestFeature near = find_nearest_model_feature(db, rec, rt * (qp - pose->translation), rt * qn, lp);
+    const Eigen::Vector3f x =
+        rt * (Eigen::Map<const Eigen::Vector3f>(query.positions + 3u * l) - pose->translation);
+    const Eigen::Vector3f qn = rt * Eigen::Map<const Eigen::Vector3f>(query.normals + 3u * l);
+    const NearestFeature near = find_nearest_model_feature(db, rec, x, qn, lp);
     if (near.feature < 0 || near.dist2 > lp.delta2) continue;
     const uint32_t f = static_cast<uint32_t>(near.feature);
-    Eigen::Vector3f mp(db.positions()[3u * f], db.positions()[3u * f + 1u], db.positions()[3u * f + 2u]);
-    const int16_t* mn16 = db.normals() + 3u * f;
-    Eigen::Vector3f mn(decode_normal_component(mn16[0]), decode_normal_component(mn16[1]),
-                       decode_normal_component(mn16[2]));
-    sums.add(mp, qp);
-    sums.add(mp + kNormalLever * mn, qp + kNormalLever * qn);
-    ++matches;
+    const int16_t* n16 = db.normals() + 3u * f;
+    const Eigen::Vector3f n(decode_normal_component(n16[0]), decode_normal_component(n16[1]),
+                            decode_normal_component(n16[2]));
+    sums.add(x, Eigen::Map<const Eigen::Vector3f>(db.positions() + 3u * f), n);
   }
-  if (matches < kMinRefineMatches) return false;
-  const Eigen::Vector3f qc = sums.sum_q / sums.n, mc = sums.sum_m / sums.n;
-  const Eigen::Matrix3f h = sums.sum_mq - sums.n * mc * qc.transpose();
-  Eigen::JacobiSVD<Eigen::Matrix3f> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  const Eigen::Matrix3f u = svd.matrixU(), v = svd.matrixV();
-  const float det = (v * u.transpose()).determinant();
-  const Eigen::Vector3f fix(1.0f, 1.0f, det < 0.0f ? -1.0f : 1.0f);
+  if (sums.matches < kMinRefineMatches) return false;
+  sums.jtj.diagonal().array() += kDampingPerMatch * static_cast<float>(sums.matches);
+  const Vector6f step = sums.jtj.llt().solve(-sums.jtr);
+  if (!step.allFinite()) return false;
+  const Eigen::Vector3f w = step.head<3>();
+  const float angle = w.norm();
+  const Eigen::Matrix3f turn =
+      angle > 0.0f ? Eigen::AngleAxisf(angle, w / angle).toRotationMatrix() : Eigen::Matrix3f::Identity();
+  // Model-frame motion x -> turn x + v; the pose maps model to query: q = R x + t.
   RigidPose refined;
-  refined.rotation = v * fix.asDiagonal() * u.transpose();
-  refined.translation = qc - refined.rotation * mc;
+  refined.rotation = pose->rotation * turn.transpose();
+  refined.translation = pose->translation - refined.rotation * step.tail<3>();
   if (!refined.rotation.allFinite() || !refined.translation.allFinite()) return false;
   *pose = refined;
   return true;

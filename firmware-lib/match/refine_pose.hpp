@@ -1,16 +1,26 @@
 // Least-squares refinement of a hypothesis: the pose from two doublets
 // carries their sampling and normal noise; re-estimating it from every query
-// feature that the pose matches within Delta (Kabsch over their positions and
-// normal tips) tightens it, and with it the likelihood that separates
-// look-alike models. Not in the paper; applied to the best few models only.
+// feature that the pose matches within Delta tightens it, and with it the
+// likelihood that separates look-alike models. Point to plane: each match
+// pulls its query feature onto the tangent plane of its model feature, not
+// onto the feature itself, which sits anywhere in its basis voxel (up to
+// 0.2 m away along the surface at 0.25 m spacing); a Gauss-Newton step of
+// the six pose parameters. Not in the paper; applied to the best few models
+// only.
 #pragma once
 #include "match/likelihood.hpp"
 
 namespace spinhash {
 
-constexpr uint32_t kMinRefineMatches = 3;  // fewer inliers: keep the pose as it is
+// Fewer matches than pose parameters: keep the pose as it is.
+constexpr uint32_t kMinRefineMatches = 6;
+// Damping of the normal equations per match (m^2, rad^2): a direction no
+// match constrains (sliding along a single flat side) does not move, and
+// constrained ones are untouched (their weight is ~0.1-10 per match).
+constexpr float kDampingPerMatch = 1e-3f;
 
-// Replaces *pose with the refined one; false (pose untouched) when too few matches.
+// Replaces *pose with the refined one; false (pose untouched) when too few
+// matches or a non-finite step.
 bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query, const LikelihoodParams& lp,
                  RigidPose* pose);
 

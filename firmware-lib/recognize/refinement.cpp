@@ -1,14 +1,16 @@
 // After the hypothesis loop, which scores poses on a subset of the query
 // features (through the blob's nearest-feature field when it has one): the
 // leading models' best poses are rescored on every feature with the exact
-// nearest-feature search (the field's voxel-centre answers blur the
-// centimetres that separate look-alikes: 94 of the fleet's 896 answers lost
-// when 0.25 m voxels also did the final scoring); those within
-// kRefineWindow of the best are (optionally) refined by least squares over
-// their inliers (match/refine_pose.hpp), keeping a refined pose where its
-// likelihood is higher; BRAN then charges each for the upward surface the
-// scan does not show (visible_surface.cpp); every other model's subset score
-// is extrapolated to all features, below the rescored ones. Bounded:
+// nearest-feature search and the surface residual (make_surface_params:
+// each query feature's distance to the model's surface along the nearest
+// model feature's normal, with sigma_surface; the paper's distance to the
+// feature itself carries the basis voxels' sampling offset, up to 0.2 m,
+// which blurs the centimetres that separate look-alikes); those within
+// kRefineWindow of the best are (optionally) refined point to plane
+// (match/refine_pose.hpp), keeping a refined pose where its likelihood is
+// higher; BRAN then charges each for the upward surface the scan does not
+// show (visible_surface.cpp); every other model's subset score is
+// extrapolated to all features, below the rescored ones. Bounded:
 // kRefinedModels models x (1 + kRefineIterations) full verifications.
 #include "match/refine_pose.hpp"
 #include "recognize/search_context.hpp"
@@ -63,8 +65,7 @@ void finalise_scores(SearchContext& ctx, bool refine) {
   const uint32_t n = leading_models(ctx, models);
   QueryFeatures all = ctx.query;
   all.verify_count = all.count;
-  LikelihoodParams exact = ctx.likelihood;
-  exact.use_field = false;
+  const LikelihoodParams exact = make_surface_params(ctx.cfg, ctx.db);
   float leading = kNoScoreToBeat;
   for (uint32_t i = 0; i < n; ++i) {
     rescore(ctx, models[i], all, exact);

@@ -62,7 +62,12 @@ struct RecognizerConfig {
   float tol_handedness = 0.5f;  // |t - t'| allowed, t = (n1 x n2) . u  (rejects mirror images)
 
   // Likelihood (section 8, eqs. 4-7).
-  float sigma = 0.15f;        // sigma, m: sensor noise plus basis-point sampling offset
+  float sigma = 0.15f;  // sigma, m: sensor noise plus basis-point sampling offset
+  // sigma of the final ranking's residuals, m: the leading models are scored
+  // by each query feature's distance to the model's surface (along the
+  // nearest model feature's normal), which has no basis-point sampling
+  // offset left in it; the range noise alone (0.05-0.10 m).
+  float sigma_surface = 0.10f;
   float delta = 0.30f;        // Delta, m: inlier radius
   float delta_max = 0.60f;    // Delta_max, m: spread of outliers
   float eta_max_deg = 35.0f;  // eta_max: normal agreement
@@ -97,7 +102,7 @@ struct RecognizerConfig {
   // grows as n and its spread as sqrt(n) (a z-score; per feature it favoured
   // small scans, in total large ones). Most wrong answers are a look-alike
   // of the right one, which comes second a little behind ...
-  float min_margin = 2.1f;
+  float min_margin = 1.3f;
   // ... and the scan pins the model's size: the query features, in the
   // model's frame under its pose, reach within max_extent_shortfall of both
   // ends of the model's box along x and along y and of its top, and lie at

@@ -53,6 +53,8 @@
   X(F32, tol_handedness, 0.0f, 2.0f, "--tol-handedness",                                                     \
     "doublet handedness tolerance (rejects mirror images)")                                                  \
   X(F32, sigma, 1e-4f, 100.0f, "--sigma", "sigma of eq. 5, m")                                               \
+  X(F32, sigma_surface, 1e-4f, 100.0f, "--sigma-surface",                                                    \
+    "sigma of eq. 5 for the final point-to-surface residuals, m")                                            \
   X(F32, delta, 1e-4f, 100.0f, "--delta", "Delta of eq. 5, m")                                               \
   X(F32, delta_max, 1e-4f, 100.0f, "--delta-max", "Delta_max of eq. 5, m (at least Delta)")                  \
   X(F32, eta_max_deg, 0.0f, 180.0f, "--eta-max", "eta_max of eq. 6, degrees")                                \

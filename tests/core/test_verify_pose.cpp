@@ -106,3 +106,65 @@ TEST_CASE_FIXTURE(Fixture, "refine_pose keeps a pose that matches too few featur
   CHECK_FALSE(refine_pose(toy.db, kModel, q.view, lp, &kept));
   CHECK(kept.translation == far.translation);
 }
+
+TEST_CASE_FIXTURE(
+    Fixture, "the surface residual: along the normal it counts, along the surface only beyond the patch") {
+  const LikelihoodParams surface = make_surface_params(cfg, toy.db);
+  REQUIRE_FALSE(surface.use_field);
+  CHECK(surface.surface_patch_radius ==
+        doctest::Approx(kPatchRadiusPerSpacing * toy.db.params().basis_spacing));
+  CHECK(surface.inv_two_sigma2 == doctest::Approx(1.0f / (2.0f * cfg.sigma_surface * cfg.sigma_surface)));
+  CHECK(surface.floor == lp.floor);  // an unexplained feature costs what it cost in the hypothesis loop
+  const uint32_t f = toy.db.model(kModel).first_feature;
+  const Eigen::Vector3f p = Eigen::Map<const Eigen::Vector3f>(toy.db.positions() + 3u * f);
+  const int16_t* n16 = toy.db.normals() + 3u * f;
+  const Eigen::Vector3f n(decode_normal_component(n16[0]), decode_normal_component(n16[1]),
+                          decode_normal_component(n16[2]));
+  const Eigen::Vector3f along = n.unitOrthogonal();  // a direction in the tangent plane
+  const float radius = surface.surface_patch_radius;
+  auto r2 = [&](const Eigen::Vector3f& x, const LikelihoodParams& params) {
+    return residual2(toy.db, f, x, (x - p).squaredNorm(), params);
+  };
+  CHECK(r2(p + 0.8f * radius * along, surface) == doctest::Approx(0.0f).epsilon(1e-6));
+  CHECK(r2(p + (radius + 0.05f) * along, surface) == doctest::Approx(0.05f * 0.05f).epsilon(1e-3));
+  CHECK(r2(p + 0.07f * n, surface) == doctest::Approx(0.07f * 0.07f).epsilon(1e-3));
+  CHECK(r2(p + 0.07f * n + 0.5f * radius * along, surface) == doctest::Approx(0.07f * 0.07f).epsilon(1e-3));
+  // The paper's r: the distance to the feature itself.
+  CHECK(r2(p + 0.8f * radius * along, lp) == doctest::Approx(0.64f * radius * radius).epsilon(1e-4));
+}
+
+TEST_CASE_FIXTURE(Fixture, "refine_pose on one flat face corrects across it and does not slide along it") {
+  // Only the features facing up: the pose is fixed across the face (z,
+  // tilt) and free along it; the step must not move along it.
+  const blob::ModelRecord& rec = toy.db.model(kModel);
+  test::ModelFeatureQuery top;
+  const Eigen::Matrix3f rt = truth.rotation.transpose();
+  for (uint32_t i = 0; i < q.view.count; ++i) {
+    const Eigen::Vector3f n = rt * Eigen::Map<const Eigen::Vector3f>(q.normals.data() + 3u * i);
+    if (n.z() < 0.99f) continue;
+    // 1 cm of scatter, as range noise: the normals' few-degree spread turns
+    // it into a pull along the face that only the damping holds.
+    for (uint32_t a = 0; a < 3; ++a)
+      top.positions.push_back(q.positions[3u * i + a] +
+                              0.01f * std::sin(12.9898f * static_cast<float>(3u * i + a)));
+    top.normals.insert(top.normals.end(), q.normals.begin() + 3 * i, q.normals.begin() + 3 * i + 3);
+    top.spins.insert(top.spins.end(), q.spins.begin() + static_cast<std::ptrdiff_t>(i * q.view.dims),
+                     q.spins.begin() + static_cast<std::ptrdiff_t>((i + 1) * q.view.dims));
+  }
+  top.view = q.view;
+  top.view.positions = top.positions.data();
+  top.view.normals = top.normals.data();
+  top.view.spins = top.spins.data();
+  top.view.count = top.view.verify_count = static_cast<uint32_t>(top.positions.size() / 3);
+  REQUIRE(top.view.count >= kMinRefineMatches);
+  REQUIRE(top.view.count < rec.feature_count);
+  RigidPose start = truth;
+  start.translation += truth.rotation * Eigen::Vector3f(0.0f, 0.0f, 0.06f);  // 6 cm above the roof
+  RigidPose refined = start;
+  REQUIRE(refine_pose(toy.db, kModel, top.view, lp, &refined));
+  const Eigen::Vector3f moved = rt * (refined.translation - start.translation);
+  CHECK(moved.z() == doctest::Approx(-0.06f).epsilon(0.1));  // down onto the roof
+  CHECK(std::abs(moved.x()) < 0.01f);                        // not along it
+  CHECK(std::abs(moved.y()) < 0.01f);
+  CHECK(angle_between(refined.rotation, truth.rotation) < 0.5f * kDegree);
+}
