@@ -42,6 +42,7 @@ struct SceneVehicleRecord {
   double score = 0.0;
   double score_second = 0.0;  // the runner-up's (0 without one)
   uint32_t features = 0;      // query features of the recognition (the margin's sqrt(n))
+  double ground_gap = 0.0;    // SceneObject::ground_gap (NaN: none)
   // When not found: the nearest vehicle-sized object beyond reach (within
   // kNearestReach), to tell a miss from a detection off the footprint centre.
   double nearest_m = -1.0;  // -1: none

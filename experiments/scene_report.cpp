@@ -97,14 +97,14 @@ bool write_tables(const SceneRun& run, std::string* error) {
   }
   CsvTable objects({"slope_deg", "spacing", "noise", "tile", "kind", "model", "side_by_side", "under_tree",
                     "points", "found", "distance_m", "answer", "confident", "score", "score_second",
-                    "features", "nearest_m", "nearest_answer"});
+                    "features", "ground_gap", "nearest_m", "nearest_answer"});
   for (const SceneVehicleRecord& v : run.vehicles)
     objects.add({num(run.conditions[v.condition].slope_deg), num(run.conditions[v.condition].spacing),
                  num(run.conditions[v.condition].noise), std::to_string(v.tile),
                  host::scene_object_kind_name(v.kind), v.model, (v.flags & host::kSideBySide) ? "1" : "0",
                  (v.flags & host::kUnderTree) ? "1" : "0", std::to_string(v.points), v.found ? "1" : "0",
                  num(v.distance, 3), v.answer, v.confident ? "1" : "0", num(v.score, 5),
-                 num(v.score_second, 5), std::to_string(v.features),
+                 num(v.score_second, 5), std::to_string(v.features), num(v.ground_gap, 4),
                  v.nearest_m < 0 ? "" : num(v.nearest_m, 3), v.nearest_answer});
   CsvTable alarms(
       {"slope_deg", "spacing", "noise", "tile", "on", "answer", "score", "length", "width", "height"});

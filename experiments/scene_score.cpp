@@ -73,6 +73,7 @@ void score_tile(const host::SceneScan& scan, const SceneResult& result, const Da
       r.score = o.ranking_count > 0 ? o.ranking[0].score : 0.0;
       r.score_second = o.ranking_count > 1 ? o.ranking[1].score : 0.0;
       r.features = o.stats.features;
+      r.ground_gap = o.ground_gap;
       if (v.kind == SceneObjectKind::kVehicle)
         used[best] = true;  // an unknown vehicle's answer stays a candidate alarm
     }

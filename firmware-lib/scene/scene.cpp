@@ -56,8 +56,9 @@ bool gates_valid(const SceneConfig& c) {
   auto range = [](float lo, float hi) { return lo >= 0.0f && hi >= lo && hi <= 1000.0f; };
   return range(c.min_length, c.max_length) && range(c.min_width, c.max_width) &&
          range(c.min_height, c.max_height) && c.max_clearance >= 0.0f && c.max_clearance <= 1000.0f &&
-         c.max_size_mismatch >= 0.0f && c.max_size_mismatch <= 10.0f && c.segment_cell >= 0.02f &&
-         c.segment_cell <= 10.0f && c.layer_split_height > 0.0f && c.layer_split_height <= 1000.0f;
+         c.max_size_mismatch >= 0.0f && c.max_size_mismatch <= 10.0f && c.max_ground_gap >= 0.0f &&
+         c.segment_cell >= 0.02f && c.segment_cell <= 10.0f && c.layer_split_height > 0.0f &&
+         c.layer_split_height <= 1000.0f;
 }
 
 Status carve(Arena& arena, const SceneConfig& c, SceneBuffers& b) {
@@ -94,6 +95,30 @@ bool size_agrees(const ObjectShape& o, const blob::ModelRecord& m, float toleran
   const float len = dx > dy ? dx : dy, wid = dx > dy ? dy : dx;
   return std::fabs(o.length() - len) <= tolerance * len && std::fabs(o.width() - wid) <= tolerance * wid;
 }
+
+// The model's box bottom above the terrain under `pose` (tile-local), m:
+// the mean over its four bottom corners that have terrain under them; NaN
+// when none has.
+float ground_gap(const Pose& pose, const blob::ModelRecord& m, const TerrainGrid& terrain) {
+  float sum = 0.0f;
+  uint32_t corners = 0;
+  for (int i = 0; i < 4; ++i) {
+    const float c[3] = {i & 1 ? m.bbox_max[0] : m.bbox_min[0], i & 2 ? m.bbox_max[1] : m.bbox_min[1],
+                        m.bbox_min[2]};
+    float x[3];
+    for (int r = 0; r < 3; ++r)
+      x[r] = pose.rotation[3 * r] * c[0] + pose.rotation[3 * r + 1] * c[1] + pose.rotation[3 * r + 2] * c[2] +
+             static_cast<float>(pose.translation[r]);
+    const float ground = terrain_height_at(terrain, x[0], x[1]);
+    if (!std::isfinite(ground)) continue;
+    sum += x[2] - ground;
+    ++corners;
+  }
+  return corners > 0 ? sum / static_cast<float>(corners) : std::numeric_limits<float>::quiet_NaN();
+}
+
+// NaN (no terrain to test against) passes.
+bool rests_on_terrain(float gap, float tolerance) { return !(std::fabs(gap) > tolerance); }
 
 }  // namespace
 
@@ -251,6 +276,9 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
       if (r.status != Status::kOk || r.ranking_count == 0) {
         out.kind = ObjectKind::kUnknown;
       } else {
+        const blob::ModelRecord& best = db_->model(r.ranking[0].model);
+        out.ground_gap = r.ranking[0].has_pose ? ground_gap(r.ranking[0].pose, best, b.terrain)
+                                               : std::numeric_limits<float>::quiet_NaN();
         RankedModel* dst = b.rankings + static_cast<size_t>(k) * c.top_n;
         out.ranking_count = r.ranking_count < c.top_n ? r.ranking_count : c.top_n;
         for (uint32_t j = 0; j < out.ranking_count; ++j) {
@@ -258,7 +286,8 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
           for (int a = 0; a < 3; ++a) dst[j].pose.translation[a] += origin[a];  // local -> georeferenced
         }
         out.ranking = dst;
-        out.confident = r.confident && size_agrees(o, db_->model(dst[0].model), c.max_size_mismatch);
+        out.confident = r.confident && size_agrees(o, best, c.max_size_mismatch) &&
+                        rests_on_terrain(out.ground_gap, c.max_ground_gap);
         out.group_size = r.group_size;
       }
     }

@@ -102,6 +102,7 @@ TEST_CASE("scene: vehicles on an 8 degree slope among clutter are found, recogni
     CHECK(std::fabs(o->ranking[0].pose.translation[0] - kEast - ox) < 0.3);
     CHECK(std::fabs(o->ranking[0].pose.translation[1] - kNorth - oy) < 0.3);
     CHECK(std::fabs(o->ranking[0].pose.translation[2] - kUp - oz) < 0.3);
+    CHECK(std::fabs(o->ground_gap) < 0.1f);  // the model rests on the terrain
   }
   uint32_t confident = 0;
   for (uint32_t k = 0; k < r.object_count; ++k) confident += r.objects[k].confident ? 1u : 0u;
@@ -127,6 +128,40 @@ TEST_CASE("scene: vehicles on an 8 degree slope among clutter are found, recogni
   const SceneObject* crate = nearest(r, 9.0, -9.0);
   REQUIRE(crate != nullptr);
   if (crate) CHECK(crate->kind == ObjectKind::kTooSmall);
+}
+
+TEST_CASE("scene: a model that would float above the terrain under its pose is not confident") {
+  // The toy sedan lifted 0.5 m off a 5 degree slope (as if on a trailer's
+  // deck the scan lost): recognised and placed, but its model's bottom
+  // hangs 0.5 m above the terrain, which a look-alike posed to fit the
+  // scan's roof does, not a vehicle resting on its wheels.
+  ToyDatabase toy;
+  REQUIRE(make_toy_database(&toy));
+  TerrainShape t;
+  t.slope_deg = 5.0;
+  Tile tile;
+  add_terrain(tile, t, 10.0, 0.12, 0.03, 5);
+  const int car = add_model(tile, t, toy_vehicle_points(0, 0.1f), 0.0, 0.0, 0.4, 0.35);
+  constexpr double kLift = 0.5;
+  for (size_t i = 0; i < tile.object.size(); ++i)
+    if (tile.object[i] == car) tile.xyz[3 * i + 2] += kLift;
+  remove_occluded_ground(tile);
+  georeference(tile.xyz);
+  for (float gate : {SceneConfig{}.max_ground_gap, 1.0f}) {
+    CAPTURE(gate);
+    SceneConfig cfg;
+    cfg.max_ground_gap = gate;
+    SceneRun run(&toy.db, cfg);
+    REQUIRE(run.init == Status::kOk);
+    const SceneResult r = run.scene.recognize(tile.xyz.data(), static_cast<uint32_t>(tile.ground.size()));
+    REQUIRE(r.status == Status::kOk);
+    const SceneObject* o = nearest(r, 0.0, 0.0);
+    REQUIRE(o != nullptr);
+    if (o == nullptr || o->ranking_count == 0) continue;
+    CHECK(o->ranking[0].model == 0u);
+    CHECK(o->ground_gap == doctest::Approx(kLift).epsilon(0.2));
+    CHECK(o->confident == (gate > 0.6f));
+  }
 }
 
 TEST_CASE("scene: a tile over max_tile_points is kTooManyPoints, a footprint over the grid kTileTooLarge") {
