@@ -56,7 +56,7 @@ bool gates_valid(const SceneConfig& c) {
   auto range = [](float lo, float hi) { return lo >= 0.0f && hi >= lo && hi <= 1000.0f; };
   return range(c.min_length, c.max_length) && range(c.min_width, c.max_width) &&
          range(c.min_height, c.max_height) && c.max_clearance >= 0.0f && c.max_clearance <= 1000.0f &&
-         c.max_size_mismatch >= 0.0f && c.max_size_mismatch <= 10.0f && c.max_ground_gap >= 0.0f &&
+         c.max_size_mismatch >= 0.0f && c.max_size_mismatch <= 10.0f && c.max_ground_sink >= 0.0f &&
          c.segment_cell >= 0.02f && c.segment_cell <= 10.0f && c.layer_split_height > 0.0f &&
          c.layer_split_height <= 1000.0f;
 }
@@ -117,8 +117,8 @@ float ground_gap(const Pose& pose, const blob::ModelRecord& m, const TerrainGrid
   return corners > 0 ? sum / static_cast<float>(corners) : std::numeric_limits<float>::quiet_NaN();
 }
 
-// NaN (no terrain to test against) passes.
-bool rests_on_terrain(float gap, float tolerance) { return !(std::fabs(gap) > tolerance); }
+// Not sunk deeper than `tolerance`; NaN (no terrain to test against) passes.
+bool not_sunk(float gap, float tolerance) { return !(gap < -tolerance); }
 
 }  // namespace
 
@@ -287,7 +287,7 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
         }
         out.ranking = dst;
         out.confident = r.confident && size_agrees(o, best, c.max_size_mismatch) &&
-                        rests_on_terrain(out.ground_gap, c.max_ground_gap);
+                        not_sunk(out.ground_gap, c.max_ground_sink);
         out.group_size = r.group_size;
       }
     }

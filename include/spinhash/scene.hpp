@@ -58,13 +58,13 @@ struct SceneConfig {
   float max_clearance = 1.2f;                   // m: lowest point above the terrain; higher floats (crowns)
   float max_size_mismatch = 0.15f;              // confident only if the object's length and width are
                                                 // within this share of the best model's bounding box
-  // Confident only if the best model, under its pose, rests on the terrain:
-  // its box's bottom within this of the terrain under it (m; SceneObject::
-  // ground_gap). A look-alike taller or lower than the scanned vehicle,
-  // posed to fit its roof, sinks into the terrain or floats above it (a bus
-  // 0.28 m taller: 0.18-0.25 m deep); right answers on the simulated tiles
-  // lie within 0.15 m (noise 2-10 cm, slopes 0-15 degrees).
-  float max_ground_gap = 0.18f;
+  // Confident only if the best model, under its pose, does not sink into the
+  // terrain by more than this (m; SceneObject::ground_gap): a look-alike
+  // taller than the scanned vehicle, posed to fit its roof, does (a bus
+  // 0.28 m taller: 0.18-0.25 m deep). Right answers on simulated tiles lie
+  // at -0.09 m and above; a model may float (a vehicle on a trailer, a model
+  // without wheels, terrain estimated low under a vehicle on a slope).
+  float max_ground_sink = 0.15f;
 };
 
 struct SceneObject {

@@ -31,6 +31,7 @@ struct SceneRun {
   }
 };
 
+constexpr float kToyClearance = 0.3f;  // m: a toy's box above its origin (toy_database.cpp)
 constexpr double kEast = 512345.0, kNorth = 5412345.0, kUp = 312.0;  // UTM-like offsets
 
 void georeference(std::vector<double>& xyz) {
@@ -102,7 +103,9 @@ TEST_CASE("scene: vehicles on an 8 degree slope among clutter are found, recogni
     CHECK(std::fabs(o->ranking[0].pose.translation[0] - kEast - ox) < 0.3);
     CHECK(std::fabs(o->ranking[0].pose.translation[1] - kNorth - oy) < 0.3);
     CHECK(std::fabs(o->ranking[0].pose.translation[2] - kUp - oz) < 0.3);
-    CHECK(std::fabs(o->ground_gap) < 0.1f);  // the model rests on the terrain
+    // The toys have no wheels: their boxes start kToyClearance above the
+    // origin, which rests on the terrain.
+    CHECK(o->ground_gap == doctest::Approx(kToyClearance).scale(0.0).epsilon(0.25));
   }
   uint32_t confident = 0;
   for (uint32_t k = 0; k < r.object_count; ++k) confident += r.objects[k].confident ? 1u : 0u;
@@ -130,27 +133,26 @@ TEST_CASE("scene: vehicles on an 8 degree slope among clutter are found, recogni
   if (crate) CHECK(crate->kind == ObjectKind::kTooSmall);
 }
 
-TEST_CASE("scene: a model that would float above the terrain under its pose is not confident") {
-  // The toy sedan lifted 0.5 m off a 5 degree slope (as if on a trailer's
-  // deck the scan lost): recognised and placed, but its model's bottom
-  // hangs 0.5 m above the terrain, which a look-alike posed to fit the
-  // scan's roof does, not a vehicle resting on its wheels.
+TEST_CASE("scene: a model sunk into the terrain under its pose is not confident") {
+  // The toy sedan 0.5 m down into a 5 degree slope, its buried part unseen:
+  // recognised and placed, but its model's bottom lies 0.2 m below the
+  // terrain, as a taller look-alike's does when posed to fit a scan's roof.
   ToyDatabase toy;
   REQUIRE(make_toy_database(&toy));
   TerrainShape t;
   t.slope_deg = 5.0;
   Tile tile;
   add_terrain(tile, t, 10.0, 0.12, 0.03, 5);
-  const int car = add_model(tile, t, toy_vehicle_points(0, 0.1f), 0.0, 0.0, 0.4, 0.35);
-  constexpr double kLift = 0.5;
+  constexpr double kSink = 0.5, kUnseenBelow = 0.35;
+  const int car = add_model(tile, t, toy_vehicle_points(0, 0.1f), 0.0, 0.0, 0.4, kSink + kUnseenBelow);
   for (size_t i = 0; i < tile.object.size(); ++i)
-    if (tile.object[i] == car) tile.xyz[3 * i + 2] += kLift;
+    if (tile.object[i] == car) tile.xyz[3 * i + 2] -= kSink;
   remove_occluded_ground(tile);
   georeference(tile.xyz);
-  for (float gate : {SceneConfig{}.max_ground_gap, 1.0f}) {
-    CAPTURE(gate);
+  for (float sink : {SceneConfig{}.max_ground_sink, 1.0f}) {
+    CAPTURE(sink);
     SceneConfig cfg;
-    cfg.max_ground_gap = gate;
+    cfg.max_ground_sink = sink;
     SceneRun run(&toy.db, cfg);
     REQUIRE(run.init == Status::kOk);
     const SceneResult r = run.scene.recognize(tile.xyz.data(), static_cast<uint32_t>(tile.ground.size()));
@@ -159,8 +161,8 @@ TEST_CASE("scene: a model that would float above the terrain under its pose is n
     REQUIRE(o != nullptr);
     if (o == nullptr || o->ranking_count == 0) continue;
     CHECK(o->ranking[0].model == 0u);
-    CHECK(o->ground_gap == doctest::Approx(kLift).epsilon(0.2));
-    CHECK(o->confident == (gate > 0.6f));
+    CHECK(o->ground_gap == doctest::Approx(kToyClearance - kSink).scale(0.0).epsilon(0.25));
+    CHECK(o->confident == (sink > 0.5f));
   }
 }
 
