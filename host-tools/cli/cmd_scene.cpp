@@ -83,6 +83,8 @@ std::string object_json(const std::string& tile, uint32_t k, const Database& db,
          "{\"model\":" + json_string(pipeline::model_name(db, o.ranking[j].model)) +
          ",\"score\":" + json_number(o.ranking[j].score) + "}";
   s += "],\"pose\":" + (ranked && o.ranking[0].has_pose ? pose_json(o.ranking[0].pose) : std::string("null"));
+  s +=
+      ",\"ground_gap\":" + (std::isfinite(o.ground_gap) ? json_number(o.ground_gap, 4) : std::string("null"));
   const double extent[3] = {o.extent[0], o.extent[1], o.extent[2]};
   s += ",\"points\":" + std::to_string(o.points) + ",\"center\":" + triple_json(o.center, 15) +
        ",\"extent\":" + triple_json(extent, 4) + ",\"time_ms\":" + json_number(time_ms, 6) + "," +

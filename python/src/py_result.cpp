@@ -1,5 +1,6 @@
 #include "py_result.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "bindings.hpp"
@@ -74,6 +75,8 @@ PySceneObject make_scene_object(const Database& db, const SceneObjectCopy& c) {
   out.pose = best_pose(c.ranking);
   out.confident = o.confident;
   out.group_size = o.group_size;
+  out.ground_gap =
+      std::isfinite(o.ground_gap) ? py::object(py::float_(static_cast<double>(o.ground_gap))) : py::none();
   out.points = o.points;
   out.center = py::make_tuple(o.center[0], o.center[1], o.center[2]);
   out.extent = py::make_tuple(static_cast<double>(o.extent[0]), static_cast<double>(o.extent[1]),
@@ -121,6 +124,8 @@ void bind_result(py::module_& m) {
                     "a confident recognition that fits the object's size")
       .def_readonly("group_size", &PySceneObject::group_size,
                     "leading models its recognition does not tell apart (within min_margin)")
+      .def_readonly("ground_gap", &PySceneObject::ground_gap,
+                    "best model's box bottom above the terrain under its pose, m, or None")
       .def_readonly("points", &PySceneObject::points, "points in the object")
       .def_readonly("center", &PySceneObject::center, "(x, y, z): footprint centre, z mid-height")
       .def_readonly("extent", &PySceneObject::extent, "(length, width, height above terrain), m")

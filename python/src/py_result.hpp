@@ -46,6 +46,7 @@ struct PySceneObject {
   pybind11::object pose;   // 4x4 float64, or None
   bool confident = false;
   uint32_t group_size = 0;
+  pybind11::object ground_gap;  // m: best model's bottom above the terrain, or None
   uint32_t points = 0;
   pybind11::tuple center;  // georeferenced footprint centre, z mid-height
   pybind11::tuple extent;  // m: length, width, height above terrain

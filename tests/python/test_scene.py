@@ -41,6 +41,12 @@ def test_the_scene_matches_the_cli(fleet, tile):
             assert score == pytest.approx(entry["score"], rel=1e-6)
         np.testing.assert_allclose(obj.center, line["center"], rtol=0, atol=1e-6)
         np.testing.assert_allclose(obj.extent, line["extent"], rtol=0, atol=1e-3)  # the CLI prints 4 digits
+        if line["ground_gap"] is None:
+            assert obj.ground_gap is None
+        else:
+            assert obj.ground_gap == pytest.approx(line["ground_gap"], abs=1e-3)
+            if obj.kind == "vehicle" and obj.confident:
+                assert obj.ground_gap > -0.15  # max_ground_sink: the model rests on the terrain
         if line["pose"] is None:
             assert obj.pose is None
         else:
