@@ -91,9 +91,10 @@ struct RecognizerConfig {
 
   // "No confident match" unless the best model explains at least this share
   // of the query features within Delta and its log-likelihood per query
-  // feature is at least min_mean_log_likelihood. Real 3-view scans score
-  // -1.1 (5 cm, median) to -2.6 (10 cm, worst of 224); the floor of an
-  // unexplained feature is about -6; a small object that fits inside a
+  // feature is at least min_mean_log_likelihood. 3-view fleet scans,
+  // right answers, score -1.1 (5 cm noise, median) to -2.3 (10 cm, worst
+  // of 325); the floor of an unexplained feature is about -6; a small
+  // object that fits inside a
   // model's surface passes the inlier test but not this one.
   float min_inlier_fraction = 0.25f;
   float min_mean_log_likelihood = -3.0f;
