@@ -94,8 +94,8 @@ struct RecognizerConfig {
   // feature is at least min_mean_log_likelihood. 3-view fleet scans,
   // right answers, score -1.1 (5 cm noise, median) to -2.3 (10 cm, worst
   // of 325); the floor of an unexplained feature is about -6; a small
-  // object that fits inside a
-  // model's surface passes the inlier test but not this one.
+  // object that fits inside a model's surface passes the inlier test but
+  // not this one.
   float min_inlier_fraction = 0.25f;
   float min_mean_log_likelihood = -3.0f;
   // ... and leads the runner-up by at least this many times sqrt(features)
