@@ -62,4 +62,16 @@ bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query,
   return true;
 }
 
+RigidPose turned_end_to_end(const RigidPose& pose, const blob::ModelRecord& model) {
+  // x -> T (x - c) + c in the model frame, T = diag(-1, -1, 1), c the box's
+  // centre: q = R T x + t + R (c - T c).
+  const Eigen::Vector3f c(0.5f * (model.bbox_min[0] + model.bbox_max[0]),
+                          0.5f * (model.bbox_min[1] + model.bbox_max[1]), 0.0f);
+  const Eigen::Vector3f turn_diagonal(-1.0f, -1.0f, 1.0f);
+  RigidPose out;
+  out.rotation = pose.rotation * turn_diagonal.asDiagonal();
+  out.translation = pose.translation + pose.rotation * (c - turn_diagonal.cwiseProduct(c));
+  return out;
+}
+
 }  // namespace spinhash

@@ -24,4 +24,11 @@ constexpr float kDampingPerMatch = 1e-3f;
 bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query, const LikelihoodParams& lp,
                  RigidPose* pose);
 
+// `pose` turned by 180 degrees about the vertical line through the centre of
+// the model's box: the other way round on the same footprint. Vehicles are
+// nearly symmetric front to back (a bus's flat sides and roof dominate its
+// features), so a hypothesis may come the wrong way round, and refinement,
+// a local search, stays there.
+RigidPose turned_end_to_end(const RigidPose& pose, const blob::ModelRecord& model);
+
 }  // namespace spinhash

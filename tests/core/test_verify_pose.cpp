@@ -168,3 +168,30 @@ TEST_CASE_FIXTURE(Fixture, "refine_pose on one flat face corrects across it and 
   CHECK(std::abs(moved.y()) < 0.01f);
   CHECK(angle_between(refined.rotation, truth.rotation) < 0.5f * kDegree);
 }
+
+TEST_CASE_FIXTURE(
+    Fixture, "a pose turned end to end: same footprint, the other way round, and refinement stays there") {
+  const RigidPose turned = turned_end_to_end(truth, toy.db.model(kModel));
+  const RigidPose back = turned_end_to_end(turned, toy.db.model(kModel));
+  CHECK(angle_between(back.rotation, truth.rotation) < 1e-3f);
+  CHECK((back.translation - truth.translation).norm() < 1e-4f);
+  CHECK(angle_between(turned.rotation, truth.rotation) == doctest::Approx(3.14159265f).epsilon(1e-3));
+  // The box's centre stays where it was.
+  const blob::ModelRecord& rec = toy.db.model(kModel);
+  const Eigen::Vector3f centre(0.5f * (rec.bbox_min[0] + rec.bbox_max[0]),
+                               0.5f * (rec.bbox_min[1] + rec.bbox_max[1]), 0.0f);
+  CHECK(
+      (turned.rotation * centre + turned.translation - (truth.rotation * centre + truth.translation)).norm() <
+      1e-4f);
+  // The toy's cabin sits off centre: turned, it explains the query far worse,
+  // and least squares from there do not find the way back (a local search).
+  const LikelihoodParams surface = make_surface_params(cfg, toy.db);
+  const float right =
+      verify_pose(toy.db, kModel, truth, q.view, surface, kNoScoreToBeat, kNoScoreToBeat).log_likelihood;
+  RigidPose refined = turned;
+  for (int step = 0; step < kRefineSteps; ++step) refine_pose(toy.db, kModel, q.view, surface, &refined);
+  CHECK(angle_between(refined.rotation, truth.rotation) > 90.0f * kDegree);
+  const float stuck =
+      verify_pose(toy.db, kModel, refined, q.view, surface, kNoScoreToBeat, kNoScoreToBeat).log_likelihood;
+  CHECK(stuck < right - 0.5f * static_cast<float>(q.view.count));
+}
