@@ -20,8 +20,12 @@ struct PlaneSums {
     Vector6f j;
     j.head<3>() = x.cross(n);
     j.tail<3>() = n;
-    jtj.noalias() += j * j.transpose();
-    jtr += j * n.dot(x - p);
+    const float r = n.dot(x - p);
+    // The lower triangle only: the LLT reads no other.
+    for (int row = 0; row < 6; ++row) {
+      for (int col = 0; col <= row; ++col) jtj(row, col) += j[row] * j[col];
+      jtr[row] += j[row] * r;
+    }
     ++matches;
   }
 };
@@ -64,13 +68,13 @@ bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query,
 
 RigidPose turned_end_to_end(const RigidPose& pose, const blob::ModelRecord& model) {
   // x -> T (x - c) + c in the model frame, T = diag(-1, -1, 1), c the box's
-  // centre: q = R T x + t + R (c - T c).
-  const Eigen::Vector3f c(0.5f * (model.bbox_min[0] + model.bbox_max[0]),
-                          0.5f * (model.bbox_min[1] + model.bbox_max[1]), 0.0f);
-  const Eigen::Vector3f turn_diagonal(-1.0f, -1.0f, 1.0f);
-  RigidPose out;
-  out.rotation = pose.rotation * turn_diagonal.asDiagonal();
-  out.translation = pose.translation + pose.rotation * (c - turn_diagonal.cwiseProduct(c));
+  // centre on the ground plane: q = R T x + t + R (c - T c), c - T c = (2 cx, 2 cy, 0).
+  const float cx = 0.5f * (model.bbox_min[0] + model.bbox_max[0]);
+  const float cy = 0.5f * (model.bbox_min[1] + model.bbox_max[1]);
+  RigidPose out = pose;
+  out.rotation.col(0) = -pose.rotation.col(0);
+  out.rotation.col(1) = -pose.rotation.col(1);
+  out.translation += (2.0f * cx) * pose.rotation.col(0) + (2.0f * cy) * pose.rotation.col(1);
   return out;
 }
 

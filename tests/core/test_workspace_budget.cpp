@@ -22,7 +22,7 @@ struct WorkspaceThreshold {
 };
 // Pointer-sized members make 64-bit layouts larger than 32-bit ones.
 constexpr WorkspaceThreshold kThreshold64 = {6369792, 5539872, 22798352};
-constexpr WorkspaceThreshold kThreshold32 = {6369632, 5539712, 22796048};
+constexpr WorkspaceThreshold kThreshold32 = {6369632, 5539712, 22798096};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
 constexpr size_t kToleranceBytes = 1024;
