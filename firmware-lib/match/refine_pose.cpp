@@ -43,11 +43,8 @@ bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query,
     const Eigen::Vector3f qn = rt * Eigen::Map<const Eigen::Vector3f>(query.normals + 3u * l);
     const NearestFeature near = find_nearest_model_feature(db, rec, x, qn, lp);
     if (near.feature < 0 || near.dist2 > lp.delta2) continue;
-    const uint32_t f = static_cast<uint32_t>(near.feature);
-    const int16_t* n16 = db.normals() + 3u * f;
-    const Eigen::Vector3f n(decode_normal_component(n16[0]), decode_normal_component(n16[1]),
-                            decode_normal_component(n16[2]));
-    sums.add(x, Eigen::Map<const Eigen::Vector3f>(db.positions() + 3u * f), n);
+    const OrientedPoint m = model_feature_point(db, static_cast<uint32_t>(near.feature));
+    sums.add(x, m.p, m.n);
   }
   if (sums.matches < kMinRefineMatches) return false;
   sums.jtj.diagonal().array() += kDampingPerMatch * static_cast<float>(sums.matches);

@@ -12,13 +12,7 @@ OrientedPoint SearchContext::query_point(uint32_t f) const {
   return OrientedPoint{Eigen::Vector3f(p[0], p[1], p[2]), Eigen::Vector3f(n[0], n[1], n[2])};
 }
 
-OrientedPoint SearchContext::model_point(uint32_t f) const {
-  const float* p = db.positions() + 3u * f;
-  const int16_t* n = db.normals() + 3u * f;
-  return OrientedPoint{Eigen::Vector3f(p[0], p[1], p[2]),
-                       Eigen::Vector3f(decode_normal_component(n[0]), decode_normal_component(n[1]),
-                                       decode_normal_component(n[2]))};
-}
+OrientedPoint SearchContext::model_point(uint32_t f) const { return model_feature_point(db, f); }
 
 namespace {
 

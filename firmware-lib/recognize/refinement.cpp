@@ -88,10 +88,8 @@ void refine_both_ways(SearchContext& ctx, uint32_t model, const QueryFeatures& a
   const RigidPose turned = turned_end_to_end(as_found.pose, ctx.db.model(model));
   if (!turn_worth_refining(ctx, model, as_found.pose, turned)) return;
   const ModelBest refined = best;
-  const Verification v = verify_pose(ctx.db, model, turned, all, lp, kNoScoreToBeat, kNoScoreToBeat);
   best.pose = turned;
-  best.score = v.log_likelihood;
-  best.inliers = v.inliers;
+  rescore(ctx, model, all, lp);
   refine_model(ctx, model, all, lp);
   if (!(best.score > refined.score)) best = refined;
 }
