@@ -13,9 +13,17 @@ void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs) {
                   "BRAN's stop on evidence (0: the paper's fixed trials)")
       ->check(CLI::Range(0.0f, 0.5f))
       ->capture_default_str();
+  cmd->add_option(
+         "--min-hypotheses", knobs->min_hypotheses,
+         "BRAN's draws past max_trials while fewer poses were verified (0: the paper's fixed trials)")
+      ->capture_default_str();
   cmd->add_option("--max-bucket-scan", knobs->max_bucket_scan,
                   "LSH entries scanned per query feature (BRAN, SIND)")
       ->check(CLI::Range(1u, 1u << 24))
+      ->capture_default_str();
+  cmd->add_option("--max-features", knobs->max_features,
+                  "query features kept, evenly thinned above (all modes)")
+      ->check(CLI::Range(2u, kMaxQueryFeaturesLimit))
       ->capture_default_str();
 }
 

@@ -1,6 +1,8 @@
 // BRAN's additions to the paper that the experiments switch (--transfer-models,
-// --stop-miss-probability), so one run can compare them with the paper's BRAN,
-// and the LSH scan bound (--max-bucket-scan) that sets the index's cost.
+// --stop-miss-probability, --min-hypotheses), so one run can compare them
+// with the paper's BRAN; the LSH scan bound (--max-bucket-scan) that sets
+// the index's cost; the query features kept (--max-features) that set a
+// large vehicle's.
 #pragma once
 #include <CLI/CLI.hpp>
 
@@ -11,11 +13,15 @@ namespace spinhash::experiment {
 struct BranKnobs {
   uint32_t transfer_models = RecognizerConfig{}.transfer_models;
   float stop_miss_probability = RecognizerConfig{}.stop_miss_probability;
+  uint32_t min_hypotheses = RecognizerConfig{}.min_hypotheses;
   uint32_t max_bucket_scan = RecognizerConfig{}.max_bucket_scan;
+  uint32_t max_features = RecognizerConfig{}.max_features;
   void apply(RecognizerConfig* cfg) const {
     cfg->max_bucket_scan = max_bucket_scan;
+    cfg->max_features = max_features;
     cfg->transfer_models = transfer_models;
     cfg->stop_miss_probability = stop_miss_probability;
+    cfg->min_hypotheses = min_hypotheses;
   }
 };
 

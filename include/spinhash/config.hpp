@@ -123,6 +123,11 @@ struct RecognizerConfig {
   uint32_t sran_trials = 100;          // SRAN: doublet draws per model
   uint32_t max_hypotheses = 6000;      // poses verified: BRAN all models together, SRAN per model
   uint32_t max_pair_checks = 2000000;  // candidate pairs put through the cascade
+  // BRAN: draws go on past max_trials (up to kTrialExtension x max_trials,
+  // limits.hpp) while fewer poses than this were verified: in a database
+  // of many look-alikes few draws pair up in one model (0: max_trials only,
+  // as the paper).
+  uint32_t min_hypotheses = 200;
 
   // BRAN stops on evidence (RANSAC's termination bound): once the chance
   // that every draw so far missed an all-correct doublet of the leading

@@ -14,6 +14,11 @@ constexpr uint32_t kMaxLshTables = 64;    // L
 constexpr uint32_t kMaxCandidates = 128;  // W: candidates kept per query feature
 // Largest ground clearance, m (RecognizerConfig::ground_clearance).
 constexpr float kMaxGroundClearance = 10.0f;
+// BRAN's draws while min_hypotheses is not met: at most this many times
+// RecognizerConfig::max_trials (the work budget stays bounded).
+constexpr uint32_t kTrialExtension = 4;
+// Largest RecognizerConfig::max_trials: the extended budget fits uint32.
+constexpr uint32_t kMaxTrials = 0xFFFFFFFFu / kTrialExtension;
 // Largest RecognizerConfig::transfer_models (look-alike pose transfer).
 constexpr uint32_t kMaxTransferModels = 64;
 constexpr uint32_t kMaxModelNameBytes = 48;            // including the terminating NUL

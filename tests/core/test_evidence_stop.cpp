@@ -1,12 +1,14 @@
 // BRAN's stop on evidence (recognize/evidence_stop.cpp): a clear view ends
 // its draws early with the same answer; without the stop, or on an object
-// that no model explains, BRAN draws on to its budget.
+// that no model explains, BRAN draws on to its budget, which grows while few
+// poses were verified (min_hypotheses).
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <vector>
 
 #include "blob/aligned_bytes.hpp"
+#include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"
 #include "support/geometry_fixtures.hpp"
 #include "support/toy_database.hpp"
@@ -26,12 +28,19 @@ struct Stopping {
   Result recognize(const std::vector<double>& xyz, float stop_miss_probability) {
     RecognizerConfig cfg;
     cfg.stop_miss_probability = stop_miss_probability;
+    return recognize(xyz, cfg);
+  }
+  Result recognize(const std::vector<double>& xyz, const RecognizerConfig& cfg) {
     ws = host::AlignedBytes(required_workspace_bytes(cfg));
     Recognizer r;
     REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
     Result res = r.recognize(xyz.data(), static_cast<uint32_t>(xyz.size() / 3));
     REQUIRE(res.status == Status::kOk);
     return res;
+  }
+  static std::vector<double> ball() {  // spin images of a sphere match no vehicle's
+    const std::vector<float> b = test::fibonacci_sphere(4000, 1.5f, 10.0f, 5.0f, 1.5f);
+    return std::vector<double>(b.begin(), b.end());
   }
   std::vector<double> view() const {
     const double t[3] = {40.0, 12.0, 1.0};
@@ -70,10 +79,31 @@ TEST_CASE_FIXTURE(Stopping, "a clear view stops on evidence with the model and p
 TEST_CASE_FIXTURE(Stopping, "an object no model explains never stops on evidence") {
   // A 1.5 m ball: spin images of a sphere match no vehicle's, so no leader
   // fits its candidates and every draw is made.
-  const std::vector<float> ball = test::fibonacci_sphere(4000, 1.5f, 10.0f, 5.0f, 1.5f);
-  const std::vector<double> xyz(ball.begin(), ball.end());
-  const Result r = recognize(xyz, RecognizerConfig{}.stop_miss_probability);
+  const Result r = recognize(ball(), RecognizerConfig{}.stop_miss_probability);
   REQUIRE(r.stats.hypotheses > 0);  // some model leads, so the bound is consulted
   CHECK_FALSE(r.stats.stopped_on_evidence);
   CHECK_FALSE(r.confident);
+}
+
+TEST_CASE_FIXTURE(Stopping,
+                  "draws go on past max_trials while few poses were verified, up to kTrialExtension times") {
+  constexpr uint32_t kTrials = 50;
+  auto stats_with = [&](uint32_t min_hypotheses) {
+    RecognizerConfig cfg;
+    cfg.max_trials = kTrials;
+    cfg.min_hypotheses = min_hypotheses;
+    const Result r = recognize(ball(), cfg);  // never stops on evidence
+    REQUIRE_FALSE(r.stats.budget_exhausted);
+    REQUIRE_FALSE(r.stats.stopped_on_evidence);
+    return r.stats;
+  };
+  const RecognitionStats paper = stats_with(0u);
+  CHECK(paper.trials == kTrials);
+  // The first kTrials draws are the same; then draws go on until one more pose is verified.
+  const uint32_t wanted = paper.hypotheses + 1u;
+  const RecognitionStats more = stats_with(wanted);
+  CHECK(more.trials > kTrials);
+  CHECK(more.trials <= kTrialExtension * kTrials);
+  CHECK((more.hypotheses >= wanted || more.trials == kTrialExtension * kTrials));
+  CHECK(stats_with(0xFFFFFFFFu).trials == kTrialExtension * kTrials);
 }
