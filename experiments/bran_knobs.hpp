@@ -1,5 +1,5 @@
 // BRAN's additions to the paper that the experiments switch (--transfer-models,
-// --stop-miss-probability, --min-hypotheses), so one run can compare them
+// --stop-miss-probability, --min-hypotheses, --focus-models), so one run can compare them
 // with the paper's BRAN; the LSH scan bound (--max-bucket-scan) that sets
 // the index's cost; the query features kept (--max-features) that set a
 // large vehicle's.
@@ -14,6 +14,7 @@ struct BranKnobs {
   uint32_t transfer_models = RecognizerConfig{}.transfer_models;
   float stop_miss_probability = RecognizerConfig{}.stop_miss_probability;
   uint32_t min_hypotheses = RecognizerConfig{}.min_hypotheses;
+  uint32_t focus_models = RecognizerConfig{}.focus_models;
   uint32_t max_bucket_scan = RecognizerConfig{}.max_bucket_scan;
   uint32_t max_features = RecognizerConfig{}.max_features;
   void apply(RecognizerConfig* cfg) const {
@@ -22,6 +23,7 @@ struct BranKnobs {
     cfg->transfer_models = transfer_models;
     cfg->stop_miss_probability = stop_miss_probability;
     cfg->min_hypotheses = min_hypotheses;
+    cfg->focus_models = focus_models;
   }
 };
 

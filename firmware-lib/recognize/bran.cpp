@@ -2,7 +2,8 @@
 // index, saliency-weighted doublet draws, and for each draw every candidate
 // pair of one model (the exhaustive W_k x W_l option) through the cascade,
 // until the evidence says the leader is found (evidence_stop.cpp) or the work
-// budget is spent (max_trials draws, more while min_hypotheses is not met).
+// budget is spent (max_trials draws, more while min_hypotheses is not met);
+// after extended draws the leading models get a focused search of their own.
 #include <cmath>
 
 #include "recognize/search_context.hpp"
@@ -81,6 +82,8 @@ void run_bran(SearchContext& ctx) {
     }
   }
   transfer_poses(ctx);
+  // Draws extended past max_trials: the candidates are spread over look-alikes.
+  if (ctx.stats.trials > ctx.cfg.max_trials && !ctx.stats.budget_exhausted) focus_on_leaders(ctx);
 }
 
 }  // namespace spinhash

@@ -21,6 +21,10 @@ constexpr uint32_t kTrialExtension = 4;
 constexpr uint32_t kMaxTrials = 0xFFFFFFFFu / kTrialExtension;
 // Largest RecognizerConfig::transfer_models (look-alike pose transfer).
 constexpr uint32_t kMaxTransferModels = 64;
+// Largest RecognizerConfig::focus_models (BRAN's focused search), and the
+// draws each focused model gets.
+constexpr uint32_t kMaxFocusModels = 64;
+constexpr uint32_t kFocusTrials = 50;
 constexpr uint32_t kMaxModelNameBytes = 48;            // including the terminating NUL
 constexpr uint32_t kMaxModels = 65535;                 // model ids are stored as uint16
 constexpr uint32_t kMaxFeatures = 0x7FFFFFFF;          // feature ids are uint32

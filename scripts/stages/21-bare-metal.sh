@@ -15,6 +15,10 @@ dir=build-cross-cortex-m7
 CXXFLAGS=-fcallgraph-info=su cmake -S . -B "$dir" -DCMAKE_TOOLCHAIN_FILE=toolchains/arm-none-eabi.cmake \
   -DCMAKE_BUILD_TYPE=Release --no-warn-unused-cli >/dev/null
 grep -q 'fcallgraph-info=su' "$dir/CMakeCache.txt" || { echo "bare-metal: $dir lacks -fcallgraph-info; delete it"; exit 1; }
+# A configure that once failed (no cross compiler yet) caches empty Release
+# flags: an unoptimised image ten times the size.
+grep -q '^CMAKE_CXX_FLAGS_RELEASE:STRING=-O' "$dir/CMakeCache.txt" ||
+  { echo "bare-metal: $dir caches no Release optimisation (an earlier configure failed?); delete it"; exit 1; }
 cmake --build "$dir" -j"$jobs" >/dev/null
 
 elf=$dir/examples/bare-metal/bare_metal_recognize.elf

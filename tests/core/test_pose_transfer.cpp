@@ -1,12 +1,15 @@
 // Look-alike pose transfer (recognize/pose_transfer.cpp): a model crowded out
 // of the W candidates by an identical twin still gets the twin's pose, and an
 // answer tied with its twin is not confident: its look-alike group holds both.
+// The focused search (recognize/focused_search.cpp) then gives such a twin
+// poses of its own, after draws extended for want of hypotheses.
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <vector>
 
 #include "blob/aligned_bytes.hpp"
+#include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"
 #include "support/toy_database.hpp"
 
@@ -117,4 +120,56 @@ TEST_CASE_FIXTURE(Twinned, "the look-alike group is every leading model within m
   CHECK(recognize(8, cfg).group_size >= 3u);
   cfg.min_margin = gap / (1.25f * root);  // ... and one that just leaves it out
   CHECK(recognize(8, cfg).group_size == 2u);
+}
+
+namespace {
+
+// Draws that must be extended: few trials and more hypotheses wanted than
+// any draw can give, so BRAN draws kTrialExtension x kFewTrials times.
+constexpr uint32_t kFewTrials = 200;
+RecognizerConfig extended_draws(uint32_t focus_models) {
+  RecognizerConfig cfg;
+  cfg.max_trials = kFewTrials;
+  cfg.min_hypotheses = 0xFFFFFFFFu;
+  cfg.focus_models = focus_models;
+  return cfg;
+}
+
+}  // namespace
+
+TEST_CASE_FIXTURE(Twinned, "after extended draws the leading models get a focused search of their own") {
+  const Result lent = recognize(8, extended_draws(0));
+  CHECK(lent.stats.trials == kTrialExtension * kFewTrials);
+  const RankedModel* twin_lent = find(lent, twin);
+  REQUIRE(twin_lent != nullptr);
+  CHECK(twin_lent->hypotheses <= 4u);  // lent poses only (W = 1: its features are never candidates)
+
+  const Result focused = recognize(8, extended_draws(2));  // the twins lead: both are searched
+  CHECK(focused.stats.trials == kTrialExtension * kFewTrials + 2u * kFocusTrials);
+  CHECK(focused.stats.hypotheses > lent.stats.hypotheses);
+  const RankedModel* twin_own = find(focused, twin);
+  const RankedModel* original = find(focused, kTwinned);
+  REQUIRE(twin_own != nullptr);
+  REQUIRE(original != nullptr);
+  CHECK(twin_own->hypotheses > 4u + twin_lent->hypotheses);  // its own RANSAC's poses
+  // Identical geometry: its own poses fit as well as the original's.
+  CHECK(std::fabs(twin_own->score - original->score) <= 0.01f * std::fabs(original->score));
+  for (int k = 0; k < 3; ++k)
+    CHECK(std::fabs(twin_own->pose.translation[k] - original->pose.translation[k]) < 0.05);
+  CHECK(((focused.ranking[0].model == kTwinned || focused.ranking[0].model == twin)));
+}
+
+TEST_CASE_FIXTURE(Twinned, "draws that meet min_hypotheses within max_trials leave the focused search out") {
+  RecognizerConfig with, without;
+  with.min_hypotheses = without.min_hypotheses = 10;  // W = 1 verifies a few dozen poses in 800 draws
+  without.focus_models = 0;
+  const Result a = recognize(8, with), b = recognize(8, without);
+  REQUIRE(a.stats.trials <= with.max_trials);
+  CHECK(a.stats.trials == b.stats.trials);
+  CHECK(a.stats.hypotheses == b.stats.hypotheses);
+  REQUIRE(a.ranking_count == b.ranking_count);
+  for (uint32_t i = 0; i < a.ranking_count; ++i) {
+    CHECK(a.ranking[i].model == b.ranking[i].model);
+    CHECK(a.ranking[i].score == b.ranking[i].score);
+  }
 }

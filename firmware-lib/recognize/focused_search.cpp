@@ -1,0 +1,70 @@
+// BRAN's focused search (not in the paper). When the draws had to be
+// extended past max_trials (min_hypotheses), the joint candidates are spread
+// over many look-alikes: each query feature's W candidates name a few dozen
+// near-identical models, few doublets pair up in one model, and the true
+// model may hold only a handful of poorer poses (or a look-alike's, lent by
+// the pose transfer). The leading models after the draws are then nearly all
+// of the right family, so each of the cfg.focus_models best gets the short
+// RANSAC that SRAN gives every model: its own top_w_sran nearest features for
+// an evenly spread share of the query features, and kFocusTrials draws
+// through the same cascade and likelihood. Bounded: focus_models x (the
+// searched features x one model's features) descriptor distances, and
+// kFocusTrials x top_w_sran^2 pair checks per model, within max_pair_checks.
+#include "recognize/search_context.hpp"
+#include "spinhash/limits.hpp"
+#include "util/top_n.hpp"
+
+namespace spinhash {
+namespace {
+
+// The model's own candidates for every step-th query feature (none for the
+// others), and uniform draw weights over the features that got some.
+void gather_model_candidates(SearchContext& ctx, uint32_t model, uint32_t step) {
+  RecognizerBuffers& b = ctx.buf;
+  float searched = 0.0f;
+  for (uint32_t l = 0; l < ctx.query.count; ++l) {
+    b.candidate_count[l] =
+        l % step == 0u ? search_model_exhaustive(ctx.db, model,
+                                                 ctx.query.spins + static_cast<size_t>(l) * ctx.query.dims,
+                                                 ctx.cfg.top_w_sran, ctx.candidates_of(l))
+                       : 0u;
+    ctx.stats.candidates += b.candidate_count[l];
+    if (b.candidate_count[l] > 0u) searched += 1.0f;
+    b.cumulative[l] = searched;
+  }
+}
+
+// kFocusTrials draws among the model's candidates; false once the budget is spent.
+bool search_model(SearchContext& ctx, uint32_t model) {
+  const HypothesisCaps caps{0xFFFFFFFFu, ctx.cfg.max_hypotheses};
+  for (uint32_t trial = 0; trial < kFocusTrials; ++trial) {
+    ++ctx.stats.trials;
+    uint32_t k = 0, l = 0;
+    DoubletShape shape;
+    if (!draw_stable_doublet(ctx, &k, &l, &shape)) continue;
+    const Candidate* ck = ctx.candidates_of(k);
+    const Candidate* cl = ctx.candidates_of(l);
+    for (uint32_t u = 0; u < ctx.buf.candidate_count[k]; ++u)
+      for (uint32_t v = 0; v < ctx.buf.candidate_count[l]; ++v)
+        if (!evaluate_pair(ctx, model, k, l, shape, ck[u].feature, cl[v].feature, caps)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void focus_on_leaders(SearchContext& ctx) {
+  uint32_t models[kMaxFocusModels];
+  const uint32_t n = top_n(
+      ctx.db.model_count(), ctx.cfg.focus_models, models, [&](uint32_t m) { return has_hypothesis(ctx, m); },
+      [&](uint32_t a, uint32_t b) { return scores_higher(ctx, a, b); });
+  // Every step-th feature: about verify_count of them, the hypotheses' subset size.
+  const uint32_t step = (ctx.query.count + ctx.query.verify_count - 1u) / ctx.query.verify_count;
+  ctx.cumulative = ctx.buf.cumulative;
+  for (uint32_t i = 0; i < n; ++i) {
+    gather_model_candidates(ctx, models[i], step);
+    if (!search_model(ctx, models[i])) return;
+  }
+}
+
+}  // namespace spinhash
