@@ -92,7 +92,7 @@ TEST_CASE_FIXTURE(Stopping,
     RecognizerConfig cfg;
     cfg.max_trials = kTrials;
     cfg.min_hypotheses = min_hypotheses;
-    cfg.focus_models = 0;  // its draws follow extended ones (test_pose_transfer.cpp)
+    cfg.focus_models = 0;                     // its draws follow extended ones (test_pose_transfer.cpp)
     const Result r = recognize(ball(), cfg);  // never stops on evidence
     REQUIRE_FALSE(r.stats.budget_exhausted);
     REQUIRE_FALSE(r.stats.stopped_on_evidence);
