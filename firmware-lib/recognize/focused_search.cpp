@@ -1,15 +1,16 @@
-// BRAN's focused search (not in the paper). When the draws had to be
-// extended past max_trials (min_hypotheses), the joint candidates are spread
-// over many look-alikes: each query feature's W candidates name a few dozen
-// near-identical models, few doublets pair up in one model, and the true
-// model may hold only a handful of poorer poses (or a look-alike's, lent by
-// the pose transfer). The leading models after the draws are then nearly all
-// of the right family, so each of the cfg.focus_models best gets the short
-// RANSAC that SRAN gives every model: its own top_w_sran nearest features for
-// an evenly spread share of the query features, and kFocusTrials draws
-// through the same cascade and likelihood. Bounded: focus_models x (the
-// searched features x one model's features) descriptor distances, and
-// kFocusTrials x top_w_sran^2 pair checks per model, within max_pair_checks.
+// BRAN's focused search (not in the paper). When the joint candidates are
+// spread over many look-alikes (bran.cpp: each query feature's W candidates
+// name a few dozen near-identical models), or so few poses were verified
+// that the draws were extended past max_trials (min_hypotheses), few
+// doublets pair up in one model, and the true model may hold only a handful
+// of poorer poses (or a look-alike's, lent by the pose transfer). The
+// leading models after the draws are then nearly all of the right family,
+// so each of the cfg.focus_models best gets the short RANSAC that SRAN
+// gives every model: its own top_w_sran nearest features for an evenly
+// spread share of the query features, and kFocusTrials draws through the
+// same cascade and likelihood. Bounded: focus_models x (the searched
+// features x one model's features) descriptor distances, and kFocusTrials x
+// top_w_sran^2 pair checks per model, within max_pair_checks.
 #include "recognize/search_context.hpp"
 #include "spinhash/limits.hpp"
 #include "util/top_n.hpp"

@@ -85,9 +85,10 @@ struct RecognizerConfig {
   // (CAD libraries, our fleets); 0 turns it off (the paper's BRAN).
   uint32_t transfer_models = 32;
 
-  // Focused search (not in the paper; BRAN): when the draws had to be
-  // extended past max_trials (min_hypotheses: the candidates are spread over
-  // many look-alikes), this many leading models each get a short RANSAC of
+  // Focused search (not in the paper; BRAN): when the candidates are spread
+  // over many look-alikes (their perplexity averages over 25 models), or
+  // the draws had to be extended past max_trials (min_hypotheses), this
+  // many leading models each get a short RANSAC of
   // their own, as SRAN gives every model (its top_w_sran candidates per
   // query feature, kFocusTrials draws), so the true model among
   // near-identical ones gets its own pose before the final ranking. 0 turns

@@ -64,7 +64,7 @@
   X(U32, transfer_models, 0u, kMaxTransferModels, "--transfer-models",                                       \
     "look-alikes each leading pose is also tried on (BRAN; 0: off, the paper's BRAN)")                       \
   X(U32, focus_models, 0u, kMaxFocusModels, "--focus-models",                                                \
-    "BRAN: leading models given their own short RANSAC when the draws had to be extended (0: off)")          \
+    "BRAN: leading models given their own short RANSAC when the candidates are spread (0: off)")             \
   X(BOOL, refine_poses, 0, 1, "!--no-refine", "skip the least-squares pose refinement")                      \
   X(F32, min_inlier_fraction, 0.0f, 1.0f, "--min-inlier-fraction",                                           \
     "share of the query explained for a confident answer")                                                   \
