@@ -81,7 +81,7 @@ bool enumerate_pairs(SearchContext& ctx, uint32_t k, uint32_t l, const DoubletSh
 void run_bran(SearchContext& ctx) {
   gather_candidates(ctx, ctx.cfg.top_w);
   if (ctx.stats.salient_features < 2u) return;
-  const bool spread = candidates_spread(ctx);
+  ctx.stats.candidates_spread = candidates_spread(ctx);
   ctx.cumulative = ctx.buf.cumulative;
   const HypothesisCaps caps{ctx.cfg.max_hypotheses, 0xFFFFFFFFu};
   while (keep_drawing(ctx)) {
@@ -98,7 +98,8 @@ void run_bran(SearchContext& ctx) {
   }
   transfer_poses(ctx);
   // Candidates spread over look-alikes, or so few poses that the draws were extended.
-  if ((spread || ctx.stats.trials > ctx.cfg.max_trials) && !ctx.stats.budget_exhausted) focus_on_leaders(ctx);
+  if ((ctx.stats.candidates_spread || ctx.stats.trials > ctx.cfg.max_trials) && !ctx.stats.budget_exhausted)
+    focus_on_leaders(ctx);
 }
 
 }  // namespace spinhash

@@ -8,6 +8,12 @@ namespace {
 // Box faces tested: both ends along x and y, and the top (z up in the model).
 constexpr int kTestedFaces = 5;
 constexpr float kFar = 3.0e38f;  // beyond any coordinate: no feature yet
+// The lead over the runner-up that a query whose candidates spread over many
+// look-alikes needs, in units of min_margin: the runner-up is then the best
+// of many near-identical models, and the best of N noisy scores lies about
+// sqrt(2 ln N) spreads above their mean: 2.4 for the 16 focused models
+// against 1.2 for the one or two rivals of a query among distinct models.
+constexpr float kSpreadMarginFactor = 2.0f;
 
 // The query's two outermost features on each side of every axis, in the
 // model's frame: the outermost says how far the scan reaches, the second
@@ -61,7 +67,8 @@ uint32_t lookalike_group_size(const Result& r, const RecognizerConfig& cfg, uint
   if (r.ranking_count == 0) return 0;
   if (cfg.mode == Mode::kSind) return 1;
   uint32_t k = 1;
-  const float within = cfg.min_margin * std::sqrt(static_cast<float>(features));
+  const float margin = r.stats.candidates_spread ? kSpreadMarginFactor * cfg.min_margin : cfg.min_margin;
+  const float within = margin * std::sqrt(static_cast<float>(features));
   while (k < r.ranking_count && r.ranking[0].score - r.ranking[k].score < within) ++k;
   return k;
 }

@@ -24,8 +24,9 @@ struct ExtentFit {
 ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model, const RigidPose& pose);
 
 // The leading models within min_margin x sqrt(features) log-likelihood of
-// the first (1 for SIND, whose votes are no likelihoods; 0 without a
-// ranking).
+// the first, twice that when the candidates spread over many look-alikes
+// (stats.candidates_spread); 1 for SIND, whose votes are no likelihoods; 0
+// without a ranking.
 uint32_t lookalike_group_size(const Result& r, const RecognizerConfig& cfg, uint32_t features);
 
 // The first model explains enough of the query, well enough, stands alone

@@ -109,8 +109,9 @@ void run_bran(SearchContext& ctx);
 // Lends the leading models' poses to the models whose boxes are nearest
 // theirs (look-alikes crowded out of the W candidates; BRAN).
 void transfer_poses(SearchContext& ctx);
-// A short per-model RANSAC for each of the leading models, after draws that
-// had to be extended past max_trials (focused_search.cpp; BRAN).
+// A short per-model RANSAC for each of the leading models, when the
+// candidates are spread over look-alikes or the draws had to be extended
+// past max_trials (focused_search.cpp; BRAN).
 void focus_on_leaders(SearchContext& ctx);
 // Rescores the leading models on all query features (refining their poses
 // when asked) and puts every score on the all-features scale (BRAN, SRAN).

@@ -88,11 +88,10 @@ struct RecognizerConfig {
   // Focused search (not in the paper; BRAN): when the candidates are spread
   // over many look-alikes (their perplexity averages over 25 models), or
   // the draws had to be extended past max_trials (min_hypotheses), this
-  // many leading models each get a short RANSAC of
-  // their own, as SRAN gives every model (its top_w_sran candidates per
-  // query feature, kFocusTrials draws), so the true model among
-  // near-identical ones gets its own pose before the final ranking. 0 turns
-  // it off (the paper's BRAN).
+  // many leading models each get a short RANSAC of their own, as SRAN gives
+  // every model (its top_w_sran candidates per query feature, kFocusTrials
+  // draws), so the true model among near-identical ones gets its own pose
+  // before the final ranking. 0 turns it off (the paper's BRAN).
   uint32_t focus_models = 16;
 
   // Least-squares refinement of the best few models' poses over their

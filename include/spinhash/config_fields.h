@@ -108,6 +108,7 @@
   S(U32, refinements, refinements, "refinements")                                \
   S(BOOL, budget_exhausted, budget_exhausted, "budget_exhausted")                \
   S(BOOL, stopped_on_evidence, stopped_on_evidence, "stopped_on_evidence")       \
+  S(BOOL, candidates_spread, candidates_spread, "candidates_spread")             \
   S(BOOL, bucket_scan_truncated, bucket_scan_truncated, "bucket_scan_truncated") \
   S(U64, workspace_used, workspace_used, "workspace_used")
 

@@ -42,6 +42,7 @@ struct RecognitionStats {
   uint32_t refinements = 0;            // least-squares pose refinements verified
   bool budget_exhausted = false;       // the work budget cut recognition short
   bool stopped_on_evidence = false;    // BRAN stopped before the budget (stop_miss_probability)
+  bool candidates_spread = false;      // BRAN: the candidates named many look-alikes (focus_models)
   bool bucket_scan_truncated = false;  // some LSH lookups hit max_bucket_scan
   size_t workspace_used = 0;
 };
@@ -52,7 +53,8 @@ struct Result {
   uint32_t ranking_count = 0;            // models that got a score, best first
   bool confident = false;                // the best model explains >= min_inlier_fraction of the features
   // Look-alike group: the first group_size models of the ranking score within
-  // min_margin x sqrt(features) log-likelihood of the first, so the scan
+  // min_margin x sqrt(features) log-likelihood of the first (twice that when
+  // stats.candidates_spread: among many look-alikes), so the scan
   // does not tell them apart (BRAN, SRAN). 1: the first stands alone (always
   // for SIND, which ranks by votes); 0: no ranking.
   uint32_t group_size = 0;

@@ -158,6 +158,25 @@ TEST_CASE("confident needs every gate: fit, score, a group of one, and the scan'
   CHECK(with([&](Result&, RankedModel&, ExtentFit& f) { f.shortfall = cfg.max_extent_shortfall - 0.05f; }));
 }
 
+TEST_CASE("among many look-alikes the runner-up must trail by twice the margin") {
+  const RecognizerConfig cfg;
+  constexpr uint32_t kFeatures = 400;
+  const float margin = cfg.min_margin * std::sqrt(static_cast<float>(kFeatures));  // log-likelihood
+  RankedModel ranking[2];
+  ranking[0].score = -600.0f;
+  Result r;
+  r.ranking = ranking;
+  r.ranking_count = 2;
+  for (float lead : {0.5f, 1.5f, 2.5f}) {  // in margins
+    CAPTURE(lead);
+    ranking[1].score = ranking[0].score - lead * margin;
+    r.stats.candidates_spread = false;
+    CHECK(lookalike_group_size(r, cfg, kFeatures) == (lead < 1.0f ? 2u : 1u));
+    r.stats.candidates_spread = true;  // the runner-up is the best of many near-identical models
+    CHECK(lookalike_group_size(r, cfg, kFeatures) == (lead < 2.0f ? 2u : 1u));
+  }
+}
+
 TEST_CASE("a scan that hides a toy's end is not confident, whichever toy explains it best") {
   test::ToyDatabase toy;
   REQUIRE(test::make_toy_database(&toy));
