@@ -35,23 +35,6 @@ void gather_model_candidates(SearchContext& ctx, uint32_t model, uint32_t step) 
   }
 }
 
-// kFocusTrials draws among the model's candidates; false once the budget is spent.
-bool search_model(SearchContext& ctx, uint32_t model) {
-  const HypothesisCaps caps{0xFFFFFFFFu, ctx.cfg.max_hypotheses};
-  for (uint32_t trial = 0; trial < kFocusTrials; ++trial) {
-    ++ctx.stats.trials;
-    uint32_t k = 0, l = 0;
-    DoubletShape shape;
-    if (!draw_stable_doublet(ctx, &k, &l, &shape)) continue;
-    const Candidate* ck = ctx.candidates_of(k);
-    const Candidate* cl = ctx.candidates_of(l);
-    for (uint32_t u = 0; u < ctx.buf.candidate_count[k]; ++u)
-      for (uint32_t v = 0; v < ctx.buf.candidate_count[l]; ++v)
-        if (!evaluate_pair(ctx, model, k, l, shape, ck[u].feature, cl[v].feature, caps)) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 void focus_on_leaders(SearchContext& ctx) {
@@ -62,9 +45,10 @@ void focus_on_leaders(SearchContext& ctx) {
   // Every step-th feature: about verify_count of them, the hypotheses' subset size.
   const uint32_t step = (ctx.query.count + ctx.query.verify_count - 1u) / ctx.query.verify_count;
   ctx.cumulative = ctx.buf.cumulative;
+  const HypothesisCaps caps{0xFFFFFFFFu, ctx.cfg.max_hypotheses};
   for (uint32_t i = 0; i < n; ++i) {
     gather_model_candidates(ctx, models[i], step);
-    if (!search_model(ctx, models[i])) return;
+    if (!draw_for_model(ctx, models[i], kFocusTrials, caps)) return;
   }
 }
 

@@ -62,6 +62,21 @@ void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose, fl
   }
 }
 
+bool draw_for_model(SearchContext& ctx, uint32_t model, uint32_t trials, const HypothesisCaps& caps) {
+  for (uint32_t trial = 0; trial < trials; ++trial) {
+    ++ctx.stats.trials;
+    uint32_t k = 0, l = 0;
+    DoubletShape shape;
+    if (!draw_stable_doublet(ctx, &k, &l, &shape)) continue;
+    const Candidate* ck = ctx.candidates_of(k);
+    const Candidate* cl = ctx.candidates_of(l);
+    for (uint32_t u = 0; u < ctx.buf.candidate_count[k]; ++u)
+      for (uint32_t v = 0; v < ctx.buf.candidate_count[l]; ++v)
+        if (!evaluate_pair(ctx, model, k, l, shape, ck[u].feature, cl[v].feature, caps)) return false;
+  }
+  return true;
+}
+
 bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l, const DoubletShape& shape,
                    uint32_t fu, uint32_t fv, const HypothesisCaps& caps) {
   RecognitionStats& st = ctx.stats;

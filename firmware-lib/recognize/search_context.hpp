@@ -100,6 +100,11 @@ void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose,
 bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l, const DoubletShape& shape,
                    uint32_t fu, uint32_t fv, const HypothesisCaps& caps);
 
+// `trials` doublet draws among the current candidates, every candidate pair
+// of a draw evaluated as `model`'s (all candidates are that model's: SRAN,
+// the focused search). false once the budget is spent.
+bool draw_for_model(SearchContext& ctx, uint32_t model, uint32_t trials, const HypothesisCaps& caps);
+
 // Records `model`'s new best score for the stop on evidence (BRAN).
 void note_leader(SearchContext& ctx, uint32_t model);
 // true once more draws would most likely not change the leader (cfg.stop_miss_probability).

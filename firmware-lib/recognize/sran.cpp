@@ -16,18 +16,7 @@ void run_sran(SearchContext& ctx) {
           ctx.db, model, ctx.query.spins + static_cast<size_t>(l) * ctx.query.dims, w, ctx.candidates_of(l));
       ctx.stats.candidates += b.candidate_count[l];
     }
-    bool spent = false;
-    for (uint32_t trial = 0; trial < ctx.cfg.sran_trials && !spent; ++trial) {
-      ++ctx.stats.trials;
-      uint32_t k = 0, l = 0;
-      DoubletShape shape;
-      if (!draw_stable_doublet(ctx, &k, &l, &shape)) continue;
-      const Candidate* ck = ctx.candidates_of(k);
-      const Candidate* cl = ctx.candidates_of(l);
-      for (uint32_t u = 0; u < b.candidate_count[k] && !spent; ++u)
-        for (uint32_t v = 0; v < b.candidate_count[l] && !spent; ++v)
-          spent = !evaluate_pair(ctx, model, k, l, shape, ck[u].feature, cl[v].feature, caps);
-    }
+    draw_for_model(ctx, model, ctx.cfg.sran_trials, caps);         // a model's own cap ends its draws only
     if (ctx.stats.pair_checks >= ctx.cfg.max_pair_checks) return;  // global budget spent
   }
 }
