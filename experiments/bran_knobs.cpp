@@ -17,8 +17,9 @@ void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs) {
          "--min-hypotheses", knobs->min_hypotheses,
          "BRAN's draws past max_trials while fewer poses were verified (0: the paper's fixed trials)")
       ->capture_default_str();
-  cmd->add_option("--focus-models", knobs->focus_models,
-                  "BRAN's focused search of the leading models after extended draws (0: off)")
+  cmd->add_option(
+         "--focus-models", knobs->focus_models,
+         "BRAN's focused search of the leading models on spread candidates or after extended draws (0: off)")
       ->check(CLI::Range(0u, kMaxFocusModels))
       ->capture_default_str();
   cmd->add_option("--max-bucket-scan", knobs->max_bucket_scan,

@@ -20,18 +20,12 @@ namespace {
 
 // The model's own candidates for every step-th query feature (none for the
 // others), and uniform draw weights over the features that got some.
-void gather_model_candidates(SearchContext& ctx, uint32_t model, uint32_t step) {
-  RecognizerBuffers& b = ctx.buf;
+void gather_subset_candidates(SearchContext& ctx, uint32_t model, uint32_t step) {
   float searched = 0.0f;
   for (uint32_t l = 0; l < ctx.query.count; ++l) {
-    b.candidate_count[l] =
-        l % step == 0u ? search_model_exhaustive(ctx.db, model,
-                                                 ctx.query.spins + static_cast<size_t>(l) * ctx.query.dims,
-                                                 ctx.cfg.top_w_sran, ctx.candidates_of(l))
-                       : 0u;
-    ctx.stats.candidates += b.candidate_count[l];
-    if (b.candidate_count[l] > 0u) searched += 1.0f;
-    b.cumulative[l] = searched;
+    ctx.buf.candidate_count[l] = 0u;
+    if (l % step == 0u && gather_model_candidates(ctx, model, l) > 0u) searched += 1.0f;
+    ctx.buf.cumulative[l] = searched;
   }
 }
 
@@ -47,7 +41,7 @@ void focus_on_leaders(SearchContext& ctx) {
   ctx.cumulative = ctx.buf.cumulative;
   const HypothesisCaps caps{0xFFFFFFFFu, ctx.cfg.max_hypotheses};
   for (uint32_t i = 0; i < n; ++i) {
-    gather_model_candidates(ctx, models[i], step);
+    gather_subset_candidates(ctx, models[i], step);
     if (!draw_for_model(ctx, models[i], kFocusTrials, caps)) return;
   }
 }

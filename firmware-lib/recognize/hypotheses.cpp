@@ -62,6 +62,15 @@ void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose, fl
   }
 }
 
+uint32_t gather_model_candidates(SearchContext& ctx, uint32_t model, uint32_t l) {
+  const uint32_t n =
+      search_model_exhaustive(ctx.db, model, ctx.query.spins + static_cast<size_t>(l) * ctx.query.dims,
+                              ctx.cfg.top_w_sran, ctx.candidates_of(l));
+  ctx.buf.candidate_count[l] = n;
+  ctx.stats.candidates += n;
+  return n;
+}
+
 bool draw_for_model(SearchContext& ctx, uint32_t model, uint32_t trials, const HypothesisCaps& caps) {
   for (uint32_t trial = 0; trial < trials; ++trial) {
     ++ctx.stats.trials;

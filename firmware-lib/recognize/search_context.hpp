@@ -100,6 +100,10 @@ void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose,
 bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l, const DoubletShape& shape,
                    uint32_t fu, uint32_t fv, const HypothesisCaps& caps);
 
+// Query feature l's candidates: `model`'s own top_w_sran nearest features
+// (exhaustive scan; SRAN, the focused search), counted in the stats.
+uint32_t gather_model_candidates(SearchContext& ctx, uint32_t model, uint32_t l);
+
 // `trials` doublet draws among the current candidates, every candidate pair
 // of a draw evaluated as `model`'s (all candidates are that model's: SRAN,
 // the focused search). false once the budget is spent.
