@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "spinhash/arena.hpp"
+#include "spinhash/blob_format.hpp"  // mix64
 
 namespace spinhash {
 
@@ -67,12 +68,14 @@ class CellGrid {
 
  private:
   static constexpr int32_t kCoordBias = 1 << 20;  // 21-bit cell coordinates per axis
-  int32_t coord(float v) const;
-  static uint64_t pack(int32_t x, int32_t y, int32_t z);
-  int32_t find(uint64_t key) const;
+  static constexpr uint64_t kEmptyCellKey = ~0ull;
+  // Inline: every radius search calls these for each of its 27 cells.
+  inline int32_t coord(float v) const;
+  static inline uint64_t pack(int32_t x, int32_t y, int32_t z);
+  inline int32_t find(uint64_t key) const;
   uint32_t insert(uint64_t key);
 
-  uint64_t* keys_ = nullptr;   // per slot; kEmptyKey when free
+  uint64_t* keys_ = nullptr;   // per slot; kEmptyCellKey when free
   uint32_t* first_ = nullptr;  // per slot: start in order_
   uint32_t* count_ = nullptr;  // per slot: points in the cell
   uint32_t* slots_in_order_ = nullptr;
@@ -84,5 +87,31 @@ class CellGrid {
   float cell_ = 1.0f;
   const float* points_ = nullptr;
 };
+
+inline int32_t CellGrid::coord(float v) const {
+  float c = std::floor(v / cell_);
+  // Clouds wider than 2^20 cells are clamped at the rim (recentred input never is).
+  const float lim = static_cast<float>(kCoordBias - 2);
+  if (!(c > -lim)) c = -lim;  // also NaN: never convert a non-finite float to int
+  if (!(c < lim)) c = lim;
+  return static_cast<int32_t>(c);
+}
+
+inline uint64_t CellGrid::pack(int32_t x, int32_t y, int32_t z) {
+  const uint64_t mask = (1ull << 21) - 1ull;
+  return (static_cast<uint64_t>(x + kCoordBias) & mask) |
+         ((static_cast<uint64_t>(y + kCoordBias) & mask) << 21) |
+         ((static_cast<uint64_t>(z + kCoordBias) & mask) << 42);
+}
+
+inline int32_t CellGrid::find(uint64_t key) const {
+  uint32_t slot = static_cast<uint32_t>(blob::mix64(key)) & (capacity_ - 1u);
+  for (uint32_t probe = 0; probe < capacity_; ++probe) {
+    if (keys_[slot] == key) return static_cast<int32_t>(slot);
+    if (keys_[slot] == kEmptyCellKey) return -1;
+    slot = (slot + 1u) & (capacity_ - 1u);
+  }
+  return -1;
+}
 
 }  // namespace spinhash

@@ -9,19 +9,29 @@ namespace {
 
 bool normal_at(const CellGrid& grid, const float* points, const float* q, float radius, float* out) {
   // One pass: sums of offsets from q and of their outer products (offsets
-  // from q, not from the origin, keep the float sums well conditioned).
-  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
-  Eigen::Matrix3f outer = Eigen::Matrix3f::Zero();
-  const Eigen::Map<const Eigen::Vector3f> centre(q);
+  // from q, not from the origin, keep the float sums well conditioned). The
+  // outer product is symmetric, so its six distinct sums are kept.
+  float s[3] = {0.0f, 0.0f, 0.0f};
+  float xx = 0.0f, xy = 0.0f, xz = 0.0f, yy = 0.0f, yz = 0.0f, zz = 0.0f;
   uint32_t count = 0;
   grid.for_each_within(q, radius, [&](uint32_t j) {
-    Eigen::Vector3f d = Eigen::Map<const Eigen::Vector3f>(points + 3u * j) - centre;
-    sum += d;
-    outer.noalias() += d * d.transpose();
+    const float* p = points + 3u * j;
+    const float dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+    s[0] += dx;
+    s[1] += dy;
+    s[2] += dz;
+    xx += dx * dx;
+    xy += dx * dy;
+    xz += dx * dz;
+    yy += dy * dy;
+    yz += dy * dz;
+    zz += dz * dz;
     ++count;
   });
   if (count < kMinNormalNeighbours) return false;
-  const Eigen::Vector3f mean = sum / static_cast<float>(count);
+  Eigen::Matrix3f outer;
+  outer << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+  const Eigen::Vector3f mean = Eigen::Map<const Eigen::Vector3f>(s) / static_cast<float>(count);
   const Eigen::Matrix3f cov = outer / static_cast<float>(count) - mean * mean.transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> solver;
   solver.computeDirect(cov);                         // closed form: fixed cost, no iteration, no heap
