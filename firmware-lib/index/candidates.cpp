@@ -146,27 +146,38 @@ uint32_t search_model_exhaustive(const Database& db, uint32_t model, const uint8
 
 float candidate_entropy(const Database& db, const Candidate* list, uint32_t n) {
   if (n == 0) return 0.0f;
-  uint16_t models[kMaxCandidates];
   if (n > kMaxCandidates) n = kMaxCandidates;
-  for (uint32_t i = 0; i < n; ++i) {  // insertion sort: n <= kMaxCandidates
-    uint16_t m = db.feature_models()[list[i].feature];
+  // The distinct models and their counts (a list names few models: a
+  // linear scan of the distinct ones is cheaper than sorting all n ids).
+  uint16_t models[kMaxCandidates];
+  uint32_t counts[kMaxCandidates];
+  uint32_t distinct = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint16_t m = db.feature_models()[list[i].feature];
+    uint32_t j = 0;
+    while (j < distinct && models[j] != m) ++j;
+    if (j == distinct) {
+      models[distinct] = m;
+      counts[distinct++] = 0;
+    }
+    ++counts[j];
+  }
+  // Summed in ascending model order: the same float sum on every target.
+  for (uint32_t i = 1; i < distinct; ++i) {
+    const uint16_t m = models[i];
+    const uint32_t c = counts[i];
     uint32_t j = i;
-    while (j > 0 && models[j - 1u] > m) {
+    for (; j > 0 && models[j - 1u] > m; --j) {
       models[j] = models[j - 1u];
-      --j;
+      counts[j] = counts[j - 1u];
     }
     models[j] = m;
+    counts[j] = c;
   }
   float entropy = 0.0f;
-  uint32_t run = 1;
-  for (uint32_t i = 1; i <= n; ++i) {
-    if (i < n && models[i] == models[i - 1u]) {
-      ++run;
-      continue;
-    }
-    float pr = static_cast<float>(run) / static_cast<float>(n);
+  for (uint32_t i = 0; i < distinct; ++i) {
+    float pr = static_cast<float>(counts[i]) / static_cast<float>(n);
     entropy -= pr * std::log(pr);
-    run = 1;
   }
   return entropy;
 }
