@@ -1,6 +1,5 @@
 #include "geometry/cell_grid.hpp"
 
-#include "spinhash/blob_format.hpp"
 #include "util/fixed_math.hpp"
 
 namespace spinhash {
@@ -8,6 +7,8 @@ namespace spinhash {
 bool CellGrid::carve(Arena& arena, uint32_t max_points) {
   max_points_ = max_points;
   capacity_ = next_pow2(2u * (max_points > 0 ? max_points : 1u));
+  slot_shift_ = 32u;
+  for (uint32_t c = capacity_; c > 1u; c >>= 1u) --slot_shift_;
   keys_ = arena.alloc<uint64_t>(capacity_);
   first_ = arena.alloc<uint32_t>(capacity_);
   count_ = arena.alloc<uint32_t>(capacity_);
@@ -18,7 +19,7 @@ bool CellGrid::carve(Arena& arena, uint32_t max_points) {
 }
 
 uint32_t CellGrid::insert(uint64_t key) {
-  uint32_t slot = static_cast<uint32_t>(blob::mix64(key)) & (capacity_ - 1u);
+  uint32_t slot = home_slot(key);
   // Load <= 1/2, so a free slot is always found within capacity_ probes.
   for (uint32_t probe = 0; probe < capacity_; ++probe) {
     if (keys_[slot] == key) return slot;

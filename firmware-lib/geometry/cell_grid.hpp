@@ -6,7 +6,6 @@
 #include <cstdint>
 
 #include "spinhash/arena.hpp"
-#include "spinhash/blob_format.hpp"  // mix64
 
 namespace spinhash {
 
@@ -73,6 +72,7 @@ class CellGrid {
   inline int32_t coord(float v) const;
   static inline uint64_t pack(int32_t x, int32_t y, int32_t z);
   inline int32_t find(uint64_t key) const;
+  inline uint32_t home_slot(uint64_t key) const;
   uint32_t insert(uint64_t key);
 
   uint64_t* keys_ = nullptr;   // per slot; kEmptyCellKey when free
@@ -82,6 +82,7 @@ class CellGrid {
   uint32_t* order_ = nullptr;       // point indices grouped by cell
   uint32_t* point_slot_ = nullptr;  // slot of each point
   uint32_t capacity_ = 0;           // power of two
+  uint32_t slot_shift_ = 32;        // 32 - log2(capacity_)
   uint32_t max_points_ = 0;
   uint32_t cell_count_ = 0;
   float cell_ = 1.0f;
@@ -104,8 +105,17 @@ inline uint64_t CellGrid::pack(int32_t x, int32_t y, int32_t z) {
          ((static_cast<uint64_t>(z + kCoordBias) & mask) << 42);
 }
 
+// Both halves of the key folded by 32-bit products, the top bits kept (no
+// 64-bit arithmetic, which 32-bit targets emulate). Slots only place cells
+// in the table: the cells' order is the order they were first seen.
+inline uint32_t CellGrid::home_slot(uint64_t key) const {
+  const uint32_t h =
+      static_cast<uint32_t>(key) * 0x9E3779B1u ^ static_cast<uint32_t>(key >> 32) * 0x85EBCA77u;
+  return slot_shift_ < 32u ? h >> slot_shift_ : 0u;
+}
+
 inline int32_t CellGrid::find(uint64_t key) const {
-  uint32_t slot = static_cast<uint32_t>(blob::mix64(key)) & (capacity_ - 1u);
+  uint32_t slot = home_slot(key);
   for (uint32_t probe = 0; probe < capacity_; ++probe) {
     if (keys_[slot] == key) return static_cast<int32_t>(slot);
     if (keys_[slot] == kEmptyCellKey) return -1;

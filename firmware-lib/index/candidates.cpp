@@ -14,9 +14,9 @@ namespace {
 constexpr uint32_t kNoBound = 0xFFFFFFFFu;  // a list still filling takes any distance
 
 // The order of a top-W list: nearer first, equal distances by feature index.
-inline bool before(const Candidate& x, const Candidate& y) {
-  return x.distance < y.distance || (x.distance == y.distance && x.feature < y.feature);
-}
+// One 64-bit comparison: distance in the high word, feature in the low.
+inline uint64_t order_key(const Candidate& c) { return static_cast<uint64_t>(c.distance) << 32 | c.feature; }
+inline bool before(const Candidate& x, const Candidate& y) { return order_key(x) < order_key(y); }
 
 // The LSH scan keeps its top W as a heap whose root is the farthest kept
 // candidate (O(log W) per entering candidate, against O(W) for a sorted
@@ -74,6 +74,8 @@ void insert_top_w(Candidate* list, uint32_t* count, uint32_t w, Candidate c) {
 bool LshSearcher::carve(Arena& arena, uint32_t max_scan) {
   max_scan_ = max_scan;
   capacity_ = next_pow2(2u * (max_scan > 0 ? max_scan : 1u));
+  slot_shift_ = 32u;
+  for (uint32_t c = capacity_; c > 1u; c >>= 1u) --slot_shift_;
   seen_ = arena.alloc<uint32_t>(capacity_);
   stamp_ = arena.alloc<uint32_t>(capacity_);
   if (stamp_ != nullptr)
@@ -83,7 +85,9 @@ bool LshSearcher::carve(Arena& arena, uint32_t max_scan) {
 }
 
 bool LshSearcher::mark_seen(uint32_t feature) {
-  uint32_t slot = static_cast<uint32_t>(blob::mix64(feature)) & (capacity_ - 1u);
+  // Fibonacci hashing: the top bits of a 32-bit product (no 64-bit
+  // arithmetic, which 32-bit targets emulate).
+  uint32_t slot = slot_shift_ < 32u ? (feature * 0x9E3779B1u) >> slot_shift_ : 0u;
   // At most max_scan insertions per generation: load <= 1/2, a free slot exists.
   for (uint32_t probe = 0; probe < capacity_; ++probe) {
     if (stamp_[slot] != generation_) {

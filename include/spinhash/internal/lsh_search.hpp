@@ -35,6 +35,7 @@ class LshSearcher {
   uint32_t* seen_ = nullptr;   // open-addressing set of feature ids for this query
   uint32_t* stamp_ = nullptr;  // generation of each slot: no clearing between queries
   uint32_t capacity_ = 0;
+  uint32_t slot_shift_ = 32;  // 32 - log2(capacity_): a product's top bits pick the slot
   uint32_t generation_ = 0;
   uint32_t max_scan_ = 0;
 };
