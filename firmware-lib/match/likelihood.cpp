@@ -171,7 +171,7 @@ uint32_t spread_stride(uint32_t n) {
 
 Verification verify_pose(const Database& db, uint32_t model, const RigidPose& pose,
                          const QueryFeatures& query, const LikelihoodParams& lp, float to_beat,
-                         float reference) {
+                         float reference, int32_t* matches) {
   Verification v;
   const blob::ModelRecord& rec = db.model(model);
   const Eigen::Matrix3f rt = pose.rotation.transpose();
@@ -188,11 +188,11 @@ Verification verify_pose(const Database& db, uint32_t model, const RigidPose& po
                        (i == kPreemptiveSecond &&
                         v.log_likelihood / static_cast<float>(i) < best_mean - kPreemptiveSlackSecond)))
       return v;
-    Eigen::Vector3f qp(query.positions[3u * l], query.positions[3u * l + 1u], query.positions[3u * l + 2u]);
-    Eigen::Vector3f qn(query.normals[3u * l], query.normals[3u * l + 1u], query.normals[3u * l + 2u]);
-    Eigen::Vector3f x = rt * (qp - pose.translation);
-    Eigen::Vector3f nm = rt * qn;
+    Eigen::Vector3f x, nm;
+    query_in_model_frame(query, l, rt, pose.translation, &x, &nm);
     NearestFeature near = find_nearest_model_feature(db, rec, x, nm, lp);
+    if (matches != nullptr)
+      matches[l] = near.feature >= 0 && near.dist2 <= lp.delta2 ? near.feature : kNoMatch;
     if (near.feature < 0) {
       v.log_likelihood += lp.floor;
       continue;

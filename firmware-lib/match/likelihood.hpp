@@ -103,6 +103,22 @@ NearestFeature find_nearest_model_feature(const Database& db, const blob::ModelR
                                           const Eigen::Vector3f& x, const Eigen::Vector3f& n,
                                           const LikelihoodParams& lp);
 
+// Query feature l in the model frame of `pose` (rt: its rotation transposed):
+// position and normal. One expression for verification and refinement, so
+// that both find the same nearest model feature for it.
+inline void query_in_model_frame(const QueryFeatures& query, uint32_t l, const Eigen::Matrix3f& rt,
+                                 const Eigen::Vector3f& translation, Eigen::Vector3f* x, Eigen::Vector3f* n) {
+  const Eigen::Vector3f qp(query.positions[3u * l], query.positions[3u * l + 1u],
+                           query.positions[3u * l + 2u]);
+  const Eigen::Vector3f qn(query.normals[3u * l], query.normals[3u * l + 1u], query.normals[3u * l + 2u]);
+  *x = rt * (qp - translation);
+  *n = rt * qn;
+}
+
+// What refine_pose pairs query feature l with: the nearest model feature
+// within Delta, or kNoMatch.
+constexpr int32_t kNoMatch = -1;
+
 // A `to_beat` that every score beats: the full score is wanted.
 constexpr float kNoScoreToBeat = -3.0e38f;
 
@@ -118,9 +134,10 @@ struct Verification {
 // sum above `to_beat`, or once the first few dozen features say the pose is
 // clearly worse than `reference` (a score on the same features; the model's
 // own best, or the pose's source when a look-alike borrows it;
-// kNoScoreToBeat: never).
+// kNoScoreToBeat: never). When `matches` is given, matches[l] receives
+// each visited feature's match for refine_pose (kNoMatch beyond Delta).
 Verification verify_pose(const Database& db, uint32_t model, const RigidPose& pose,
                          const QueryFeatures& query, const LikelihoodParams& lp, float to_beat,
-                         float reference);
+                         float reference, int32_t* matches = nullptr);
 
 }  // namespace spinhash

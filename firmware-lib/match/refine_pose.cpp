@@ -33,17 +33,20 @@ struct PlaneSums {
 }  // namespace
 
 bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query, const LikelihoodParams& lp,
-                 RigidPose* pose) {
+                 RigidPose* pose, const int32_t* matches) {
   const blob::ModelRecord& rec = db.model(model);
   const Eigen::Matrix3f rt = pose->rotation.transpose();
   PlaneSums sums;
   for (uint32_t l = 0; l < query.count; ++l) {
-    const Eigen::Vector3f x =
-        rt * (Eigen::Map<const Eigen::Vector3f>(query.positions + 3u * l) - pose->translation);
-    const Eigen::Vector3f qn = rt * Eigen::Map<const Eigen::Vector3f>(query.normals + 3u * l);
-    const NearestFeature near = find_nearest_model_feature(db, rec, x, qn, lp);
-    if (near.feature < 0 || near.dist2 > lp.delta2) continue;
-    const OrientedPoint m = model_feature_point(db, static_cast<uint32_t>(near.feature));
+    Eigen::Vector3f x, qn;
+    query_in_model_frame(query, l, rt, pose->translation, &x, &qn);
+    int32_t match = matches != nullptr ? matches[l] : kNoMatch;
+    if (matches == nullptr) {
+      const NearestFeature near = find_nearest_model_feature(db, rec, x, qn, lp);
+      match = near.feature >= 0 && near.dist2 <= lp.delta2 ? near.feature : kNoMatch;
+    }
+    if (match == kNoMatch) continue;
+    const OrientedPoint m = model_feature_point(db, static_cast<uint32_t>(match));
     sums.add(x, m.p, m.n);
   }
   if (sums.matches < kMinRefineMatches) return false;

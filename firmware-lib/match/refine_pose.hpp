@@ -20,9 +20,10 @@ constexpr uint32_t kMinRefineMatches = 6;
 constexpr float kDampingPerMatch = 1e-3f;
 
 // Replaces *pose with the refined one; false (pose untouched) when too few
-// matches or a non-finite step.
+// matches or a non-finite step. `matches`: each query feature's match at
+// *pose as verify_pose recorded it (saves the search); null: searched here.
 bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query, const LikelihoodParams& lp,
-                 RigidPose* pose);
+                 RigidPose* pose, const int32_t* matches = nullptr);
 
 // `pose` turned by 180 degrees about the vertical line through the centre of
 // the model's box: the other way round on the same footprint. Vehicles are

@@ -59,6 +59,7 @@ Status carve(Arena& arena, const RecognizerConfig& cfg, const FeatureParams& fp,
   b.candidates = arena.alloc<Candidate>(nf * b.candidate_stride);
   b.candidate_count = arena.alloc<uint32_t>(nf);
   b.cumulative = arena.alloc<float>(nf);
+  b.matches = arena.alloc<int32_t>(nf);
   b.best = arena.alloc<ModelBest>(cfg.max_models);
   b.ranking = arena.alloc<RankedModel>(cfg.max_models);
   b.feature_grid.carve(arena, cfg.max_features);

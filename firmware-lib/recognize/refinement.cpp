@@ -42,22 +42,32 @@ uint32_t leading_models(const SearchContext& ctx, uint32_t* out) {
       [&](uint32_t a, uint32_t b) { return scores_higher(ctx, a, b); });
 }
 
-// The model's best pose scored on every query feature.
+// The model's best pose scored on every query feature (its matches kept in
+// ctx.buf.matches).
 void rescore(SearchContext& ctx, uint32_t model, const QueryFeatures& all, const LikelihoodParams& lp) {
   ModelBest& best = ctx.buf.best[model];
-  Verification full = verify_pose(ctx.db, model, best.pose, all, lp, kNoScoreToBeat, kNoScoreToBeat);
+  Verification full =
+      verify_pose(ctx.db, model, best.pose, all, lp, kNoScoreToBeat, kNoScoreToBeat, ctx.buf.matches);
   best.score = full.log_likelihood;
   best.inliers = full.inliers;
   best.final_score = true;
 }
 
-// Least-squares steps while they raise the score.
-void refine_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, const LikelihoodParams& lp) {
+// Least-squares steps while they raise the score. Each step starts from the
+// matches its pose's verification recorded (the first from `rescored`'s,
+// when ctx.buf.matches still holds them), so a step costs one search of the
+// model, not two.
+void refine_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, const LikelihoodParams& lp,
+                  bool rescored) {
   ModelBest& best = ctx.buf.best[model];
+  bool have_matches = rescored;
   for (uint32_t it = 0; it < kRefineIterations; ++it) {
     RigidPose pose = best.pose;
-    if (!refine_pose(ctx.db, model, all, lp, &pose)) return;
-    Verification v = verify_pose(ctx.db, model, pose, all, lp, kNoScoreToBeat, kNoScoreToBeat);
+    if (!refine_pose(ctx.db, model, all, lp, &pose, have_matches ? ctx.buf.matches : nullptr)) return;
+    // On a lower score the loop ends: the matches are then the rejected pose's, and unused.
+    Verification v =
+        verify_pose(ctx.db, model, pose, all, lp, kNoScoreToBeat, kNoScoreToBeat, ctx.buf.matches);
+    have_matches = true;
     ++ctx.stats.refinements;
     if (!(v.log_likelihood > best.score)) return;
     best.score = v.log_likelihood;
@@ -84,13 +94,13 @@ void refine_both_ways(SearchContext& ctx, uint32_t model, const QueryFeatures& a
                       const LikelihoodParams& lp) {
   ModelBest& best = ctx.buf.best[model];
   const ModelBest as_found = best;
-  refine_model(ctx, model, all, lp);
+  refine_model(ctx, model, all, lp, false);  // the matches are another model's (all are rescored first)
   const RigidPose turned = turned_end_to_end(as_found.pose, ctx.db.model(model));
   if (!turn_worth_refining(ctx, model, as_found.pose, turned)) return;
   const ModelBest refined = best;
   best.pose = turned;
   rescore(ctx, model, all, lp);
-  refine_model(ctx, model, all, lp);
+  refine_model(ctx, model, all, lp, true);
   if (!(best.score > refined.score)) best = refined;
 }
 

@@ -29,6 +29,7 @@ struct RecognizerBuffers {
   Candidate* candidates = nullptr;      // max_features * candidate_stride
   uint32_t* candidate_count = nullptr;  // max_features
   float* cumulative = nullptr;          // max_features: sampling weights, running sum
+  int32_t* matches = nullptr;           // max_features: the last verified pose's matches (refinement.cpp)
   ModelBest* best = nullptr;            // max_models
   RankedModel* ranking = nullptr;       // max_models
   uint32_t candidate_stride = 0;        // largest W of any mode

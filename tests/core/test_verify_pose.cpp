@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "match/likelihood.hpp"
 #include "match/refine_pose.hpp"
@@ -97,6 +98,32 @@ TEST_CASE_FIXTURE(Fixture, "refine_pose, repeated, recovers the pose from a pert
   for (int step = 0; step < kRefineSteps; ++step) REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &refined));
   CHECK(angle_between(refined.rotation, truth.rotation) < 0.05f * kDegree);
   CHECK((refined.translation - truth.translation).norm() < 1e-3f);
+}
+
+TEST_CASE_FIXTURE(Fixture,
+                  "refine_pose from verify_pose's recorded matches takes the same step as its own search") {
+  // 8 degrees and 30 cm: part of the features match a neighbour or nothing
+  // within Delta, so the recorded matches are not simply "each its own".
+  RigidPose start = truth;
+  start.rotation =
+      Eigen::AngleAxisf(8.0f * kDegree, Eigen::Vector3f(0.2f, -0.4f, 0.9f).normalized()) * truth.rotation;
+  start.translation += Eigen::Vector3f(0.25f, -0.15f, 0.1f);
+  std::vector<int32_t> matches(q.view.count, 12345);
+  const Verification v =
+      verify_pose(toy.db, kModel, start, q.view, lp, kNoScoreToBeat, kNoScoreToBeat, matches.data());
+  REQUIRE(v.complete);
+  uint32_t matched = 0;
+  for (int32_t m : matches) {
+    CHECK(m != 12345);  // every feature visited and written
+    matched += m != kNoMatch ? 1u : 0u;
+  }
+  CHECK(matched == v.inliers);
+  CHECK(matched < q.view.count);
+  RigidPose searched = start, reused = start;
+  REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &searched));
+  REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &reused, matches.data()));
+  CHECK(reused.rotation == searched.rotation);  // bit for bit: the same sums in the same order
+  CHECK(reused.translation == searched.translation);
 }
 
 TEST_CASE_FIXTURE(Fixture, "refine_pose keeps a pose that matches too few features") {

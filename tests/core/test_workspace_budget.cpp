@@ -21,8 +21,8 @@ struct WorkspaceThreshold {
   size_t scene_300000;    // SceneConfig{}: a 300 000-point tile, its grids and a default recognizer
 };
 // Pointer-sized members make 64-bit layouts larger than 32-bit ones.
-constexpr WorkspaceThreshold kThreshold64 = {6369792, 5539872, 22798352};
-constexpr WorkspaceThreshold kThreshold32 = {6369632, 5539712, 22798096};
+constexpr WorkspaceThreshold kThreshold64 = {6373920, 5544000, 22802480};
+constexpr WorkspaceThreshold kThreshold32 = {6373760, 5543840, 22802224};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
 constexpr size_t kToleranceBytes = 1024;
