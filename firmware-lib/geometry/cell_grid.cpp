@@ -7,8 +7,7 @@ namespace spinhash {
 bool CellGrid::carve(Arena& arena, uint32_t max_points) {
   max_points_ = max_points;
   capacity_ = next_pow2(2u * (max_points > 0 ? max_points : 1u));
-  slot_shift_ = 32u;
-  for (uint32_t c = capacity_; c > 1u; c >>= 1u) --slot_shift_;
+  slot_shift_ = slot_shift(capacity_);
   keys_ = arena.alloc<uint64_t>(capacity_);
   first_ = arena.alloc<uint32_t>(capacity_);
   count_ = arena.alloc<uint32_t>(capacity_);

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "spinhash/arena.hpp"
+#include "util/fixed_math.hpp"  // Fibonacci hashing
 
 namespace spinhash {
 
@@ -105,13 +106,14 @@ inline uint64_t CellGrid::pack(int32_t x, int32_t y, int32_t z) {
          ((static_cast<uint64_t>(z + kCoordBias) & mask) << 42);
 }
 
-// Both halves of the key folded by 32-bit products, the top bits kept (no
-// 64-bit arithmetic, which 32-bit targets emulate). Slots only place cells
-// in the table: the cells' order is the order they were first seen.
+// Both halves of the key folded by 32-bit products into a Fibonacci hash
+// (util/fixed_math.hpp). Slots only place cells in the table: the cells'
+// order is the order they were first seen.
 inline uint32_t CellGrid::home_slot(uint64_t key) const {
-  const uint32_t h =
-      static_cast<uint32_t>(key) * 0x9E3779B1u ^ static_cast<uint32_t>(key >> 32) * 0x85EBCA77u;
-  return slot_shift_ < 32u ? h >> slot_shift_ : 0u;
+  constexpr uint32_t kHighHalfMultiplier = 0x85EBCA77u;  // another odd constant (MurmurHash3's)
+  const uint32_t h = static_cast<uint32_t>(key) * kFibonacciMultiplier ^
+                     static_cast<uint32_t>(key >> 32) * kHighHalfMultiplier;
+  return slot_of(h, slot_shift_);
 }
 
 inline int32_t CellGrid::find(uint64_t key) const {

@@ -74,8 +74,7 @@ void insert_top_w(Candidate* list, uint32_t* count, uint32_t w, Candidate c) {
 bool LshSearcher::carve(Arena& arena, uint32_t max_scan) {
   max_scan_ = max_scan;
   capacity_ = next_pow2(2u * (max_scan > 0 ? max_scan : 1u));
-  slot_shift_ = 32u;
-  for (uint32_t c = capacity_; c > 1u; c >>= 1u) --slot_shift_;
+  slot_shift_ = slot_shift(capacity_);
   seen_ = arena.alloc<uint32_t>(capacity_);
   stamp_ = arena.alloc<uint32_t>(capacity_);
   if (stamp_ != nullptr)
@@ -85,9 +84,7 @@ bool LshSearcher::carve(Arena& arena, uint32_t max_scan) {
 }
 
 bool LshSearcher::mark_seen(uint32_t feature) {
-  // Fibonacci hashing: the top bits of a 32-bit product (no 64-bit
-  // arithmetic, which 32-bit targets emulate).
-  uint32_t slot = slot_shift_ < 32u ? (feature * 0x9E3779B1u) >> slot_shift_ : 0u;
+  uint32_t slot = slot_of(feature * kFibonacciMultiplier, slot_shift_);
   // At most max_scan insertions per generation: load <= 1/2, a free slot exists.
   for (uint32_t probe = 0; probe < capacity_; ++probe) {
     if (stamp_[slot] != generation_) {

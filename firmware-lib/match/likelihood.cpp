@@ -191,8 +191,7 @@ Verification verify_pose(const Database& db, uint32_t model, const RigidPose& po
     Eigen::Vector3f x, nm;
     query_in_model_frame(query, l, rt, pose.translation, &x, &nm);
     NearestFeature near = find_nearest_model_feature(db, rec, x, nm, lp);
-    if (matches != nullptr)
-      matches[l] = near.feature >= 0 && near.dist2 <= lp.delta2 ? near.feature : kNoMatch;
+    if (matches != nullptr) matches[l] = match_within_delta(near, lp);
     if (near.feature < 0) {
       v.log_likelihood += lp.floor;
       continue;

@@ -118,6 +118,9 @@ inline void query_in_model_frame(const QueryFeatures& query, uint32_t l, const E
 // What refine_pose pairs query feature l with: the nearest model feature
 // within Delta, or kNoMatch.
 constexpr int32_t kNoMatch = -1;
+inline int32_t match_within_delta(const NearestFeature& near, const LikelihoodParams& lp) {
+  return near.feature >= 0 && near.dist2 <= lp.delta2 ? near.feature : kNoMatch;
+}
 
 // A `to_beat` that every score beats: the full score is wanted.
 constexpr float kNoScoreToBeat = -3.0e38f;

@@ -40,11 +40,9 @@ bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query,
   for (uint32_t l = 0; l < query.count; ++l) {
     Eigen::Vector3f x, qn;
     query_in_model_frame(query, l, rt, pose->translation, &x, &qn);
-    int32_t match = matches != nullptr ? matches[l] : kNoMatch;
-    if (matches == nullptr) {
-      const NearestFeature near = find_nearest_model_feature(db, rec, x, qn, lp);
-      match = near.feature >= 0 && near.dist2 <= lp.delta2 ? near.feature : kNoMatch;
-    }
+    const int32_t match = matches != nullptr
+                              ? matches[l]
+                              : match_within_delta(find_nearest_model_feature(db, rec, x, qn, lp), lp);
     if (match == kNoMatch) continue;
     const OrientedPoint m = model_feature_point(db, static_cast<uint32_t>(match));
     sums.add(x, m.p, m.n);

@@ -53,10 +53,11 @@ void rescore(SearchContext& ctx, uint32_t model, const QueryFeatures& all, const
   best.final_score = true;
 }
 
-// Least-squares steps while they raise the score. Each step starts from the
-// matches its pose's verification recorded (the first from `rescored`'s,
-// when ctx.buf.matches still holds them), so a step costs one search of the
-// model, not two.
+// Least-squares steps while they raise the score. A step from a pose that
+// was just verified takes the matches that verification recorded in
+// ctx.buf.matches, so it costs one search of the model, not two: every
+// step after the first, and the first when `rescored` (ctx.buf.matches
+// still holds the rescoring of best.pose).
 void refine_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, const LikelihoodParams& lp,
                   bool rescored) {
   ModelBest& best = ctx.buf.best[model];
