@@ -73,12 +73,14 @@ uint32_t lookalike_group_size(const Result& r, const RecognizerConfig& cfg, uint
   return k;
 }
 
-bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit) {
+bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
+                  float residual_f) {
   if (r.ranking_count == 0 || !r.ranking[0].has_pose) return false;
   const float n = static_cast<float>(features);
   return static_cast<float>(r.ranking[0].inliers) >= cfg.min_inlier_fraction * n &&
          r.ranking[0].score >= cfg.min_mean_log_likelihood * n && r.group_size == 1u &&
-         fit.shortfall <= cfg.max_extent_shortfall && fit.overhang <= cfg.max_extent_overhang;
+         fit.shortfall <= cfg.max_extent_shortfall && fit.overhang <= cfg.max_extent_overhang &&
+         residual_f <= cfg.max_residual_f;
 }
 
 }  // namespace spinhash

@@ -30,8 +30,11 @@ ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model,
 uint32_t lookalike_group_size(const Result& r, const RecognizerConfig& cfg, uint32_t features);
 
 // The first model explains enough of the query, well enough, stands alone
-// (its look-alike group is itself) and is pinned by the scan's extent
-// (`fit` under its pose within max_extent_shortfall / max_extent_overhang).
-bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit);
+// (its look-alike group is itself), is pinned by the scan's extent (`fit`
+// under its pose within max_extent_shortfall / max_extent_overhang) and
+// leaves residuals that are noise, not a shape (`residual_f`, the F of
+// residual_structure(), at most max_residual_f).
+bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
+                  float residual_f);
 
 }  // namespace spinhash

@@ -63,6 +63,7 @@ Status carve(Arena& arena, const RecognizerConfig& cfg, const FeatureParams& fp,
   b.best = arena.alloc<ModelBest>(cfg.max_models);
   b.ranking = arena.alloc<RankedModel>(cfg.max_models);
   b.feature_grid.carve(arena, cfg.max_features);
+  b.residuals = arena.alloc<ResidualSample>(nf);
   return arena.overflowed() ? Status::kWorkspaceTooSmall : Status::kOk;
 }
 
@@ -97,6 +98,17 @@ Pose identity_pose() {
   Pose p{};
   p.rotation[0] = p.rotation[4] = p.rotation[8] = 1.0f;
   return p;
+}
+
+// The confidence tests of the first model under its pose (confidence.hpp);
+// the residuals' structure is measured only for an answer that passes the others.
+bool first_is_confident(const SearchContext& ctx, const Result& result) {
+  if (result.ranking_count == 0 || !result.ranking[0].has_pose) return false;
+  const uint32_t first = result.ranking[0].model;
+  const RigidPose& pose = ctx.buf.best[first].pose;
+  const ExtentFit fit = extent_fit(ctx.query, ctx.db.model(first), pose);
+  if (!is_confident(result, ctx.cfg, ctx.query.count, fit, 0.0f)) return false;
+  return is_confident(result, ctx.cfg, ctx.query.count, fit, residual_structure(ctx, first, pose));
 }
 
 uint32_t rank_models(const Database& db, RecognizerBuffers& b, const double origin[3]) {
@@ -217,10 +229,7 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
   result.ranking = b.ranking;
   result.ranking_count = rank_models(*db_, b, fs.origin);
   result.group_size = lookalike_group_size(result, config_, fs.count);
-  const ExtentFit fit = result.ranking_count > 0 ? extent_fit(ctx.query, db_->model(result.ranking[0].model),
-                                                              b.best[result.ranking[0].model].pose)
-                                                 : ExtentFit{};
-  result.confident = is_confident(result, config_, fs.count, fit);
+  result.confident = first_is_confident(ctx, result);
   return result;
 }
 

@@ -22,6 +22,14 @@ struct ModelBest {
   bool final_score;  // rescored on every query feature
 };
 
+// One query feature's signed distance to the first model's surface, and the
+// surface cell it lands on (residual_structure.cpp).
+struct ResidualSample {
+  uint32_t cell;
+  uint32_t feature;
+  float residual;
+};
+
 struct RecognizerBuffers {
   FeatureExtractor extractor;
   LshSearcher searcher;
@@ -34,6 +42,7 @@ struct RecognizerBuffers {
   RankedModel* ranking = nullptr;       // max_models
   uint32_t candidate_stride = 0;        // largest W of any mode
   CellGrid feature_grid;                // the query features (visible_surface.cpp)
+  ResidualSample* residuals = nullptr;  // max_features (residual_structure.cpp)
 };
 
 // The leading model as BRAN's stop on evidence follows it (evidence_stop.cpp).
@@ -132,6 +141,12 @@ void finalise_scores(SearchContext& ctx, bool refine);
 float upward_surface_log_likelihood(const SearchContext& ctx, uint32_t model, const RigidPose& pose);
 // Indexes the query features for upward_surface_log_likelihood (once per query).
 void index_query_features(SearchContext& ctx);
+// F of the residuals' means per surface cell against their scatter within
+// the cells, for `model` under `pose`: about 1 when the scan is the model
+// plus noise, large when a patch of it sits off the model's surface (a
+// vehicle outside the database); 0 when too few features fall in shared
+// cells to tell (residual_structure.cpp).
+float residual_structure(const SearchContext& ctx, uint32_t model, const RigidPose& pose);
 void run_sran(SearchContext& ctx);
 void run_sind(SearchContext& ctx);
 

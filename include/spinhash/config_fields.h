@@ -76,6 +76,8 @@
     "m of the model's box ends and top the scan may miss for a confident answer")                            \
   X(F32, max_extent_overhang, 0.0f, 1e6f, "--max-extent-overhang",                                           \
     "m the scan may reach beyond the model's box for a confident answer")                                    \
+  X(F32, max_residual_f, 0.0f, 1e6f, "--max-residual-f",                                                     \
+    "F of the residuals' means per surface cell against their scatter, for a confident answer")              \
   X(U32, max_trials, 0u, kMaxTrials, "--trials", "doublet draws (BRAN)")                                     \
   X(U32, sran_trials, 0u, 0xFFFFFFFFu, "--sran-trials", "doublet draws per model (SRAN)")                    \
   X(U32, max_hypotheses, 0u, 0xFFFFFFFFu, "--max-hypotheses", "poses verified (BRAN total, SRAN per model)") \

@@ -20,8 +20,9 @@ namespace {
 
 // A 4 x 2 x 1.5 m box standing on z = 0, centred on x and y, its surface at 0.1 m.
 constexpr float kLength = 4.0f, kWidth = 2.0f, kHeight = 1.5f, kSpacing = 0.1f;
-constexpr float kTolerance = 1e-4f;  // m: float rounding of the fit
-constexpr float kNeverShort = 1e6f;  // m: a max_extent_shortfall that never withholds confidence
+constexpr float kTolerance = 1e-4f;    // m: float rounding of the fit
+constexpr float kNeverShort = 1e6f;    // m: a max_extent_shortfall that never withholds confidence
+constexpr float kAnyResidualF = 1e6f;  // a max_residual_f that never withholds confidence
 
 blob::ModelRecord box_record() {
   blob::ModelRecord rec{};
@@ -134,7 +135,9 @@ TEST_CASE("confident needs every gate: fit, score, a group of one, and the scan'
   r.ranking_count = 1;
   r.group_size = 1;
   const ExtentFit pinned{0.05f, 0.05f};
-  CHECK(is_confident(r, cfg, kFeatures, pinned));
+  constexpr float kNoise = 1.0f;  // residual F of a scan that is the model plus noise
+  CHECK(is_confident(r, cfg, kFeatures, pinned, kNoise));
+  CHECK_FALSE(is_confident(r, cfg, kFeatures, pinned, cfg.max_residual_f + 0.5f));  // a patch off the surface
 
   // The same answer with one thing changed.
   auto with = [&](auto change) {
@@ -143,7 +146,7 @@ TEST_CASE("confident needs every gate: fit, score, a group of one, and the scan'
     changed.ranking = &m;
     ExtentFit fit = pinned;
     change(changed, m, fit);
-    return is_confident(changed, cfg, kFeatures, fit);
+    return is_confident(changed, cfg, kFeatures, fit, kNoise);
   };
   CHECK_FALSE(with([](Result&, RankedModel& m, ExtentFit&) { m.has_pose = false; }));
   CHECK_FALSE(with([](Result&, RankedModel& m, ExtentFit&) { m.inliers = 90; }));      // < 25 %
@@ -189,9 +192,10 @@ TEST_CASE("a scan that hides a toy's end is not confident, whichever toy explain
       front_hidden.insert(front_hidden.end(), model.begin() + static_cast<long>(i),
                           model.begin() + static_cast<long>(i) + 3);
   const double t[3] = {-300.0, 80.0, 5.0};
-  auto run = [&](const std::vector<double>& points, float shortfall) {
+  auto run = [&](const std::vector<double>& points, float shortfall, float residual_f = kAnyResidualF) {
     RecognizerConfig cfg;
     cfg.max_extent_shortfall = shortfall;
+    cfg.max_residual_f = residual_f;
     host::AlignedBytes ws(required_workspace_bytes(cfg));
     Recognizer r;
     REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
@@ -207,7 +211,40 @@ TEST_CASE("a scan that hides a toy's end is not confident, whichever toy explain
   CHECK(whole.second);
   // 1.25 m of the hood unseen: the 3.25 m left is explained best by the
   // 3.8 m toy-5, well ahead of toy-0 and with 70 % of the features inliers,
-  // so margin and fit alone would call it confident.
+  // so margin and fit alone would call it confident. The residuals of the
+  // wrong toy are a shape, not noise: that test withholds it too.
   CHECK_FALSE(run(front_hidden, defaults).second);
   CHECK(run(front_hidden, kNeverShort).second);
+  CHECK_FALSE(run(front_hidden, kNeverShort, RecognizerConfig{}.max_residual_f).second);
+}
+
+TEST_CASE("a near twin outside the database is not confident: its residuals are a shape, not noise") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  constexpr uint32_t kModel = 0;     // toy-0: hull 4.5 m long
+  constexpr double kStretch = 1.04;  // the twin: 0.18 m longer, ends 9 cm off once centred
+  constexpr double kNoise = 0.02;    // m, along the rays
+  const double t[3] = {-300.0, 80.0, 5.0};
+  auto run = [&](double stretch, float residual_f) {
+    std::vector<double> model = test::toy_vehicle_points(kModel, 0.05f);
+    for (size_t i = 0; i < model.size(); i += 3) model[i] *= stretch;
+    RecognizerConfig cfg;
+    cfg.max_residual_f = residual_f;
+    host::AlignedBytes ws(required_workspace_bytes(cfg));
+    Recognizer r;
+    REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
+    const std::vector<double> q = test::toy_airborne_query(model, 0.4, t, kNoise, 7);
+    const Result res = r.recognize(q.data(), static_cast<uint32_t>(q.size() / 3));
+    REQUIRE(res.status == Status::kOk);
+    REQUIRE(res.ranking_count > 0);
+    return std::make_pair(res.ranking[0].model, res.confident);
+  };
+  const float defaults = RecognizerConfig{}.max_residual_f;
+  const auto own = run(1.0, defaults);
+  CHECK(own.first == kModel);  // the toy itself, plus noise: confident
+  CHECK(own.second);
+  const auto twin = run(kStretch, kAnyResidualF);
+  CHECK(twin.first == kModel);  // the twin is named as its nearest toy ...
+  CHECK(twin.second);           // ... and every other test would call it confident
+  CHECK_FALSE(run(kStretch, defaults).second);
 }
