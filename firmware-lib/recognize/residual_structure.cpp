@@ -12,6 +12,8 @@
 // median 0.95, 95th percentile 1.4-1.7 at 5 and 10 cm noise) and well above
 // it when a patch sits off the surface. Bounded: one exact nearest-feature
 // search and one sample per query feature, and a heap sort of the samples.
+#include <cmath>
+
 #include "recognize/search_context.hpp"
 #include "util/heap_sort.hpp"
 

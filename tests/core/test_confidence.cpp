@@ -135,8 +135,8 @@ TEST_CASE("confident needs every gate: fit, score, a group of one, and the scan'
   r.ranking_count = 1;
   r.group_size = 1;
   const ExtentFit pinned{0.05f, 0.05f};
-  constexpr float kNoise = 1.0f;  // residual F of a scan that is the model plus noise
-  CHECK(is_confident(r, cfg, kFeatures, pinned, kNoise));
+  constexpr float kNoiseOnlyF = 1.0f;  // residual F of a scan that is the model plus noise
+  CHECK(is_confident(r, cfg, kFeatures, pinned, kNoiseOnlyF));
   CHECK_FALSE(is_confident(r, cfg, kFeatures, pinned, cfg.max_residual_f + 0.5f));  // a patch off the surface
 
   // The same answer with one thing changed.
@@ -146,7 +146,7 @@ TEST_CASE("confident needs every gate: fit, score, a group of one, and the scan'
     changed.ranking = &m;
     ExtentFit fit = pinned;
     change(changed, m, fit);
-    return is_confident(changed, cfg, kFeatures, fit, kNoise);
+    return is_confident(changed, cfg, kFeatures, fit, kNoiseOnlyF);
   };
   CHECK_FALSE(with([](Result&, RankedModel& m, ExtentFit&) { m.has_pose = false; }));
   CHECK_FALSE(with([](Result&, RankedModel& m, ExtentFit&) { m.inliers = 90; }));      // < 25 %
