@@ -229,6 +229,7 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
   result.ranking = b.ranking;
   result.ranking_count = rank_models(*db_, b, fs.origin);
   result.group_size = lookalike_group_size(result, config_, fs.count);
+  order_twins_by_residuals(ctx, b.ranking, result.group_size);
   result.confident = first_is_confident(ctx, result);
   return result;
 }

@@ -10,8 +10,10 @@
 //   F = (sum over cells of n_c mean_c^2 / cells) / (scatter within the cells)
 // about 1 for a right model whatever the noise (right answers of the fleet:
 // median 0.95, 95th percentile 1.4-1.7 at 5 and 10 cm noise) and well above
-// it when a patch sits off the surface. Bounded: one exact nearest-feature
-// search and one sample per query feature, and a heap sort of the samples.
+// it when a patch sits off the surface. It withholds `confident` from such
+// an answer and orders the first two models of a look-alike group, which
+// the likelihood cannot separate. Bounded: one exact nearest-feature search
+// and one sample per query feature, and a heap sort of the samples.
 #include <cmath>
 
 #include "recognize/search_context.hpp"
@@ -92,6 +94,16 @@ float residual_structure(const SearchContext& ctx, uint32_t model, const RigidPo
   const float between_mean = sums.between / static_cast<float>(sums.cells);
   const float within_mean = sums.within / static_cast<float>(sums.samples - sums.cells);
   return between_mean / within_mean;
+}
+
+void order_twins_by_residuals(const SearchContext& ctx, RankedModel* ranking, uint32_t group_size) {
+  if (group_size < 2u || !ranking[0].has_pose || !ranking[1].has_pose) return;
+  const float first = residual_structure(ctx, ranking[0].model, ctx.buf.best[ranking[0].model].pose);
+  const float second = residual_structure(ctx, ranking[1].model, ctx.buf.best[ranking[1].model].pose);
+  if (!(second < first)) return;
+  const RankedModel lead = ranking[0];
+  ranking[0] = ranking[1];
+  ranking[1] = lead;
 }
 
 }  // namespace spinhash

@@ -147,6 +147,12 @@ void index_query_features(SearchContext& ctx);
 // vehicle outside the database); 0 when too few features fall in shared
 // cells to tell (residual_structure.cpp).
 float residual_structure(const SearchContext& ctx, uint32_t model, const RigidPose& pose);
+// Within a look-alike group (group_size >= 2: the first models lie within
+// the margin, which the likelihood cannot separate), the model whose
+// residuals are the scan's noise comes first: swaps ranking[0] and
+// ranking[1] when the second's residual F is the lower. Its score may then
+// be the lower of the two.
+void order_twins_by_residuals(const SearchContext& ctx, RankedModel* ranking, uint32_t group_size);
 void run_sran(SearchContext& ctx);
 void run_sind(SearchContext& ctx);
 

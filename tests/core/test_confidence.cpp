@@ -248,3 +248,32 @@ TEST_CASE("a near twin outside the database is not confident: its residuals are 
   CHECK(twin.second);           // ... and every other test would call it confident
   CHECK_FALSE(run(kStretch, defaults).second);
 }
+
+TEST_CASE("within a look-alike group the model whose residuals are noise comes first") {
+  // toy-0 and a copy 4 % longer (0.18 m): a margin that holds every model
+  // in the group leaves their order to the residuals alone.
+  constexpr double kStretch = 1.04;
+  std::vector<double> longer = test::toy_vehicle_points(0, 0.05f);
+  for (size_t i = 0; i < longer.size(); i += 3) longer[i] *= kStretch;
+  const std::vector<host::ModelCloud> clouds = {{"toy-0", test::toy_vehicle_points(0, 0.05f)},
+                                                {"toy-0-long", longer}};
+  test::ToyDatabase twins;
+  REQUIRE(test::make_database(clouds, &twins));
+  const double t[3] = {-300.0, 80.0, 5.0};
+  auto first = [&](uint32_t scanned) {
+    RecognizerConfig cfg;
+    cfg.min_margin = 1e6f;  // every model within the margin: one group
+    host::AlignedBytes ws(required_workspace_bytes(cfg));
+    Recognizer r;
+    REQUIRE(r.init(&twins.db, cfg, ws.data(), ws.size()) == Status::kOk);
+    const std::vector<double> q = test::toy_airborne_query(clouds[scanned].xyz, 0.4, t, 0.02, 7);
+    const Result res = r.recognize(q.data(), static_cast<uint32_t>(q.size() / 3));
+    REQUIRE(res.status == Status::kOk);
+    REQUIRE(res.ranking_count == 2u);
+    CHECK(res.group_size == 2u);
+    CHECK_FALSE(res.confident);  // a group is never confident
+    return res.ranking[0].model;
+  };
+  CHECK(first(0) == 0u);
+  CHECK(first(1) == 1u);
+}
