@@ -26,7 +26,8 @@ constexpr float kCellSize = 0.5f;          // m: a surface patch that shares one
 constexpr uint32_t kMinCellFeatures = 4u;  // fewer features say nothing of a cell's mean
 constexpr uint32_t kCellBitsPerAxis = 9u;  // 512 cells of 0.5 m: 256 m along each axis
 constexpr uint32_t kMaxCellIndex = (1u << kCellBitsPerAxis) - 1u;
-constexpr uint32_t kFacings = 6u;  // +-x, +-y, +-z of the matched model normal
+constexpr uint32_t kFacings = 6u;    // +-x, +-y, +-z of the matched model normal
+constexpr float kNoEvidence = 0.0f;  // F when too few features share cells to tell
 
 // The matched model feature's cell: its box cell along each axis and the
 // axis its normal faces most, so the two sides of a thin panel stay apart.
@@ -90,7 +91,7 @@ float residual_structure(const SearchContext& ctx, uint32_t model, const RigidPo
       sums.add_cell(samples + start, i - start);
       start = i;
     }
-  if (sums.cells == 0u || sums.samples <= sums.cells || !(sums.within > 0.0f)) return 0.0f;  // no evidence
+  if (sums.cells == 0u || sums.samples <= sums.cells || !(sums.within > 0.0f)) return kNoEvidence;
   const float between_mean = sums.between / static_cast<float>(sums.cells);
   const float within_mean = sums.within / static_cast<float>(sums.samples - sums.cells);
   return between_mean / within_mean;
@@ -100,7 +101,8 @@ void order_twins_by_residuals(const SearchContext& ctx, RankedModel* ranking, ui
   if (group_size < 2u || !ranking[0].has_pose || !ranking[1].has_pose) return;
   const float first = residual_structure(ctx, ranking[0].model, ctx.buf.best[ranking[0].model].pose);
   const float second = residual_structure(ctx, ranking[1].model, ctx.buf.best[ranking[1].model].pose);
-  if (!(second < first)) return;
+  // Without evidence on either side the likelihood's order stands.
+  if (first == kNoEvidence || second == kNoEvidence || !(second < first)) return;
   const RankedModel lead = ranking[0];
   ranking[0] = ranking[1];
   ranking[1] = lead;
