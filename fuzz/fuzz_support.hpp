@@ -61,7 +61,11 @@ inline void check_result(const Result& r, const Database& db, uint32_t count, si
     const RankedModel& m = r.ranking[i];
     require(m.model < db.model_count(), "ranked model out of range");
     require(!std::isnan(m.score), "NaN score");
-    require(i == 0 || !(m.score > r.ranking[i - 1].score), "ranking not sorted");
+    // Sorted by score, except that the first two of a look-alike group are
+    // ordered by their residuals (docs/api.md): either order, above the rest.
+    const bool twins = i == 1 && r.group_size >= 2u;
+    require(i == 0 || twins || !(m.score > r.ranking[i - 1].score), "ranking not sorted");
+    require(i != 2 || !(m.score > r.ranking[0].score), "ranking not sorted below the first two");
     if (!m.has_pose) continue;
     for (float v : m.pose.rotation) require(std::isfinite(v), "non-finite rotation");
     for (double v : m.pose.translation) require(std::isfinite(v), "non-finite translation");
