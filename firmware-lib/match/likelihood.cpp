@@ -147,10 +147,7 @@ LikelihoodParams make_surface_params(const RecognizerConfig& cfg, const Database
 float residual2(const Database& db, uint32_t f, const Eigen::Vector3f& x, float point_to_point2,
                 const LikelihoodParams& lp) {
   if (lp.surface_patch_radius < 0.0f) return point_to_point2;
-  const OrientedPoint m = model_feature_point(db, f);
-  const Eigen::Vector3f e = x - m.p;
-  // Summed left to right, as the golden vectors were recorded (Eigen's dot pairs the last two first).
-  const float along_normal = e[0] * m.n[0] + e[1] * m.n[1] + e[2] * m.n[2];
+  const float along_normal = offset_along_normal(model_feature_point(db, f), x);
   const float tangential2 = point_to_point2 - along_normal * along_normal;
   const float tangential = tangential2 > 0.0f ? std::sqrt(tangential2) : 0.0f;
   const float beyond = tangential > lp.surface_patch_radius ? tangential - lp.surface_patch_radius : 0.0f;

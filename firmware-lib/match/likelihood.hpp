@@ -85,6 +85,15 @@ LikelihoodParams make_likelihood_params(const RecognizerConfig& cfg, const Datab
 // of -6, it lost 2 % of the fleet's right answers).
 LikelihoodParams make_surface_params(const RecognizerConfig& cfg, const Database& db);
 
+// The signed distance of x (model frame) from model feature m's tangent
+// plane, along its normal: > 0 on the side the normal points to. Summed
+// left to right, as the golden vectors were recorded (Eigen's dot pairs the
+// last two first).
+inline float offset_along_normal(const OrientedPoint& m, const Eigen::Vector3f& x) {
+  const Eigen::Vector3f e = x - m.p;
+  return e[0] * m.n[0] + e[1] * m.n[1] + e[2] * m.n[2];
+}
+
 // r^2 of eq. 5 for query feature x (model frame) and model feature f.
 float residual2(const Database& db, uint32_t f, const Eigen::Vector3f& x, float point_to_point2,
                 const LikelihoodParams& lp);

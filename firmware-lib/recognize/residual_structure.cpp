@@ -78,8 +78,7 @@ float residual_structure(const SearchContext& ctx, uint32_t model, const RigidPo
     const NearestFeature near = find_nearest_model_feature(ctx.db, rec, x, nq, lp);
     if (near.feature < 0) continue;
     const OrientedPoint m = ctx.model_point(static_cast<uint32_t>(near.feature));
-    const Eigen::Vector3f e = x - m.p;
-    samples[n++] = ResidualSample{cell_of(m, rec), l, e[0] * m.n[0] + e[1] * m.n[1] + e[2] * m.n[2]};
+    samples[n++] = ResidualSample{cell_of(m, rec), l, offset_along_normal(m, x)};
   }
   // By cell, then by feature: the order of every sum is fully determined.
   heap_sort(samples, n, [](const ResidualSample& a, const ResidualSample& b) {
