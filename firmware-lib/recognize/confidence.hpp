@@ -29,11 +29,16 @@ ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model,
 // without a ranking.
 uint32_t lookalike_group_size(const Result& r, const RecognizerConfig& cfg, uint32_t features);
 
+// The largest residual F (residual_structure()) a confident answer may
+// leave: max_residual_f, 0.8 x that when the candidates spread over many
+// look-alikes (stats.candidates_spread).
+float residual_limit(const Result& r, const RecognizerConfig& cfg);
+
 // The first model explains enough of the query, well enough, stands alone
 // (its look-alike group is itself), is pinned by the scan's extent (`fit`
 // under its pose within max_extent_shortfall / max_extent_overhang) and
 // leaves residuals that are noise, not a shape (`residual_f`, the F of
-// residual_structure(), at most max_residual_f).
+// residual_structure(), at most residual_limit()).
 bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
                   float residual_f);
 

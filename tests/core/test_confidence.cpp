@@ -180,6 +180,28 @@ TEST_CASE("among many look-alikes the runner-up must trail by twice the margin")
   }
 }
 
+TEST_CASE("among many look-alikes the residuals must be closer to noise") {
+  RecognizerConfig cfg;
+  constexpr uint32_t kFeatures = 400;
+  RankedModel first;
+  first.has_pose = true;
+  first.inliers = 300;
+  first.score = -600.0f;
+  Result r;
+  r.ranking = &first;
+  r.ranking_count = 1;
+  r.group_size = 1;
+  const ExtentFit pinned{0.05f, 0.05f};
+  const float weak_shape = 0.9f * cfg.max_residual_f;  // a patch a little off the surface
+  CHECK(is_confident(r, cfg, kFeatures, pinned, weak_shape));
+  r.stats.candidates_spread = true;  // the first is one of many near-identical models
+  CHECK(residual_limit(r, cfg) < weak_shape);
+  CHECK_FALSE(is_confident(r, cfg, kFeatures, pinned, weak_shape));
+  CHECK(is_confident(r, cfg, kFeatures, pinned, 1.0f));  // noise alone stays confident
+  cfg.max_residual_f = 2.0f * weak_shape;                // the limit follows the configured field
+  CHECK(is_confident(r, cfg, kFeatures, pinned, weak_shape));
+}
+
 TEST_CASE("a scan that hides a toy's end is not confident, whichever toy explains it best") {
   test::ToyDatabase toy;
   REQUIRE(test::make_toy_database(&toy));
