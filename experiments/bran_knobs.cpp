@@ -22,6 +22,10 @@ void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs) {
          "BRAN's focused search of the leading models on spread candidates or after extended draws (0: off)")
       ->check(CLI::Range(0u, kMaxFocusModels))
       ->capture_default_str();
+  cmd->add_option("--lookalike-box", knobs->lookalike_box_l1,
+                  "BRAN's look-alike doublets on spread candidates: box L1 bound, m (0: off)")
+      ->check(CLI::Range(0.0f, 100.0f))
+      ->capture_default_str();
   cmd->add_option("--max-bucket-scan", knobs->max_bucket_scan,
                   "LSH entries scanned per query feature (BRAN, SIND)")
       ->check(CLI::Range(1u, 1u << 24))

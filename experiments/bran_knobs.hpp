@@ -1,5 +1,5 @@
 // BRAN's additions to the paper that the experiments switch (--transfer-models,
-// --stop-miss-probability, --min-hypotheses, --focus-models), so one run can compare them
+// --stop-miss-probability, --min-hypotheses, --focus-models, --lookalike-box), so one run can compare them
 // with the paper's BRAN; the LSH scan bound (--max-bucket-scan) that sets
 // the index's cost; the query features kept (--max-features) that set a
 // large vehicle's.
@@ -15,6 +15,7 @@ struct BranKnobs {
   float stop_miss_probability = RecognizerConfig{}.stop_miss_probability;
   uint32_t min_hypotheses = RecognizerConfig{}.min_hypotheses;
   uint32_t focus_models = RecognizerConfig{}.focus_models;
+  float lookalike_box_l1 = RecognizerConfig{}.lookalike_box_l1;
   uint32_t max_bucket_scan = RecognizerConfig{}.max_bucket_scan;
   uint32_t max_features = RecognizerConfig{}.max_features;
   void apply(RecognizerConfig* cfg) const {
@@ -24,6 +25,7 @@ struct BranKnobs {
     cfg->stop_miss_probability = stop_miss_probability;
     cfg->min_hypotheses = min_hypotheses;
     cfg->focus_models = focus_models;
+    cfg->lookalike_box_l1 = lookalike_box_l1;
   }
 };
 

@@ -1,12 +1,14 @@
 // Batch RANSAC (section 9): candidates of every query feature from the joint
 // index, saliency-weighted doublet draws, and for each draw every candidate
 // pair of one model (the exhaustive W_k x W_l option) through the cascade,
-// until the evidence says the leader is found (evidence_stop.cpp) or the work
+// and when the candidates are spread over look-alikes also pairs of two
+// look-alikes (not in the paper), until the evidence says the leader is found (evidence_stop.cpp) or the work
 // budget is spent (max_trials draws, more while min_hypotheses is not met);
 // when the candidates are spread over look-alikes, or the draws had to be
 // extended, the leading models get a focused search of their own.
 #include <cmath>
 
+#include "recognize/box_distance.hpp"
 #include "recognize/search_context.hpp"
 #include "spinhash/limits.hpp"
 
@@ -60,17 +62,44 @@ void gather_candidates(SearchContext& ctx, uint32_t w) {
   ctx.stats.bucket_scan_truncated = ss.truncated;
 }
 
-// Every same-model candidate pair of features (k, l); false once the budget is spent.
+// Look-alike doublets (cfg.lookalike_box_l1): each of feature k's candidates
+// pairs with at most this many of feature l's candidates in look-alikes, the
+// nearest in spin image that pass the cascade (the lists are sorted by L1).
+// Near-identical models hold near-identical features, so every further one
+// would give nearly the same pose again.
+constexpr uint32_t kLookalikePairsPerCandidate = 1;
+// ... and a draw verifies at most this many look-alike poses: among
+// identical copies every candidate has a look-alike partner, and one pose
+// would be verified W times over (spread queries at 1000 procedural models
+// verify 2-3 per draw).
+constexpr uint32_t kLookalikePairsPerDraw = 4;
+
+// Whether candidates of models a and b may form one doublet (verified as a's).
+bool may_pair(const SearchContext& ctx, uint16_t a, uint16_t b, bool lookalikes) {
+  return a == b || (lookalikes && box_distance(ctx.db.model(a), ctx.db.model(b)) <= ctx.cfg.lookalike_box_l1);
+}
+
+// Every same-model candidate pair of features (k, l), and with spread
+// candidates look-alike pairs; false once the budget is spent.
 bool enumerate_pairs(SearchContext& ctx, uint32_t k, uint32_t l, const DoubletShape& shape,
                      const HypothesisCaps& caps) {
   const Candidate* ck = ctx.candidates_of(k);
   const Candidate* cl = ctx.candidates_of(l);
   const uint16_t* models = ctx.db.feature_models();
+  const bool lookalikes = ctx.stats.candidates_spread && ctx.cfg.lookalike_box_l1 > 0.0f;
+  uint32_t draw_pairs = 0;  // look-alike pairs of this draw through the cascade
   for (uint32_t u = 0; u < ctx.buf.candidate_count[k]; ++u) {
     const uint16_t mu = models[ck[u].feature];
+    uint32_t pairs = 0;  // ... of candidate u
     for (uint32_t v = 0; v < ctx.buf.candidate_count[l]; ++v) {
-      if (models[cl[v].feature] != mu) continue;
-      if (!evaluate_pair(ctx, mu, k, l, shape, ck[u].feature, cl[v].feature, caps)) return false;
+      const uint16_t mv = models[cl[v].feature];
+      const bool lookalike = mv != mu;
+      if (lookalike && (pairs >= kLookalikePairsPerCandidate || draw_pairs >= kLookalikePairsPerDraw))
+        continue;
+      if (!may_pair(ctx, mu, mv, lookalikes)) continue;
+      const PairOutcome o = evaluate_pair(ctx, mu, k, l, shape, ck[u].feature, cl[v].feature, caps);
+      if (o == PairOutcome::kBudgetSpent) return false;
+      if (lookalike && o == PairOutcome::kPassed) ++pairs, ++draw_pairs;
     }
   }
   return true;

@@ -81,32 +81,34 @@ bool draw_for_model(SearchContext& ctx, uint32_t model, uint32_t trials, const H
     const Candidate* cl = ctx.candidates_of(l);
     for (uint32_t u = 0; u < ctx.buf.candidate_count[k]; ++u)
       for (uint32_t v = 0; v < ctx.buf.candidate_count[l]; ++v)
-        if (!evaluate_pair(ctx, model, k, l, shape, ck[u].feature, cl[v].feature, caps)) return false;
+        if (evaluate_pair(ctx, model, k, l, shape, ck[u].feature, cl[v].feature, caps) ==
+            PairOutcome::kBudgetSpent)
+          return false;
   }
   return true;
 }
 
-bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l, const DoubletShape& shape,
-                   uint32_t fu, uint32_t fv, const HypothesisCaps& caps) {
+PairOutcome evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l,
+                          const DoubletShape& shape, uint32_t fu, uint32_t fv, const HypothesisCaps& caps) {
   RecognitionStats& st = ctx.stats;
   if (st.pair_checks >= ctx.cfg.max_pair_checks) {
     st.budget_exhausted = true;
-    return false;
+    return PairOutcome::kBudgetSpent;
   }
   ++st.pair_checks;
-  if (fu == fv) return true;
+  if (fu == fv) return PairOutcome::kRejected;
   OrientedPoint mu = ctx.model_point(fu), mv = ctx.model_point(fv);
-  if (check_doublet(shape, mu, mv, ctx.tolerance) != CascadeStage::kPass) return true;
+  if (check_doublet(shape, mu, mv, ctx.tolerance) != CascadeStage::kPass) return PairOutcome::kRejected;
   ++st.doublets_passed;
   RigidPose pose;
-  if (!pose_from_doublet(ctx.query_point(k), ctx.query_point(l), mu, mv, &pose)) return true;
+  if (!pose_from_doublet(ctx.query_point(k), ctx.query_point(l), mu, mv, &pose)) return PairOutcome::kPassed;
   ++st.hypotheses;
   consider_pose(ctx, model, pose);
   if (st.hypotheses >= caps.total || ctx.buf.best[model].hypotheses >= caps.per_model) {
     st.budget_exhausted = true;
-    return false;
+    return PairOutcome::kBudgetSpent;
   }
-  return true;
+  return PairOutcome::kPassed;
 }
 
 }  // namespace spinhash

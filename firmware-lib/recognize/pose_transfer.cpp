@@ -10,8 +10,7 @@
 // preemptive checks of verify_pose), which most of them are. Bounded:
 // kTransferPoses x kMaxTransferModels extra verifications, after the
 // hypothesis budget (counted in RecognitionStats::transferred).
-#include <cmath>
-
+#include "recognize/box_distance.hpp"
 #include "recognize/search_context.hpp"
 #include "spinhash/limits.hpp"
 #include "util/top_n.hpp"
@@ -20,15 +19,6 @@ namespace spinhash {
 namespace {
 
 constexpr uint32_t kTransferPoses = 4;  // leading models whose poses are lent
-
-// L1 distance between two models' bounding boxes, each in its own frame: a
-// pose transfers between models whose boxes nearly coincide.
-float box_distance(const blob::ModelRecord& a, const blob::ModelRecord& b) {
-  float d = 0.0f;
-  for (int k = 0; k < 3; ++k)
-    d += std::fabs(a.bbox_min[k] - b.bbox_min[k]) + std::fabs(a.bbox_max[k] - b.bbox_max[k]);
-  return d;
-}
 
 }  // namespace
 

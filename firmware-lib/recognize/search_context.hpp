@@ -105,10 +105,14 @@ inline bool scores_higher(const SearchContext& ctx, uint32_t a, uint32_t b) {
 void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose,
                    float source_score = kNoScoreToBeat);
 
+// What became of a candidate pair: stopped by the cascade, through it (and
+// posed and verified when the pose is defined), or not tried: the budget is spent.
+enum class PairOutcome { kRejected, kPassed, kBudgetSpent };
+
 // Cascade, pose, verification and gamma_i update for query features (k, l)
-// matched to model features (fu, fv) of `model`. false once the budget is spent.
-bool evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l, const DoubletShape& shape,
-                   uint32_t fu, uint32_t fv, const HypothesisCaps& caps);
+// matched to model features (fu, fv), verified as `model`'s.
+PairOutcome evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l,
+                          const DoubletShape& shape, uint32_t fu, uint32_t fv, const HypothesisCaps& caps);
 
 // Query feature l's candidates: `model`'s own top_w_sran nearest features
 // (exhaustive scan; SRAN, the focused search), counted in the stats.

@@ -94,6 +94,17 @@ struct RecognizerConfig {
   // before the final ranking. 0 turns it off (the paper's BRAN).
   uint32_t focus_models = 16;
 
+  // Look-alike doublets (not in the paper; BRAN): when the candidates are
+  // spread over many look-alikes, two query features rarely hold candidates
+  // of one model, so the true model gets few doublets. A doublet may then
+  // also pair a candidate of one model with one of a look-alike whose
+  // bounding box (each in its own frame) differs by at most this L1 sum over
+  // the box's 6 coordinates, in metres: their surfaces nearly coincide, so
+  // the pose fits both, and it is verified as the first candidate's model.
+  // Each first candidate pairs with its one nearest look-alike candidate
+  // that passes the cascade. 0 turns it off (the paper's BRAN).
+  float lookalike_box_l1 = 0.6f;
+
   // Least-squares refinement of the best few models' poses over their
   // inliers after the hypothesis loop (not in the paper; BRAN and SRAN).
   bool refine_poses = true;

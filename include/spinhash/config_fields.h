@@ -65,6 +65,9 @@
     "look-alikes each leading pose is also tried on (BRAN; 0: off, the paper's BRAN)")                       \
   X(U32, focus_models, 0u, kMaxFocusModels, "--focus-models",                                                \
     "BRAN: leading models given their own short RANSAC when the candidates are spread (0: off)")             \
+  X(F32, lookalike_box_l1, 0.0f, 100.0f, "--lookalike-box",                                                  \
+    "BRAN: on spread candidates a doublet may pair look-alikes whose boxes differ by at most this, m L1 "    \
+    "(0: off)")                                                                                              \
   X(BOOL, refine_poses, 0, 1, "!--no-refine", "skip the least-squares pose refinement")                      \
   X(F32, min_inlier_fraction, 0.0f, 1.0f, "--min-inlier-fraction",                                           \
     "share of the query explained for a confident answer")                                                   \

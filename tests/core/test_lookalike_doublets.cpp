@@ -1,0 +1,76 @@
+// BRAN's look-alike doublets (recognize/bran.cpp): when the candidates are
+// spread over many look-alikes, a doublet may pair candidates of two models
+// whose boxes nearly coincide; bounded per draw; models whose boxes lie
+// apart never pair; the paper's BRAN (lookalike_box_l1 = 0) never does.
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "blob/aligned_bytes.hpp"
+#include "spinhash/recognizer.hpp"
+#include "support/toy_database.hpp"
+
+using namespace spinhash;
+
+namespace {
+
+constexpr uint32_t kCopied = 2;        // the toy copied
+constexpr uint32_t kCopies = 40;       // a feature's W = 50 candidates name most of them
+constexpr uint32_t kTrials = 200;      // draws, all of them made (no stop, no extension)
+constexpr uint32_t kPairsPerDraw = 4;  // kLookalikePairsPerDraw (bran.cpp)
+constexpr double kApart = 0.5;         // m along x between shifted copies: box L1 1 m or more
+constexpr float kLookalikeBox = 0.6f;  // the default lookalike_box_l1
+
+// kCopies copies of one toy, each moved `shift` metres further along x in
+// its own frame (0: identical copies, boxes that coincide).
+struct Copies {
+  test::ToyDatabase toy;
+  host::AlignedBytes ws;
+  explicit Copies(double shift) {
+    std::vector<host::ModelCloud> clouds;
+    for (uint32_t i = 0; i < kCopies; ++i) {
+      std::vector<double> points = test::toy_vehicle_points(kCopied, 0.05f);
+      for (size_t p = 0; p < points.size(); p += 3) points[p] += shift * i;
+      clouds.push_back(host::ModelCloud{"copy-" + std::to_string(i), points});
+    }
+    REQUIRE(test::make_database(clouds, &toy));
+  }
+  Result recognize(float lookalike_box_l1) {
+    RecognizerConfig cfg;
+    cfg.max_trials = kTrials;
+    cfg.min_hypotheses = 0;            // no extension
+    cfg.stop_miss_probability = 0.0f;  // no stop on evidence
+    cfg.focus_models = 0;              // only the draws make poses
+    cfg.transfer_models = 0;
+    cfg.lookalike_box_l1 = lookalike_box_l1;
+    ws = host::AlignedBytes(required_workspace_bytes(cfg));
+    Recognizer r;
+    REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
+    const double t[3] = {-30.0, 55.0, 2.0};
+    std::vector<double> q = test::toy_query(test::toy_vehicle_points(kCopied, 0.05f), -0.4, t, 0.03, 9);
+    Result res = r.recognize(q.data(), static_cast<uint32_t>(q.size() / 3));
+    REQUIRE(res.status == Status::kOk);
+    REQUIRE(res.stats.candidates_spread);
+    REQUIRE_FALSE(res.stats.budget_exhausted);
+    REQUIRE(res.stats.trials == kTrials);
+    return res;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("look-alike doublets: identical copies pair up, a few poses per draw; shifted copies never") {
+  Copies identical(0.0);
+  const Result off = identical.recognize(0.0f), on = identical.recognize(kLookalikeBox);
+  CHECK(on.stats.hypotheses > off.stats.hypotheses);
+  CHECK(on.stats.hypotheses <= off.stats.hypotheses + kPairsPerDraw * kTrials);
+  CHECK(on.ranking_count >= off.ranking_count);  // more copies get a pose
+  CHECK(on.ranking[0].score >= off.ranking[0].score - 1.0f);
+
+  Copies shifted(kApart);  // the same features, boxes 1 m or more apart: a paired pose would be off
+  const Result apart_off = shifted.recognize(0.0f), apart_on = shifted.recognize(kLookalikeBox);
+  CHECK(apart_on.stats.hypotheses == apart_off.stats.hypotheses);
+  CHECK(apart_on.stats.doublets_passed == apart_off.stats.doublets_passed);
+  CHECK(apart_on.ranking[0].score == apart_off.ranking[0].score);
+}
