@@ -27,6 +27,7 @@ struct Cell {  // one (size, mode)
   std::vector<double> ms, hyp;
   std::vector<uint32_t> ranks;
   uint32_t budget = 0;
+  uint32_t confident = 0, confident_wrong = 0;  // `confident` answers, and those not ranked right first
   double top(uint32_t k) const {
     if (ranks.empty()) return 0.0;
     return static_cast<double>(
@@ -43,6 +44,8 @@ Cell cell(const ScalingRun& run, uint32_t size, uint32_t mode, uint32_t max_quer
       c.hyp.push_back(r.outcome.hypotheses);
       c.ranks.push_back(r.outcome.rank);
       c.budget += r.outcome.budget_exhausted ? 1u : 0u;
+      c.confident += r.outcome.confident ? 1u : 0u;
+      c.confident_wrong += r.outcome.confident && r.outcome.rank != 1u ? 1u : 0u;
     }
   return c;
 }
@@ -64,12 +67,13 @@ uint32_t reference_size(const ScalingRun& run) {  // the size nearest the paper'
 
 bool write_csvs(const ScalingRun& run, std::string* error) {
   CsvTable per_query({"models", "mode", "query", "model", "status", "rank", "ms", "hypotheses", "features",
-                      "budget_exhausted"});
+                      "budget_exhausted", "confident", "group_size"});
   for (const ScalingRecord& r : run.records)
     per_query.add({std::to_string(run.builds[r.size].models), pipeline::mode_name(run.modes[r.mode]),
                    std::to_string(r.query), std::to_string(r.model), status_name(r.outcome.status),
                    std::to_string(r.outcome.rank), num(r.outcome.ms), std::to_string(r.outcome.hypotheses),
-                   std::to_string(r.outcome.features), r.outcome.budget_exhausted ? "1" : "0"});
+                   std::to_string(r.outcome.features), r.outcome.budget_exhausted ? "1" : "0",
+                   r.outcome.confident ? "1" : "0", std::to_string(r.outcome.group_size)});
   CsvTable longform({"models", "features", "mode", "queries", "median_ms", "mean_ms", "median_hypotheses",
                      "mean_hypotheses", "top1", "top5", "budget_exhausted"});
   std::vector<std::string> head{"models", "features"};
@@ -225,8 +229,8 @@ std::string summary(const ScalingRun& run, const std::vector<std::string>& plots
     << " s\n- Wall times on a shared 2-core machine: noisy; instruction counts from "
        "scripts/instructions-per-query.sh are the stable measure.\n\n"
     << "## Time and hypotheses per query\n\n| models | features | mode | queries | median ms | mean ms | "
-       "median hypotheses | mean hypotheses | budget cut | top-1 | top-5 "
-       "|\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+       "median hypotheses | mean hypotheses | budget cut | top-1 | top-5 | confident (wrong) "
+       "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (uint32_t i = 0; i < run.builds.size(); ++i)
     for (uint32_t m = 0; m < run.modes.size(); ++m) {
       Cell c = cell(run, i, m);
@@ -234,7 +238,8 @@ std::string summary(const ScalingRun& run, const std::vector<std::string>& plots
         << mode_title(run.modes[m]) << " | " << c.ms.size() << " | " << num(median_of(c.ms), 4) << " | "
         << num(mean_of(c.ms), 4) << " | " << num(median_of(c.hyp), 4) << " | " << num(mean_of(c.hyp), 4)
         << " | " << num(100.0 * c.budget / std::max<size_t>(c.ms.size(), 1), 3) << "% | "
-        << num(100.0 * c.top(1), 3) << "% | " << num(100.0 * c.top(5), 3) << "% |\n";
+        << num(100.0 * c.top(1), 3) << "% | " << num(100.0 * c.top(5), 3) << "% | " << c.confident << " ("
+        << c.confident_wrong << ") |\n";
     }
   s << "\n## Build\n\n| models | features | build s | blob bytes | B/feature | largest LSH bucket |\n"
     << "|---|---|---|---|---|---|\n";
