@@ -13,9 +13,14 @@
 // the fleet's 827 right answers did), keeping the refined pose with the
 // higher likelihood; BRAN then charges each for the upward surface the scan does not
 // show (visible_surface.cpp); every other model's subset score is
-// extrapolated to all features, below the rescored ones. Bounded:
-// kRefinedModels models x (2 + 2 kRefineIterations) full verifications.
+// extrapolated to all features, below the rescored ones. When the
+// candidates were spread over look-alikes, the first model's refined pose
+// is lent to its nearest look-alikes, which are refined and scored alike
+// (lend_final_pose). Bounded: kRefinedModels models x (2 + 2
+// kRefineIterations) full verifications, and kFinalLendRounds x
+// kFinalLookalikes x (1 + kRefineIterations) more on spread candidates.
 #include "match/refine_pose.hpp"
+#include "recognize/box_distance.hpp"
 #include "recognize/search_context.hpp"
 #include "util/top_n.hpp"
 
@@ -34,6 +39,15 @@ constexpr float kBelowFinalised = 1.0f;  // log units: a model not rescored rank
 // below the pose as found (a near-symmetric vehicle); otherwise the
 // vehicle's two ends differ plainly and the turn is not worth a refinement.
 constexpr float kTurnScreenSlack = 0.3f;
+// Look-alikes, by bounding box, that the first model's refined pose is lent
+// to at the end when the candidates were spread (capped by transfer_models).
+// Among 143 near-identical members of a family the draws score a few dozen;
+// the scanned model was then often a near neighbour of the wrong first one,
+// whose pose fits it within centimetres, but never refined.
+constexpr uint32_t kFinalLookalikes = 16;
+// A lent pose may put one of those look-alikes first: its own look-alikes
+// then get the same chance, once.
+constexpr uint32_t kFinalLendRounds = 2;
 
 // Indices of the (up to) kRefinedModels best-scoring models, best first.
 uint32_t leading_models(const SearchContext& ctx, uint32_t* out) {
@@ -105,6 +119,55 @@ void refine_both_ways(SearchContext& ctx, uint32_t model, const QueryFeatures& a
   if (!(best.score > refined.score)) best = refined;
 }
 
+// The model with the highest final score; false when none has one.
+bool final_first(const SearchContext& ctx, uint32_t* first) {
+  bool found = false;
+  for (uint32_t m = 0; m < ctx.db.model_count(); ++m)
+    if (ctx.buf.best[m].final_score && (!found || scores_higher(ctx, m, *first))) *first = m, found = true;
+  return found;
+}
+
+// Lends `source`'s final pose to its nearest look-alikes not yet finalised,
+// rescoring and refining each there as the leading models were.
+void lend_final_pose(SearchContext& ctx, uint32_t source, const QueryFeatures& all,
+                     const LikelihoodParams& exact, bool refine) {
+  const uint32_t wanted =
+      ctx.cfg.transfer_models < kFinalLookalikes ? ctx.cfg.transfer_models : kFinalLookalikes;
+  const blob::ModelRecord& src = ctx.db.model(source);
+  auto nearer = [&](uint32_t a, uint32_t b) {
+    const float da = box_distance(src, ctx.db.model(a)), db = box_distance(src, ctx.db.model(b));
+    return da < db || (da == db && a < b);
+  };
+  uint32_t targets[kFinalLookalikes];
+  const uint32_t n = top_n(
+      ctx.db.model_count(), wanted, targets, [&](uint32_t m) { return !ctx.buf.best[m].final_score; },
+      nearer);
+  for (uint32_t t = 0; t < n; ++t) {
+    ModelBest& b = ctx.buf.best[targets[t]];
+    b.pose = ctx.buf.best[source].pose;
+    b.has_score = true;
+    ++b.hypotheses;
+    ++ctx.stats.transferred;
+    rescore(ctx, targets[t], all, exact);
+    if (refine) refine_model(ctx, targets[t], all, exact, true);
+    b.score += upward_surface_log_likelihood(ctx, targets[t], b.pose);
+  }
+}
+
+// Candidates spread over look-alikes (BRAN): the first model's pose lent to
+// its nearest look-alikes, and again from a look-alike that comes first.
+void lend_to_lookalikes(SearchContext& ctx, const QueryFeatures& all, const LikelihoodParams& exact,
+                        bool refine) {
+  if (!ctx.stats.candidates_spread) return;
+  uint32_t lent_from = ctx.db.model_count();  // none yet
+  for (uint32_t round = 0; round < kFinalLendRounds; ++round) {
+    uint32_t first = 0;
+    if (!final_first(ctx, &first) || first == lent_from) return;
+    lend_final_pose(ctx, first, all, exact, refine);
+    lent_from = first;
+  }
+}
+
 }  // namespace
 
 void finalise_scores(SearchContext& ctx, bool refine) {
@@ -127,6 +190,7 @@ void finalise_scores(SearchContext& ctx, bool refine) {
     if (ctx.cfg.mode == Mode::kBran) b.score += upward_surface_log_likelihood(ctx, models[i], b.pose);
     lowest_final = i == 0 || b.score < lowest_final ? b.score : lowest_final;
   }
+  lend_to_lookalikes(ctx, all, exact, refine);
   // Subset scores of the others, scaled to all features and kept below the
   // finalised ones (which alone were checked for their visible surface).
   const float scale = static_cast<float>(all.count) / static_cast<float>(ctx.query.verify_count);

@@ -1,7 +1,10 @@
-// BRAN's look-alike doublets (recognize/bran.cpp): when the candidates are
-// spread over many look-alikes, a doublet may pair candidates of two models
-// whose boxes nearly coincide; bounded per draw; models whose boxes lie
-// apart never pair; the paper's BRAN (lookalike_box_l1 = 0) never does.
+// What BRAN does when the candidates are spread over many look-alikes:
+// - look-alike doublets (recognize/bran.cpp): a doublet may pair candidates
+//   of two models whose boxes nearly coincide; bounded per draw; models
+//   whose boxes lie apart never pair; the paper's BRAN
+//   (lookalike_box_l1 = 0) never does;
+// - the first model's refined pose lent to its nearest look-alikes at the
+//   end (recognize/refinement.cpp), which then score as it does.
 #include <doctest/doctest.h>
 
 #include <string>
@@ -36,13 +39,13 @@ struct Copies {
     }
     REQUIRE(test::make_database(clouds, &toy));
   }
-  Result recognize(float lookalike_box_l1) {
+  Result recognize(float lookalike_box_l1, uint32_t transfer_models = 0) {
     RecognizerConfig cfg;
     cfg.max_trials = kTrials;
     cfg.min_hypotheses = 0;            // no extension
     cfg.stop_miss_probability = 0.0f;  // no stop on evidence
     cfg.focus_models = 0;              // only the draws make poses
-    cfg.transfer_models = 0;
+    cfg.transfer_models = transfer_models;
     cfg.lookalike_box_l1 = lookalike_box_l1;
     ws = host::AlignedBytes(required_workspace_bytes(cfg));
     Recognizer r;
@@ -73,4 +76,22 @@ TEST_CASE("look-alike doublets: identical copies pair up, a few poses per draw; 
   CHECK(apart_on.stats.hypotheses == apart_off.stats.hypotheses);
   CHECK(apart_on.stats.doublets_passed == apart_off.stats.doublets_passed);
   CHECK(apart_on.ranking[0].score == apart_off.ranking[0].score);
+}
+
+TEST_CASE("on spread candidates the first model's final pose is lent to its nearest look-alikes") {
+  constexpr uint32_t kLent = 16;  // kFinalLookalikes (refinement.cpp)
+  Copies identical(0.0);
+  // Copies scoring exactly as the first: each lent copy is refined from the
+  // first's refined pose, on the same geometry.
+  auto ties = [](const Result& r) {
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < r.ranking_count; ++i) n += r.ranking[i].score == r.ranking[0].score ? 1u : 0u;
+    return n;
+  };
+  const Result lent = identical.recognize(kLookalikeBox, RecognizerConfig{}.transfer_models);
+  const Result kept = identical.recognize(kLookalikeBox, 0);  // transfer_models = 0: no pose is lent
+  CHECK(ties(lent) >= 1u + kLent);
+  CHECK(ties(kept) < 1u + kLent);
+  CHECK(lent.group_size >= 1u + kLent);  // they are one look-alike group, and not confident
+  CHECK_FALSE(lent.confident);
 }
