@@ -30,19 +30,19 @@ struct RankedModel {
 
 struct RecognitionStats {
   ExtractStats extract;
-  uint32_t features = 0;               // s: query features used
-  uint32_t salient_features = 0;       // features with candidates that sampling may draw
-  uint64_t candidates = 0;             // candidate model features kept (sum of W_l)
-  uint64_t bucket_entries = 0;         // LSH entries scanned
-  uint32_t trials = 0;                 // doublet draws
-  uint64_t pair_checks = 0;            // candidate pairs put through the cascade
-  uint64_t doublets_passed = 0;        // pairs that passed the cascade
-  uint32_t hypotheses = 0;             // poses verified from doublets (bounded by max_hypotheses)
-  uint32_t transferred = 0;            // look-alike pose transfers verified (BRAN, <= 4 x transfer_models)
-  uint32_t refinements = 0;            // least-squares pose refinements verified
-  bool budget_exhausted = false;       // the work budget cut recognition short
-  bool stopped_on_evidence = false;    // BRAN stopped before the budget (stop_miss_probability)
-  bool candidates_spread = false;      // BRAN: the candidates named many look-alikes (focus_models)
+  uint32_t features = 0;             // s: query features used
+  uint32_t salient_features = 0;     // features with candidates that sampling may draw
+  uint64_t candidates = 0;           // candidate model features kept (sum of W_l)
+  uint64_t bucket_entries = 0;       // LSH entries scanned
+  uint32_t trials = 0;               // doublet draws
+  uint64_t pair_checks = 0;          // candidate pairs put through the cascade
+  uint64_t doublets_passed = 0;      // pairs that passed the cascade
+  uint32_t hypotheses = 0;           // poses verified from doublets (bounded by max_hypotheses)
+  uint32_t transferred = 0;          // look-alike pose transfers verified (BRAN, <= 4 x transfer_models + 32)
+  uint32_t refinements = 0;          // least-squares pose refinements verified
+  bool budget_exhausted = false;     // the work budget cut recognition short
+  bool stopped_on_evidence = false;  // BRAN stopped before the budget (stop_miss_probability)
+  bool candidates_spread = false;    // BRAN: the candidates named many look-alikes (focus_models)
   bool bucket_scan_truncated = false;  // some LSH lookups hit max_bucket_scan
   size_t workspace_used = 0;
 };
