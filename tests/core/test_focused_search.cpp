@@ -4,41 +4,26 @@
 // leave it out (test_pose_transfer.cpp: the trigger by extended draws).
 #include <doctest/doctest.h>
 
-#include <string>
-#include <vector>
-
 #include "blob/aligned_bytes.hpp"
 #include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"
-#include "support/toy_database.hpp"
+#include "support/toy_copies.hpp"
 
 using namespace spinhash;
 
 namespace {
 
-constexpr uint32_t kCopied = 2;   // the toy copied
 constexpr uint32_t kCopies = 40;  // identical copies: a feature's W = 50 candidates name most of them
 
 struct Copies {
   test::ToyDatabase toy;
   host::AlignedBytes ws;
-  explicit Copies(uint32_t copies) {
-    std::vector<host::ModelCloud> clouds;
-    for (uint32_t i = 0; i < copies; ++i)
-      clouds.push_back(
-          host::ModelCloud{"copy-" + std::to_string(i), test::toy_vehicle_points(kCopied, 0.05f)});
-    REQUIRE(test::make_database(clouds, &toy));
-  }
+  explicit Copies(uint32_t copies) { REQUIRE(test::make_toy_copies(copies, 0.0, &toy)); }
   RecognitionStats stats(uint32_t focus_models) {
     RecognizerConfig cfg;
     cfg.min_hypotheses = 0;  // the draws are never extended: only the spread can start the search
     cfg.focus_models = focus_models;
-    ws = host::AlignedBytes(required_workspace_bytes(cfg));
-    Recognizer r;
-    REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
-    const double t[3] = {-30.0, 55.0, 2.0};
-    std::vector<double> q = test::toy_query(test::toy_vehicle_points(kCopied, 0.05f), -0.4, t, 0.03, 9);
-    Result res = r.recognize(q.data(), static_cast<uint32_t>(q.size() / 3));
+    Result res = test::recognize_copied_toy(toy, cfg, &ws);
     REQUIRE(res.status == Status::kOk);
     REQUIRE_FALSE(res.stats.budget_exhausted);
     return res.stats;

@@ -7,38 +7,24 @@
 //   end (recognize/refinement.cpp), which then score as it does.
 #include <doctest/doctest.h>
 
-#include <string>
-#include <vector>
-
 #include "blob/aligned_bytes.hpp"
 #include "spinhash/recognizer.hpp"
-#include "support/toy_database.hpp"
+#include "support/toy_copies.hpp"
 
 using namespace spinhash;
 
 namespace {
 
-constexpr uint32_t kCopied = 2;        // the toy copied
 constexpr uint32_t kCopies = 40;       // a feature's W = 50 candidates name most of them
 constexpr uint32_t kTrials = 200;      // draws, all of them made (no stop, no extension)
 constexpr uint32_t kPairsPerDraw = 4;  // kLookalikePairsPerDraw (bran.cpp)
 constexpr double kApart = 0.5;         // m along x between shifted copies: box L1 1 m or more
-constexpr float kLookalikeBox = 0.6f;  // the default lookalike_box_l1
+const float kLookalikeBox = RecognizerConfig{}.lookalike_box_l1;  // the default
 
-// kCopies copies of one toy, each moved `shift` metres further along x in
-// its own frame (0: identical copies, boxes that coincide).
 struct Copies {
   test::ToyDatabase toy;
   host::AlignedBytes ws;
-  explicit Copies(double shift) {
-    std::vector<host::ModelCloud> clouds;
-    for (uint32_t i = 0; i < kCopies; ++i) {
-      std::vector<double> points = test::toy_vehicle_points(kCopied, 0.05f);
-      for (size_t p = 0; p < points.size(); p += 3) points[p] += shift * i;
-      clouds.push_back(host::ModelCloud{"copy-" + std::to_string(i), points});
-    }
-    REQUIRE(test::make_database(clouds, &toy));
-  }
+  explicit Copies(double shift) { REQUIRE(test::make_toy_copies(kCopies, shift, &toy)); }
   Result recognize(float lookalike_box_l1, uint32_t transfer_models = 0) {
     RecognizerConfig cfg;
     cfg.max_trials = kTrials;
@@ -47,12 +33,7 @@ struct Copies {
     cfg.focus_models = 0;              // only the draws make poses
     cfg.transfer_models = transfer_models;
     cfg.lookalike_box_l1 = lookalike_box_l1;
-    ws = host::AlignedBytes(required_workspace_bytes(cfg));
-    Recognizer r;
-    REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
-    const double t[3] = {-30.0, 55.0, 2.0};
-    std::vector<double> q = test::toy_query(test::toy_vehicle_points(kCopied, 0.05f), -0.4, t, 0.03, 9);
-    Result res = r.recognize(q.data(), static_cast<uint32_t>(q.size() / 3));
+    Result res = test::recognize_copied_toy(toy, cfg, &ws);
     REQUIRE(res.status == Status::kOk);
     REQUIRE(res.stats.candidates_spread);
     REQUIRE_FALSE(res.stats.budget_exhausted);
