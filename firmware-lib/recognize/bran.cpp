@@ -74,9 +74,12 @@ constexpr uint32_t kLookalikePairsPerCandidate = 1;
 // verify 2-3 per draw).
 constexpr uint32_t kLookalikePairsPerDraw = 4;
 
-// Whether candidates of models a and b may form one doublet (verified as a's).
-bool may_pair(const SearchContext& ctx, uint16_t a, uint16_t b, bool lookalikes) {
-  return a == b || (lookalikes && box_distance(ctx.db.model(a), ctx.db.model(b)) <= ctx.cfg.lookalike_box_l1);
+// Whether candidates of look-alikes a != b may still form a doublet
+// (verified as a's), `pairs` and `draw_pairs` look-alike pairs in.
+bool lookalike_pair_allowed(const SearchContext& ctx, uint16_t a, uint16_t b, uint32_t pairs,
+                            uint32_t draw_pairs) {
+  return pairs < kLookalikePairsPerCandidate && draw_pairs < kLookalikePairsPerDraw &&
+         box_distance(ctx.db.model(a), ctx.db.model(b)) <= ctx.cfg.lookalike_box_l1;
 }
 
 // Every same-model candidate pair of features (k, l), and with spread
@@ -94,9 +97,8 @@ bool enumerate_pairs(SearchContext& ctx, uint32_t k, uint32_t l, const DoubletSh
     for (uint32_t v = 0; v < ctx.buf.candidate_count[l]; ++v) {
       const uint16_t mv = models[cl[v].feature];
       const bool lookalike = mv != mu;
-      if (lookalike && (pairs >= kLookalikePairsPerCandidate || draw_pairs >= kLookalikePairsPerDraw))
-        continue;
-      if (!may_pair(ctx, mu, mv, lookalikes)) continue;
+      // Without spread candidates the loop is the paper's: same-model pairs only.
+      if (lookalike && (!lookalikes || !lookalike_pair_allowed(ctx, mu, mv, pairs, draw_pairs))) continue;
       const PairOutcome o = evaluate_pair(ctx, mu, k, l, shape, ck[u].feature, cl[v].feature, caps);
       if (o == PairOutcome::kBudgetSpent) return false;
       if (lookalike && o == PairOutcome::kPassed) ++pairs, ++draw_pairs;
