@@ -128,11 +128,7 @@ bool final_first(const SearchContext& ctx, uint32_t* first) {
 }
 
 // Lends `source`'s final pose to its nearest look-alikes not yet finalised,
-// rescoring and refining each there as the leading models were. A
-// look-alike is first screened on the hypothesis loop's features (its
-// likelihood and subset, O(1) per feature): one that scores more than
-// kRefineWindow per feature below `source` at the pose is a different
-// shape, not a few centimetres off, and is left as it was.
+// rescoring and refining each there as the leading models were.
 void lend_final_pose(SearchContext& ctx, uint32_t source, const QueryFeatures& all,
                      const LikelihoodParams& exact, bool refine) {
   const uint32_t wanted =
@@ -146,20 +142,12 @@ void lend_final_pose(SearchContext& ctx, uint32_t source, const QueryFeatures& a
   const uint32_t n = top_n(
       ctx.db.model_count(), wanted, targets, [&](uint32_t m) { return !ctx.buf.best[m].final_score; },
       nearer);
-  const RigidPose pose = ctx.buf.best[source].pose;
-  const float reference =
-      verify_pose(ctx.db, source, pose, ctx.query, ctx.likelihood, kNoScoreToBeat, kNoScoreToBeat)
-          .log_likelihood;
-  const float screen_floor = reference - kRefineWindow * static_cast<float>(ctx.query.verify_count);
   for (uint32_t t = 0; t < n; ++t) {
-    ++ctx.stats.transferred;
-    const Verification screen =
-        verify_pose(ctx.db, targets[t], pose, ctx.query, ctx.likelihood, screen_floor, reference);
-    if (!screen.complete || screen.log_likelihood < screen_floor) continue;
     ModelBest& b = ctx.buf.best[targets[t]];
-    b.pose = pose;
+    b.pose = ctx.buf.best[source].pose;
     b.has_score = true;
     ++b.hypotheses;
+    ++ctx.stats.transferred;
     rescore(ctx, targets[t], all, exact);
     if (refine) refine_model(ctx, targets[t], all, exact, true);
     b.score += upward_surface_log_likelihood(ctx, targets[t], b.pose);
