@@ -2,10 +2,11 @@
 // index, saliency-weighted doublet draws, and for each draw every candidate
 // pair of one model (the exhaustive W_k x W_l option) through the cascade,
 // and when the candidates are spread over look-alikes also pairs of two
-// look-alikes (not in the paper), until the evidence says the leader is found (evidence_stop.cpp) or the work
-// budget is spent (max_trials draws, more while min_hypotheses is not met);
-// when the candidates are spread over look-alikes, or the draws had to be
-// extended, the leading models get a focused search of their own.
+// look-alikes (not in the paper), until the evidence says the leader is
+// found (evidence_stop.cpp) or the work budget is spent (max_trials draws,
+// more while min_hypotheses is not met); when the candidates are spread
+// over look-alikes, or the draws had to be extended, the leading models get
+// a focused search of their own.
 #include <cmath>
 
 #include "recognize/box_distance.hpp"
