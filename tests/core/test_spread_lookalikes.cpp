@@ -7,6 +7,8 @@
 //   end (recognize/refinement.cpp), which then score as it does.
 #include <doctest/doctest.h>
 
+#include <list>
+
 #include "blob/aligned_bytes.hpp"
 #include "spinhash/recognizer.hpp"
 #include "support/toy_copies.hpp"
@@ -23,7 +25,9 @@ const float kLookalikeBox = RecognizerConfig{}.lookalike_box_l1;  // the default
 
 struct Copies {
   test::ToyDatabase toy;
-  host::AlignedBytes ws;
+  // One workspace per recognition, kept: a Result's ranking lives in its
+  // workspace, and the tests compare two Results.
+  std::list<host::AlignedBytes> workspaces;
   explicit Copies(double shift) { REQUIRE(test::make_toy_copies(kCopies, shift, &toy)); }
   Result recognize(float lookalike_box_l1, uint32_t transfer_models = 0) {
     RecognizerConfig cfg;
@@ -33,7 +37,8 @@ struct Copies {
     cfg.focus_models = 0;              // only the draws make poses
     cfg.transfer_models = transfer_models;
     cfg.lookalike_box_l1 = lookalike_box_l1;
-    Result res = test::recognize_copied_toy(toy, cfg, &ws);
+    workspaces.emplace_back();
+    Result res = test::recognize_copied_toy(toy, cfg, &workspaces.back());
     REQUIRE(res.status == Status::kOk);
     REQUIRE(res.stats.candidates_spread);
     REQUIRE_FALSE(res.stats.budget_exhausted);

@@ -18,7 +18,7 @@ constexpr uint32_t kCopiedToy = 2;  // the toy copied
 bool make_toy_copies(uint32_t copies, double shift, ToyDatabase* out);
 
 // Recognises a moved, noisy partial view of toy kCopiedToy under `cfg`,
-// the workspace in `ws`.
+// the workspace in `ws` (the Result's ranking lives there: keep it).
 Result recognize_copied_toy(const ToyDatabase& toy, const RecognizerConfig& cfg, host::AlignedBytes* ws);
 
 }  // namespace test
