@@ -1,9 +1,12 @@
-// How far apart two models' bounding boxes are, each in its own frame: the
-// test of a look-alike that pose transfer and look-alike doublets share.
+// How far apart two models' bounding boxes are, each in its own frame, and
+// the models nearest one by box: the test of a look-alike that pose
+// transfer, the final lending and look-alike doublets share.
 #pragma once
 #include <cmath>
 
 #include "spinhash/blob_format.hpp"
+#include "spinhash/database.hpp"
+#include "util/top_n.hpp"
 
 namespace spinhash {
 
@@ -14,6 +17,18 @@ inline float box_distance(const blob::ModelRecord& a, const blob::ModelRecord& b
   for (int k = 0; k < 3; ++k)
     d += std::fabs(a.bbox_min[k] - b.bbox_min[k]) + std::fabs(a.bbox_max[k] - b.bbox_max[k]);
   return d;
+}
+
+// Writes to out[0, n) up to `wanted` models that `keep` accepts, nearest
+// `source` by box first (ties by index); returns n. The look-alikes a pose
+// is lent to.
+template <typename Keep>
+uint32_t nearest_by_box(const Database& db, uint32_t source, uint32_t wanted, uint32_t* out, Keep keep) {
+  const blob::ModelRecord& src = db.model(source);
+  return top_n(db.model_count(), wanted, out, keep, [&](uint32_t a, uint32_t b) {
+    const float da = box_distance(src, db.model(a)), d_b = box_distance(src, db.model(b));
+    return da < d_b || (da == d_b && a < b);
+  });
 }
 
 }  // namespace spinhash

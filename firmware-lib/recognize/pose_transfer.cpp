@@ -38,13 +38,8 @@ void transfer_poses(SearchContext& ctx) {
   }
   uint32_t targets[kMaxTransferModels];
   for (uint32_t i = 0; i < n_sources; ++i) {
-    const blob::ModelRecord& src = ctx.db.model(sources[i]);
-    auto nearer = [&](uint32_t a, uint32_t b) {
-      const float da = box_distance(src, ctx.db.model(a)), db = box_distance(src, ctx.db.model(b));
-      return da < db || (da == db && a < b);
-    };
-    const uint32_t n = top_n(
-        model_count, wanted, targets, [&](uint32_t m) { return m != sources[i]; }, nearer);
+    const uint32_t n =
+        nearest_by_box(ctx.db, sources[i], wanted, targets, [&](uint32_t m) { return m != sources[i]; });
     for (uint32_t t = 0; t < n; ++t) {
       ++ctx.stats.transferred;
       consider_pose(ctx, targets[t], poses[i], scores[i]);

@@ -133,15 +133,9 @@ void lend_final_pose(SearchContext& ctx, uint32_t source, const QueryFeatures& a
                      const LikelihoodParams& exact, bool refine) {
   const uint32_t wanted =
       ctx.cfg.transfer_models < kFinalLookalikes ? ctx.cfg.transfer_models : kFinalLookalikes;
-  const blob::ModelRecord& src = ctx.db.model(source);
-  auto nearer = [&](uint32_t a, uint32_t b) {
-    const float da = box_distance(src, ctx.db.model(a)), db = box_distance(src, ctx.db.model(b));
-    return da < db || (da == db && a < b);
-  };
   uint32_t targets[kFinalLookalikes];
-  const uint32_t n = top_n(
-      ctx.db.model_count(), wanted, targets, [&](uint32_t m) { return !ctx.buf.best[m].final_score; },
-      nearer);
+  const uint32_t n = nearest_by_box(ctx.db, source, wanted, targets,
+                                    [&](uint32_t m) { return !ctx.buf.best[m].final_score; });
   for (uint32_t t = 0; t < n; ++t) {
     ModelBest& b = ctx.buf.best[targets[t]];
     b.pose = ctx.buf.best[source].pose;
