@@ -122,22 +122,29 @@ TEST_CASE("LSH search: the scan bound truncates, and says so") {
 TEST_CASE("exhaustive per-model search equals a brute-force sort by (distance, feature)") {
   test::ToyDatabase toy;
   REQUIRE(test::make_toy_database(&toy));
-  const uint32_t dims = toy.db.spin_dims(), w = 5;
-  const uint8_t* probe = toy.db.spin(3);
-  for (uint32_t m = 0; m < toy.db.model_count(); ++m) {
-    const blob::ModelRecord& rec = toy.db.model(m);
-    std::vector<Candidate> all;
-    for (uint32_t f = rec.first_feature; f < rec.first_feature + rec.feature_count; ++f)
-      all.push_back(Candidate{f, l1_distance(probe, toy.db.spin(f), dims)});
-    std::sort(all.begin(), all.end(), [](const Candidate& a, const Candidate& b) {
-      return a.distance < b.distance || (a.distance == b.distance && a.feature < b.feature);
-    });
-    Candidate out[8];
-    const uint32_t n = search_model_exhaustive(toy.db, m, probe, w, out);
-    REQUIRE(n == std::min<uint32_t>(w, rec.feature_count));
-    for (uint32_t i = 0; i < n; ++i) {
-      CHECK(out[i].feature == all[i].feature);
-      CHECK(out[i].distance == all[i].distance);
+  const uint32_t dims = toy.db.spin_dims();
+  // Many probes and list sizes: the scan stops a distance early once the
+  // list is full, which must never change the list.
+  const uint32_t kProbeStride = 7;
+  for (uint32_t probe_feature = 0; probe_feature < toy.db.feature_count(); probe_feature += kProbeStride) {
+    const uint8_t* probe = toy.db.spin(probe_feature);
+    for (uint32_t w : {1u, 5u, 8u}) {
+      for (uint32_t m = 0; m < toy.db.model_count(); ++m) {
+        const blob::ModelRecord& rec = toy.db.model(m);
+        std::vector<Candidate> all;
+        for (uint32_t f = rec.first_feature; f < rec.first_feature + rec.feature_count; ++f)
+          all.push_back(Candidate{f, l1_distance(probe, toy.db.spin(f), dims)});
+        std::sort(all.begin(), all.end(), [](const Candidate& a, const Candidate& b) {
+          return a.distance < b.distance || (a.distance == b.distance && a.feature < b.feature);
+        });
+        Candidate out[8];
+        const uint32_t n = search_model_exhaustive(toy.db, m, probe, w, out);
+        REQUIRE(n == std::min<uint32_t>(w, rec.feature_count));
+        for (uint32_t i = 0; i < n; ++i) {
+          REQUIRE(out[i].feature == all[i].feature);
+          REQUIRE(out[i].distance == all[i].distance);
+        }
+      }
     }
   }
 }
