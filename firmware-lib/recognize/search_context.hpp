@@ -139,6 +139,21 @@ void focus_on_leaders(SearchContext& ctx);
 // Rescores the leading models on all query features (refining their poses
 // when asked) and puts every score on the all-features scale (BRAN, SRAN).
 void finalise_scores(SearchContext& ctx, bool refine);
+// Steps of the finalisation (refinement.cpp) that the final lending shares.
+// The model's best pose scored on every feature of `all` (its matches kept
+// in ctx.buf.matches); marks the score final.
+void rescore_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, const LikelihoodParams& lp);
+// Least-squares steps while they raise the score; `rescored`: ctx.buf.matches
+// holds the matches of the model's best pose.
+void refine_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, const LikelihoodParams& lp,
+                  bool rescored);
+// The model with the highest final score; false when none has one.
+bool final_first(const SearchContext& ctx, uint32_t* first);
+// After the leaders are finalised, the first model's pose lent to its
+// look-alikes, which are rescored, refined and charged for their unseen
+// surface alike (final_lending.cpp; BRAN with transfer_models > 0).
+void lend_final_pose(SearchContext& ctx, const QueryFeatures& all, const LikelihoodParams& exact,
+                     bool refine);
 // Log-likelihood of what the scan shows of the model's upward surface under
 // `pose`: each upward model feature seen (a query feature within Delta) or
 // missed (visible_surface.cpp).

@@ -1,0 +1,139 @@
+// The final lending (not in the paper; BRAN). After the leading models are
+// refined, the first model's refined pose is lent to its nearest models by
+// bounding box, each rescored on every feature, refined and charged for its
+// unseen surface as the leaders were; when a look-alike then comes first,
+// its own look-alikes get the same once more (kFinalLendRounds).
+//
+// - Candidates spread over look-alikes (1000 near-identical models): the
+//   scanned model was often a near neighbour of the wrong first one, whose
+//   pose fits it within centimetres, but never refined. The pose is lent as
+//   it is, to kSpreadLookalikes models.
+// - Otherwise (a fleet of families): the scanned model was often a sibling
+//   a metre shorter or longer than the first, or one the first fits the
+//   wrong way round; the first's pose puts the sibling's centre where its
+//   own was, off by half the difference in length, and the sibling's own
+//   poses had not come near. The pose is lent to kFamilyLookalikes models
+//   with the two boxes' rear ends, or front ends, made to coincide, each also
+//   turned end to end; the best of these on the hypothesis loop's features
+//   is finalised when it comes within kEndAlignedWindow of the first there.
+//
+// Bounded: kFinalLendRounds x look-alikes x (kEndAlignedPoses screens on the
+// hypothesis loop's features + 2 + kRefineIterations full verifications).
+#include <cmath>
+
+#include "match/refine_pose.hpp"
+#include "recognize/box_distance.hpp"
+#include "recognize/search_context.hpp"
+
+namespace spinhash {
+namespace {
+
+constexpr uint32_t kSpreadLookalikes = 16;  // spread candidates: look-alikes a pose is lent to
+constexpr uint32_t kFamilyLookalikes = 8;   // otherwise: siblings nearest by box
+constexpr uint32_t kMaxLookalikes =
+    kSpreadLookalikes > kFamilyLookalikes ? kSpreadLookalikes : kFamilyLookalikes;
+constexpr uint32_t kFinalLendRounds = 2;
+// Log units per verified feature: an end-aligned pose is finalised when, on
+// the hypothesis loop's features, it scores at most this much below the
+// first model's pose (families, six seeds: of the lent poses that came
+// out first, 25 of 31 screen within 0.3, for about 2 finalised per query).
+constexpr float kEndAlignedWindow = 0.3f;
+// m along the length: a smaller shift is the pose as lent by the transfer.
+constexpr float kMinEndShift = 0.05f;
+constexpr uint32_t kEndAlignedPoses = 4;  // rear and front ends, each as is and turned
+
+// Lent poses compared as the leaders were: rescored, refined, charged for
+// the unseen upward surface. Keeps the better of this and a final score
+// the model already had.
+void finalise_lent(SearchContext& ctx, uint32_t model, const RigidPose& pose, const QueryFeatures& all,
+                   const LikelihoodParams& exact, bool refine) {
+  ModelBest& b = ctx.buf.best[model];
+  const ModelBest before = b;
+  b.pose = pose;
+  b.has_score = true;
+  ++b.hypotheses;
+  ++ctx.stats.transferred;
+  rescore_model(ctx, model, all, exact);
+  if (refine) refine_model(ctx, model, all, exact, true);
+  b.score += upward_surface_log_likelihood(ctx, model, b.pose);
+  if (before.final_score && !(b.score > before.score)) b = before;
+}
+
+// `target` posed like `source` with their boxes' rear ends, then front
+// ends, coinciding along x, each also turned end to end; returns the count.
+uint32_t end_aligned_poses(const RigidPose& pose, const blob::ModelRecord& source,
+                           const blob::ModelRecord& target, RigidPose* out) {
+  const float shifts[2] = {source.bbox_min[0] - target.bbox_min[0], source.bbox_max[0] - target.bbox_max[0]};
+  uint32_t n = 0;
+  for (const float dx : shifts) {
+    RigidPose shifted = pose;
+    shifted.translation += dx * pose.rotation.col(0);
+    if (std::fabs(dx) >= kMinEndShift) out[n++] = shifted;
+    out[n++] = turned_end_to_end(shifted, target);
+  }
+  return n;
+}
+
+// The best of the poses on the hypothesis loop's features, when it reaches `floor`.
+bool best_screened(SearchContext& ctx, uint32_t model, const RigidPose* poses, uint32_t n, float floor,
+                   RigidPose* best) {
+  float best_score = floor;
+  bool found = false;
+  for (uint32_t i = 0; i < n; ++i) {
+    const Verification v =
+        verify_pose(ctx.db, model, poses[i], ctx.query, ctx.likelihood, best_score, kNoScoreToBeat);
+    if (!v.complete || v.log_likelihood < best_score || (found && v.log_likelihood == best_score)) continue;
+    best_score = v.log_likelihood;
+    *best = poses[i];
+    found = true;
+  }
+  return found;
+}
+
+void lend_as_is(SearchContext& ctx, uint32_t source, const QueryFeatures& all, const LikelihoodParams& exact,
+                bool refine, const uint32_t* targets, uint32_t n) {
+  const RigidPose pose = ctx.buf.best[source].pose;
+  for (uint32_t t = 0; t < n; ++t) finalise_lent(ctx, targets[t], pose, all, exact, refine);
+}
+
+void lend_end_aligned(SearchContext& ctx, uint32_t source, const QueryFeatures& all,
+                      const LikelihoodParams& exact, bool refine, const uint32_t* targets, uint32_t n) {
+  const RigidPose pose = ctx.buf.best[source].pose;  // copied: a target may be finalised above it
+  const float source_score =
+      verify_pose(ctx.db, source, pose, ctx.query, ctx.likelihood, kNoScoreToBeat, kNoScoreToBeat)
+          .log_likelihood;
+  const float floor = source_score - kEndAlignedWindow * static_cast<float>(ctx.query.verify_count);
+  for (uint32_t t = 0; t < n; ++t) {
+    RigidPose poses[kEndAlignedPoses], best;
+    const uint32_t k = end_aligned_poses(pose, ctx.db.model(source), ctx.db.model(targets[t]), poses);
+    if (best_screened(ctx, targets[t], poses, k, floor, &best))
+      finalise_lent(ctx, targets[t], best, all, exact, refine);
+  }
+}
+
+}  // namespace
+
+void lend_final_pose(SearchContext& ctx, const QueryFeatures& all, const LikelihoodParams& exact,
+                     bool refine) {
+  const bool spread = ctx.stats.candidates_spread;
+  const uint32_t cap = spread ? kSpreadLookalikes : kFamilyLookalikes;
+  const uint32_t wanted = ctx.cfg.transfer_models < cap ? ctx.cfg.transfer_models : cap;
+  if (wanted == 0u) return;                   // transfer_models = 0: the paper's BRAN
+  uint32_t lent_from = ctx.db.model_count();  // none yet
+  for (uint32_t round = 0; round < kFinalLendRounds; ++round) {
+    uint32_t first = 0;
+    if (!final_first(ctx, &first) || first == lent_from) return;
+    uint32_t targets[kMaxLookalikes];
+    // Spread: only models not yet finalised (the leaders were refined from their own poses).
+    const uint32_t n = nearest_by_box(ctx.db, first, wanted, targets, [&](uint32_t m) {
+      return m != first && (!spread || !ctx.buf.best[m].final_score);
+    });
+    if (spread)
+      lend_as_is(ctx, first, all, exact, refine, targets, n);
+    else
+      lend_end_aligned(ctx, first, all, exact, refine, targets, n);
+    lent_from = first;
+  }
+}
+
+}  // namespace spinhash
