@@ -1,5 +1,7 @@
 #include "match/refine_pose.hpp"
 
+#include <cmath>
+
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
@@ -74,6 +76,18 @@ RigidPose turned_end_to_end(const RigidPose& pose, const blob::ModelRecord& mode
   out.rotation.col(1) = -pose.rotation.col(1);
   out.translation += (2.0f * cx) * pose.rotation.col(0) + (2.0f * cy) * pose.rotation.col(1);
   return out;
+}
+
+bool end_aligned_pose(const RigidPose& pose, const blob::ModelRecord& source, const blob::ModelRecord& target,
+                      uint32_t index, RigidPose* out) {
+  const bool front = index >= 2u, turned = (index & 1u) != 0u;
+  const float dx = front ? source.bbox_max[0] - target.bbox_max[0] : source.bbox_min[0] - target.bbox_min[0];
+  if (!turned && std::fabs(dx) < kMinEndShift) return false;
+  // x -> x + dx in the target's frame: q = R (x + dx e_x) + t.
+  *out = pose;
+  out->translation += dx * pose.rotation.col(0);
+  if (turned) *out = turned_end_to_end(*out, target);
+  return true;
 }
 
 }  // namespace spinhash

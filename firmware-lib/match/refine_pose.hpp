@@ -32,4 +32,14 @@ bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query,
 // a local search, stays there.
 RigidPose turned_end_to_end(const RigidPose& pose, const blob::ModelRecord& model);
 
+// Pose `index` (< kEndAlignedPoses) of `target` from `source`'s `pose`, for
+// a sibling of another length: 0 and 1 with the two boxes' rear ends (x
+// min) made to coincide, 2 and 3 with their front ends (x max); 1 and 3
+// also turned end to end (target's front where source's rear was). false
+// for 0 and 2 when the shift is under kMinEndShift (the pose as it is).
+constexpr float kMinEndShift = 0.05f;  // m along the length
+constexpr uint32_t kEndAlignedPoses = 4;
+bool end_aligned_pose(const RigidPose& pose, const blob::ModelRecord& source, const blob::ModelRecord& target,
+                      uint32_t index, RigidPose* out);
+
 }  // namespace spinhash

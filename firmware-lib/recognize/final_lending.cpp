@@ -19,8 +19,6 @@
 //
 // Bounded: kFinalLendRounds x look-alikes x (kEndAlignedPoses screens on the
 // hypothesis loop's features + 2 + kRefineIterations full verifications).
-#include <cmath>
-
 #include "match/refine_pose.hpp"
 #include "recognize/box_distance.hpp"
 #include "recognize/search_context.hpp"
@@ -38,9 +36,6 @@ constexpr uint32_t kFinalLendRounds = 2;
 // first model's pose (families, six seeds: of the lent poses that came
 // out first, 25 of 31 screen within 0.3, for about 2 finalised per query).
 constexpr float kEndAlignedWindow = 0.3f;
-// m along the length: a smaller shift is the pose as lent by the transfer.
-constexpr float kMinEndShift = 0.05f;
-constexpr uint32_t kEndAlignedPoses = 4;  // rear and front ends, each as is and turned
 
 // Lent poses compared as the leaders were: rescored, refined, charged for
 // the unseen upward surface. Keeps the better of this and a final score
@@ -59,32 +54,20 @@ void finalise_lent(SearchContext& ctx, uint32_t model, const RigidPose& pose, co
   if (before.final_score && !(b.score > before.score)) b = before;
 }
 
-// `target` posed like `source` with their boxes' rear ends, then front
-// ends, coinciding along x, each also turned end to end; returns the count.
-uint32_t end_aligned_poses(const RigidPose& pose, const blob::ModelRecord& source,
-                           const blob::ModelRecord& target, RigidPose* out) {
-  const float shifts[2] = {source.bbox_min[0] - target.bbox_min[0], source.bbox_max[0] - target.bbox_max[0]};
-  uint32_t n = 0;
-  for (const float dx : shifts) {
-    RigidPose shifted = pose;
-    shifted.translation += dx * pose.rotation.col(0);
-    if (std::fabs(dx) >= kMinEndShift) out[n++] = shifted;
-    out[n++] = turned_end_to_end(shifted, target);
-  }
-  return n;
-}
-
-// The best of the poses on the hypothesis loop's features, when it reaches `floor`.
-bool best_screened(SearchContext& ctx, uint32_t model, const RigidPose* poses, uint32_t n, float floor,
-                   RigidPose* best) {
+// The best end-aligned pose of `target` from `source`'s on the hypothesis
+// loop's features, when it reaches `floor`.
+bool best_end_aligned(SearchContext& ctx, uint32_t source, uint32_t target, float floor, RigidPose* best) {
   float best_score = floor;
   bool found = false;
-  for (uint32_t i = 0; i < n; ++i) {
+  for (uint32_t i = 0; i < kEndAlignedPoses; ++i) {
+    RigidPose pose;
+    if (!end_aligned_pose(ctx.buf.best[source].pose, ctx.db.model(source), ctx.db.model(target), i, &pose))
+      continue;
     const Verification v =
-        verify_pose(ctx.db, model, poses[i], ctx.query, ctx.likelihood, best_score, kNoScoreToBeat);
+        verify_pose(ctx.db, target, pose, ctx.query, ctx.likelihood, best_score, kNoScoreToBeat);
     if (!v.complete || v.log_likelihood < best_score || (found && v.log_likelihood == best_score)) continue;
     best_score = v.log_likelihood;
-    *best = poses[i];
+    *best = pose;
     found = true;
   }
   return found;
@@ -92,21 +75,19 @@ bool best_screened(SearchContext& ctx, uint32_t model, const RigidPose* poses, u
 
 void lend_as_is(SearchContext& ctx, uint32_t source, const QueryFeatures& all, const LikelihoodParams& exact,
                 bool refine, const uint32_t* targets, uint32_t n) {
-  const RigidPose pose = ctx.buf.best[source].pose;
+  const RigidPose& pose = ctx.buf.best[source].pose;  // no target is the source
   for (uint32_t t = 0; t < n; ++t) finalise_lent(ctx, targets[t], pose, all, exact, refine);
 }
 
 void lend_end_aligned(SearchContext& ctx, uint32_t source, const QueryFeatures& all,
                       const LikelihoodParams& exact, bool refine, const uint32_t* targets, uint32_t n) {
-  const RigidPose pose = ctx.buf.best[source].pose;  // copied: a target may be finalised above it
-  const float source_score =
-      verify_pose(ctx.db, source, pose, ctx.query, ctx.likelihood, kNoScoreToBeat, kNoScoreToBeat)
-          .log_likelihood;
+  const float source_score = verify_pose(ctx.db, source, ctx.buf.best[source].pose, ctx.query, ctx.likelihood,
+                                         kNoScoreToBeat, kNoScoreToBeat)
+                                 .log_likelihood;
   const float floor = source_score - kEndAlignedWindow * static_cast<float>(ctx.query.verify_count);
   for (uint32_t t = 0; t < n; ++t) {
-    RigidPose poses[kEndAlignedPoses], best;
-    const uint32_t k = end_aligned_poses(pose, ctx.db.model(source), ctx.db.model(targets[t]), poses);
-    if (best_screened(ctx, targets[t], poses, k, floor, &best))
+    RigidPose best;
+    if (best_end_aligned(ctx, source, targets[t], floor, &best))
       finalise_lent(ctx, targets[t], best, all, exact, refine);
   }
 }

@@ -1,0 +1,78 @@
+// The poses the final lending (recognize/final_lending.cpp) gives a sibling
+// of another length (match/refine_pose.hpp, end_aligned_pose): the first
+// model's pose with the two boxes' rear ends, or front ends, coinciding,
+// each also turned end to end. The procedural fleet's vehicles are centred
+// on their boxes, so the pose as it is puts a sibling a metre longer half a
+// metre off at either end, where no refinement step reaches.
+#include <doctest/doctest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "match/refine_pose.hpp"
+#include "spinhash/blob_format.hpp"
+
+using namespace spinhash;
+
+namespace {
+
+constexpr float kYaw = 0.7f;
+constexpr float kTolerance = 1e-4f;  // m
+
+blob::ModelRecord centred_box(float length) {
+  blob::ModelRecord r{};
+  r.bbox_min[0] = -0.5f * length, r.bbox_max[0] = 0.5f * length;
+  r.bbox_min[1] = -1.2f, r.bbox_max[1] = 1.2f;
+  r.bbox_min[2] = 0.0f, r.bbox_max[2] = 3.0f;
+  return r;
+}
+
+RigidPose yawed_pose() {
+  RigidPose p;
+  p.rotation = Eigen::AngleAxisf(kYaw, Eigen::Vector3f::UnitZ()).toRotationMatrix();
+  p.translation = Eigen::Vector3f(12.0f, -4.0f, 0.3f);
+  return p;
+}
+
+Eigen::Vector3f apply(const RigidPose& p, const Eigen::Vector3f& x) { return p.rotation * x + p.translation; }
+
+}  // namespace
+
+TEST_CASE("end-aligned poses put a longer sibling's rear, then its front, on the first model's") {
+  const blob::ModelRecord first = centred_box(11.0f), sibling = centred_box(12.0f);
+  const RigidPose pose = yawed_pose();
+  RigidPose out[kEndAlignedPoses];
+  for (uint32_t i = 0; i < kEndAlignedPoses; ++i) REQUIRE(end_aligned_pose(pose, first, sibling, i, &out[i]));
+  const Eigen::Vector3f side(0.0f, 1.2f, 1.0f);  // a point on the left side, mid-height
+  const Eigen::Vector3f first_rear = apply(pose, side + Eigen::Vector3f(first.bbox_min[0], 0, 0));
+  const Eigen::Vector3f first_front = apply(pose, side + Eigen::Vector3f(first.bbox_max[0], 0, 0));
+  const Eigen::Vector3f sib_rear = side + Eigen::Vector3f(sibling.bbox_min[0], 0, 0);
+  const Eigen::Vector3f sib_front = side + Eigen::Vector3f(sibling.bbox_max[0], 0, 0);
+  // Rear ends together, then front ends together, same heading.
+  CHECK((apply(out[0], sib_rear) - first_rear).norm() < kTolerance);
+  CHECK((apply(out[2], sib_front) - first_front).norm() < kTolerance);
+  CHECK((out[0].rotation - pose.rotation).norm() < kTolerance);
+  // Turned: the sibling's front where the first's rear was (its left side on
+  // the first's right), for a first model fitted the wrong way round.
+  const Eigen::Vector3f mirrored(0.0f, -2.4f, 0.0f);  // left side to right side
+  CHECK((apply(out[1], sib_front) - apply(pose, side + mirrored + Eigen::Vector3f(first.bbox_min[0], 0, 0)))
+            .norm() < kTolerance);
+  CHECK((apply(out[3], sib_rear) - apply(pose, side + mirrored + Eigen::Vector3f(first.bbox_max[0], 0, 0)))
+            .norm() < kTolerance);
+  CHECK((out[1].rotation.col(0) + pose.rotation.col(0)).norm() < kTolerance);
+}
+
+TEST_CASE("a sibling of the same length gets only the turned pose: the pose as it is is the transfer's") {
+  const blob::ModelRecord first = centred_box(4.4f), twin = centred_box(4.42f);  // within kMinEndShift
+  const RigidPose pose = yawed_pose();
+  RigidPose out;
+  CHECK(!end_aligned_pose(pose, first, twin, 0, &out));
+  CHECK(!end_aligned_pose(pose, first, twin, 2, &out));
+  const RigidPose turned = turned_end_to_end(pose, twin);
+  // Each shift is 0.01 m, within kMinEndShift: the turned poses are nearly the plain turn.
+  for (uint32_t i : {1u, 3u}) {
+    REQUIRE(end_aligned_pose(pose, first, twin, i, &out));
+    CHECK((out.translation - turned.translation).norm() < 0.011f);
+    CHECK((out.rotation - turned.rotation).norm() < kTolerance);
+  }
+}
