@@ -122,8 +122,9 @@ struct RecognizerConfig {
   // log-likelihood (BRAN, SRAN): eq. 7 sums n per-feature terms, so the lead
   // grows as n and its spread as sqrt(n) (a z-score; per feature it favoured
   // small scans, in total large ones). Most wrong answers are a look-alike
-  // of the right one, which comes second a little behind ...
-  float min_margin = 1.3f;
+  // of the right one, which comes second a little behind (1.3 until the
+  // final lending posed siblings well, raising the runners-up: results.md 9l) ...
+  float min_margin = 1.2f;
   // ... and the scan pins the model's size: the query features, in the
   // model's frame under its pose, reach within max_extent_shortfall of both
   // ends of the model's box along x and along y and of its top, and lie at
