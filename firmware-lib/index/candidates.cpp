@@ -143,8 +143,11 @@ uint32_t search_model_exhaustive(const Database& db, uint32_t model, const uint8
   for (uint32_t f = rec.first_feature; f < rec.first_feature + rec.feature_count; ++f) {
     // A feature farther than the farthest of a full list cannot enter it:
     // its distance stops at the first block past that bound (same list).
-    const uint32_t bound = w > 0 && count == w ? out[w - 1u].distance : kNoBound;
-    insert_top_w(out, &count, w, Candidate{f, l1_distance_within(spin, db.spin(f), dims, bound)});
+    const bool full = w > 0 && count == w;
+    const uint32_t bound = full ? out[w - 1u].distance : kNoBound;
+    const uint32_t d = l1_distance_within(spin, db.spin(f), dims, bound);
+    if (full && d > bound) continue;  // most features: no call
+    insert_top_w(out, &count, w, Candidate{f, d});
   }
   return count;
 }
