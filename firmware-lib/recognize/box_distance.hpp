@@ -19,6 +19,18 @@ inline float box_distance(const blob::ModelRecord& a, const blob::ModelRecord& b
   return d;
 }
 
+// Whether box_distance(a, b) <= limit, stopping once the sum is past it:
+// the same sum in the same order, so the same answer. Most pairs of spread
+// candidates are of other families and fail on the first axis.
+inline bool boxes_within(const blob::ModelRecord& a, const blob::ModelRecord& b, float limit) {
+  float d = 0.0f;
+  for (int k = 0; k < 3; ++k) {
+    d += std::fabs(a.bbox_min[k] - b.bbox_min[k]) + std::fabs(a.bbox_max[k] - b.bbox_max[k]);
+    if (d > limit) return false;
+  }
+  return d <= limit;  // false for NaN too, as box_distance's comparison
+}
+
 // Writes to out[0, n) up to `wanted` models that `keep` accepts, nearest
 // `source` by box first (ties by index); returns n. The look-alikes a pose
 // is lent to.

@@ -80,7 +80,7 @@ constexpr uint32_t kLookalikePairsPerDraw = 4;
 bool lookalike_pair_allowed(const SearchContext& ctx, uint16_t a, uint16_t b, uint32_t pairs,
                             uint32_t draw_pairs) {
   return pairs < kLookalikePairsPerCandidate && draw_pairs < kLookalikePairsPerDraw &&
-         box_distance(ctx.db.model(a), ctx.db.model(b)) <= ctx.cfg.lookalike_box_l1;
+         boxes_within(ctx.db.model(a), ctx.db.model(b), ctx.cfg.lookalike_box_l1);
 }
 
 // Every same-model candidate pair of features (k, l), and with spread

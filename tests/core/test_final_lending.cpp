@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "match/refine_pose.hpp"
+#include "recognize/box_distance.hpp"
 #include "spinhash/blob_format.hpp"
 
 using namespace spinhash;
@@ -75,4 +76,19 @@ TEST_CASE("a sibling of the same length gets only the turned pose: the pose as i
     CHECK((out.translation - turned.translation).norm() < 0.011f);
     CHECK((out.rotation - turned.rotation).norm() < kTolerance);
   }
+}
+
+TEST_CASE("the look-alike box test stops early and still agrees with the box distance") {
+  const blob::ModelRecord a = centred_box(4.5f);
+  for (float length : {4.5f, 4.6f, 4.8f, 5.5f, 9.0f}) {
+    blob::ModelRecord b = centred_box(length);
+    b.bbox_max[2] = 3.05f;  // a little taller too: every axis counts
+    const float d = box_distance(a, b);
+    CAPTURE(length);
+    for (float limit : {0.0f, 0.5f * d, d, d + 0.01f, 0.6f, 10.0f})
+      CHECK(boxes_within(a, b, limit) == (d <= limit));
+  }
+  blob::ModelRecord broken = centred_box(4.5f);
+  broken.bbox_max[2] = std::nanf("");
+  CHECK_FALSE(boxes_within(a, broken, 10.0f));  // as box_distance's comparison
 }
