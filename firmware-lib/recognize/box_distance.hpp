@@ -10,12 +10,16 @@
 
 namespace spinhash {
 
+// The two boxes' L1 difference along axis k (both ends), m.
+inline float box_axis_l1(const blob::ModelRecord& a, const blob::ModelRecord& b, int k) {
+  return std::fabs(a.bbox_min[k] - b.bbox_min[k]) + std::fabs(a.bbox_max[k] - b.bbox_max[k]);
+}
+
 // L1 distance over the boxes' 6 coordinates, m: small when the models'
 // surfaces nearly coincide (same frame convention, nearly the same size).
 inline float box_distance(const blob::ModelRecord& a, const blob::ModelRecord& b) {
   float d = 0.0f;
-  for (int k = 0; k < 3; ++k)
-    d += std::fabs(a.bbox_min[k] - b.bbox_min[k]) + std::fabs(a.bbox_max[k] - b.bbox_max[k]);
+  for (int k = 0; k < 3; ++k) d += box_axis_l1(a, b, k);
   return d;
 }
 
@@ -25,7 +29,7 @@ inline float box_distance(const blob::ModelRecord& a, const blob::ModelRecord& b
 inline bool boxes_within(const blob::ModelRecord& a, const blob::ModelRecord& b, float limit) {
   float d = 0.0f;
   for (int k = 0; k < 3; ++k) {
-    d += std::fabs(a.bbox_min[k] - b.bbox_min[k]) + std::fabs(a.bbox_max[k] - b.bbox_max[k]);
+    d += box_axis_l1(a, b, k);
     if (d > limit) return false;
   }
   return d <= limit;  // false for NaN too, as box_distance's comparison
