@@ -66,11 +66,15 @@ void orient_normals(const float* points, uint32_t n, const float* reference, boo
     if (!has_normal[i]) continue;
     const float* p = points + 3u * i;
     float* nrm = normals + 3u * i;
-    // Away from the centre: (p - c); towards the viewpoint: (v - p).
-    float sx = is_viewpoint ? reference[0] - p[0] : p[0] - reference[0];
-    float sy = is_viewpoint ? reference[1] - p[1] : p[1] - reference[1];
-    float sz = is_viewpoint ? reference[2] - p[2] : p[2] - reference[2];
-    if (nrm[0] * sx + nrm[1] * sy + nrm[2] * sz < 0.0f) {
+    float s[3];  // the side the normal is turned to
+    if (is_viewpoint) {
+      for (int a = 0; a < 3; ++a) s[a] = reference[a] - p[a];
+    } else if (nrm[2] >= kFacesUpZ || nrm[2] <= -kFacesUpZ) {
+      s[0] = 0.0f, s[1] = 0.0f, s[2] = 1.0f;
+    } else {
+      s[0] = p[0] - reference[0], s[1] = p[1] - reference[1], s[2] = 0.0f;
+    }
+    if (nrm[0] * s[0] + nrm[1] * s[1] + nrm[2] * s[2] < 0.0f) {
       nrm[0] = -nrm[0];
       nrm[1] = -nrm[1];
       nrm[2] = -nrm[2];

@@ -29,7 +29,8 @@ struct ExtractorCapacity {
   float ground_clearance = 0.0f;  // m: terrain and this much above it dropped (queries; 0: kept)
 };
 
-// Normal orientation: outward from the cloud centroid, or towards a viewpoint.
+// Normal orientation (z up): within 45 degrees of level, up; steeper, away
+// from the vertical through the cloud centroid; or towards a viewpoint.
 struct OrientationHint {
   bool has_viewpoint = false;
   double viewpoint[3] = {0.0, 0.0, 0.0};  // input coordinates

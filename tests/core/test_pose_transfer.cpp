@@ -17,12 +17,15 @@ using namespace spinhash;
 
 namespace {
 
-constexpr uint32_t kTwinned = 2;   // toy-2 gets an exact twin, the database's last model
-constexpr float kUnpinned = 1e6f;  // m: max_extent_shortfall that never withholds confidence
+constexpr uint32_t kTwinned = 2;              // toy-2 gets an exact twin, the database's last model
+constexpr float kUnpinned = 1e6f;             // m: max_extent_shortfall that never withholds confidence
+constexpr uint32_t kWholeBuckets = 1u << 24;  // max_bucket_scan: no bucket is sampled
 
-// Recognises a moved, noisy view of toy-2 with W = 1: each query feature's
-// single candidate is toy-2's copy of a feature (equal distances go to the
-// lower feature index), so the twin never takes part in a doublet.
+// Recognises a moved, noisy view of toy-2 with W = 1 and every LSH bucket
+// scanned whole: each query feature's single candidate is toy-2's copy of a
+// feature (equal distances go to the lower feature index; a bucket sampled
+// with a stride could skip toy-2's copy and keep the twin's), so the twin
+// never takes part in a doublet.
 struct Twinned {
   test::ToyDatabase toy;
   host::AlignedBytes ws;
@@ -31,6 +34,7 @@ struct Twinned {
 
   Result recognize(uint32_t transfer_models, RecognizerConfig cfg = RecognizerConfig{}) {
     cfg.top_w = 1;
+    cfg.max_bucket_scan = kWholeBuckets;
     cfg.transfer_models = transfer_models;
     ws = host::AlignedBytes(required_workspace_bytes(cfg));
     Recognizer r;

@@ -161,14 +161,18 @@ TEST_CASE_FIXTURE(
 }
 
 TEST_CASE_FIXTURE(Fixture, "refine_pose on one flat face corrects across it and does not slide along it") {
-  // Only the features facing up: the pose is fixed across the face (z,
-  // tilt) and free along it; the step must not move along it.
+  // Only the features facing up on the upper half (the toy's box bottoms,
+  // never seen from the air, face up too): the pose is fixed across the face
+  // (z, tilt) and free along it; the step must not move along it.
   const blob::ModelRecord& rec = toy.db.model(kModel);
   test::ModelFeatureQuery top;
   const Eigen::Matrix3f rt = truth.rotation.transpose();
+  const float mid_height = 0.5f * (rec.bbox_min[2] + rec.bbox_max[2]);
   for (uint32_t i = 0; i < q.view.count; ++i) {
     const Eigen::Vector3f n = rt * Eigen::Map<const Eigen::Vector3f>(q.normals.data() + 3u * i);
-    if (n.z() < 0.99f) continue;
+    const Eigen::Vector3f x =
+        rt * (Eigen::Map<const Eigen::Vector3f>(q.positions.data() + 3u * i) - truth.translation);
+    if (n.z() < 0.99f || x.z() < mid_height) continue;
     // 1 cm of scatter, as range noise: the normals' few-degree spread turns
     // it into a pull along the face that only the damping holds.
     for (uint32_t a = 0; a < 3; ++a)
