@@ -1,4 +1,4 @@
-// On-disk layout of a spinhash database blob (.shdb), format v2.
+// On-disk layout of a spinhash database blob (.shdb), format v3.
 // docs/blob-format.md is the normative description; these structs mirror it.
 // All integers and floats are stored in the byte order named by the header.
 #pragma once
@@ -10,7 +10,8 @@ namespace spinhash {
 namespace blob {
 
 constexpr char kMagic[8] = {'S', 'P', 'I', 'N', 'H', 'S', 'H', 'D'};
-constexpr uint32_t kFormatVersion = 2;            // v2: the nearest-feature field (kNearestField)
+constexpr uint32_t kFormatVersion =
+    3;  // v3: normals up within 45 degrees of vertical; v2: the nearest-feature field
 constexpr uint32_t kByteOrderMark = 0x01020304u;  // reads 0x04030201 on the other byte order
 constexpr uint32_t kSectionAlignment = 64;
 
