@@ -88,9 +88,15 @@ TEST_CASE_FIXTURE(Stopping, "an object no model explains never stops on evidence
 TEST_CASE_FIXTURE(Stopping,
                   "draws go on past max_trials while few poses were verified, up to kTrialExtension times") {
   constexpr uint32_t kTrials = 50;
+  // The ball passes 20-30 poses a draw: 200 draws came within 3 % of the
+  // default budget (6 000) on x86-64 and reached it on aarch64 (a sphere's
+  // features tie, and its poses differ across targets; they did before the
+  // normals of results.md 9n too). The pose budget is not under test.
+  constexpr uint32_t kAmpleHypotheses = 1u << 20;
   auto stats_with = [&](uint32_t min_hypotheses) {
     RecognizerConfig cfg;
     cfg.max_trials = kTrials;
+    cfg.max_hypotheses = kAmpleHypotheses;
     cfg.min_hypotheses = min_hypotheses;
     cfg.focus_models = 0;                     // its draws follow extended ones (test_pose_transfer.cpp)
     const Result r = recognize(ball(), cfg);  // never stops on evidence
