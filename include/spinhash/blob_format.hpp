@@ -10,8 +10,8 @@ namespace spinhash {
 namespace blob {
 
 constexpr char kMagic[8] = {'S', 'P', 'I', 'N', 'H', 'S', 'H', 'D'};
-constexpr uint32_t kFormatVersion =
-    3;  // v3: normals up within 45 degrees of vertical; v2: the nearest-feature field
+// v3: normals up within 45 degrees of vertical; v2: the nearest-feature field.
+constexpr uint32_t kFormatVersion = 3;
 constexpr uint32_t kByteOrderMark = 0x01020304u;  // reads 0x04030201 on the other byte order
 constexpr uint32_t kSectionAlignment = 64;
 
