@@ -33,6 +33,8 @@ const char* status_name(Status s) noexcept {
     case Status::kNotOpen: return "not initialised";
     case Status::kTileTooLarge: return "tile footprint larger than the scene grid";
     case Status::kTooManyObjects: return "more objects than the scene workspace holds";
+    case Status::kWindowOverflow: return "a scene window held more points than its capacity";
+    case Status::kStreamFlushed: return "points pushed after the stream was flushed";
   }
   return "unknown";
 }

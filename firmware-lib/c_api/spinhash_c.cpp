@@ -58,7 +58,9 @@ static_assert(same(SPINHASH_OK, Status::kOk) && same(SPINHASH_INVALID_ARGUMENT, 
                   same(SPINHASH_NOT_ENOUGH_FEATURES, Status::kNotEnoughFeatures) &&
                   same(SPINHASH_NOT_OPEN, Status::kNotOpen) &&
                   same(SPINHASH_TILE_TOO_LARGE, Status::kTileTooLarge) &&
-                  same(SPINHASH_TOO_MANY_OBJECTS, Status::kTooManyObjects),
+                  same(SPINHASH_TOO_MANY_OBJECTS, Status::kTooManyObjects) &&
+                  same(SPINHASH_WINDOW_OVERFLOW, Status::kWindowOverflow) &&
+                  same(SPINHASH_STREAM_FLUSHED, Status::kStreamFlushed),
               "spinhash_status and spinhash::Status disagree");
 
 spinhash_status to_c(Status s) { return static_cast<spinhash_status>(static_cast<int32_t>(s)); }

@@ -172,10 +172,6 @@ void TerrainGrid::carve(Arena& arena, uint32_t cells) {
   off_ground = arena.alloc<uint8_t>(cells);
 }
 
-uint32_t terrain_cell_of(const TerrainGrid& g, float x, float y) {
-  return cell_coord(y, g.y0, g.cell, g.ny) * g.nx + cell_coord(x, g.x0, g.cell, g.nx);
-}
-
 float terrain_height_at(const TerrainGrid& g, float x, float y) {
   // Cell-centre coordinates: (x - x0) / cell - 0.5.
   const float fx = (x - g.x0) / g.cell - 0.5f;

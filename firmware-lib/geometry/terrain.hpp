@@ -61,7 +61,4 @@ float terrain_height_at(const TerrainGrid& grid, float x, float y);
 
 bool terrain_params_valid(const TerrainParams& p);
 
-// Index of the grid cell holding (x, y), clamped to the grid.
-uint32_t terrain_cell_of(const TerrainGrid& grid, float x, float y);
-
 }  // namespace spinhash

@@ -1,7 +1,10 @@
 // The xy frame of a per-cell grid laid over a cloud's footprint (the terrain
-// grid, the segmentation grid): origin at the footprint's min corner, square
-// cells, refused when the footprint needs more cells than were carved.
+// grid, the segmentation grid): origin at the footprint's min corner snapped
+// down to a multiple of the cell, square cells, refused when the footprint
+// needs more cells than were carved. The snap makes the grids of two scene
+// windows whose origins differ by a multiple of the cell share their cells.
 #pragma once
+#include <cmath>
 #include <cstdint>
 
 namespace spinhash {
@@ -18,6 +21,7 @@ bool fit_xy_frame(const float* xyz, uint32_t n, float cell, Grid& g) {
       lo[a] = v < lo[a] ? v : lo[a];
       hi[a] = v > hi[a] ? v : hi[a];
     }
+  for (uint32_t a = 0; a < 2u; ++a) lo[a] = std::floor(lo[a] / cell) * cell;
   const float fx = (hi[0] - lo[0]) / cell + 1.0f, fy = (hi[1] - lo[1]) / cell + 1.0f;
   if (!(fx * fy <= static_cast<float>(g.max_cells))) return false;
   g.cell = cell;

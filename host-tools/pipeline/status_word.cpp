@@ -12,6 +12,8 @@ const char* status_word(Status s) {
     case Status::kWorkspaceTooSmall: return "workspace_too_small";
     case Status::kTileTooLarge: return "tile_too_large";
     case Status::kTooManyObjects: return "too_many_objects";
+    case Status::kWindowOverflow: return "window_overflow";
+    case Status::kStreamFlushed: return "stream_flushed";
     default: return "error";
   }
 }

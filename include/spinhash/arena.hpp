@@ -36,7 +36,6 @@ class Arena {
 
   size_t used() const { return used_; }
   bool overflowed() const { return overflowed_; }
-  bool counting() const { return base_ == nullptr; }
 
  private:
   uint8_t* base_ = nullptr;

@@ -29,9 +29,19 @@ struct SceneConfig {
   RecognizerConfig recognizer{};
   uint32_t top_n = 5;  // ranking entries kept per object
 
-  // Capacities.
-  uint32_t max_tile_points = 300000;      // more: kTooManyPoints (refused, never truncated)
-  uint32_t max_objects = 256;             // objects of >= min_object_points points
+  // Windows (scene_stream.hpp): square cores of window_core m tile the
+  // ground; each window sees window_margin m more on every side. The core
+  // is a multiple of terrain_cell and segment_cell, so overlapping windows
+  // share their grid cells. The margin covers half the longest vehicle
+  // (max_length / 2 = 6.5 m) plus the terrain filter's reach (its openings
+  // add up to 31 m at a 24 m window): 40 m. A tile that fits one window
+  // (points and grids) is one window.
+  float window_core = 32.0f;    // m
+  float window_margin = 40.0f;  // m
+
+  // Capacities of one window.
+  uint32_t max_tile_points = 1u << 22;    // points a window holds (more: kWindowOverflow, counted)
+  uint32_t max_objects = 256;             // objects of >= min_object_points points per window
   uint32_t max_terrain_cells = 1u << 16;  // terrain grid: 0.5 m cells -> 128 x 128 m
   uint32_t max_segment_cells = 1u << 18;  // segmentation grid: 0.25 m cells -> 128 x 128 m
 
@@ -100,13 +110,18 @@ struct SceneStats {
   uint32_t components = 0;       // connected components, fragments included
   uint32_t objects_dropped = 0;  // past max_objects (status kTooManyObjects)
   uint32_t objects_by_kind[kObjectKinds] = {};
+  uint32_t windows = 0;                 // windows run (a tile that fits one window: 1)
+  uint32_t windows_overflowed = 0;      // windows over a capacity: not recognised (kWindowOverflow)
   uint64_t recognition_hypotheses = 0;  // summed over the candidates
   uint64_t recognition_candidates = 0;
   size_t workspace_used = 0;
 };
 
 struct SceneResult {
-  Status status = Status::kNotOpen;      // kOk, or kTooManyObjects with the first max_objects answered
+  // kOk; kTooManyObjects with the first max_objects answered; kWindowOverflow
+  // when a window held more points than max_tile_points or more cells than
+  // its grids (its objects are not answered; stats count them).
+  Status status = Status::kNotOpen;
   const SceneObject* objects = nullptr;  // in the workspace; valid until the next call
   uint32_t object_count = 0;
   SceneStats stats;
@@ -122,8 +137,10 @@ class SceneRecognizer {
  public:
   Status init(const Database* db, const SceneConfig& config, void* workspace,
               size_t workspace_bytes) noexcept;
-  // n points of xyz (x0 y0 z0 x1 ...), georeferenced, z up. Non-finite points
-  // are skipped and counted.
+  // n points of xyz (x0 y0 z0 x1 ...), georeferenced, z up, in any order and
+  // of any extent: a tile that fits one window is one window; a larger one
+  // runs the stream's windows over it (scene_stream.hpp), each object
+  // reported once. Non-finite points are skipped and counted.
   SceneResult recognize(const double* xyz, uint32_t n) noexcept;
   size_t used_bytes() const noexcept { return used_bytes_; }
 

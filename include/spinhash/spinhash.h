@@ -71,7 +71,9 @@ typedef enum spinhash_status {
   SPINHASH_NOT_ENOUGH_FEATURES = 42,
   SPINHASH_NOT_OPEN = 43,
   SPINHASH_TILE_TOO_LARGE = 44,
-  SPINHASH_TOO_MANY_OBJECTS = 45
+  SPINHASH_TOO_MANY_OBJECTS = 45,
+  SPINHASH_WINDOW_OVERFLOW = 46,
+  SPINHASH_STREAM_FLUSHED = 47
 } spinhash_status;
 
 typedef enum spinhash_mode {

@@ -38,6 +38,9 @@ enum class Status : int32_t {
   // SceneRecognizer
   kTileTooLarge = 44,    // tile's footprint needs more grid cells than the config holds (refused)
   kTooManyObjects = 45,  // more objects than config.max_objects (objects past the cap not recognised)
+  // SceneStream (and the tile API over it)
+  kWindowOverflow = 46,  // a window or the stream buffer held more points than its capacity (counted)
+  kStreamFlushed = 47,   // points pushed after flush(): refused (counted); reset() starts a new line
 };
 
 // Short English name of a status; "unknown" for values not listed.

@@ -166,7 +166,8 @@ TEST_CASE("scene: a model sunk into the terrain under its pose is not confident"
   }
 }
 
-TEST_CASE("scene: a tile over max_tile_points is kTooManyPoints, a footprint over the grid kTileTooLarge") {
+TEST_CASE(
+    "scene: a window over max_tile_points or over its grid is kWindowOverflow, counted, nothing answered") {
   host::AlignedBytes blob = golden_blob(true);
   Database db;
   REQUIRE(Database::open(blob.data(), blob.size(), &db) == Status::kOk);
@@ -181,7 +182,9 @@ TEST_CASE("scene: a tile over max_tile_points is kTooManyPoints, a footprint ove
     SceneRun run(&db, cfg);
     REQUIRE(run.init == Status::kOk);
     const SceneResult r = run.scene.recognize(tile.xyz.data(), n);
-    CHECK(r.status == Status::kTooManyPoints);
+    CHECK(r.status == Status::kWindowOverflow);  // the tile's one window sees all n points
+    CHECK(r.stats.windows == 1u);
+    CHECK(r.stats.windows_overflowed == 1u);
     CHECK(r.object_count == 0u);
   }
   cfg.max_tile_points = n;
@@ -189,12 +192,14 @@ TEST_CASE("scene: a tile over max_tile_points is kTooManyPoints, a footprint ove
   {
     SceneRun run(&db, cfg);
     REQUIRE(run.init == Status::kOk);
-    CHECK(run.scene.recognize(tile.xyz.data(), n).status == Status::kTileTooLarge);
+    const SceneResult r = run.scene.recognize(tile.xyz.data(), n);
+    CHECK(r.status == Status::kWindowOverflow);
+    CHECK(r.stats.windows_overflowed == 1u);
     std::vector<double> nan_only = {NAN, 1.0, 2.0};
     CHECK(run.scene.recognize(nan_only.data(), 1).status == Status::kEmptyCloud);
     CHECK(run.scene.recognize(nullptr, 3).status == Status::kInvalidArgument);
   }
-  cfg.max_terrain_cells = 2000;
+  cfg.max_terrain_cells = 2000;  // 41 x 41 cells (and the snap) fit
   {
     SceneRun run(&db, cfg);
     REQUIRE(run.init == Status::kOk);

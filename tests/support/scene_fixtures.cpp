@@ -44,16 +44,21 @@ void remove_occluded_ground(Tile& tile) {
 
 void add_terrain(Tile& tile, const TerrainShape& t, double half, double spacing, double noise,
                  uint64_t seed) {
+  add_terrain_rect(tile, t, -half, half, -half, half, spacing, noise, seed);
+}
+
+void add_terrain_rect(Tile& tile, const TerrainShape& t, double x0, double x1, double y0, double y1,
+                      double spacing, double noise, uint64_t seed) {
   uint64_t state = seed * 6364136223846793005ull + 1442695040888963407ull;
   auto uniform = [&state]() {
     state = state * 6364136223846793005ull + 1442695040888963407ull;
     return static_cast<double>(state >> 11) * (1.0 / 9007199254740992.0);
   };
-  const int steps = static_cast<int>(2.0 * half / spacing);
-  for (int j = 0; j <= steps; ++j)
-    for (int i = 0; i <= steps; ++i) {
-      const double x = -half + i * spacing + (uniform() - 0.5) * spacing * 0.5;
-      const double y = -half + j * spacing + (uniform() - 0.5) * spacing * 0.5;
+  const int nx = static_cast<int>((x1 - x0) / spacing), ny = static_cast<int>((y1 - y0) / spacing);
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      const double x = x0 + i * spacing + (uniform() - 0.5) * spacing * 0.5;
+      const double y = y0 + j * spacing + (uniform() - 0.5) * spacing * 0.5;
       const double n = noise * (uniform() + uniform() + uniform() - 1.5) * 2.0;
       tile.add(x, y, terrain_z(t, x, y) + n, true, -1);
     }

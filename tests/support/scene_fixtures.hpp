@@ -38,6 +38,9 @@ void remove_occluded_ground(Tile& tile);
 
 // Ground points on a square grid over [-half, half]^2 with deterministic noise (m).
 void add_terrain(Tile& tile, const TerrainShape& t, double half, double spacing, double noise, uint64_t seed);
+// The same over the rectangle [x0, x1] x [y0, y1] (a strip of a flight line).
+void add_terrain_rect(Tile& tile, const TerrainShape& t, double x0, double x1, double y0, double y1,
+                      double spacing, double noise, uint64_t seed);
 // Top and sides of an axis-aligned box (footprint sx x sy, sz tall, bottom `clearance`
 // above the terrain), rotated by yaw about z, resting on the terrain at (cx, cy):
 // each point raised by the terrain under it. Returns the object index.

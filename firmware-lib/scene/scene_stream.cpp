@@ -1,0 +1,277 @@
+// SceneStream: points pushed in along-track order (lag bounded by max_lag)
+// into a fixed buffer; each row of windows runs once no point can still
+// arrive in its seen rectangles, through the window stages the tile API
+// shares (scene_window.hpp), and the buffer forgets what later rows do not see.
+#include "spinhash/scene_stream.hpp"
+
+#include <cmath>
+#include <new>
+
+#include "scene/point_ring.hpp"
+#include "scene/scene_window.hpp"
+#include "spinhash/limits.hpp"
+
+namespace spinhash {
+
+constexpr uint32_t kMaxStreamBufferedPoints = 1u << 28;
+constexpr float kMaxStreamExtent = 1.0e5f;  // m: swath edges, lag, jump and z offset
+
+struct StreamBuffers {
+  const Database* db = nullptr;
+  StreamConfig config;
+  // The config's order and swath bounds, in the frame's double precision.
+  double max_lag = 0, max_jump = 0, max_z = 0, swath_min = 0, swath_max = 0;
+  StreamFrame frame;
+  WindowLattice lattice;
+  WindowBuffers window;
+  PointRing ring;
+  double pending[3u * kJumpConfirmPoints] = {};  // a jump awaiting confirmation (frame coordinates)
+  uint32_t pending_count = 0;
+  bool origin_set = false;
+  bool flushed = false;
+  int64_t next_row = 0;  // the first row of windows not yet run
+  StreamStats stats;
+  SceneObjectSink sink = nullptr;
+  void* sink_context = nullptr;
+};
+
+namespace {
+
+const StreamStats kNoStreamStats{};  // stats() before init
+
+bool finite3(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
+
+bool extent_ok(float v) { return std::isfinite(v) && std::fabs(v) <= kMaxStreamExtent; }
+
+Status carve(Arena& arena, const StreamConfig& c, StreamBuffers& b) {
+  b.window.carve(arena, c.scene);
+  b.ring.carve(arena, c.max_buffered_points);
+  return arena.overflowed() ? Status::kWorkspaceTooSmall : Status::kOk;
+}
+
+// The along-track start of what rows from `row` on still see.
+double needed_from(const StreamBuffers& b, int64_t row) {
+  return static_cast<double>(row) * b.lattice.core - b.lattice.margin;
+}
+
+// Keeps the worse of two outcomes: a lost window outranks a full list.
+Status worse(Status a, Status b) {
+  if (a == Status::kWindowOverflow || b == Status::kWindowOverflow) return Status::kWindowOverflow;
+  return a != Status::kOk ? a : b;
+}
+
+// Runs the windows of row k over the buffer.
+Status run_row(StreamBuffers& b, int64_t k) {
+  Status status = Status::kOk;
+  const WindowSource src{b.ring.stz, false, &b.frame};
+  const WindowOutput out{b.sink, b.sink_context, &b.stats.scene, &b.stats.objects_reported,
+                         &b.stats.objects_not_owned};
+  const uint32_t cols = b.lattice.columns();
+  for (uint32_t j = 0; j < cols; ++j) {
+    WindowJob job;
+    job.row = k;
+    job.col = j;
+    job.core = b.lattice.core_rect(k, j);
+    const FrameRect seen = b.lattice.seen_rect(k, j);
+    job.s0 = seen.s0;
+    job.t0 = seen.t0;
+    uint32_t got = 0, missed = 0;
+    for (uint32_t i = 0; i < b.ring.count; ++i) {
+      const double* p = b.ring.stz + 3u * static_cast<size_t>(i);
+      if (!seen.holds(p[0], p[1])) continue;
+      if (!append_window_point(b.window, &got, job, p, i)) ++missed;
+    }
+    if (got == 0) continue;
+    ++b.stats.windows;
+    Status s = missed > 0 ? Status::kWindowOverflow
+                          : run_window(*b.db, b.config.scene, b.frame, src, job, got, b.window, out);
+    if (s == Status::kTileTooLarge) s = Status::kWindowOverflow;
+    if (s == Status::kWindowOverflow) {
+      ++b.stats.windows_overflowed;
+      b.stats.points_in_overflowed += got + missed;
+    }
+    status = worse(status, s);
+  }
+  return status;
+}
+
+// Runs every row that no point within max_lag can still reach.
+Status run_complete_rows(StreamBuffers& b) {
+  Status status = Status::kOk;
+  const double settled = b.stats.furthest_along - b.max_lag;
+  while (settled >= static_cast<double>(b.next_row + 1) * b.lattice.core + b.lattice.margin) {
+    status = worse(status, run_row(b, b.next_row));
+    ++b.next_row;
+    b.ring.drop_before(needed_from(b, b.next_row));
+    b.stats.done_until = static_cast<double>(b.next_row) * b.lattice.core;
+  }
+  return status;
+}
+
+// Stores one accepted point (frame coordinates), running rows it completes.
+Status take(StreamBuffers& b, const double* stz) {
+  Status status = Status::kOk;
+  if (stz[0] > b.stats.furthest_along) {
+    b.stats.furthest_along = stz[0];
+    status = run_complete_rows(b);
+  }
+  if (!b.ring.push(stz)) {
+    ++b.stats.points_overflow;
+    status = Status::kWindowOverflow;
+  }
+  return status;
+}
+
+void start_line(StreamBuffers& b, const double* first) {
+  const StreamConfig& c = b.config;
+  for (int a = 0; a < 3; ++a) b.frame.origin[a] = c.origin_given ? c.origin[a] : first[a];
+  b.origin_set = true;
+  double stz[3];
+  b.frame.to_frame(first, stz);
+  b.stats.furthest_along = stz[0];
+  b.next_row = b.lattice.row_of(stz[0] - b.max_lag);
+  b.stats.done_until = static_cast<double>(b.next_row) * b.lattice.core;
+}
+
+// A point far ahead of the line: held until kJumpConfirmPoints agree (a gap
+// in the data), dropped as a glitch when the line goes on where it was.
+Status hold_jump(StreamBuffers& b, const double* stz) {
+  if (b.pending_count > 0 && std::fabs(stz[0] - b.pending[0]) > b.max_jump) {
+    b.stats.points_glitch += b.pending_count;  // the held ones disagree with this one
+    b.pending_count = 0;
+  }
+  for (int a = 0; a < 3; ++a) b.pending[3u * b.pending_count + a] = stz[a];
+  if (++b.pending_count < kJumpConfirmPoints) return Status::kOk;
+  Status status = Status::kOk;
+  for (uint32_t i = 0; i < b.pending_count; ++i) status = worse(status, take(b, b.pending + 3u * i));
+  b.pending_count = 0;
+  return status;
+}
+
+Status push_one(StreamBuffers& b, const double* xyz) {
+  if (!finite3(xyz)) {
+    ++b.stats.scene.points_nonfinite;
+    return Status::kOk;
+  }
+  if (!b.origin_set) start_line(b, xyz);
+  double stz[3];
+  b.frame.to_frame(xyz, stz);
+  if (std::fabs(stz[2]) > b.max_z || stz[1] < b.swath_min || stz[1] >= b.swath_max) {
+    ++b.stats.points_outside;
+    return Status::kOk;
+  }
+  if (stz[0] < needed_from(b, b.next_row)) {
+    ++b.stats.points_late;  // every window that sees it has run
+    return Status::kOk;
+  }
+  if (stz[0] > b.stats.furthest_along + b.max_jump) return hold_jump(b, stz);
+  if (b.pending_count > 0) {
+    b.stats.points_glitch += b.pending_count;
+    b.pending_count = 0;
+  }
+  return take(b, stz);
+}
+
+}  // namespace
+
+bool stream_config_valid(const StreamConfig& c) noexcept {
+  const bool origin_ok = !c.origin_given || finite3(c.origin);
+  return scene_config_valid(c.scene) && origin_ok && std::isfinite(c.heading_deg) &&
+         std::fabs(c.heading_deg) <= 360.0f && extent_ok(c.swath_min) && extent_ok(c.swath_max) &&
+         c.swath_min < c.swath_max && extent_ok(c.own_min) && extent_ok(c.own_max) && c.own_min < c.own_max &&
+         c.own_min >= c.swath_min && c.own_max <= c.swath_max && extent_ok(c.max_lag) && c.max_lag >= 0.0f &&
+         extent_ok(c.max_jump) && c.max_jump > 0.0f && extent_ok(c.max_z_offset) && c.max_z_offset > 0.0f &&
+         c.max_buffered_points >= 1u && c.max_buffered_points <= kMaxStreamBufferedPoints;
+}
+
+size_t required_stream_workspace_bytes(const StreamConfig& config) noexcept {
+  if (!stream_config_valid(config)) return 0;
+  Arena counter;
+  counter.alloc<StreamBuffers>(1);
+  StreamBuffers scratch;
+  carve(counter, config, scratch);
+  return counter.used() + kBufferAlignment;
+}
+
+Status SceneStream::init(const Database* db, const StreamConfig& config, void* workspace,
+                         size_t workspace_bytes, SceneObjectSink sink, void* sink_context) noexcept {
+  buffers_ = nullptr;
+  if (db == nullptr || !db->is_open() || workspace == nullptr || !stream_config_valid(config))
+    return Status::kInvalidArgument;
+  if (reinterpret_cast<uintptr_t>(workspace) % kBufferAlignment != 0) return Status::kMisalignedBuffer;
+  Arena arena(workspace, workspace_bytes);
+  StreamBuffers* b = arena.alloc<StreamBuffers>(1);
+  if (b == nullptr) return Status::kWorkspaceTooSmall;
+  new (b) StreamBuffers();
+  Status s = carve(arena, config, *b);
+  if (s != Status::kOk) return s;
+  s = b->window.init_recognizer(db, config.scene);
+  if (s != Status::kOk) return s;
+  b->db = db;
+  b->config = config;
+  b->max_lag = static_cast<double>(config.max_lag);
+  b->max_jump = static_cast<double>(config.max_jump);
+  b->max_z = static_cast<double>(config.max_z_offset);
+  b->swath_min = static_cast<double>(config.swath_min);
+  b->swath_max = static_cast<double>(config.swath_max);
+  b->frame.set_heading(static_cast<double>(config.heading_deg));
+  b->lattice.core = static_cast<double>(config.scene.window_core);
+  b->lattice.margin = static_cast<double>(config.scene.window_margin);
+  b->lattice.own_min = static_cast<double>(config.own_min);
+  b->lattice.own_max = static_cast<double>(config.own_max);
+  b->sink = sink;
+  b->sink_context = sink_context;
+  b->stats.scene.workspace_used = arena.used();
+  used_bytes_ = arena.used();
+  buffers_ = b;
+  return Status::kOk;
+}
+
+Status SceneStream::push(const double* xyz, uint32_t n) noexcept {
+  if (buffers_ == nullptr) return Status::kNotOpen;
+  if (n > 0 && xyz == nullptr) return Status::kInvalidArgument;
+  StreamBuffers& b = *buffers_;
+  if (b.flushed) {
+    b.stats.points_after_flush += n;
+    return Status::kStreamFlushed;
+  }
+  Status status = Status::kOk;
+  for (uint32_t i = 0; i < n; ++i) status = worse(status, push_one(b, xyz + 3u * static_cast<size_t>(i)));
+  b.stats.points_pushed += n;
+  return status;
+}
+
+Status SceneStream::flush() noexcept {
+  if (buffers_ == nullptr) return Status::kNotOpen;
+  StreamBuffers& b = *buffers_;
+  if (b.flushed) return Status::kOk;
+  b.flushed = true;
+  b.stats.points_glitch += b.pending_count;  // never confirmed
+  b.pending_count = 0;
+  if (!b.origin_set) return Status::kOk;  // nothing was pushed
+  Status status = Status::kOk;
+  const int64_t last = b.lattice.row_of(b.stats.furthest_along);
+  for (; b.next_row <= last; ++b.next_row) status = worse(status, run_row(b, b.next_row));
+  b.ring.count = 0;
+  b.stats.done_until = static_cast<double>(b.next_row) * b.lattice.core;
+  return status;
+}
+
+void SceneStream::reset() noexcept {
+  if (buffers_ == nullptr) return;
+  StreamBuffers& b = *buffers_;
+  b.ring.count = 0;
+  b.pending_count = 0;
+  b.origin_set = false;
+  b.flushed = false;
+  b.next_row = 0;
+  const size_t used = b.stats.scene.workspace_used;
+  b.stats = StreamStats{};
+  b.stats.scene.workspace_used = used;
+}
+
+const StreamStats& SceneStream::stats() const noexcept {
+  return buffers_ == nullptr ? kNoStreamStats : buffers_->stats;
+}
+
+}  // namespace spinhash

@@ -1,0 +1,263 @@
+// One window: terrain -> objects -> size gates -> ownership -> Recognizer
+// per owned vehicle candidate -> the sink.
+#include "scene/scene_window.hpp"
+
+#include <cmath>
+#include <limits>
+#include <new>
+
+#include "spinhash/limits.hpp"
+
+namespace spinhash {
+namespace {
+
+constexpr float kRadToDeg = 180.0f / 3.14159265f;
+
+ObjectKind classify(const ObjectShape& o, const SceneConfig& c) {
+  if (o.hmin > c.max_clearance) return ObjectKind::kNotVehicleShaped;  // crown, overhang
+  if (o.length() > c.max_length || o.width() > c.max_width)
+    return o.width() < c.min_width ? ObjectKind::kNotVehicleShaped
+                                   : ObjectKind::kTooLarge;         // wall : building
+  if (o.hmax > c.max_height) return ObjectKind::kNotVehicleShaped;  // tree
+  if (o.length() < c.min_length || o.hmax < c.min_height) return ObjectKind::kTooSmall;
+  if (o.width() < c.min_width) return ObjectKind::kNotVehicleShaped;  // short wall, fence
+  return ObjectKind::kVehicleCandidate;
+}
+
+// A confident answer must also be the right size: the object's footprint
+// within max_size_mismatch of the model's bounding box (length and width).
+bool size_agrees(const ObjectShape& o, const blob::ModelRecord& m, float tolerance) {
+  const float dx = m.bbox_max[0] - m.bbox_min[0], dy = m.bbox_max[1] - m.bbox_min[1];
+  const float len = dx > dy ? dx : dy, wid = dx > dy ? dy : dx;
+  return std::fabs(o.length() - len) <= tolerance * len && std::fabs(o.width() - wid) <= tolerance * wid;
+}
+
+// The model's box bottom above the terrain under `pose` (world-aligned,
+// window-local), m: the mean over its four bottom corners that have terrain
+// under them; NaN when none has. The terrain grid lies in the frame's axes.
+float ground_gap(const Pose& pose, const blob::ModelRecord& m, const TerrainGrid& terrain,
+                 const StreamFrame& frame) {
+  const float ax = static_cast<float>(frame.ax), ay = static_cast<float>(frame.ay);
+  float sum = 0.0f;
+  uint32_t corners = 0;
+  for (int i = 0; i < 4; ++i) {
+    const float c[3] = {i & 1 ? m.bbox_max[0] : m.bbox_min[0], i & 2 ? m.bbox_max[1] : m.bbox_min[1],
+                        m.bbox_min[2]};
+    float x[3];
+    for (int r = 0; r < 3; ++r)
+      x[r] = pose.rotation[3 * r] * c[0] + pose.rotation[3 * r + 1] * c[1] + pose.rotation[3 * r + 2] * c[2] +
+             static_cast<float>(pose.translation[r]);
+    const float ground = terrain_height_at(terrain, x[0] * ax + x[1] * ay, -x[0] * ay + x[1] * ax);
+    if (!std::isfinite(ground)) continue;
+    sum += x[2] - ground;
+    ++corners;
+  }
+  return corners > 0 ? sum / static_cast<float>(corners) : std::numeric_limits<float>::quiet_NaN();
+}
+
+// Not sunk deeper than `tolerance`; NaN (no terrain to test against) passes.
+bool not_sunk(float gap, float tolerance) { return !(gap < -tolerance); }
+
+uint32_t add_saturated(uint32_t a, uint64_t b) {
+  const uint64_t s = static_cast<uint64_t>(a) + b;
+  return s > 0xFFFFFFFFull ? 0xFFFFFFFFu : static_cast<uint32_t>(s);
+}
+
+// Exact footprint boxes in the stream frame, from the points' sources:
+// the same for every window that sees the same points.
+void object_boxes(const WindowSource& src, uint32_t n, uint32_t objects, WindowBuffers& b) {
+  constexpr double kFar = std::numeric_limits<double>::infinity();
+  for (uint32_t k = 0; k < objects; ++k) {
+    double* box = b.box + 4u * k;
+    box[0] = box[2] = kFar;
+    box[1] = box[3] = -kFar;
+  }
+  for (uint32_t i = 0; i < n; ++i) {
+    if (b.label[i] == kNoObject) continue;
+    double stz[3];
+    src.stz(b.source[i], stz);
+    double* box = b.box + 4u * b.label[i];
+    box[0] = stz[0] < box[0] ? stz[0] : box[0];
+    box[1] = stz[0] > box[1] ? stz[0] : box[1];
+    box[2] = stz[1] < box[2] ? stz[1] : box[2];
+    box[3] = stz[1] > box[3] ? stz[1] : box[3];
+  }
+}
+
+// Counting sort of the object points into b.gathered, world-aligned and
+// window-local; b.offsets[k] = object k's first point.
+void gather_objects(uint32_t n, uint32_t objects, const StreamFrame& frame, WindowBuffers& b) {
+  const float ax = static_cast<float>(frame.ax), ay = static_cast<float>(frame.ay);
+  for (uint32_t k = 0; k <= objects; ++k) b.offsets[k] = 0;
+  for (uint32_t i = 0; i < n; ++i)
+    if (b.label[i] != kNoObject) ++b.offsets[b.label[i] + 1u];
+  for (uint32_t k = 0; k < objects; ++k) b.offsets[k + 1u] += b.offsets[k];
+  for (uint32_t i = 0; i < n; ++i) {
+    if (b.label[i] == kNoObject) continue;
+    const uint32_t at = b.offsets[b.label[i]]++;
+    const float* p = b.local + 3u * static_cast<size_t>(i);
+    float* q = b.gathered + 3u * static_cast<size_t>(at);
+    q[0] = p[0] * ax - p[1] * ay;
+    q[1] = p[0] * ay + p[1] * ax;
+    q[2] = p[2];
+  }
+  for (uint32_t k = objects; k > 0; --k) b.offsets[k] = b.offsets[k - 1u];  // back to starts
+  b.offsets[0] = 0;
+}
+
+// The object's description in world coordinates (no recognition yet).
+SceneObject describe(const ObjectShape& o, const SceneConfig& c, const StreamFrame& frame,
+                     const WindowJob& job) {
+  SceneObject out;
+  out.points = o.points;
+  double dx, dy;
+  frame.offset_to_world(job.s0 + static_cast<double>(o.cx), job.t0 + static_cast<double>(o.cy), &dx, &dy);
+  out.center[0] = frame.origin[0] + dx;
+  out.center[1] = frame.origin[1] + dy;
+  out.center[2] = frame.origin[2] + 0.5 * static_cast<double>(o.zmin + o.zmax);
+  out.extent[0] = o.length();
+  out.extent[1] = o.width();
+  out.extent[2] = o.hmax;
+  const float frame_deg = static_cast<float>(std::atan2(frame.ay, frame.ax)) * kRadToDeg;
+  float heading = std::atan2(o.ay, o.ax) * kRadToDeg + frame_deg;
+  if (heading > 180.0f) heading -= 360.0f;
+  if (heading <= -180.0f) heading += 360.0f;
+  out.heading_deg = heading;
+  out.min_height = o.hmin;
+  out.high_layer = o.high_layer;
+  out.kind = classify(o, c);
+  return out;
+}
+
+// Recognises the vehicle candidate k of the window into out (and b.ranking).
+void recognize_object(const Database& db, const SceneConfig& c, const StreamFrame& frame,
+                      const WindowJob& job, uint32_t k, WindowBuffers& b, SceneObject& out,
+                      SceneStats* stats) {
+  const ObjectShape& o = b.shapes[k];
+  const Result r = b.recognizer.recognize(b.gathered + 3u * static_cast<size_t>(b.offsets[k]), o.points);
+  out.status = r.status;
+  out.stats = r.stats;
+  stats->recognition_hypotheses += r.stats.hypotheses;
+  stats->recognition_candidates += r.stats.candidates;
+  if (r.status != Status::kOk || r.ranking_count == 0) {
+    out.kind = ObjectKind::kUnknown;
+    return;
+  }
+  const blob::ModelRecord& best = db.model(r.ranking[0].model);
+  out.ground_gap = r.ranking[0].has_pose ? ground_gap(r.ranking[0].pose, best, b.terrain, frame)
+                                         : std::numeric_limits<float>::quiet_NaN();
+  double world[2];
+  frame.offset_to_world(job.s0, job.t0, &world[0], &world[1]);
+  const double shift[3] = {frame.origin[0] + world[0], frame.origin[1] + world[1], frame.origin[2]};
+  out.ranking_count = r.ranking_count < c.top_n ? r.ranking_count : c.top_n;
+  for (uint32_t j = 0; j < out.ranking_count; ++j) {
+    b.ranking[j] = r.ranking[j];
+    for (int a = 0; a < 3; ++a) b.ranking[j].pose.translation[a] += shift[a];  // local -> georeferenced
+  }
+  out.ranking = b.ranking;
+  out.confident =
+      r.confident && size_agrees(o, best, c.max_size_mismatch) && not_sunk(out.ground_gap, c.max_ground_sink);
+  out.group_size = r.group_size;
+}
+
+}  // namespace
+
+RecognizerConfig scene_object_config(const SceneConfig& c) {
+  RecognizerConfig r = c.recognizer;
+  r.ground_clearance = 0.0f;  // the scene removed the ground already, on any slope
+  return r;
+}
+
+TerrainParams scene_terrain_params(const SceneConfig& c) {
+  TerrainParams p;
+  p.cell = c.terrain_cell;
+  p.max_window = c.terrain_window;
+  p.slope = c.terrain_slope;
+  p.dh0 = c.terrain_dh0;
+  p.dh_max = c.terrain_dh_max;
+  p.ground_height = c.ground_height;
+  return p;
+}
+
+bool scene_gates_valid(const SceneConfig& c) {
+  auto range = [](float lo, float hi) { return lo >= 0.0f && hi >= lo && hi <= 1000.0f; };
+  return range(c.min_length, c.max_length) && range(c.min_width, c.max_width) &&
+         range(c.min_height, c.max_height) && c.max_clearance >= 0.0f && c.max_clearance <= 1000.0f &&
+         c.max_size_mismatch >= 0.0f && c.max_size_mismatch <= 10.0f && c.max_ground_sink >= 0.0f &&
+         c.segment_cell >= 0.02f && c.segment_cell <= 10.0f && c.layer_split_height > 0.0f &&
+         c.layer_split_height <= 1000.0f;
+}
+
+void WindowBuffers::carve(Arena& arena, const SceneConfig& c) {
+  const size_t np = c.max_tile_points;
+  capacity = c.max_tile_points;
+  local = arena.alloc<float>(3u * np);
+  source = arena.alloc<uint32_t>(np);
+  height = arena.alloc<float>(np);
+  ground = arena.alloc<uint8_t>(np);
+  label = arena.alloc<uint32_t>(np);
+  gathered = arena.alloc<float>(3u * np);
+  offsets = arena.alloc<uint32_t>(c.max_objects + 1u);
+  box = arena.alloc<double>(4u * static_cast<size_t>(c.max_objects));
+  shapes = arena.alloc<ObjectShape>(c.max_objects);
+  ranking = arena.alloc<RankedModel>(c.top_n);
+  terrain.carve(arena, c.max_terrain_cells);
+  segments.carve(arena, c.max_segment_cells);
+  recognizer_bytes_ = required_workspace_bytes(scene_object_config(c));
+  uint8_t* raw = arena.alloc<uint8_t>(recognizer_bytes_ + kBufferAlignment);
+  recognizer_workspace_ = nullptr;
+  if (raw != nullptr) {
+    const uintptr_t at =
+        (reinterpret_cast<uintptr_t>(raw) + kBufferAlignment - 1u) / kBufferAlignment * kBufferAlignment;
+    recognizer_workspace_ = reinterpret_cast<void*>(at);
+  }
+}
+
+Status WindowBuffers::init_recognizer(const Database* db, const SceneConfig& c) {
+  if (recognizer_workspace_ == nullptr) return Status::kWorkspaceTooSmall;
+  return recognizer.init(db, scene_object_config(c), recognizer_workspace_, recognizer_bytes_);
+}
+
+Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& frame, const WindowSource& src,
+                  const WindowJob& job, uint32_t n, WindowBuffers& b, const WindowOutput& out) {
+  SceneStats& st = *out.scene;
+  st.points_in = add_saturated(st.points_in, n);
+  if (n == 0) return Status::kOk;
+  TerrainStats ts;
+  Status s = classify_terrain(b.local, n, scene_terrain_params(c), b.terrain, b.height, b.ground, &ts);
+  if (s != Status::kOk) return s;
+  st.points_ground = add_saturated(st.points_ground, ts.points_ground);
+  st.terrain_cells = add_saturated(st.terrain_cells, ts.cells);
+  st.terrain_windows = add_saturated(st.terrain_windows, ts.windows);
+  SegmentParams sp;
+  sp.cell = c.segment_cell;
+  sp.split_height = c.layer_split_height;
+  sp.min_points = c.min_object_points;
+  sp.max_objects = c.max_objects;
+  SegmentStats ss;
+  const Status seg = segment_objects(b.local, b.height, b.ground, n, sp, b.segments, b.shapes, b.label, &ss);
+  if (seg != Status::kOk && seg != Status::kTooManyObjects) return seg;
+  st.segment_cells = add_saturated(st.segment_cells, ss.cells);
+  st.components = add_saturated(st.components, ss.components);
+  st.objects_dropped = add_saturated(st.objects_dropped, ss.dropped);
+  st.points_in_objects = add_saturated(st.points_in_objects, ss.points_in_objects);
+  st.points_fragments = add_saturated(st.points_fragments, ss.points_fragments);
+  object_boxes(src, n, ss.objects, b);
+  gather_objects(n, ss.objects, frame, b);
+  for (uint32_t k = 0; k < ss.objects; ++k) {
+    const double* box = b.box + 4u * k;
+    if (!job.core.holds(0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]))) {
+      ++*out.objects_not_owned;  // another window reports it
+      continue;
+    }
+    SceneObject o = describe(b.shapes[k], c, frame, job);
+    if (o.kind == ObjectKind::kVehicleCandidate) recognize_object(db, c, frame, job, k, b, o, &st);
+    st.objects_by_kind[static_cast<uint32_t>(o.kind)] =
+        add_saturated(st.objects_by_kind[static_cast<uint32_t>(o.kind)], 1u);
+    ++*out.objects_reported;
+    if (out.sink != nullptr) out.sink(out.context, o, job.row, job.col);
+  }
+  return seg;
+}
+
+}  // namespace spinhash

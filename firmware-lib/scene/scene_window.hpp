@@ -1,0 +1,99 @@
+// One window of a scene: the stages every scene path shares (the tile API
+// and the stream): terrain, objects, size gates, the ownership rule, then
+// recognition of each owned vehicle candidate, reported to a sink. The
+// window's points come in through append_window_point from wherever the
+// caller keeps them (the stream's buffer, a caller's tile).
+#pragma once
+#include <cstdint>
+
+#include "geometry/terrain.hpp"
+#include "scene/segment.hpp"
+#include "scene/window_lattice.hpp"
+#include "spinhash/scene_stream.hpp"
+
+namespace spinhash {
+
+// Exact stream-frame coordinates of a window point's source, by index:
+// world xyz through the frame (a tile) or (s, t, z) already (the stream).
+struct WindowSource {
+  const double* data = nullptr;  // 3 per point
+  bool world = false;
+  const StreamFrame* frame = nullptr;
+  void stz(uint32_t i, double* out) const {
+    if (world) {
+      frame->to_frame(data + 3u * i, out);
+    } else {
+      for (int a = 0; a < 3; ++a) out[a] = data[3u * i + a];
+    }
+  }
+};
+
+struct WindowJob {
+  FrameRect core;   // objects whose centre lies here are this window's
+  double s0 = 0.0;  // the window-local frame's origin in the stream frame
+  double t0 = 0.0;
+  int64_t row = 0;
+  uint32_t col = 0;
+};
+
+// One window's working set, carved from the workspace.
+struct WindowBuffers {
+  Recognizer recognizer;
+  uint32_t capacity = 0;
+  float* local = nullptr;      // 3 x capacity: (s - s0, t - t0, z) per point
+  uint32_t* source = nullptr;  // capacity: the point's index in its WindowSource
+  float* height = nullptr;     // above the terrain
+  uint8_t* ground = nullptr;
+  uint32_t* label = nullptr;
+  float* gathered = nullptr;    // 3 x capacity: object points, world-aligned
+  uint32_t* offsets = nullptr;  // max_objects + 1
+  double* box = nullptr;        // 4 x max_objects: exact s, t bounds per object
+  ObjectShape* shapes = nullptr;
+  RankedModel* ranking = nullptr;  // top_n: the object being reported
+  TerrainGrid terrain;
+  SegmentGrid segments;
+
+  // Carves the buffers (counting when the arena does), the recognizer's
+  // workspace included; init_recognizer() then opens it.
+  void carve(Arena& arena, const SceneConfig& c);
+  Status init_recognizer(const Database* db, const SceneConfig& c);
+
+ private:
+  void* recognizer_workspace_ = nullptr;
+  size_t recognizer_bytes_ = 0;
+};
+
+// Where a window's reports and counts go.
+struct WindowOutput {
+  SceneObjectSink sink = nullptr;
+  void* context = nullptr;
+  SceneStats* scene = nullptr;  // summed
+  uint64_t* objects_reported = nullptr;
+  uint64_t* objects_not_owned = nullptr;
+};
+
+RecognizerConfig scene_object_config(const SceneConfig& c);
+TerrainParams scene_terrain_params(const SceneConfig& c);
+bool scene_gates_valid(const SceneConfig& c);
+
+// Appends one point (stream frame stz, source index) to the window's
+// local buffer; false when the window is full.
+inline bool append_window_point(WindowBuffers& b, uint32_t* n, const WindowJob& job, const double* stz,
+                                uint32_t source) {
+  if (*n >= b.capacity) return false;
+  float* p = b.local + 3u * static_cast<size_t>(*n);
+  p[0] = static_cast<float>(stz[0] - job.s0);
+  p[1] = static_cast<float>(stz[1] - job.t0);
+  p[2] = static_cast<float>(stz[2]);
+  b.source[*n] = source;
+  ++*n;
+  return true;
+}
+
+// Runs the stages on the window's n points and reports the objects it
+// owns. kOk, kTooManyObjects (objects past max_objects dropped, counted),
+// kTileTooLarge (the window's footprint exceeds the grids: nothing reported).
+Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& frame, const WindowSource& src,
+                  const WindowJob& job, uint32_t n, WindowBuffers& b, const WindowOutput& out);
+
+}  // namespace spinhash

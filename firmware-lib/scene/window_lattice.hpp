@@ -1,0 +1,69 @@
+// The stream frame and the window lattice with its ownership rule: square
+// cores of edge `core` tile the (s, t) plane, each window sees its core plus
+// `margin` on every side, and an object belongs to the window whose
+// half-open core holds its centre. Shared by the stream and the tile API.
+#pragma once
+#include <cmath>
+#include <cstdint>
+
+namespace spinhash {
+
+// s along track, t across (counter-clockwise from s), z up, from an origin.
+struct StreamFrame {
+  double origin[3] = {0, 0, 0};
+  double ax = 1.0, ay = 0.0;  // along-track unit vector in xy
+
+  void set_heading(double heading_deg) {
+    const double r = heading_deg * (3.14159265358979323846 / 180.0);
+    ax = std::cos(r);
+    ay = std::sin(r);
+  }
+  // World xyz -> (s, t, z - origin z).
+  void to_frame(const double* xyz, double* stz) const {
+    const double dx = xyz[0] - origin[0], dy = xyz[1] - origin[1];
+    stz[0] = dx * ax + dy * ay;
+    stz[1] = -dx * ay + dy * ax;
+    stz[2] = xyz[2] - origin[2];
+  }
+  // A frame offset (ds, dt) -> the world xy offset it spans.
+  void offset_to_world(double ds, double dt, double* dx, double* dy) const {
+    *dx = ds * ax - dt * ay;
+    *dy = ds * ay + dt * ax;
+  }
+};
+
+// A half-open rectangle [s0, s1) x [t0, t1) of the frame.
+struct FrameRect {
+  double s0 = 0, s1 = 0, t0 = 0, t1 = 0;
+  bool holds(double s, double t) const { return s >= s0 && s < s1 && t >= t0 && t < t1; }
+};
+
+struct WindowLattice {
+  double core = 32.0;                   // m
+  double margin = 40.0;                 // m
+  double own_min = 0.0, own_max = 0.0;  // across track, owned
+
+  int64_t row_of(double s) const { return static_cast<int64_t>(std::floor(s / core)); }
+  uint32_t columns() const {
+    const double c = std::ceil((own_max - own_min) / core);
+    return c > 0.0 ? static_cast<uint32_t>(c) : 0u;
+  }
+  FrameRect core_rect(int64_t k, uint32_t j) const {
+    FrameRect r;
+    r.s0 = static_cast<double>(k) * core;
+    r.s1 = r.s0 + core;
+    r.t0 = own_min + static_cast<double>(j) * core;
+    r.t1 = r.t0 + core < own_max ? r.t0 + core : own_max;
+    return r;
+  }
+  FrameRect seen_rect(int64_t k, uint32_t j) const {
+    FrameRect r = core_rect(k, j);
+    r.s0 -= margin;
+    r.s1 += margin;
+    r.t0 -= margin;
+    r.t1 += margin;
+    return r;
+  }
+};
+
+}  // namespace spinhash
