@@ -65,7 +65,7 @@ void collect(void* context, const SceneObject& object, int64_t, uint32_t) {
   ++b.count;
 }
 
-// The finite points' min corner (the frame's origin) and their count.
+// The finite points' min corner and their count.
 uint32_t finite_min_corner(const double* xyz, uint32_t n, double* origin) {
   for (int a = 0; a < 3; ++a) origin[a] = kUnbounded;
   uint32_t m = 0;
@@ -156,8 +156,11 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
   const SceneConfig& c = config_;
   b.count = 0;
   b.dropped = 0;
-  StreamFrame frame;  // heading +x, origin at the min corner: local = xyz - origin
+  // Heading +x; the origin on the absolute lattice of window cores below
+  // the min corner, as `spinhash scene` streams a file: the same grid cells.
+  StreamFrame frame;
   const uint32_t m = finite_min_corner(xyz, n, frame.origin);
+  const double core = static_cast<double>(c.window_core);
   res.stats.points_nonfinite = n - m;
   res.stats.workspace_used = used_bytes_;
   if (m == 0) {
@@ -165,6 +168,7 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
     res.stats.points_in = n;
     return res;
   }
+  for (int a = 0; m > 0 && a < 2; ++a) frame.origin[a] = std::floor(frame.origin[a] / core) * core;
   double extent[2] = {0.0, 0.0};
   for (uint32_t i = 0; i < n; ++i) {
     const double* p = xyz + 3u * i;
@@ -179,7 +183,6 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
   lattice.core = one_window ? kUnbounded : static_cast<double>(c.window_core);
   lattice.margin = static_cast<double>(c.window_margin);
   lattice.own_min = 0.0;
-  const double core = static_cast<double>(c.window_core);
   lattice.own_max = one_window ? kUnbounded : (std::floor(extent[1] / core) + 1.0) * core;
   const int64_t rows = one_window ? 1 : lattice.row_of(extent[0]) + 1;
   const uint32_t cols = one_window ? 1u : lattice.columns();

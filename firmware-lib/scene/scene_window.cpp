@@ -7,6 +7,7 @@
 #include <new>
 
 #include "spinhash/limits.hpp"
+#include "util/heap_sort.hpp"
 
 namespace spinhash {
 namespace {
@@ -33,10 +34,11 @@ bool size_agrees(const ObjectShape& o, const blob::ModelRecord& m, float toleran
 }
 
 // The model's box bottom above the terrain under `pose` (world-aligned,
-// window-local), m: the mean over its four bottom corners that have terrain
-// under them; NaN when none has. The terrain grid lies in the frame's axes.
+// from the object's origin, which lies at (ds, dt) in the window's grid
+// frame), m: the mean over its four bottom corners that have terrain under
+// them; NaN when none has. The terrain grid lies in the frame's axes.
 float ground_gap(const Pose& pose, const blob::ModelRecord& m, const TerrainGrid& terrain,
-                 const StreamFrame& frame) {
+                 const StreamFrame& frame, float ds, float dt) {
   const float ax = static_cast<float>(frame.ax), ay = static_cast<float>(frame.ay);
   float sum = 0.0f;
   uint32_t corners = 0;
@@ -47,7 +49,7 @@ float ground_gap(const Pose& pose, const blob::ModelRecord& m, const TerrainGrid
     for (int r = 0; r < 3; ++r)
       x[r] = pose.rotation[3 * r] * c[0] + pose.rotation[3 * r + 1] * c[1] + pose.rotation[3 * r + 2] * c[2] +
              static_cast<float>(pose.translation[r]);
-    const float ground = terrain_height_at(terrain, x[0] * ax + x[1] * ay, -x[0] * ay + x[1] * ax);
+    const float ground = terrain_height_at(terrain, x[0] * ax + x[1] * ay + ds, -x[0] * ay + x[1] * ax + dt);
     if (!std::isfinite(ground)) continue;
     sum += x[2] - ground;
     ++corners;
@@ -84,10 +86,18 @@ void object_boxes(const WindowSource& src, uint32_t n, uint32_t objects, WindowB
   }
 }
 
-// Counting sort of the object points into b.gathered, world-aligned and
-// window-local; b.offsets[k] = object k's first point.
-void gather_objects(uint32_t n, uint32_t objects, const StreamFrame& frame, WindowBuffers& b) {
-  const float ax = static_cast<float>(frame.ax), ay = static_cast<float>(frame.ay);
+// The frame offset of object k's own origin: its box's min corner on a 1 m
+// lattice. Its points go to the recognizer relative to it, from their exact
+// coordinates, so every window and the tile API hand it the same floats.
+void object_origin(const WindowBuffers& b, uint32_t k, double* s0, double* t0) {
+  *s0 = std::floor(b.box[4u * k]);
+  *t0 = std::floor(b.box[4u * k + 2u]);
+}
+
+// Counting sort of the object points into b.gathered, world-aligned, each
+// object relative to its own origin; b.offsets[k] = object k's first point.
+void gather_objects(const WindowSource& src, uint32_t n, uint32_t objects, const StreamFrame& frame,
+                    WindowBuffers& b) {
   for (uint32_t k = 0; k <= objects; ++k) b.offsets[k] = 0;
   for (uint32_t i = 0; i < n; ++i)
     if (b.label[i] != kNoObject) ++b.offsets[b.label[i] + 1u];
@@ -95,11 +105,14 @@ void gather_objects(uint32_t n, uint32_t objects, const StreamFrame& frame, Wind
   for (uint32_t i = 0; i < n; ++i) {
     if (b.label[i] == kNoObject) continue;
     const uint32_t at = b.offsets[b.label[i]]++;
-    const float* p = b.local + 3u * static_cast<size_t>(i);
+    double stz[3], s0, t0, dx, dy;
+    src.stz(b.source[i], stz);
+    object_origin(b, b.label[i], &s0, &t0);
+    frame.offset_to_world(stz[0] - s0, stz[1] - t0, &dx, &dy);
     float* q = b.gathered + 3u * static_cast<size_t>(at);
-    q[0] = p[0] * ax - p[1] * ay;
-    q[1] = p[0] * ay + p[1] * ax;
-    q[2] = p[2];
+    q[0] = static_cast<float>(dx);
+    q[1] = static_cast<float>(dy);
+    q[2] = static_cast<float>(stz[2]);
   }
   for (uint32_t k = objects; k > 0; --k) b.offsets[k] = b.offsets[k - 1u];  // back to starts
   b.offsets[0] = 0;
@@ -129,12 +142,29 @@ SceneObject describe(const ObjectShape& o, const SceneConfig& c, const StreamFra
   return out;
 }
 
+struct Point3f {
+  float v[3];
+};
+
+// The object's points in one canonical order (by x, y, z): the recognizer's
+// sampling follows point order, and windows, tiles and files meet an
+// object's points in different orders.
+void canonical_order(float* xyz, uint32_t n) {
+  heap_sort(reinterpret_cast<Point3f*>(xyz), n, [](const Point3f& a, const Point3f& b) {
+    if (a.v[0] != b.v[0]) return a.v[0] < b.v[0];
+    if (a.v[1] != b.v[1]) return a.v[1] < b.v[1];
+    return a.v[2] < b.v[2];
+  });
+}
+
 // Recognises the vehicle candidate k of the window into out (and b.ranking).
 void recognize_object(const Database& db, const SceneConfig& c, const StreamFrame& frame,
                       const WindowJob& job, uint32_t k, WindowBuffers& b, SceneObject& out,
                       SceneStats* stats) {
   const ObjectShape& o = b.shapes[k];
-  const Result r = b.recognizer.recognize(b.gathered + 3u * static_cast<size_t>(b.offsets[k]), o.points);
+  float* points = b.gathered + 3u * static_cast<size_t>(b.offsets[k]);
+  canonical_order(points, o.points);
+  const Result r = b.recognizer.recognize(points, o.points);
   out.status = r.status;
   out.stats = r.stats;
   stats->recognition_hypotheses += r.stats.hypotheses;
@@ -144,10 +174,13 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
     return;
   }
   const blob::ModelRecord& best = db.model(r.ranking[0].model);
-  out.ground_gap = r.ranking[0].has_pose ? ground_gap(r.ranking[0].pose, best, b.terrain, frame)
+  double s0, t0;
+  object_origin(b, k, &s0, &t0);
+  const float ds = static_cast<float>(s0 - job.s0), dt = static_cast<float>(t0 - job.t0);
+  out.ground_gap = r.ranking[0].has_pose ? ground_gap(r.ranking[0].pose, best, b.terrain, frame, ds, dt)
                                          : std::numeric_limits<float>::quiet_NaN();
   double world[2];
-  frame.offset_to_world(job.s0, job.t0, &world[0], &world[1]);
+  frame.offset_to_world(s0, t0, &world[0], &world[1]);
   const double shift[3] = {frame.origin[0] + world[0], frame.origin[1] + world[1], frame.origin[2]};
   out.ranking_count = r.ranking_count < c.top_n ? r.ranking_count : c.top_n;
   for (uint32_t j = 0; j < out.ranking_count; ++j) {
@@ -243,7 +276,7 @@ Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& f
   st.points_in_objects = add_saturated(st.points_in_objects, ss.points_in_objects);
   st.points_fragments = add_saturated(st.points_fragments, ss.points_fragments);
   object_boxes(src, n, ss.objects, b);
-  gather_objects(n, ss.objects, frame, b);
+  gather_objects(src, n, ss.objects, frame, b);
   for (uint32_t k = 0; k < ss.objects; ++k) {
     const double* box = b.box + 4u * k;
     if (!job.core.holds(0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]))) {

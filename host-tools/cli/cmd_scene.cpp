@@ -2,6 +2,7 @@
 // One JSON object per object of each tile per line on stdout (vehicle
 // candidates with their ranking and pose; the other objects with model null);
 // per-tile stage statistics, progress and errors on stderr.
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -10,18 +11,21 @@
 #include "cli/json_line.hpp"
 #include "cli/result_json.hpp"
 #include "cloud/cloud_reader.hpp"
+#include "cloud/point_source.hpp"
 #include "pipeline/database_file.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/recognizer_flags.hpp"
 #include "pipeline/scene_session.hpp"
+#include "pipeline/tile_stream.hpp"
 #include "render/tile_picture.hpp"
 
 namespace spinhash::cli {
 
 using pipeline::DatabaseFile;
-using pipeline::SceneSession;
 namespace {
+
+constexpr uint32_t kPicturePoints = 2000000;  // an even sample of the tile for --picture-out
 
 struct SceneArgs {
   std::string db_path;
@@ -30,37 +34,29 @@ struct SceneArgs {
   SceneConfig config;
 };
 
-// The tile's objects as outlined boxes: the model (with "?" when not
-// confident) on vehicle candidates, what it is on the others.
-std::vector<host::PictureBox> picture_boxes(const Database& db, const SceneResult& r) {
-  std::vector<host::PictureBox> boxes;
-  for (uint32_t k = 0; k < r.object_count; ++k) {
-    const SceneObject& o = r.objects[k];
-    host::PictureBox b;
-    b.center[0] = o.center[0], b.center[1] = o.center[1];
-    b.length = o.extent[0], b.width = o.extent[1], b.heading_deg = o.heading_deg;
-    if (o.kind == ObjectKind::kVehicleCandidate && o.ranking_count > 0) {
-      b.label = pipeline::model_name(db, o.ranking[0].model) + (o.confident ? "" : " ?");
-      b.style = o.confident ? host::BoxStyle::kConfident : host::BoxStyle::kUnsure;
-    } else {
-      b.label = object_kind_name(o.kind);
-      b.style = o.kind == ObjectKind::kVehicleCandidate || o.kind == ObjectKind::kUnknown
-                    ? host::BoxStyle::kUnsure
-                    : host::BoxStyle::kNotVehicle;
-    }
-    boxes.push_back(b);
+// An object as an outlined box: the model (with "?" when not confident) on
+// vehicle candidates, what it is on the others.
+host::PictureBox picture_box(const Database& db, const SceneObject& o) {
+  host::PictureBox b;
+  b.center[0] = o.center[0], b.center[1] = o.center[1];
+  b.length = o.extent[0], b.width = o.extent[1], b.heading_deg = o.heading_deg;
+  if (o.kind == ObjectKind::kVehicleCandidate && o.ranking_count > 0) {
+    b.label = pipeline::model_name(db, o.ranking[0].model) + (o.confident ? "" : " ?");
+    b.style = o.confident ? host::BoxStyle::kConfident : host::BoxStyle::kUnsure;
+  } else {
+    b.label = object_kind_name(o.kind);
+    b.style = o.kind == ObjectKind::kVehicleCandidate || o.kind == ObjectKind::kUnknown
+                  ? host::BoxStyle::kUnsure
+                  : host::BoxStyle::kNotVehicle;
   }
-  return boxes;
+  return b;
 }
 
 bool write_picture(const SceneArgs& a, const std::string& name, const std::vector<double>& xyz,
-                   const Database& db, const SceneResult& r, std::string* error) {
-  uint32_t confident = 0;
-  for (uint32_t k = 0; k < r.object_count; ++k) confident += r.objects[k].confident ? 1u : 0u;
+                   const std::vector<host::PictureBox>& boxes, uint32_t confident, std::string* error) {
   const std::string title =
-      name + ": " + std::to_string(r.object_count) + " objects, " + std::to_string(confident) + " confident";
-  return host::write_tile_picture(a.picture_dir + "/" + name + ".png", xyz, picture_boxes(db, r), title,
-                                  error);
+      name + ": " + std::to_string(boxes.size()) + " objects, " + std::to_string(confident) + " confident";
+  return host::write_tile_picture(a.picture_dir + "/" + name + ".png", xyz, boxes, title, error);
 }
 
 std::string triple_json(const double v[3], int digits) {
@@ -92,37 +88,72 @@ std::string object_json(const std::string& tile, uint32_t k, const Database& db,
   return s;
 }
 
+// The stream's counts of what it did not answer, for stderr ("" when none).
+std::string lost_text(const StreamStats& st) {
+  std::string s;
+  auto add = [&s](uint64_t v, const char* what) {
+    if (v > 0) s += (s.empty() ? "" : ", ") + std::to_string(v) + " " + what;
+  };
+  add(st.points_outside, "points outside the swath");
+  add(st.points_late, "points late");
+  add(st.points_glitch, "points of unconfirmed jumps");
+  add(st.points_overflow, "points past the buffer");
+  add(st.windows_overflowed, "windows over capacity (objects not answered)");
+  return s;
+}
+
+// One tile through the stream: JSON lines as objects come, stats on stderr.
+int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& path) {
+  const std::string name = host::cloud_name(path);
+  pipeline::TileStreamOptions options;
+  options.scene = a.config;
+  options.picture_points = a.picture_dir.empty() ? 0u : kPicturePoints;
+  std::vector<host::PictureBox> boxes;
+  uint32_t index = 0, confident = 0;
+  const auto start = std::chrono::steady_clock::now();
+  const pipeline::ObjectCallback print = [&](const SceneObject& o) {
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::printf("%s\n", object_json(name, index++, file.db, o, ms).c_str());
+    if (!a.picture_dir.empty()) boxes.push_back(picture_box(file.db, o));
+    confident += o.confident ? 1u : 0u;
+  };
+  pipeline::TileStreamResult r;
+  try {
+    std::unique_ptr<host::PointSource> source = host::open_point_source(path);
+    r = pipeline::stream_tile(file.db, *source, options, print);
+  } catch (const std::exception& e) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "spinhash scene: %s\n", e.what());  // the reader names the file
+    return kExitCheckFailed;
+  }
+  std::fflush(stdout);
+  const std::string lost = lost_text(r.stats);
+  std::fprintf(stderr, "spinhash scene: %s: %s; %s; %llu windows; read %.1f ms, stream %.1f ms%s%s\n",
+               name.c_str(), status_name(r.status), pipeline::scene_stats_text(r.stats.scene).c_str(),
+               static_cast<unsigned long long>(r.stats.windows), r.read_ms, r.stream_ms,
+               lost.empty() ? "" : "; not answered: ", lost.c_str());
+  int exit_code = r.status == Status::kOk ? kExitOk : kExitCheckFailed;
+  std::string error;
+  if (!a.picture_dir.empty() && !write_picture(a, name, r.picture_xyz, boxes, confident, &error)) {
+    std::fprintf(stderr, "spinhash scene: %s\n", error.c_str());
+    exit_code = kExitError;
+  }
+  return exit_code;
+}
+
 int run_scene(const SceneArgs& a) {
   DatabaseFile file;
-  SceneSession session;
   std::string error;
-  if (!pipeline::load_database(a.db_path, &file, &error) || !session.init(&file.db, a.config, &error)) {
+  if (!pipeline::load_database(a.db_path, &file, &error)) {
     std::fprintf(stderr, "spinhash scene: %s\n", error.c_str());
     return kExitError;
   }
   int exit_code = kExitOk;
   pipeline::Progress progress("scene", static_cast<uint32_t>(a.tiles.size()));
   for (size_t t = 0; t < a.tiles.size(); ++t) {
-    const std::string& path = a.tiles[t];
-    const std::string name = host::cloud_name(path);
-    std::vector<double> xyz;
-    if (!host::read_cloud(path, &xyz, &error)) {
-      std::fprintf(stderr, "spinhash scene: %s\n", error.c_str());  // the reader names the file
-      exit_code = kExitCheckFailed;
-      continue;
-    }
-    const SceneResult r = session.recognize(xyz);
-    // The tile's wall time on every line: objects share the terrain and segmentation work.
-    for (uint32_t k = 0; k < r.object_count; ++k)
-      std::printf("%s\n", object_json(name, k, file.db, r.objects[k], session.last_ms()).c_str());
-    std::fflush(stdout);
-    std::fprintf(stderr, "spinhash scene: %s: %s; %s; %.1f ms\n", name.c_str(), status_name(r.status),
-                 pipeline::scene_stats_text(r.stats).c_str(), session.last_ms());
-    if (r.status != Status::kOk) exit_code = kExitCheckFailed;
-    if (!a.picture_dir.empty() && !write_picture(a, name, xyz, file.db, r, &error)) {
-      std::fprintf(stderr, "spinhash scene: %s\n", error.c_str());
-      exit_code = kExitError;
-    }
+    const int code = run_tile(a, file, a.tiles[t]);
+    if (code != kExitOk && exit_code != kExitError) exit_code = code;
     progress.tick(static_cast<uint32_t>(t + 1));
   }
   return exit_code;
@@ -133,11 +164,14 @@ int run_scene(const SceneArgs& a) {
 void add_scene_command(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<SceneArgs>();
   a->config.recognizer.ground_clearance = 0.0f;  // the scene's terrain classifier removes the ground
+  a->config.max_tile_points = 0;                 // sized per tile from its density (tile_stream.hpp)
   CLI::App* cmd = app.add_subcommand(
       "scene", "find and recognise every vehicle in airborne lidar tiles (LAS, PLY or x y z text, z up)");
   cmd->add_option("--db", a->db_path, "database file")->required();
   cmd->add_option("--top", a->config.top_n, "models listed per object")->check(CLI::Range(1u, 64u));
-  cmd->add_option("--max-tile-points", a->config.max_tile_points, "largest tile (more: refused)")
+  cmd->add_option("--max-window-points", a->config.max_tile_points,
+                  "points a scene window holds (default: sized from the tile's density; more: counted, "
+                  "not answered)")
       ->check(CLI::Range(1u, 1u << 26));
   cmd->add_option("--max-objects", a->config.max_objects,
                   "objects per tile (more: the rest are not recognised)")

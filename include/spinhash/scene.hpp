@@ -40,7 +40,7 @@ struct SceneConfig {
   float window_margin = 40.0f;  // m
 
   // Capacities of one window.
-  uint32_t max_tile_points = 1u << 22;    // points a window holds (more: kWindowOverflow, counted)
+  uint32_t max_tile_points = 1u << 21;    // points a window holds (more: kWindowOverflow, counted)
   uint32_t max_objects = 256;             // objects of >= min_object_points points per window
   uint32_t max_terrain_cells = 1u << 16;  // terrain grid: 0.5 m cells -> 128 x 128 m
   uint32_t max_segment_cells = 1u << 18;  // segmentation grid: 0.25 m cells -> 128 x 128 m

@@ -137,11 +137,11 @@ void bind_scene(py::module_& m) {
                                 "Finds and recognises every vehicle in an airborne lidar tile (z up), as "
                                 "`spinhash scene` does.")
       .def(py::init(&make_scene), py::arg("db"), py::arg("config") = py::none(),
-           "SceneRecognizer(db, config=None, top_n=5, max_tile_points=300000, max_objects=256, **settings): "
+           "SceneRecognizer(db, config=None, top_n=5, max_tile_points=2097152, max_objects=256, **settings): "
            "settings as spinhash.Config's (ground_clearance defaults to 0: the terrain is removed)")
       .def("recognize", &PySceneRecognizer::recognize, py::arg("points"),
            "Every object of an (N, 3) float64 tile: a list of SceneObject. ValueError when the tile is "
-           "refused (too_many_points, ...); a RuntimeWarning when only the first max_objects were answered.")
+           "refused (window_overflow: a window held more than max_tile_points points, ...); a RuntimeWarning when only the first max_objects were answered.")
       .def_property_readonly("last_status", &PySceneRecognizer::last_status,
                              "status word of the last tile ('ok', 'too_many_objects', 'empty_cloud', ...)")
       .def_property_readonly("last_stats", &PySceneRecognizer::last_stats,

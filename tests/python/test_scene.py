@@ -39,7 +39,9 @@ def test_the_scene_matches_the_cli(fleet, tile):
         assert [name for name, _ in obj.ranking] == [entry["model"] for entry in line["ranking"]]
         for (_, score), entry in zip(obj.ranking, line["ranking"]):
             assert score == pytest.approx(entry["score"], rel=1e-6)
-        np.testing.assert_allclose(obj.center, line["center"], rtol=0, atol=1e-6)
+        # The CLI streams the file through 32 m windows: the centre comes from
+        # another window-local float frame (scene-stream.md), within 10 um.
+        np.testing.assert_allclose(obj.center, line["center"], rtol=0, atol=1e-5)
         np.testing.assert_allclose(obj.extent, line["extent"], rtol=0, atol=1e-3)  # the CLI prints 4 digits
         if line["ground_gap"] is None:
             assert obj.ground_gap is None
@@ -61,14 +63,14 @@ def test_scene_settings_and_refusals(fleet, tile):
     db = spinhash.Database(fleet.db)
     default = spinhash.SceneRecognizer(db)
     assert default.config.ground_clearance == 0.0  # as `spinhash scene`: the terrain classifier takes the ground
-    assert (default.top_n, default.max_tile_points, default.max_objects) == (5, 300000, 256)
+    assert (default.top_n, default.max_tile_points, default.max_objects) == (5, 1 << 21, 256)
     assert spinhash.SceneRecognizer(db, ground_clearance=0.2, seed=3).config.seed == 3
     top_two = spinhash.SceneRecognizer(db, top_n=2, mode="bran").recognize(points)
     assert all(len(obj.ranking) <= 2 for obj in top_two)
     small = spinhash.SceneRecognizer(db, max_tile_points=1000)
-    with pytest.raises(ValueError, match="scene: too_many_points"):
+    with pytest.raises(ValueError, match="scene: window_overflow"):
         small.recognize(points)
-    assert small.last_status == "too_many_points"
+    assert small.last_status == "window_overflow"
     with pytest.warns(RuntimeWarning, match="too_many_objects"):
         one = spinhash.SceneRecognizer(db, max_objects=1).recognize(points)
     assert len(one) == 1

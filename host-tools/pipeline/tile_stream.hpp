@@ -1,0 +1,44 @@
+// A tile of any size and point order through the SceneStream in bounded
+// memory. One pass over the file's chunks spills the points to temporary
+// files, one per 32 m row of the window lattice (absolute multiples of the
+// core, so the windows of adjacent tiles line up), and finds the tile's
+// extent; then the rows are pushed in order (lag at most one row) and the
+// stream reports each object once. Memory: the stream's workspace, sized
+// from the tile's width and density (never its length), plus the readers'
+// chunks and the row files' write buffers.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cloud/point_source.hpp"
+#include "spinhash/scene_stream.hpp"
+
+namespace spinhash::pipeline {
+
+struct TileStreamOptions {
+  SceneConfig scene;                 // window stages; max_tile_points 0: sized from the density
+  uint64_t max_buffered_points = 0;  // 0: sized from the tile's width and density
+  size_t chunk_points = host::kDefaultChunkPoints;
+  uint32_t picture_points = 0;  // keep about this many points for a picture (0: none)
+};
+
+struct TileStreamResult {
+  Status status = Status::kNotOpen;
+  StreamStats stats;
+  uint64_t points_read = 0;
+  size_t workspace_bytes = 0;
+  double read_ms = 0.0, stream_ms = 0.0;
+  std::vector<double> picture_xyz;  // an even sample of the tile, when asked
+};
+
+using ObjectCallback = std::function<void(const SceneObject&)>;
+
+// Runs the tile; throws host::CloudError for a malformed file (objects
+// already reported stay reported) and std::runtime_error when the temporary
+// files cannot be written.
+TileStreamResult stream_tile(const Database& db, host::PointSource& source, const TileStreamOptions& options,
+                             const ObjectCallback& on_object);
+
+}  // namespace spinhash::pipeline
