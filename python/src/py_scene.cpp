@@ -141,7 +141,8 @@ void bind_scene(py::module_& m) {
            "settings as spinhash.Config's (ground_clearance defaults to 0: the terrain is removed)")
       .def("recognize", &PySceneRecognizer::recognize, py::arg("points"),
            "Every object of an (N, 3) float64 tile: a list of SceneObject. ValueError when the tile is "
-           "refused (window_overflow: a window held more than max_tile_points points, ...); a RuntimeWarning when only the first max_objects were answered.")
+           "refused (window_overflow: a window held more than max_tile_points points, ...); a RuntimeWarning "
+           "when only the first max_objects were answered.")
       .def_property_readonly("last_status", &PySceneRecognizer::last_status,
                              "status word of the last tile ('ok', 'too_many_objects', 'empty_cloud', ...)")
       .def_property_readonly("last_stats", &PySceneRecognizer::last_stats,
