@@ -9,6 +9,7 @@
 #include "spinhash/lsh.hpp"
 // The core's own candidate search, quantisation and L1 distance: the recall
 // measured is that of the code that runs onboard, not of a re-implementation.
+#include "spinhash/internal/l1_distance.hpp"
 #include "spinhash/internal/lsh_search.hpp"
 #include "spinhash/internal/spin_quantize.hpp"
 

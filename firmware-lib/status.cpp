@@ -27,6 +27,7 @@ const char* status_name(Status s) noexcept {
     case Status::kBlobBadIndex: return "blob index out of range";
     case Status::kDatabaseTooLarge: return "database has more models than the workspace supports";
     case Status::kBlobUnknownSection: return "blob section id unknown";
+    case Status::kBlobNotZeroed: return "blob padding or reserved bytes not zero";
     case Status::kEmptyCloud: return "empty cloud";
     case Status::kTooManyPoints: return "cloud larger than the workspace";
     case Status::kNotEnoughFeatures: return "not enough features";

@@ -9,6 +9,9 @@ set(CMAKE_CXX_COMPILER arm-none-eabi-g++)
 # No OS to run a test program on: check the compilers with a static library.
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
 
+# Cortex-M has no NEON: the scalar reference kernels (firmware-lib/kernels/),
+# stated rather than left to the absence of __ARM_NEON.
+set(SPINHASH_KERNELS_REFERENCE ON CACHE BOOL "scalar reference kernels on bare metal")
 set(SPINHASH_CPU_FLAGS "-mcpu=cortex-m7 -mfpu=fpv5-d16 -mfloat-abi=hard -mthumb")
 set(CMAKE_C_FLAGS_INIT "${SPINHASH_CPU_FLAGS} -ffunction-sections -fdata-sections")
 set(CMAKE_CXX_FLAGS_INIT "${SPINHASH_CPU_FLAGS} -ffunction-sections -fdata-sections")

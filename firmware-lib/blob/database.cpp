@@ -16,6 +16,8 @@ Status validate(const uint8_t* base, size_t size, blob_check::Sections* sections
   if (s != Status::kOk) return s;
   s = blob_check::check_params(*reinterpret_cast<const blob::Header*>(base), *sections);
   if (s != Status::kOk) return s;
+  s = blob_check::check_zero_fill(base, *sections);
+  if (s != Status::kOk) return s;
   s = blob_check::check_models(*sections);
   if (s != Status::kOk) return s;
   s = blob_check::check_features(*sections);

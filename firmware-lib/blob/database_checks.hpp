@@ -1,7 +1,7 @@
 // Internal stages of Database::open. Each stage may assume that every stage
 // before it succeeded (that is what makes the later reads safe), and returns
-// the first failure it finds. Order: header -> sections -> params -> models
-// -> features -> lsh.
+// the first failure it finds. Order: header -> sections -> params -> zero
+// fill -> models -> features -> lsh.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -54,6 +54,9 @@ Status check_header(const uint8_t* base, size_t size);
 Status check_sections(const uint8_t* base, Sections* out);
 // Params size, counts, section sizes, float ranges, config fingerprint.
 Status check_params(const blob::Header& header, const Sections& s);
+// Padding, reserved fields and name tails: zero (after check_params, which sizes
+// the Params and model sections).
+Status check_zero_fill(const uint8_t* base, const Sections& s);
 // Model records: names, feature ranges, grids and their offsets, fields and their slots.
 Status check_models(const Sections& s);
 // Per-feature positions, normals and model ids.

@@ -53,6 +53,7 @@ static_assert(same(SPINHASH_OK, Status::kOk) && same(SPINHASH_INVALID_ARGUMENT, 
                   same(SPINHASH_BLOB_BAD_INDEX, Status::kBlobBadIndex) &&
                   same(SPINHASH_DATABASE_TOO_LARGE, Status::kDatabaseTooLarge) &&
                   same(SPINHASH_BLOB_UNKNOWN_SECTION, Status::kBlobUnknownSection) &&
+                  same(SPINHASH_BLOB_NOT_ZEROED, Status::kBlobNotZeroed) &&
                   same(SPINHASH_EMPTY_CLOUD, Status::kEmptyCloud) &&
                   same(SPINHASH_TOO_MANY_POINTS, Status::kTooManyPoints) &&
                   same(SPINHASH_NOT_ENOUGH_FEATURES, Status::kNotEnoughFeatures) &&

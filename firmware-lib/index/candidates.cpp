@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "kernels/l1_select.hpp"
 #include "spinhash/limits.hpp"
 #include "spinhash/lsh.hpp"
 #include "util/fixed_math.hpp"
@@ -123,7 +124,7 @@ uint32_t LshSearcher::search(const Database& db, const uint8_t* spin, uint32_t w
       uint32_t f = entries[first + static_cast<uint32_t>(static_cast<uint64_t>(e) * size / take)];
       // A candidate farther than the farthest kept cannot enter a full list.
       const uint32_t bound = w > 0 && count == w ? out[0].distance : kNoBound;
-      const Candidate c{f, l1_distance_within(spin, db.spin(f), dims, bound)};
+      const Candidate c{f, kernels::l1_distance_within(spin, db.spin(f), dims, bound)};
       // Most entries are too far to enter the list: they are dropped before
       // the seen-set (the list only gets nearer, so a repeat is dropped
       // again). A repeat that would enter is already in the list.
@@ -145,7 +146,7 @@ uint32_t search_model_exhaustive(const Database& db, uint32_t model, const uint8
     // its distance stops at the first block past that bound (same list).
     const bool full = w > 0 && count == w;
     const uint32_t bound = full ? out[w - 1u].distance : kNoBound;
-    const uint32_t d = l1_distance_within(spin, db.spin(f), dims, bound);
+    const uint32_t d = kernels::l1_distance_within(spin, db.spin(f), dims, bound);
     if (full && d > bound) continue;  // most features: no call
     insert_top_w(out, &count, w, Candidate{f, d});
   }

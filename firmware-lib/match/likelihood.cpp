@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "kernels/l1_select.hpp"
 #include "util/fixed_math.hpp"
 
 namespace spinhash {
@@ -195,8 +196,8 @@ Verification verify_pose(const Database& db, uint32_t model, const RigidPose& po
     }
     float r2 = residual2(db, static_cast<uint32_t>(near.feature), x, near.dist2, lp);
     r2 = r2 < lp.delta2 ? r2 : lp.delta2;
-    uint32_t l1 = l1_distance(query.spins + static_cast<size_t>(l) * query.dims,
-                              db.spin(static_cast<uint32_t>(near.feature)), query.dims);
+    uint32_t l1 = kernels::l1_distance(query.spins + static_cast<size_t>(l) * query.dims,
+                                       db.spin(static_cast<uint32_t>(near.feature)), query.dims);
     float term = -r2 * lp.inv_two_sigma2 - static_cast<float>(l1) * lp.spin_weight;
     v.log_likelihood += term > lp.floor ? term : lp.floor;
     v.inliers += near.dist2 <= lp.delta2 ? 1u : 0u;

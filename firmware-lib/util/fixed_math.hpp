@@ -3,8 +3,6 @@
 #include <cmath>
 #include <cstdint>
 
-#include "spinhash/internal/spin_quantize.hpp"  // l1_distance
-
 namespace spinhash {
 
 constexpr float kPi = 3.14159265358979323846f;

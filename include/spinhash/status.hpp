@@ -30,6 +30,7 @@ enum class Status : int32_t {
   kBlobBadIndex = 26,        // LSH or grid entry outside the table it indexes
   kDatabaseTooLarge = 27,    // more models than config.max_models
   kBlobUnknownSection = 28,  // section id not defined by the format version
+  kBlobNotZeroed = 29,       // padding, a reserved field or a name's tail not zero
   // recognize
   kEmptyCloud = 40,         // no finite points
   kTooManyPoints = 41,      // more points than config.max_points (refused)

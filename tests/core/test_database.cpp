@@ -11,6 +11,7 @@
 #include "blob/blob_writer.hpp"
 #include "blob/tiny_blob.hpp"
 #include "support/blob_patch.hpp"
+#include "support/golden_files.hpp"
 
 using spinhash::Database;
 using spinhash::Status;
@@ -193,7 +194,7 @@ TEST_CASE("a flipped header CRC or table byte is kBlobHeaderChecksum") {
   c.entry(3).reserved ^= 0x10u;
   CHECK(c.open() == Status::kBlobHeaderChecksum);
   BlobPatch d = fresh();
-  d.header().reserved[0] ^= 1u;  // reserved bytes are not checked, but they are covered
+  d.header().reserved[0] ^= 1u;  // covered by the header CRC, which is checked first
   CHECK(d.open() == Status::kBlobHeaderChecksum);
 }
 
@@ -397,7 +398,7 @@ TEST_CASE("bad model names are kBlobBadModelTable") {
   b.reseal();
   CHECK(b.open() == Status::kBlobBadModelTable);
   BlobPatch c = fresh();
-  c.model(0).name[0] = '\0';
+  std::memset(c.model(0).name, 0, spinhash::kMaxModelNameBytes);  // empty (a tail after a NUL is not zeroed)
   c.reseal();
   CHECK(c.open() == Status::kBlobBadModelTable);
   BlobPatch ok = fresh();  // 47 characters and the NUL fill the field exactly
@@ -493,6 +494,8 @@ TEST_CASE("bad nearest-feature fields are kBlobBadModelTable") {
          b.params().field_slots = 0;
          b.params().field_cell = 0.0f;
          b.params().field_reach = 0.0f;
+         // The payload's bytes become padding, which must be zero.
+         std::memset(b.payload(blob::kNearestField), 0, b.entry_of(blob::kNearestField).size);
          b.entry_of(blob::kNearestField).size = 0;
        }},
   };
@@ -721,36 +724,81 @@ TEST_CASE("every truncation of a valid blob is refused") {
 
 namespace {
 
-// True if byte `at` lies in the header, the section table or a payload, the
-// regions the CRCs cover (padding between payloads is not covered, by design).
-bool covered_by_crc(BlobPatch& b, size_t at) {
-  if (at < sizeof(blob::Header) + blob::kSectionIdCount * sizeof(blob::SectionEntry)) return true;
-  for (uint32_t i = 0; i < blob::kSectionIdCount; ++i) {
-    const blob::SectionEntry& e = b.entry(i);
-    if (at >= e.offset && at < e.offset + e.size) return true;
-  }
-  return false;
+// True if byte `at` lies in no payload and not in the header or table: padding.
+bool is_padding(const blob::SectionEntry* table, uint32_t sections, size_t at) {
+  if (at < sizeof(blob::Header) + sections * sizeof(blob::SectionEntry)) return false;
+  for (uint32_t i = 0; i < sections; ++i)
+    if (at >= table[i].offset && at < table[i].offset + table[i].size) return false;
+  return true;
 }
+
+// Database::open of `bytes` with byte `at` changed by `flip`.
+Status open_flipped(uint8_t* bytes, size_t size, size_t at, uint8_t flip) {
+  bytes[at] ^= flip;
+  Database db;
+  const Status s = Database::open(bytes, size, &db);
+  bytes[at] ^= flip;
+  return s;
+}
+
+constexpr uint8_t kFlips[] = {0xFFu, 0x01u, 0x80u};  // every bit, the lowest, the highest
 
 }  // namespace
 
-TEST_CASE("every single-byte corruption of covered bytes is detected") {
+TEST_CASE("every single-byte change of a blob is refused, padding included") {
   BlobPatch b = fresh();
-  uint32_t missed = 0, covered = 0;
+  uint32_t accepted = 0, padding = 0;
   for (size_t at = 0; at < b.size(); ++at) {
-    if (!covered_by_crc(b, at)) continue;
-    ++covered;
-    b.data()[at] ^= 0xFFu;
-    if (b.open() == Status::kOk) {
-      ++missed;
-      CAPTURE(at);
-      CHECK(false);
+    padding += is_padding(&b.entry(0), blob::kSectionIdCount, at) ? 1u : 0u;
+    for (uint8_t flip : kFlips) {
+      if (open_flipped(b.data(), b.size(), at, flip) == Status::kOk) {
+        ++accepted;
+        CAPTURE(at);
+        CAPTURE(static_cast<int>(flip));
+        CHECK(false);
+      }
     }
-    b.data()[at] ^= 0xFFu;
   }
-  CHECK(missed == 0);
-  CHECK(covered > b.size() / 2);
+  CHECK(accepted == 0);
+  CHECK(padding > 0);  // the tiny blob has gaps between payloads, as real ones do
   CHECK(b.open() == Status::kOk);
+}
+
+TEST_CASE("a changed padding byte of the golden blob is kBlobNotZeroed") {
+  // The corruptions of issue 29 that were accepted: bytes between the end of
+  // the section table (byte 416) and the first payload (byte 448).
+  host::AlignedBytes golden = spinhash::test::golden_blob(true);
+  const auto* table = reinterpret_cast<const blob::SectionEntry*>(golden.data() + sizeof(blob::Header));
+  uint32_t padding = 0;
+  for (size_t at = 0; at < golden.size(); ++at) {
+    if (!is_padding(table, blob::kSectionIdCount, at)) continue;
+    ++padding;
+    CAPTURE(at);
+    CHECK(open_flipped(golden.data(), golden.size(), at, 0x01u) == Status::kBlobNotZeroed);
+  }
+  CHECK(padding >= 32u);
+  CHECK(is_padding(table, blob::kSectionIdCount, 420));
+}
+
+TEST_CASE("non-zero reserved fields and name tails are kBlobNotZeroed, even re-sealed") {
+  const Corruption cases[] = {
+      {"header reserved", [](BlobPatch& b) { b.header().reserved[23] = 1; }},
+      {"table entry reserved", [](BlobPatch& b) { b.entry(4).reserved = 1; }},
+      {"table entry reserved2", [](BlobPatch& b) { b.entry(10).reserved2 = 0x80000000u; }},
+      {"params reserved", [](BlobPatch& b) { b.params().reserved[47] = 2; }},
+      {"model reserved", [](BlobPatch& b) { b.model(2).reserved[0] = 3; }},
+      {"a name's tail", [](BlobPatch& b) { b.model(1).name[spinhash::kMaxModelNameBytes - 1u] = 'x'; }},
+      {"padding after the table",
+       [](BlobPatch& b) {
+         b.data()[sizeof(blob::Header) + blob::kSectionIdCount * sizeof(blob::SectionEntry)] = 1;
+       }},
+      {"padding after the feature models (120 bytes)",
+       [](BlobPatch& b) {
+         const blob::SectionEntry& e = b.entry_of(blob::kFeatModels);
+         b.data()[e.offset + e.size] = 1;
+       }},
+  };
+  check_corruptions(cases, Status::kBlobNotZeroed);
 }
 
 TEST_CASE("single-byte corruptions re-sealed past the checksums never escape the blob") {
@@ -791,5 +839,5 @@ TEST_CASE("single-byte corruptions re-sealed past the checksums never escape the
     for (uint32_t m = 0; m < db.model_count(); ++m)
       CHECK(db.model(m).first_feature + db.model(m).feature_count <= n);
   }
-  CHECK(accepted > 0);  // reserved bytes, padding, spin values: allowed by design
+  CHECK(accepted > 0);  // spin values, positions within range: allowed by design
 }

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "db/lsh_tables.hpp"
+#include "spinhash/internal/l1_distance.hpp"
 #include "spinhash/internal/lsh_probability.hpp"
 #include "spinhash/internal/lsh_search.hpp"
-#include "spinhash/internal/spin_quantize.hpp"
 #include "spinhash/lsh.hpp"
 
 using namespace spinhash;

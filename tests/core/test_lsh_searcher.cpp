@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "spinhash/arena.hpp"
+#include "spinhash/internal/l1_distance.hpp"
 #include "spinhash/internal/lsh_search.hpp"
-#include "spinhash/internal/spin_quantize.hpp"
 #include "spinhash/lsh.hpp"
 #include "support/toy_database.hpp"
 

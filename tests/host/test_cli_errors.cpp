@@ -276,6 +276,64 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
   CHECK_FALSE(empty.err.empty());
 }
 
+namespace {
+
+// Offsets of single bytes whose change Database::open refused only from
+// issue 29 on: every byte between the section table and the first payload
+// (where the 5 accepted corruptions of the issue lay), the first padding
+// byte after each payload that has one, and reserved fields.
+std::vector<size_t> zero_fill_offsets(const std::string& blob) {
+  using spinhash::blob::Header;
+  using spinhash::blob::SectionEntry;
+  Header h;
+  std::memcpy(&h, blob.data(), sizeof h);
+  std::vector<SectionEntry> table(h.section_count);
+  std::memcpy(table.data(), blob.data() + sizeof h, table.size() * sizeof(SectionEntry));
+  const size_t table_end = sizeof h + table.size() * sizeof(SectionEntry);
+  size_t first = blob.size();
+  for (const SectionEntry& e : table) first = e.offset < first ? static_cast<size_t>(e.offset) : first;
+  std::vector<size_t> at;
+  for (size_t i = table_end; i < first; ++i) at.push_back(i);
+  for (const SectionEntry& e : table)  // the last payload ends the blob: no padding after it
+    if (e.size % spinhash::blob::kSectionAlignment != 0u && e.offset + e.size < blob.size())
+      at.push_back(static_cast<size_t>(e.offset + e.size));
+  at.push_back(offsetof(Header, reserved));
+  at.push_back(sizeof h + offsetof(SectionEntry, reserved2));
+  return at;
+}
+
+}  // namespace
+
+TEST_CASE("verify refuses a changed padding or reserved byte, as Database::open does") {
+  const Fixture& f = fx();
+  TempDir dir("cli-zero-fill");
+  const std::vector<size_t> offsets = zero_fill_offsets(f.good_bytes);
+  REQUIRE(offsets.size() > 16u);
+  const std::string path = dir.file("changed.shdb");
+  for (size_t at : offsets) {
+    CAPTURE(at);
+    std::string changed = f.good_bytes;
+    changed[at] ^= 0x01;
+    write_bytes(path, changed);
+    const Run r = f.run("verify " + f.q(path));
+    CHECK(r.exit_code == kExitError);
+    // The header's reserved bytes are under its CRC, which is checked first.
+    const bool in_header = at < sizeof(spinhash::blob::Header) + sizeof(spinhash::blob::SectionEntry);
+    CHECK(contains(r.err, spinhash::status_name(in_header ? spinhash::Status::kBlobHeaderChecksum
+                                                          : spinhash::Status::kBlobNotZeroed)));
+  }
+  // The first padding byte after the table: recognize and info refuse it too.
+  std::string changed = f.good_bytes;
+  changed[offsets[0]] ^= 0x80;
+  write_bytes(path, changed);
+  for (const std::string& cmd : {"info " + f.q(path), "recognize --db " + f.q(path) + " " + f.q(f.query)}) {
+    CAPTURE(cmd);
+    const Run r = f.run(cmd);
+    CHECK(r.exit_code == kExitError);
+    CHECK(contains(r.err, spinhash::status_name(spinhash::Status::kBlobNotZeroed)));
+  }
+}
+
 TEST_CASE("bad command lines are refused with a message and exit 2; --help and --version exit 0") {
   const Fixture& f = fx();
   for (const std::string& args :
