@@ -26,6 +26,10 @@ constexpr uint64_t kMaxBufferedPoints = 1u << 28;
 // tile is an outlier (a GNSS glitch), not part of the swath.
 constexpr double kOutlierCellShare = 1e-6;
 constexpr uint64_t kMinSwathCellPoints = 2;
+// A band of columns streamed at once: 2 cores (64 m) across, plus its
+// margins. Wider tiles are cut into bands, each owning its columns, so the
+// buffer never holds a row across the whole tile.
+constexpr int64_t kBandColumns = 2;
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -33,62 +37,71 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 
 bool finite3(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
-// One temporary file per row of the lattice, removed with the object.
-class RowSpill {
+// One temporary file per 32 m cell of the lattice (row along x, column
+// across, y), written through small buffers so that a tile of a thousand
+// cells keeps neither a thousand files open nor its points in memory.
+class CellSpill {
  public:
-  explicit RowSpill(double core) : core_(core) {
+  explicit CellSpill(double core) : core_(core) {
     std::string pattern = (fs::temp_directory_path() / "spinhash-scene-XXXXXX").string();
     if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a temporary folder");
     dir_ = pattern;
   }
-  ~RowSpill() {
-    files_.clear();
+  ~CellSpill() {
     std::error_code ec;
     fs::remove_all(dir_, ec);
   }
-  RowSpill(const RowSpill&) = delete;
-  RowSpill& operator=(const RowSpill&) = delete;
+  CellSpill(const CellSpill&) = delete;
+  CellSpill& operator=(const CellSpill&) = delete;
 
-  int64_t row_of(double x) const { return static_cast<int64_t>(std::floor(x / core_)); }
+  int64_t cell_of(double v) const { return static_cast<int64_t>(std::floor(v / core_)); }
   void append(const double* p) {
-    std::ofstream& f = file(row_of(p[0]));
-    f.write(reinterpret_cast<const char*>(p), 3 * sizeof(double));
-    if (!f) throw std::runtime_error("cannot write " + path(row_of(p[0])).string());
+    std::vector<double>& buf = cells_[{cell_of(p[0]), cell_of(p[1])}];
+    buf.insert(buf.end(), p, p + 3);
+    if (buf.size() >= 3 * kCellBufferPoints) write_out({cell_of(p[0]), cell_of(p[1])}, buf);
+  }
+  void finish() {
+    for (auto& kv : cells_) write_out(kv.first, kv.second);
   }
   std::vector<int64_t> rows() const {
     std::vector<int64_t> r;
-    for (const auto& kv : files_) r.push_back(kv.first);
+    for (const auto& kv : cells_)
+      if (r.empty() || r.back() != kv.first.first) r.push_back(kv.first.first);
     return r;
   }
-  // Closes the row's file and hands its points out in chunks.
+  // Hands the cell's points out in chunks (none when the cell is empty).
   template <class F>
-  void read(int64_t row, size_t chunk, F&& on_chunk) {
-    files_.erase(row);
-    std::ifstream in(path(row), std::ios::binary);
+  void read(int64_t row, int64_t col, size_t chunk, F&& on_chunk) const {
+    if (cells_.count({row, col}) == 0) return;
+    std::ifstream in(path({row, col}), std::ios::binary);
     std::vector<double> buf(3 * chunk);
     while (in) {
       in.read(reinterpret_cast<char*>(buf.data()), static_cast<std::streamsize>(buf.size() * sizeof(double)));
       const size_t got = static_cast<size_t>(in.gcount()) / (3 * sizeof(double));
       if (got > 0) on_chunk(buf.data(), got);
     }
-    std::error_code ec;
-    fs::remove(path(row), ec);
   }
 
  private:
-  fs::path path(int64_t row) const { return dir_ / ("row" + std::to_string(row) + ".xyz"); }
-  std::ofstream& file(int64_t row) {
-    auto it = files_.find(row);
-    if (it == files_.end()) {
-      it = files_.emplace(row, std::ofstream(path(row), std::ios::binary)).first;
-      if (!it->second) throw std::runtime_error("cannot write " + path(row).string());
-    }
-    return it->second;
+  using Cell = std::pair<int64_t, int64_t>;
+  static constexpr size_t kCellBufferPoints = 1024;  // 24 KB per cell in memory
+
+  fs::path path(const Cell& c) const {
+    return dir_ / ("r" + std::to_string(c.first) + "c" + std::to_string(c.second) + ".xyz");
+  }
+  void write_out(const Cell& c, std::vector<double>& buf) {
+    if (buf.empty()) return;
+    std::ofstream f(path(c), std::ios::binary | std::ios::app);
+    f.write(reinterpret_cast<const char*>(buf.data()),
+            static_cast<std::streamsize>(buf.size() * sizeof(double)));
+    if (!f) throw std::runtime_error("cannot write " + path(c).string());
+    buf.clear();
+    buf.shrink_to_fit();
   }
 
   double core_;
   fs::path dir_;
-  std::map<int64_t, std::ofstream> files_;
+  std::map<Cell, std::vector<double>> cells_;  // ordered: rows, then columns
 };
 
 // What the spill pass learns of the tile.
@@ -98,7 +111,7 @@ struct TileExtent {
   std::map<int64_t, uint64_t> across;  // points per core-wide cell across the track (y)
 };
 
-void spill(host::PointSource& source, size_t chunk, uint32_t picture_points, RowSpill& rows, TileExtent& e,
+void spill(host::PointSource& source, size_t chunk, uint32_t picture_points, CellSpill& cells, TileExtent& e,
            TileStreamResult& res) {
   const uint64_t declared = source.header().count_known ? source.header().point_count : 0;
   const uint64_t every = picture_points > 0 && declared > picture_points ? declared / picture_points : 1;
@@ -112,46 +125,62 @@ void spill(host::PointSource& source, size_t chunk, uint32_t picture_points, Row
         ++e.nonfinite;
         continue;
       }
-      rows.append(p);
+      cells.append(p);
       ++e.finite;
       e.xmin = std::min(e.xmin, p[0]);
       e.xmax = std::max(e.xmax, p[0]);
       e.zmin = std::min(e.zmin, p[2]);
-      ++e.across[rows.row_of(p[1])];
+      ++e.across[cells.cell_of(p[1])];
     }
     res.points_read += got;
   }
+  cells.finish();
 }
 
-// The stream's config for the tile: frame on the absolute lattice, swath
-// over the cells across the track that hold more than outliers, buffers
-// sized from the density.
-StreamConfig tile_config(const TileStreamOptions& o, const TileExtent& e) {
+// The columns (cells across the track) holding more than outliers.
+struct Swath {
+  int64_t lo = 0, hi = 0;
+};
+
+Swath swath_columns(const TileExtent& e) {
+  const uint64_t floor_count =
+      std::max<uint64_t>(kMinSwathCellPoints, static_cast<uint64_t>(kOutlierCellShare * e.finite));
+  Swath sw{0, -1};
+  for (const auto& kv : e.across)
+    if (kv.second >= floor_count) {
+      if (sw.hi < sw.lo) sw.lo = kv.first;
+      sw.hi = kv.first;
+    }
+  if (sw.hi < sw.lo) sw.lo = sw.hi = e.across.empty() ? 0 : e.across.begin()->first;
+  return sw;
+}
+
+// The stream's config for one band of columns [band_lo, band_hi] of the
+// tile: frame on the absolute lattice (origin at the swath's first column),
+// the band owned, its margins seen, buffers sized from the tile's density
+// over a band (never over the tile).
+StreamConfig band_config(const TileStreamOptions& o, const TileExtent& e, const Swath& sw, int64_t band_lo,
+                         int64_t band_hi) {
   StreamConfig c;
   c.scene = o.scene;
   const double core = o.scene.window_core, margin = o.scene.window_margin;
-  const uint64_t floor_count =
-      std::max<uint64_t>(kMinSwathCellPoints, static_cast<uint64_t>(kOutlierCellShare * e.finite));
-  int64_t lo = 0, hi = -1;
-  for (const auto& kv : e.across)
-    if (kv.second >= floor_count) {
-      if (hi < lo) lo = kv.first;
-      hi = kv.first;
-    }
-  if (hi < lo) lo = hi = e.across.empty() ? 0 : e.across.begin()->first;
   c.origin_given = true;
   c.origin[0] = std::floor(e.xmin / core) * core;
-  c.origin[1] = static_cast<double>(lo) * core;
+  c.origin[1] = static_cast<double>(sw.lo) * core;
   c.origin[2] = e.zmin;
   c.heading_deg = 0.0f;  // rows along x
-  c.swath_min = c.own_min = 0.0f;
-  c.swath_max = c.own_max = static_cast<float>(static_cast<double>(hi - lo + 1) * core);
+  c.own_min = static_cast<float>(static_cast<double>(band_lo - sw.lo) * core);
+  c.own_max = static_cast<float>(static_cast<double>(band_hi + 1 - sw.lo) * core);
+  c.swath_min = c.own_min - static_cast<float>(margin);
+  c.swath_max = c.own_max + static_cast<float>(margin);
   c.max_lag = static_cast<float>(core);                           // a row's points come in any order
   c.max_jump = static_cast<float>(e.xmax - e.xmin + 2.0 * core);  // the tile's extent is known
-  const double width = static_cast<double>(c.swath_max), length = std::max(core, e.xmax - e.xmin);
+  const double width = static_cast<double>(sw.hi - sw.lo + 1) * core,
+               length = std::max(core, e.xmax - e.xmin);
   const double density = static_cast<double>(e.finite) / (width * length) * kDensitySafety;
   const double window_area = (core + 2.0 * margin) * (core + 2.0 * margin);
-  const double buffer_area = (2.0 * core + 2.0 * margin) * (width + 2.0 * margin);
+  const double band_width = std::min(width, static_cast<double>(kBandColumns) * core) + 2.0 * margin;
+  const double buffer_area = (2.0 * core + 2.0 * margin) * band_width;
   if (c.scene.max_tile_points == 0)
     c.scene.max_tile_points =
         static_cast<uint32_t>(std::clamp<double>(density * window_area, kMinWindowPoints, kMaxWindowPoints));
@@ -161,6 +190,45 @@ StreamConfig tile_config(const TileStreamOptions& o, const TileExtent& e) {
                                       density * buffer_area, kMinBufferedPoints, kMaxBufferedPoints));
   c.max_buffered_points = static_cast<uint32_t>(std::min<uint64_t>(buffered, kMaxBufferedPoints));
   return c;
+}
+
+uint32_t add32(uint32_t a, uint32_t b) {
+  const uint64_t s = static_cast<uint64_t>(a) + b;
+  return s > 0xFFFFFFFFull ? 0xFFFFFFFFu : static_cast<uint32_t>(s);
+}
+
+// Sums one band's counts into the tile's.
+void accumulate(StreamStats& into, const StreamStats& b) {
+  SceneStats& s = into.scene;
+  const SceneStats& t = b.scene;
+  s.points_in = add32(s.points_in, t.points_in);
+  s.points_nonfinite = add32(s.points_nonfinite, t.points_nonfinite);
+  s.points_ground = add32(s.points_ground, t.points_ground);
+  s.points_in_objects = add32(s.points_in_objects, t.points_in_objects);
+  s.points_fragments = add32(s.points_fragments, t.points_fragments);
+  s.terrain_cells = add32(s.terrain_cells, t.terrain_cells);
+  s.terrain_windows = add32(s.terrain_windows, t.terrain_windows);
+  s.segment_cells = add32(s.segment_cells, t.segment_cells);
+  s.components = add32(s.components, t.components);
+  s.objects_dropped = add32(s.objects_dropped, t.objects_dropped);
+  s.windows = add32(s.windows, t.windows);
+  s.windows_overflowed = add32(s.windows_overflowed, t.windows_overflowed);
+  for (uint32_t k = 0; k < kObjectKinds; ++k)
+    s.objects_by_kind[k] = add32(s.objects_by_kind[k], t.objects_by_kind[k]);
+  s.recognition_hypotheses += t.recognition_hypotheses;
+  s.recognition_candidates += t.recognition_candidates;
+  into.points_pushed += b.points_pushed;
+  into.points_outside += b.points_outside;
+  into.points_late += b.points_late;
+  into.points_glitch += b.points_glitch;
+  into.points_overflow += b.points_overflow;
+  into.windows += b.windows;
+  into.windows_overflowed += b.windows_overflowed;
+  into.points_in_overflowed += b.points_in_overflowed;
+  into.objects_reported += b.objects_reported;
+  into.objects_not_owned += b.objects_not_owned;
+  into.furthest_along = std::max(into.furthest_along, b.furthest_along);
+  into.done_until = std::max(into.done_until, b.done_until);
 }
 
 struct FreeDelete {
@@ -181,41 +249,67 @@ void forward(void* context, const SceneObject& object, int64_t, uint32_t) {
 
 Status worse(Status a, Status b) { return a == Status::kOk ? b : a; }
 
+// Streams one band: rows in order, each row's cells across the band and its
+// margins, only the points within the band's swath.
+Status stream_band(const Database& db, const CellSpill& cells, const StreamConfig& config, const Swath& sw,
+                   size_t chunk, void* workspace, size_t bytes, const ObjectCallback& on_object,
+                   StreamStats* stats) {
+  SceneStream stream;
+  Status status =
+      stream.init(&db, config, workspace, bytes, forward, const_cast<ObjectCallback*>(&on_object));
+  if (status != Status::kOk) return status;
+  const double core = config.scene.window_core;
+  const int64_t col_lo = sw.lo + static_cast<int64_t>(std::floor(config.swath_min / core));
+  const int64_t col_hi = sw.lo + static_cast<int64_t>(std::ceil(config.swath_max / core)) - 1;
+  const double t_lo = config.origin[1] + config.swath_min, t_hi = config.origin[1] + config.swath_max;
+  std::vector<double> kept;
+  for (int64_t row : cells.rows())
+    for (int64_t col = std::max(col_lo, sw.lo); col <= std::min(col_hi, sw.hi); ++col)
+      cells.read(row, col, chunk, [&](const double* xyz, size_t n) {
+        kept.clear();
+        for (size_t i = 0; i < n; ++i)
+          if (xyz[3 * i + 1] >= t_lo && xyz[3 * i + 1] < t_hi)
+            kept.insert(kept.end(), xyz + 3 * i, xyz + 3 * i + 3);
+        status = worse(status, stream.push(kept.data(), static_cast<uint32_t>(kept.size() / 3)));
+      });
+  status = worse(status, stream.flush());
+  accumulate(*stats, stream.stats());
+  return status;
+}
+
 }  // namespace
 
 TileStreamResult stream_tile(const Database& db, host::PointSource& source, const TileStreamOptions& options,
                              const ObjectCallback& on_object) {
   TileStreamResult res;
   const auto t0 = std::chrono::steady_clock::now();
-  RowSpill rows(options.scene.window_core);
+  CellSpill cells(options.scene.window_core);
   TileExtent extent;
-  spill(source, options.chunk_points, options.picture_points, rows, extent, res);
+  spill(source, options.chunk_points, options.picture_points, cells, extent, res);
   res.read_ms = ms_since(t0);
+  res.stats.scene.points_nonfinite = static_cast<uint32_t>(std::min<uint64_t>(extent.nonfinite, 0xFFFFFFFFu));
   if (extent.finite == 0) {
     res.status = Status::kEmptyCloud;
     res.stats.points_pushed = res.points_read;
-    res.stats.scene.points_nonfinite =
-        static_cast<uint32_t>(std::min<uint64_t>(extent.nonfinite, 0xFFFFFFFFu));
     return res;
   }
   const auto t1 = std::chrono::steady_clock::now();
-  const StreamConfig config = tile_config(options, extent);
-  res.workspace_bytes = required_stream_workspace_bytes(config);
+  const Swath sw = swath_columns(extent);
+  for (const auto& kv : extent.across)
+    if (kv.first < sw.lo || kv.first > sw.hi) res.stats.points_outside += kv.second;  // outliers across
+  const StreamConfig first =
+      band_config(options, extent, sw, sw.lo, std::min(sw.hi, sw.lo + kBandColumns - 1));
+  res.workspace_bytes = required_stream_workspace_bytes(first);
   if (res.workspace_bytes == 0) throw std::runtime_error("invalid scene configuration for this tile");
   auto workspace = lazy_workspace(res.workspace_bytes);
-  SceneStream stream;
-  res.status = stream.init(&db, config, workspace.get(), res.workspace_bytes, forward,
-                           const_cast<ObjectCallback*>(&on_object));
-  if (res.status != Status::kOk) return res;
-  for (int64_t row : rows.rows())
-    rows.read(row, options.chunk_points, [&](const double* xyz, size_t n) {
-      res.status = worse(res.status, stream.push(xyz, static_cast<uint32_t>(n)));
-    });
-  res.status = worse(res.status, stream.flush());
-  res.stats = stream.stats();
+  res.status = Status::kOk;
+  for (int64_t lo = sw.lo; lo <= sw.hi; lo += kBandColumns) {
+    const StreamConfig band = band_config(options, extent, sw, lo, std::min(sw.hi, lo + kBandColumns - 1));
+    res.status = worse(res.status, stream_band(db, cells, band, sw, options.chunk_points, workspace.get(),
+                                               res.workspace_bytes, on_object, &res.stats));
+    ++res.bands;
+  }
   res.stats.points_pushed += extent.nonfinite;
-  res.stats.scene.points_nonfinite +=
-      static_cast<uint32_t>(std::min<uint64_t>(extent.nonfinite, 0xFFFFFFFFu));
   res.stream_ms = ms_since(t1);
   return res;
 }

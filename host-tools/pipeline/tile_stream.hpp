@@ -1,11 +1,13 @@
 // A tile of any size and point order through the SceneStream in bounded
 // memory. One pass over the file's chunks spills the points to temporary
-// files, one per 32 m row of the window lattice (absolute multiples of the
+// files, one per 32 m cell of the window lattice (absolute multiples of the
 // core, so the windows of adjacent tiles line up), and finds the tile's
-// extent; then the rows are pushed in order (lag at most one row) and the
-// stream reports each object once. Memory: the stream's workspace, sized
-// from the tile's width and density (never its length), plus the readers'
-// chunks and the row files' write buffers.
+// extent. Then the tile is streamed in bands of 2 columns (64 m) across,
+// each a stream that owns its columns and sees 40 m margins beyond them:
+// rows pushed in order (lag at most one row), each object reported once.
+// Memory: the stream's workspace, sized from the tile's density over one
+// band (never the tile's width or length), the readers' chunks and the
+// cells' write buffers (24 KB each).
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -29,6 +31,7 @@ struct TileStreamResult {
   StreamStats stats;
   uint64_t points_read = 0;
   size_t workspace_bytes = 0;
+  uint32_t bands = 0;  // bands of 2 columns (64 m) across, each its own stream
   double read_ms = 0.0, stream_ms = 0.0;
   std::vector<double> picture_xyz;  // an even sample of the tile, when asked
 };
