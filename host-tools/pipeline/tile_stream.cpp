@@ -303,10 +303,19 @@ TileStreamResult stream_tile(const Database& db, host::PointSource& source, cons
   if (res.workspace_bytes == 0) throw std::runtime_error("invalid scene configuration for this tile");
   auto workspace = lazy_workspace(res.workspace_bytes);
   res.status = Status::kOk;
+  const ObjectCallback owned = [&](const SceneObject& o) {
+    const bool mine =
+        !options.own_given || (o.center[0] >= options.own_min[0] && o.center[0] < options.own_max[0] &&
+                               o.center[1] >= options.own_min[1] && o.center[1] < options.own_max[1]);
+    if (mine)
+      on_object(o);
+    else
+      ++res.objects_not_owned;
+  };
   for (int64_t lo = sw.lo; lo <= sw.hi; lo += kBandColumns) {
     const StreamConfig band = band_config(options, extent, sw, lo, std::min(sw.hi, lo + kBandColumns - 1));
     res.status = worse(res.status, stream_band(db, cells, band, sw, options.chunk_points, workspace.get(),
-                                               res.workspace_bytes, on_object, &res.stats));
+                                               res.workspace_bytes, owned, &res.stats));
     ++res.bands;
   }
   res.stats.points_pushed += extent.nonfinite;

@@ -24,6 +24,11 @@ struct TileStreamOptions {
   uint64_t max_buffered_points = 0;  // 0: sized from the tile's width and density
   size_t chunk_points = host::kDefaultChunkPoints;
   uint32_t picture_points = 0;  // keep about this many points for a picture (0: none)
+  // A survey's tile with its neighbours' buffer: only objects whose centre
+  // lies in [own_min, own_max) (x, y; half-open) are reported, the others
+  // counted in objects_not_owned (a neighbour reports them).
+  bool own_given = false;
+  double own_min[2] = {0, 0}, own_max[2] = {0, 0};
 };
 
 struct TileStreamResult {
@@ -31,7 +36,9 @@ struct TileStreamResult {
   StreamStats stats;
   uint64_t points_read = 0;
   size_t workspace_bytes = 0;
-  uint32_t bands = 0;  // bands of 2 columns (64 m) across, each its own stream
+  uint32_t bands = 0;
+  uint64_t objects_not_owned = 0;  // centres outside options.own_* (a neighbour's)  // bands of 2 columns (64
+                                   // m) across, each its own stream
   double read_ms = 0.0, stream_ms = 0.0;
   std::vector<double> picture_xyz;  // an even sample of the tile, when asked
 };
