@@ -13,5 +13,6 @@ PYBIND11_MODULE(spinhash, m) {
   spinhash::python::bind_result(m);
   spinhash::python::bind_recognizer(m);
   spinhash::python::bind_scene(m);
+  spinhash::python::bind_scene_stream(m);
   spinhash::python::bind_cloud(m);
 }
