@@ -39,7 +39,7 @@ EXPORT int qemu_plugin_version = 1;
 enum { kPlain = 0, kBegin = 1, kEnd = 2, kKindBits = 2 };
 static char begin_symbol[128] = "spinhash_bench_begin";
 static char end_symbol[128] = "spinhash_bench_end";
-static int counting;         /* user mode, one vCPU: no locking */
+static int counting; /* user mode, one vCPU: no locking */
 static uint64_t instructions;
 
 /* userdata: the block's instruction count and kind, packed in the pointer. */
@@ -70,9 +70,7 @@ static void on_exit(qemu_plugin_id_t id, void* userdata) {
   qemu_plugin_outs(line);
 }
 
-static void copy_arg(char* out, size_t size, const char* value) {
-  snprintf(out, size, "%s", value);
-}
+static void copy_arg(char* out, size_t size, const char* value) { snprintf(out, size, "%s", value); }
 
 EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_t* info, int argc, char** argv) {
   (void)info;
