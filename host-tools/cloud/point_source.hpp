@@ -22,10 +22,10 @@ namespace spinhash::host {
 constexpr size_t kDefaultChunkPoints = size_t{1} << 16;
 
 struct CloudHeader {
-  std::string format;            // "las", "laz", "ply", "text"
-  bool count_known = false;      // text: not until read
-  uint64_t point_count = 0;      // as declared
-  bool bounds_known = false;     // LAS/LAZ: the header's bounds
+  std::string format;         // "las", "laz", "ply", "text"
+  bool count_known = false;   // text: not until read
+  uint64_t point_count = 0;   // as declared
+  bool bounds_known = false;  // LAS/LAZ: the header's bounds
   double min[3] = {0, 0, 0}, max[3] = {0, 0, 0};
   uint8_t las_point_format = 0;  // LAS/LAZ only
   uint8_t las_version[2] = {0, 0};
