@@ -65,7 +65,9 @@ void read_fields14(const uint8_t* b, LasHeader* h) {
 void check(const LasHeader& h, uint64_t file_size) {
   if (h.point_format > kMaxLasPointFormat)
     fail("point data format " + std::to_string(h.point_format) + " is not one of 0-10");
-  if (h.record_length < kLasMinRecordLength[h.point_format])
+  // LAZ: the LASzip VLR says what a record holds (cloud/las_points.cpp checks
+  // it before the record length, so a LAZ file without one is named as such).
+  if (!h.compressed && h.record_length < kLasMinRecordLength[h.point_format])
     fail("point record length " + std::to_string(h.record_length) + " is below format " +
          std::to_string(h.point_format) + "'s " + std::to_string(kLasMinRecordLength[h.point_format]));
   if (h.offset_to_points < h.header_size || h.offset_to_points > file_size)

@@ -50,6 +50,10 @@ LasRecordReader::LasRecordReader(std::unique_ptr<ByteSource> src) : src_(std::mo
         "this is no LAZ file this reader can decode");
   const laz::LaszipVlr lv =
       laz::parse_laszip_vlr(v->data.data(), v->data.size(), header_.point_format, header_.record_length);
+  if (header_.record_length < kLasMinRecordLength[header_.point_format])
+    throw CloudError("LAS: point record length " + std::to_string(header_.record_length) +
+                     " is below format " + std::to_string(header_.point_format) + "'s " +
+                     std::to_string(kLasMinRecordLength[header_.point_format]));
   laz_ = std::make_unique<laz::LazDecoder>(*src_, header_.offset_to_points, header_.point_count,
                                            header_.record_length, lv);
 }
@@ -68,6 +72,13 @@ size_t LasRecordReader::read(uint8_t* out, size_t max) {
   next_offset_ += static_cast<uint64_t>(n) * header_.record_length;
   left_ -= n;
   return n;
+}
+
+size_t las_batch_records(const LasHeader& h) {
+  const size_t by_bytes = std::max<size_t>(1, kLasBatchBytes / std::max<size_t>(1, h.record_length));
+  const size_t by_count =
+      static_cast<size_t>(std::max<uint64_t>(1, std::min<uint64_t>(h.point_count, kLasBatchRecords)));
+  return std::min(by_bytes, by_count);
 }
 
 void las_record_xyz(const LasHeader& h, const uint8_t* record, double* xyz) {

@@ -45,6 +45,13 @@ class LasRecordReader {
   std::unique_ptr<laz::LazDecoder> laz_;
 };
 
+// Records per read that keep a batch of raw records near 1 MiB (and no
+// larger than the file's count): a 64 KiB record length cannot make a
+// small file allocate much.
+constexpr size_t kLasBatchRecords = 4096;
+constexpr size_t kLasBatchBytes = size_t{1} << 20;
+size_t las_batch_records(const LasHeader& h);
+
 // Fields of a raw record of the header's format.
 void las_record_xyz(const LasHeader& h, const uint8_t* record, double* xyz);
 uint8_t las_record_class(const LasHeader& h, const uint8_t* record);   // formats 0-5: the low 5 bits

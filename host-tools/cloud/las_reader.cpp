@@ -8,14 +8,12 @@
 namespace spinhash::host {
 namespace {
 
-// Records decoded per batch: memory for the raw records stays bounded.
-constexpr size_t kBatchRecords = 4096;
-
 void read_all(LasRecordReader& reader, LasCloud* out) {
   const LasHeader& h = reader.header();
-  std::vector<uint8_t> records(kBatchRecords * h.record_length);
+  const size_t batch = las_batch_records(h);
+  std::vector<uint8_t> records(batch * h.record_length);
   double xyz[3];
-  for (size_t n; (n = reader.read(records.data(), kBatchRecords)) > 0;) {
+  for (size_t n; (n = reader.read(records.data(), batch)) > 0;) {
     for (size_t i = 0; i < n; ++i) {
       const uint8_t* r = records.data() + i * h.record_length;
       las_record_xyz(h, r, xyz);

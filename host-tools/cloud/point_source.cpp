@@ -15,9 +15,6 @@
 namespace spinhash::host {
 namespace {
 
-// Raw records decoded per refill of a LAS source.
-constexpr size_t kRecordBatch = 4096;
-
 class WholeCloudSource final : public PointSource {
  public:
   WholeCloudSource(CloudHeader header, std::vector<double> xyz)
@@ -60,7 +57,8 @@ class LasSource final : public PointSource {
   LasSource(std::string name, std::unique_ptr<std::string> owned, std::unique_ptr<ByteSource> src)
       : name_(std::move(name)), owned_(std::move(owned)), reader_(named(std::move(src))) {
     header_ = las_cloud_header(*reader_);
-    records_.resize(kRecordBatch * reader_->header().record_length);
+    batch_ = las_batch_records(reader_->header());
+    records_.resize(batch_ * reader_->header().record_length);
   }
   const CloudHeader& header() const override { return header_; }
   size_t read(double* xyz, size_t max_points) override {
@@ -88,7 +86,7 @@ class LasSource final : public PointSource {
   }
   void refill() {
     try {
-      held_ = reader_->read(records_.data(), kRecordBatch);
+      held_ = reader_->read(records_.data(), batch_);
       next_ = 0;
     } catch (const CloudError& e) {
       held_ = next_ = 0;
@@ -101,7 +99,7 @@ class LasSource final : public PointSource {
   std::unique_ptr<LasRecordReader> reader_;
   CloudHeader header_;
   std::vector<uint8_t> records_;
-  size_t held_ = 0, next_ = 0;
+  size_t batch_ = 1, held_ = 0, next_ = 0;
 };
 
 std::string file_head(const std::string& path) {

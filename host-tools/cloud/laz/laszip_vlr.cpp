@@ -58,6 +58,9 @@ void check_item(const LazItem& item, size_t index, bool layered) {
   if ((size != 0 && item.size != size) || item.size == 0)
     fail(what + " has size " + std::to_string(item.size) + ", it must be " +
          (size != 0 ? std::to_string(size) : std::string("at least 1")));
+  if ((item.type == ItemType::kByte || item.type == ItemType::kByte14) && item.size > kMaxLazExtraBytes)
+    fail(what + " carries " + std::to_string(item.size) +
+         " extra bytes per point; this reader decodes at most " + std::to_string(kMaxLazExtraBytes));
   if (layered != layered_item(item.type))
     fail(what + " cannot be in a " + (layered ? "layered (compressor 3)" : "pointwise (compressor 1 or 2)") +
          " point");

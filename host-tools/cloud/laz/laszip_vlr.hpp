@@ -16,6 +16,9 @@ constexpr uint16_t kLaszipRecordId = 22204;
 
 enum class Compressor : uint16_t { kNone = 0, kPointwise = 1, kPointwiseChunked = 2, kLayeredChunked = 3 };
 constexpr uint16_t kArithmeticCoder = 0;
+// Extra bytes decoded per point at most (real files carry tens): each byte
+// costs a model per scanner channel.
+constexpr uint16_t kMaxLazExtraBytes = 1024;
 constexpr uint32_t kVariableChunkSize = 0xFFFFFFFFu;  // chunk sizes in the chunk table
 
 enum class ItemType : uint16_t {

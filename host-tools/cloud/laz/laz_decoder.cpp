@@ -39,7 +39,11 @@ class LazDecoder::Feed final : public ByteFeed {
 
 LazDecoder::LazDecoder(ByteSource& src, uint64_t points_offset, uint64_t point_count, uint16_t record_length,
                        const LaszipVlr& vlr)
-    : src_(src), vlr_(vlr), record_length_(record_length), remaining_(point_count) {
+    : src_(src),
+      vlr_(vlr),
+      record_length_(record_length),
+      points_offset_(points_offset),
+      remaining_(point_count) {
   size_t at = 0;
   for (const LazItem& item : vlr_.items) {
     item_offsets_.push_back(at);
@@ -49,12 +53,16 @@ LazDecoder::LazDecoder(ByteSource& src, uint64_t points_offset, uint64_t point_c
     else
       pointwise_.push_back(make_pointwise_item(item));
   }
-  if (point_count == 0) return;
+}
+
+// The chunk table is read with the first point: a header alone never needs it.
+void LazDecoder::locate_chunks() {
+  located_ = true;
   if (vlr_.chunked()) {
-    chunks_ = read_chunk_table(src_, points_offset, vlr_, point_count);
+    chunks_ = read_chunk_table(src_, points_offset_, vlr_, remaining_);
   } else {
-    if (points_offset >= src_.size()) fail("the file ends before its compressed points");
-    chunks_.push_back({points_offset, src_.size() - points_offset, point_count});
+    if (points_offset_ >= src_.size()) fail("the file ends before its compressed points");
+    chunks_.push_back({points_offset_, src_.size() - points_offset_, remaining_});
   }
 }
 
@@ -67,6 +75,7 @@ void LazDecoder::fail(const std::string& why) const {
 
 size_t LazDecoder::read(uint8_t* out, size_t max) {
   size_t n = 0;
+  if (!located_ && remaining_ > 0 && max > 0) locate_chunks();
   while (n < max && remaining_ > 0) {
     uint8_t* record = out + n * record_length_;
     if (left_in_chunk_ == 0)

@@ -20,15 +20,17 @@ namespace spinhash::host::laz {
 // Bytes a decoder may read past its data before the data counts as
 // truncated (a valid stream never reads past its end).
 constexpr size_t kOverrunSlack = 8;
-// Even a chunk of identical points costs LASzip's adaptive models about
-// 0.01 bits a point; more points than this per byte is a corrupt count.
-constexpr uint64_t kMaxPointsPerByte = 8192;
+// A chunk of identical points costs LASzip's adaptive models about 0.008
+// bits a point (the most likely symbol of each model never passes
+// 1 - 2^-13 or so), about 1 000 points a byte; four times that is a
+// corrupt count, which would otherwise decode garbage for a long time.
+constexpr uint64_t kMaxPointsPerByte = 4096;
 // The window a pointwise chunk is streamed through.
 constexpr size_t kFeedBytes = size_t{1} << 16;
 
 class LazDecoder {
  public:
-  // src outlives the decoder. Throws CloudError for a bad chunk table.
+  // src outlives the decoder. Nothing is read until the first point.
   LazDecoder(ByteSource& src, uint64_t points_offset, uint64_t point_count, uint16_t record_length,
              const LaszipVlr& vlr);
   ~LazDecoder();
@@ -39,6 +41,7 @@ class LazDecoder {
 
  private:
   class Feed;
+  void locate_chunks();
   void start_chunk(uint8_t* first);
   void start_pointwise(uint8_t* first);
   void start_layered(uint8_t* first);
@@ -48,7 +51,9 @@ class LazDecoder {
   ByteSource& src_;
   LaszipVlr vlr_;
   uint16_t record_length_;
-  uint64_t remaining_;  // points still to hand out
+  uint64_t points_offset_;
+  bool located_ = false;  // the chunk table has been read
+  uint64_t remaining_;    // points still to hand out
   std::vector<ChunkEntry> chunks_;
   size_t chunk_ = 0;
   bool started_ = false;  // chunk_ is being decoded
