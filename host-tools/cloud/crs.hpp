@@ -15,10 +15,10 @@ namespace spinhash::host {
 constexpr uint32_t kGeoKeyUserDefined = 32767;
 
 struct Crs {
-  std::string wkt;                // OGC WKT as the file holds it (empty: none)
-  uint32_t horizontal_epsg = 0;   // projected or geographic EPSG code (0: none)
-  uint32_t vertical_epsg = 0;     // vertical EPSG code (0: none)
-  std::string source;             // "wkt", "geokeys" or "" (unknown)
+  std::string wkt;                    // OGC WKT as the file holds it (empty: none)
+  uint32_t horizontal_epsg = 0;       // projected or geographic EPSG code (0: none)
+  uint32_t vertical_epsg = 0;         // vertical EPSG code (0: none)
+  std::string source;                 // "wkt", "geokeys" or "" (unknown)
   std::vector<std::string> warnings;  // what was malformed and skipped
 
   bool known() const { return !wkt.empty() || horizontal_epsg != 0; }
