@@ -180,11 +180,12 @@ class Point14Item final : public LayeredItem {
       present_[i] = layers[i].size > 0;
       if (i == kXY || present_[i]) dec_[i].init(layers[i].begin, layers[i].begin + layers[i].size);
     }
-    for (auto& c : contexts_) c->used = false;
+    for (auto& c : contexts_)
+      if (c) c->used = false;
     const Point14 seed = unpack(first);
     current_ = seed.channel;
     *context = current_;
-    contexts_[current_]->reset(seed);
+    channel(current_).reset(seed);
   }
 
   void decode(uint8_t* out, uint32_t* context) override {
@@ -221,7 +222,7 @@ class Point14Item final : public LayeredItem {
   ChannelContext* switch_channel(ChannelContext* c, uint32_t* context) {
     const uint32_t diff = dec_[kXY].decode_symbol(c->channel);
     const uint32_t channel = (current_ + diff + 1) % kChannels;
-    ChannelContext* next = contexts_[channel].get();
+    ChannelContext* next = &this->channel(channel);
     if (!next->used) next->reset(c->last);  // a new channel starts from the current point
     current_ = channel;
     *context = channel;
@@ -293,11 +294,16 @@ class Point14Item final : public LayeredItem {
     if (present_[kTime] && time_changed) p.time = c->time.decode(dec_[kTime]);
   }
 
+  // A channel's models are created when the channel first appears (most
+  // files have one): about half a megabyte each.
+  ChannelContext& channel(uint32_t c) {
+    if (!contexts_[c]) contexts_[c] = std::make_unique<ChannelContext>();
+    return *contexts_[c];
+  }
+
   ArithmeticDecoder dec_[kLayers];
   bool present_[kLayers] = {};
-  std::array<std::unique_ptr<ChannelContext>, kChannels> contexts_{
-      std::make_unique<ChannelContext>(), std::make_unique<ChannelContext>(),
-      std::make_unique<ChannelContext>(), std::make_unique<ChannelContext>()};
+  std::array<std::unique_ptr<ChannelContext>, kChannels> contexts_;
   uint32_t current_ = 0;
 };
 
