@@ -117,62 +117,6 @@ uint8_t ArithmeticDecoder::next_byte_slow() {
   return 0;
 }
 
-uint32_t ArithmeticDecoder::decode_symbol(SymbolModel& m) {
-  uint32_t sym, x, y = length_;
-  if (m.table_size_ != 0) {
-    const uint32_t dv = value_ / (length_ >>= kSymbolLengthShift);
-    // A corrupt stream can put the value past the interval: clamp the index.
-    const uint32_t t = std::min(dv >> m.table_shift_, m.table_size_);
-    sym = m.decoder_table_[t];
-    uint32_t n = m.decoder_table_[t + 1] + 1;
-    while (n > sym + 1) {  // binary search in the table's bracket
-      const uint32_t k = (sym + n) >> 1;
-      if (m.distribution_[k] > dv)
-        n = k;
-      else
-        sym = k;
-    }
-    x = m.distribution_[sym] * length_;
-    if (sym != m.last_symbol_) y = m.distribution_[sym + 1] * length_;
-  } else {
-    x = sym = 0;
-    length_ >>= kSymbolLengthShift;
-    uint32_t n = m.symbols_;
-    uint32_t k = n >> 1;
-    do {
-      const uint32_t z = length_ * m.distribution_[k];
-      if (z > value_) {
-        n = k;
-        y = z;
-      } else {
-        sym = k;
-        x = z;
-      }
-    } while ((k = (sym + n) >> 1) != sym);
-  }
-  value_ -= x;
-  length_ = y - x;
-  if (length_ < kAcMinLength) renormalise();
-  ++m.symbol_count_[sym];
-  if (--m.symbols_until_update_ == 0) m.update();
-  return sym;
-}
-
-uint32_t ArithmeticDecoder::decode_bit(BitModel& m) {
-  const uint32_t x = m.bit_0_prob_ * (length_ >> kBitLengthShift);
-  const uint32_t sym = value_ >= x ? 1u : 0u;
-  if (sym == 0) {
-    length_ = x;
-    ++m.bit_0_count_;
-  } else {
-    value_ -= x;
-    length_ -= x;
-  }
-  if (length_ < kAcMinLength) renormalise();
-  if (--m.bits_until_update_ == 0) m.update();
-  return sym;
-}
-
 uint32_t ArithmeticDecoder::read_bits(uint32_t bits) {
   if (bits > kReadBitsDirect) {
     const uint32_t low = read_bits(kShortBits);

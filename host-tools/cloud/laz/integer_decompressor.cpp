@@ -15,16 +15,29 @@ IntegerDecompressor::IntegerDecompressor(uint32_t bits, uint32_t contexts, uint3
     corr_range_ = 0;
     corr_min_ = std::numeric_limits<int32_t>::min();
   }
-  bit_models_.assign(contexts, SymbolModel(corr_bits_ + 1));
-  for (uint32_t i = 1; i <= corr_bits_; ++i)
-    correctors_.emplace_back(i <= bits_high_ ? 1u << i : 1u << bits_high_);
+  bit_models_.resize(contexts);
+  correctors_.resize(corr_bits_);
 }
 
 void IntegerDecompressor::reset() {
   k_ = 0;
-  for (SymbolModel& m : bit_models_) m.reset();
+  for (auto& m : bit_models_)
+    if (m) m->reset();
   corrector0_.reset();
-  for (SymbolModel& m : correctors_) m.reset();
+  for (auto& m : correctors_)
+    if (m) m->reset();
+}
+
+SymbolModel& IntegerDecompressor::bits_model(uint32_t context) {
+  auto& m = bit_models_[context];
+  if (!m) m = std::make_unique<SymbolModel>(corr_bits_ + 1);
+  return *m;
+}
+
+SymbolModel& IntegerDecompressor::corrector(uint32_t k) {
+  auto& m = correctors_[k - 1];
+  if (!m) m = std::make_unique<SymbolModel>(k <= bits_high_ ? 1u << k : 1u << bits_high_);
+  return *m;
 }
 
 int32_t IntegerDecompressor::read_corrector(ArithmeticDecoder& dec, SymbolModel& bits_model) {
@@ -33,10 +46,10 @@ int32_t IntegerDecompressor::read_corrector(ArithmeticDecoder& dec, SymbolModel&
   if (k_ >= kMaxCorrectorBits) return corr_min_;
   int64_t c;
   if (k_ <= bits_high_) {
-    c = dec.decode_symbol(correctors_[k_ - 1]);
+    c = dec.decode_symbol(corrector(k_));
   } else {
     const uint32_t low_bits = k_ - bits_high_;
-    c = dec.decode_symbol(correctors_[k_ - 1]);
+    c = dec.decode_symbol(corrector(k_));
     c = (c << low_bits) | dec.read_bits(low_bits);
   }
   // The k-bit value maps onto [-(2^k - 1), -2^(k-1)] and [2^(k-1), 2^k].
@@ -46,7 +59,7 @@ int32_t IntegerDecompressor::read_corrector(ArithmeticDecoder& dec, SymbolModel&
 }
 
 int32_t IntegerDecompressor::decompress(ArithmeticDecoder& dec, int32_t pred, uint32_t context) {
-  const int32_t corr = read_corrector(dec, bit_models_[context]);
+  const int32_t corr = read_corrector(dec, bits_model(context));
   // Wrap-around arithmetic in the corrector's range (two's complement).
   int64_t real = static_cast<int64_t>(pred) + corr;
   if (corr_range_ != 0) {

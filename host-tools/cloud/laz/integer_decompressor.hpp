@@ -31,9 +31,15 @@ class IntegerDecompressor {
   uint32_t corr_range_;  // 0: the full 32-bit range
   int32_t corr_min_;
   uint32_t k_ = 0;
-  std::vector<SymbolModel> bit_models_;  // one per context: k
-  BitModel corrector0_;                  // k == 0: the correction is 0 or 1
-  std::vector<SymbolModel> correctors_;  // [k - 1]: the value's high bits
+  // Models are created on first use (a fresh model equals a reset one): a
+  // 32-bit corrector has 32 models of up to 256 symbols, few of them used,
+  // and building them all would dominate the decoding of small files.
+  SymbolModel& bits_model(uint32_t context);
+  SymbolModel& corrector(uint32_t k);
+
+  std::vector<std::unique_ptr<SymbolModel>> bit_models_;  // one per context: k
+  BitModel corrector0_;                                   // k == 0: the correction is 0 or 1
+  std::vector<std::unique_ptr<SymbolModel>> correctors_;  // [k - 1]: the value's high bits
 };
 
 }  // namespace spinhash::host::laz
