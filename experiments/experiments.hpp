@@ -20,4 +20,7 @@ void add_stream_experiment(CLI::App* parent, int* exit_code);
 // Warzone 2100's PIE models (vehicles, structures) to OBJ meshes.
 void add_prepare_warzone(CLI::App* parent, int* exit_code);
 
+// laz-speed: LAS/LAZ decoding speed and peak memory (laz_speed.cpp).
+void add_laz_speed(CLI::App* parent, int* exit_code);
+
 }  // namespace spinhash::experiment
