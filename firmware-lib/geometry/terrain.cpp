@@ -20,34 +20,56 @@ uint32_t cell_coord(float v, float v0, float cell, uint32_t count) {
   return i < count ? i : count - 1u;
 }
 
-// out[i] = min (erode) or max (dilate) of in over the 2r+1 cells along one
-// axis, skipping cells without data; NaN when the window has none.
-void line_filter(const float* in, float* out, const TerrainGrid& g, uint32_t r, bool along_x, bool erode) {
-  const uint32_t lines = along_x ? g.ny : g.nx;
-  const uint32_t len = along_x ? g.nx : g.ny;
-  const uint32_t step = along_x ? 1u : g.nx;
+}  // namespace
+
+// van Herk / Gil-Werman: blocks of k = 2r + 1 cells; per block the running
+// extreme from its left end (into out) and from its right end (into line);
+// a window of k cells spans at most two blocks, so each cell costs three
+// comparisons whatever r (the direct scan costs 2r + 1). Min and max are
+// exact: the same values as the direct scan. No data (NaN) enters as the
+// extreme's identity and leaves as NaN.
+void terrain_line_filter(const float* in, float* out, float* line, uint32_t nx, uint32_t ny, uint32_t r,
+                         bool along_x, bool erode) {
+  const uint32_t lines = along_x ? ny : nx;
+  const uint32_t len = along_x ? nx : ny;
+  const uint32_t step = along_x ? 1u : nx;
+  const uint32_t k = 2u * r + 1u;
+  const float identity = erode ? INFINITY : -INFINITY;
+  auto pick = [erode](float a, float b) { return erode ? (b < a ? b : a) : (b > a ? b : a); };
+  auto value = [identity](float v) { return no_data(v) ? identity : v; };
   for (uint32_t l = 0; l < lines; ++l) {
-    const uint32_t base = along_x ? l * g.nx : l;
+    const uint32_t base = along_x ? l * nx : l;
+    float run = identity;
     for (uint32_t i = 0; i < len; ++i) {
+      const float v = value(in[base + i * step]);
+      run = i % k == 0 ? v : pick(run, v);
+      out[base + i * step] = run;  // from the block's start to i
+    }
+    for (uint32_t i = len; i-- > 0;) {
+      const float v = value(in[base + i * step]);
+      line[i] = (i % k == k - 1u || i == len - 1u) ? v : pick(line[i + 1u], v);  // from i to the block's end
+    }
+    for (uint32_t i = 0; i < len; ++i) {  // out[j] for j >= i still holds the running extreme
       const uint32_t lo = i > r ? i - r : 0u;
       const uint32_t hi = i + r < len ? i + r : len - 1u;
-      float best = NAN;
-      for (uint32_t j = lo; j <= hi; ++j) {
-        const float v = in[base + j * step];
-        if (no_data(v)) continue;
-        if (no_data(best) || (erode ? v < best : v > best)) best = v;
-      }
-      out[base + i * step] = best;
+      float m;
+      if (lo / k != hi / k)
+        m = pick(line[lo], out[base + hi * step]);
+      else
+        m = lo % k == 0 ? out[base + hi * step] : line[lo];  // a truncated window within one block
+      out[base + i * step] = m == identity ? NAN : m;
     }
   }
 }
 
+namespace {
+
 // g.opened = opening of `in` by a (2r+1)^2 square: erosion then dilation.
 void open_grid(const float* in, TerrainGrid& g, uint32_t r) {
-  line_filter(in, g.scratch, g, r, true, true);
-  line_filter(g.scratch, g.opened, g, r, false, true);
-  line_filter(g.opened, g.scratch, g, r, true, false);
-  line_filter(g.scratch, g.opened, g, r, false, false);
+  terrain_line_filter(in, g.scratch, g.line, g.nx, g.ny, r, true, true);
+  terrain_line_filter(g.scratch, g.opened, g.line, g.nx, g.ny, r, false, true);
+  terrain_line_filter(g.opened, g.scratch, g.line, g.nx, g.ny, r, true, false);
+  terrain_line_filter(g.scratch, g.opened, g.line, g.nx, g.ny, r, false, false);
 }
 
 // Lowest z per cell, then the mean of the points within kTerrainLowBand of
@@ -169,6 +191,7 @@ void TerrainGrid::carve(Arena& arena, uint32_t cells) {
   surface = arena.alloc<float>(cells);
   scratch = arena.alloc<float>(cells);
   opened = arena.alloc<float>(cells);
+  line = arena.alloc<float>(cells);  // one row or column: at most every cell
   off_ground = arena.alloc<uint8_t>(cells);
 }
 

@@ -32,6 +32,7 @@ struct TerrainGrid {
   float* surface = nullptr;  // per cell: terrain z (NaN: no data within the largest window)
   float* scratch = nullptr;  // per cell: opening buffers
   float* opened = nullptr;
+  float* line = nullptr;          // one row or column: the opening's running extremes
   uint8_t* off_ground = nullptr;  // per cell: 1 when the filter flagged it
   uint32_t nx = 0, ny = 0;
   float x0 = 0.0f, y0 = 0.0f;  // min corner of cell (0, 0)
@@ -60,5 +61,12 @@ Status classify_terrain(const float* xyz, uint32_t n, const TerrainParams& param
 float terrain_height_at(const TerrainGrid& grid, float x, float y);
 
 bool terrain_params_valid(const TerrainParams& p);
+
+// out = min (erode) or max (dilate) of `in` over 2r + 1 cells along each
+// row (along_x) or column of an nx x ny grid, cells without data (NaN)
+// skipped, NaN where a window has none. `line` holds max(nx, ny) floats;
+// `in` and `out` differ. O(cells) whatever r.
+void terrain_line_filter(const float* in, float* out, float* line, uint32_t nx, uint32_t ny, uint32_t r,
+                         bool along_x, bool erode);
 
 }  // namespace spinhash

@@ -120,3 +120,53 @@ TEST_CASE("terrain: a footprint needing more cells than the grid holds is kTileT
   bad.cell = 0.0f;
   CHECK(classify(tile, bad).status == Status::kInvalidArgument);
 }
+
+namespace {
+
+// The direct scan the opening used before: 2r + 1 cells per output cell.
+void direct_line_filter(const std::vector<float>& in, std::vector<float>& out, uint32_t nx, uint32_t ny,
+                        uint32_t r, bool along_x, bool erode) {
+  const uint32_t lines = along_x ? ny : nx, len = along_x ? nx : ny, step = along_x ? 1u : nx;
+  for (uint32_t l = 0; l < lines; ++l) {
+    const uint32_t base = along_x ? l * nx : l;
+    for (uint32_t i = 0; i < len; ++i) {
+      const uint32_t lo = i > r ? i - r : 0u, hi = i + r < len ? i + r : len - 1u;
+      float best = NAN;
+      for (uint32_t j = lo; j <= hi; ++j) {
+        const float v = in[base + j * step];
+        if (std::isnan(v)) continue;
+        if (std::isnan(best) || (erode ? v < best : v > best)) best = v;
+      }
+      out[base + i * step] = best;
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("terrain: the opening's line filter equals the direct scan for every window, with gaps") {
+  uint64_t state = 12345;
+  auto next = [&state]() {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<uint32_t>(state >> 33);
+  };
+  const uint32_t sizes[][2] = {{1, 1}, {1, 37}, {37, 1}, {5, 9}, {33, 17}, {64, 40}};
+  for (const auto& size : sizes) {
+    const uint32_t nx = size[0], ny = size[1];
+    std::vector<float> in(nx * ny), fast(nx * ny), slow(nx * ny), line(nx > ny ? nx : ny);
+    for (float& v : in) v = next() % 5 == 0 ? NAN : static_cast<float>(next() % 1000) * 0.01f - 3.0f;
+    for (uint32_t r : {1u, 2u, 3u, 4u, 8u, 16u, 40u})
+      for (int axis = 0; axis < 2; ++axis)
+        for (int erode = 0; erode < 2; ++erode) {
+          CAPTURE(nx);
+          CAPTURE(ny);
+          CAPTURE(r);
+          terrain_line_filter(in.data(), fast.data(), line.data(), nx, ny, r, axis == 0, erode == 1);
+          direct_line_filter(in, slow, nx, ny, r, axis == 0, erode == 1);
+          bool same = true;
+          for (size_t c = 0; c < in.size(); ++c)
+            same = same && (std::isnan(fast[c]) ? std::isnan(slow[c]) : fast[c] == slow[c]);
+          CHECK(same);
+        }
+  }
+}

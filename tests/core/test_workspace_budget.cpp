@@ -23,8 +23,8 @@ struct WorkspaceThreshold {
   size_t stream_1m;       // StreamConfig{}: windows of 300 000 points, 1 M points buffered
 };
 // Pointer-sized members make 64-bit layouts larger than 32-bit ones.
-constexpr WorkspaceThreshold kThreshold64 = {6386224, 5556304, 30380496, 54219792};
-constexpr WorkspaceThreshold kThreshold32 = {6386064, 5556144, 30380240, 54219536};
+constexpr WorkspaceThreshold kThreshold64 = {6386224, 5556304, 30904784, 54744096};
+constexpr WorkspaceThreshold kThreshold32 = {6386064, 5556144, 30904528, 54743840};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
 constexpr size_t kToleranceBytes = 1024;
