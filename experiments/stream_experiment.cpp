@@ -129,7 +129,9 @@ host::FlightLineOptions line_options(const StreamArgs& a, double spacing, uint32
   return o;
 }
 
-// Vehicles with more than one vehicle-sized detection on them.
+// Vehicles with more than one vehicle-sized detection on them; each such
+// detection described on stderr (points, extent, centre), to tell a split
+// object from one reported twice.
 uint32_t duplicates(const host::SceneScan& scan, const SceneResult& r) {
   uint32_t dup = 0;
   for (const host::SceneTruth& v : scan.objects) {
@@ -141,7 +143,17 @@ uint32_t duplicates(const host::SceneScan& scan, const SceneResult& r) {
       if (o.kind != ObjectKind::kVehicleCandidate && o.kind != ObjectKind::kUnknown) continue;
       on += std::hypot(o.center[0] - v.center.x(), o.center[1] - v.center.y()) <= kMatchDistance ? 1u : 0u;
     }
-    dup += on > 1 ? 1u : 0u;
+    if (on < 2) continue;
+    ++dup;
+    for (uint32_t k = 0; k < r.object_count; ++k) {
+      const SceneObject& o = r.objects[k];
+      if ((o.kind == ObjectKind::kVehicleCandidate || o.kind == ObjectKind::kUnknown) &&
+          std::hypot(o.center[0] - v.center.x(), o.center[1] - v.center.y()) <= kMatchDistance)
+        std::fprintf(
+            stderr,
+            "spinhash-experiment stream: %s twice: object of %u points, %.2f x %.2f m at (%.3f, %.3f)\n",
+            v.model.c_str(), o.points, o.extent[0], o.extent[1], o.center[0], o.center[1]);
+    }
   }
   return dup;
 }
