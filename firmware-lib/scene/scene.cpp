@@ -14,12 +14,6 @@
 
 namespace spinhash {
 
-constexpr uint32_t kMaxSceneTopN = 64;  // ranking entries kept per object
-constexpr uint32_t kMaxSceneObjects = 1u << 16;
-constexpr uint32_t kMaxSceneTilePoints = 1u << 26;
-constexpr uint32_t kMaxSceneGridCells = 1u << 24;
-constexpr float kMaxWindowEdge = 2000.0f;  // m: window_core and window_margin
-
 struct SceneBuffers {
   WindowBuffers window;
   SceneObject* objects = nullptr;   // max_objects: the tile's answers

@@ -13,9 +13,6 @@
 
 namespace spinhash {
 
-constexpr uint32_t kMaxStreamBufferedPoints = 1u << 28;
-constexpr float kMaxStreamExtent = 1.0e5f;  // m: swath edges, lag, jump and z offset
-
 struct StreamBuffers {
   const Database* db = nullptr;
   StreamConfig config;

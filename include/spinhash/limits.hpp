@@ -36,5 +36,13 @@ constexpr uint32_t kMaxStabilityRetries = 32;          // attempts to draw a sta
 constexpr uint32_t kMaxGridCellsPerModel = 1u << 20;
 constexpr uint32_t kMaxFieldVoxelsPerModel = 1u << 24;  // nearest-feature field (blob_format.hpp)
 constexpr uint32_t kMaxFieldSlots = 8;                  // features per field voxel
+// The scene (scene.hpp, scene_stream.hpp): bounds of SceneConfig and StreamConfig.
+constexpr uint32_t kMaxSceneTopN = 64;              // ranking entries kept per object
+constexpr uint32_t kMaxSceneObjects = 1u << 16;     // objects per window
+constexpr uint32_t kMaxSceneTilePoints = 1u << 26;  // points per window
+constexpr uint32_t kMaxSceneGridCells = 1u << 24;   // terrain or segmentation cells per window
+constexpr float kMaxWindowEdge = 2000.0f;           // m: window_core and window_margin
+constexpr uint32_t kMaxStreamBufferedPoints = 1u << 28;
+constexpr float kMaxStreamExtent = 1.0e5f;  // m: swath edges, lag, jump and z offset
 
 }  // namespace spinhash
