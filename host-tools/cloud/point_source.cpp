@@ -1,6 +1,7 @@
 // LAS and LAZ are read in chunks through LasRecordReader (a LAZ chunk is
-// decoded at a time); PLY and text still go through read_cloud whole (a
-// stop-gap until their chunked readers land).
+// decoded at a time), text a line at a time through a 64 KiB window; PLY
+// still goes through read_cloud whole (a stop-gap until its chunked reader
+// lands).
 #include "cloud/point_source.hpp"
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include "cloud/cloud_reader.hpp"
 #include "cloud/format_sniff.hpp"
 #include "cloud/las_points.hpp"
+#include "cloud/text_cloud.hpp"
 
 namespace spinhash::host {
 namespace {
@@ -102,6 +104,67 @@ class LasSource final : public PointSource {
   size_t batch_ = 1, held_ = 0, next_ = 0;
 };
 
+// Text window and the longest line it takes (a point is a few dozen bytes).
+constexpr size_t kTextWindow = size_t{1} << 16;
+constexpr size_t kMaxTextLine = size_t{1} << 20;
+
+class TextSource final : public PointSource {
+ public:
+  explicit TextSource(std::string path) : path_(std::move(path)), src_(file_source(path_)) {
+    header_.format = "text";
+    const std::string head = window(0);
+    if (head.find('\0') != std::string::npos) fail(kTextBinaryMessage);
+  }
+  const CloudHeader& header() const override { return header_; }
+  size_t read(double* xyz, size_t max_points) override {
+    size_t n = 0;
+    std::string line;
+    while (n < max_points && next_line(&line)) {
+      bool has_point = false;
+      std::string error;
+      if (!parser_.line(line, xyz + 3 * n, &has_point, &error)) fail(error);
+      if (has_point) ++n;
+    }
+    points_ += n;
+    if (n == 0 && points_ == 0 && max_points > 0) fail(kTextEmptyMessage);
+    return n;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& why) const { throw CloudError(path_ + ": " + why); }
+  std::string window(uint64_t at) const {
+    std::string w(static_cast<size_t>(std::min<uint64_t>(kTextWindow, src_->size() - at)), '\0');
+    if (!w.empty()) src_->read_at(at, w.data(), w.size());
+    return w;
+  }
+  // The next line without its '\n'; false at the end of the file.
+  bool next_line(std::string* line) {
+    line->clear();
+    for (;;) {
+      if (pos_ == buffer_.size()) {
+        if (offset_ >= src_->size()) return !line->empty();
+        buffer_ = window(offset_);
+        offset_ += buffer_.size();
+        pos_ = 0;
+      }
+      const size_t end = buffer_.find('\n', pos_);
+      const size_t stop = end == std::string::npos ? buffer_.size() : end;
+      line->append(buffer_, pos_, stop - pos_);
+      if (line->size() > kMaxTextLine) fail("a line longer than " + std::to_string(kMaxTextLine) + " bytes");
+      pos_ = end == std::string::npos ? buffer_.size() : end + 1;
+      if (end != std::string::npos) return true;
+    }
+  }
+
+  std::string path_;
+  std::unique_ptr<ByteSource> src_;
+  CloudHeader header_;
+  TextCloudParser parser_;
+  std::string buffer_;
+  size_t pos_ = 0;
+  uint64_t offset_ = 0, points_ = 0;
+};
+
 std::string file_head(const std::string& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (f == nullptr) return "";
@@ -151,6 +214,7 @@ std::unique_ptr<PointSource> open_point_source(const std::string& path) {
   switch (sniff_cloud_format(head)) {
     case CloudFormat::kLas: return std::make_unique<LasSource>(path, nullptr, file_source(path));
     case CloudFormat::kPly: return whole_cloud(path, "ply");
+    case CloudFormat::kText: return std::make_unique<TextSource>(path);
     default: return whole_cloud(path, "text");  // read_cloud names foreign formats
   }
 }
