@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cloud/cloud_reader.hpp"
+#include "cloud/cloud_writer.hpp"
 #include "cloud/las_writer.hpp"
 #include "cloud/point_source.hpp"
 
@@ -105,4 +106,35 @@ TEST_CASE("a LAS file read in chunks gives read_cloud's points; its header comes
   CHECK(failure(cut).find("truncated") != std::string::npos);
   std::filesystem::remove(path);
   std::filesystem::remove(cut);
+}
+
+TEST_CASE("a binary PLY read in chunks gives read_cloud's points; other PLY falls back to the whole reader") {
+  std::vector<double> xyz;
+  for (int i = 0; i < 3000; ++i) {
+    xyz.push_back(0.5 * i);
+    xyz.push_back(-0.25 * i);
+    xyz.push_back(1e6 + i);
+  }
+  std::string error;
+  const std::string binary =
+      (std::filesystem::temp_directory_path() / "spinhash_point_source_b.ply").string();
+  const std::string ascii = (std::filesystem::temp_directory_path() / "spinhash_point_source_a.ply").string();
+  REQUIRE(write_ply(binary, xyz, true, &error));
+  REQUIRE(write_ply(ascii, xyz, false, &error));
+  for (const std::string& path : {binary, ascii}) {
+    INFO(path);
+    std::vector<double> whole;
+    REQUIRE(read_cloud(path, &whole, &error));
+    CHECK(whole == xyz);
+    for (size_t chunk : {size_t{1}, size_t{7}, size_t{4096}}) CHECK(read_chunked(path, chunk) == xyz);
+    const CloudHeader h = read_cloud_header(path);
+    CHECK(h.format == "ply");
+    CHECK(h.point_count == 3000);
+  }
+  // A binary PLY cut short: the whole reader names the truncation.
+  std::ifstream in(binary, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  const std::string cut = write_temp("cut.ply", bytes.substr(0, bytes.size() - 5));
+  CHECK(failure(cut).find("truncated") != std::string::npos);
+  for (const std::string& p : {binary, ascii, cut}) std::filesystem::remove(p);
 }
