@@ -14,14 +14,17 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "cloud/byte_source.hpp"
 #include "cloud/las_points.hpp"
+#include "cloud/laz/item_codec.hpp"
 #include "cloud/point_source.hpp"
 #include "experiments.hpp"
+#include "laz_tile_writer.hpp"
 
 namespace spinhash::experiment {
 namespace {
@@ -32,7 +35,13 @@ constexpr size_t kMaxRepeats = 100000;
 struct SpeedArgs {
   std::vector<std::string> files;
   double min_seconds = kMinSeconds;
+  std::string tile_out;     // write a format-0 LAZ tile here first
+  std::string tile_source;  // from these LAS/LAZ points
+  unsigned copies = 10;     // side by side along x
 };
+
+constexpr uint32_t kTileChunk = 50000;  // LASzip's default chunk size
+constexpr size_t kFormat0Bytes = 20;
 
 double cpu_seconds() {
   timespec t{};
@@ -87,7 +96,60 @@ long peak_rss_kib() {
   return u.ru_maxrss;
 }
 
-int run_speed(const SpeedArgs& a) {
+// All raw records of a file, cut to their first 20 bytes (format 0).
+std::vector<uint8_t> format0_records(const std::string& path, host::LasHeader* h) {
+  host::LasRecordReader reader(host::file_source(path));
+  *h = reader.header();
+  const size_t batch = host::las_batch_records(*h);
+  std::vector<uint8_t> records(batch * h->record_length), out;
+  for (size_t n; (n = reader.read(records.data(), batch)) > 0;)
+    for (size_t i = 0; i < n; ++i) {
+      const uint8_t* r = records.data() + i * h->record_length;
+      out.insert(out.end(), r, r + kFormat0Bytes);
+    }
+  return out;
+}
+
+// `copies` copies of the source's points side by side along x, as a
+// format-0 LAZ tile; checks that our decoder gives the records back.
+int make_tile(const SpeedArgs& a) {
+  host::LasHeader h;
+  const std::vector<uint8_t> one = format0_records(a.tile_source, &h);
+  const int32_t step = static_cast<int32_t>((h.max[0] - h.min[0]) / h.scale[0]) + 1;
+  std::vector<uint8_t> all;
+  for (unsigned c = 0; c < a.copies; ++c)
+    for (size_t i = 0; i < one.size(); i += kFormat0Bytes) {
+      uint8_t r[kFormat0Bytes];
+      std::memcpy(r, &one[i], kFormat0Bytes);
+      host::laz::put_i32(r, host::laz::get_i32(r) + static_cast<int32_t>(c) * step);
+      all.insert(all.end(), r, r + kFormat0Bytes);
+    }
+  h.max[0] += (a.copies - 1) * step * h.scale[0];
+  std::string error;
+  if (!write_format0_laz(a.tile_out, h, all, kTileChunk, &error)) {
+    std::fprintf(stderr, "laz-speed: %s\n", error.c_str());
+    return 1;
+  }
+  host::LasHeader back;
+  if (format0_records(a.tile_out, &back) != all) {
+    std::fprintf(stderr, "laz-speed: %s does not decode to the records written\n", a.tile_out.c_str());
+    return 1;
+  }
+  std::fprintf(stderr, "laz-speed: %s: %zu points, decodes to the records written\n", a.tile_out.c_str(),
+               all.size() / kFormat0Bytes);
+  return 0;
+}
+
+int run_speed(SpeedArgs a) {
+  if (!a.tile_out.empty()) {
+    try {
+      if (make_tile(a) != 0) return 1;
+    } catch (const host::CloudError& e) {
+      std::fprintf(stderr, "laz-speed: %s\n", e.what());
+      return 1;
+    }
+    a.files.insert(a.files.begin(), a.tile_out);
+  }
   std::printf(
       "file,format,compressed,points,open_ms,records_per_s,steady_records_per_s,xyz_per_s,peak_rss_kib\n");
   for (const std::string& path : a.files) {
@@ -119,7 +181,14 @@ void add_laz_speed(CLI::App* parent, int* exit_code) {
   CLI::App* cmd = parent->add_subcommand(
       "laz-speed",
       "LAS/LAZ decoding speed (points/s, raw records and x y z) and peak RSS, one CSV row per file");
-  cmd->add_option("files", a->files, "LAS or LAZ files")->required()->check(CLI::ExistingFile);
+  cmd->add_option("files", a->files, "LAS or LAZ files")->check(CLI::ExistingFile);
+  cmd->add_option(
+      "--write-format0-tile", a->tile_out,
+      "first write a format-0 LAZ tile (our benchmark writer) of --copies copies of --source's points");
+  cmd->add_option("--source", a->tile_source, "LAS or LAZ points for the tile")->check(CLI::ExistingFile);
+  cmd->add_option("--copies", a->copies, "copies side by side along x")
+      ->check(CLI::Range(1u, 1000u))
+      ->capture_default_str();
   cmd->add_option("--min-seconds", a->min_seconds, "repeat each file for at least this long")
       ->check(CLI::Range(0.0, 600.0))
       ->capture_default_str();

@@ -22,11 +22,11 @@ std::string foreign_cloud_format(const std::string& b) {
   return "";
 }
 
-CloudFormat sniff_cloud_format(const std::string& head) {
-  if (!foreign_cloud_format(head).empty()) return CloudFormat::kForeign;
-  if (is_las(head)) return CloudFormat::kLas;
-  if (is_ply(head)) return CloudFormat::kPly;
-  return CloudFormat::kText;
+SniffedFormat sniff_cloud_format(const std::string& head) {
+  if (!foreign_cloud_format(head).empty()) return SniffedFormat::kForeign;
+  if (is_las(head)) return SniffedFormat::kLas;
+  if (is_ply(head)) return SniffedFormat::kPly;
+  return SniffedFormat::kText;
 }
 
 }  // namespace spinhash::host

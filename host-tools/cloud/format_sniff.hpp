@@ -7,12 +7,12 @@
 
 namespace spinhash::host {
 
-enum class CloudFormat { kLas, kPly, kText, kForeign };
+enum class SniffedFormat { kLas, kPly, kText, kForeign };
 
 // Enough leading bytes to tell every format apart.
 constexpr size_t kSniffBytes = 16;
 
-CloudFormat sniff_cloud_format(const std::string& head);
+SniffedFormat sniff_cloud_format(const std::string& head);
 
 // True when bytes begin with the LAS signature "LASF" (LAS and LAZ).
 bool is_las(const std::string& bytes);

@@ -187,6 +187,15 @@ bool read_binary(const std::string& bytes, const Header& h, const Targets& t, st
   return true;
 }
 
+}  // namespace
+
+double binary_value(Type type, const unsigned char* p, bool big_endian) {
+  BinaryCursor c{p, type_size(type), 0, big_endian};
+  return decode(type, c.take_bits(type_size(type)));
+}
+
+namespace {
+
 // ---- ascii ----
 
 struct TextCursor {

@@ -19,4 +19,8 @@ bool read_body(const std::string& bytes, const Header& header, std::vector<doubl
 bool read_mesh_body(const std::string& bytes, const Header& header, std::vector<double>* xyz,
                     std::vector<double>* faces, std::string* error);
 
+// The value of a binary property of `type` at p, in the file's byte order
+// (the chunked reader of cloud/point_source.cpp decodes records with it).
+double binary_value(Type type, const unsigned char* p, bool big_endian);
+
 }  // namespace spinhash::host::ply

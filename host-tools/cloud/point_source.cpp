@@ -1,6 +1,9 @@
 // LAS and LAZ are read in chunks through LasRecordReader (a LAZ chunk is
-// decoded at a time); PLY and text still go through read_cloud whole (a
-// stop-gap until their chunked readers land).
+// decoded at a time), text a line at a time through a 64 KiB window, binary
+// PLY of one vertex element of scalars (what scanners and `spinhash scan`
+// write) in chunks of records. Other PLY (ascii, faces) still goes through
+// read_cloud whole, as do files whose sizes do not add up (read_cloud then
+// names what is wrong).
 #include "cloud/point_source.hpp"
 
 #include <algorithm>
@@ -11,6 +14,9 @@
 #include "cloud/cloud_reader.hpp"
 #include "cloud/format_sniff.hpp"
 #include "cloud/las_points.hpp"
+#include "cloud/ply_body.hpp"
+#include "cloud/ply_header.hpp"
+#include "cloud/text_cloud.hpp"
 
 namespace spinhash::host {
 namespace {
@@ -102,6 +108,146 @@ class LasSource final : public PointSource {
   size_t batch_ = 1, held_ = 0, next_ = 0;
 };
 
+// Text window and the longest line it takes (a point is a few dozen bytes).
+constexpr size_t kTextWindow = size_t{1} << 16;
+constexpr size_t kMaxTextLine = size_t{1} << 20;
+
+class TextSource final : public PointSource {
+ public:
+  explicit TextSource(std::string path) : path_(std::move(path)), src_(file_source(path_)) {
+    header_.format = "text";
+    const std::string head = window(0);
+    if (head.find('\0') != std::string::npos) fail(kTextBinaryMessage);
+  }
+  const CloudHeader& header() const override { return header_; }
+  size_t read(double* xyz, size_t max_points) override {
+    size_t n = 0;
+    std::string line;
+    while (n < max_points && next_line(&line)) {
+      bool has_point = false;
+      std::string error;
+      if (!parser_.line(line, xyz + 3 * n, &has_point, &error)) fail(error);
+      if (has_point) ++n;
+    }
+    points_ += n;
+    if (n == 0 && points_ == 0 && max_points > 0) fail(kTextEmptyMessage);
+    return n;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& why) const { throw CloudError(path_ + ": " + why); }
+  std::string window(uint64_t at) const {
+    std::string w(static_cast<size_t>(std::min<uint64_t>(kTextWindow, src_->size() - at)), '\0');
+    if (!w.empty()) src_->read_at(at, w.data(), w.size());
+    return w;
+  }
+  // The next line without its '\n'; false at the end of the file.
+  bool next_line(std::string* line) {
+    line->clear();
+    for (;;) {
+      if (pos_ == buffer_.size()) {
+        if (offset_ >= src_->size()) return !line->empty();
+        buffer_ = window(offset_);
+        offset_ += buffer_.size();
+        pos_ = 0;
+      }
+      const size_t end = buffer_.find('\n', pos_);
+      const size_t stop = end == std::string::npos ? buffer_.size() : end;
+      line->append(buffer_, pos_, stop - pos_);
+      if (line->size() > kMaxTextLine) fail("a line longer than " + std::to_string(kMaxTextLine) + " bytes");
+      pos_ = end == std::string::npos ? buffer_.size() : end + 1;
+      if (end != std::string::npos) return true;
+    }
+  }
+
+  std::string path_;
+  std::unique_ptr<ByteSource> src_;
+  CloudHeader header_;
+  TextCloudParser parser_;
+  std::string buffer_;
+  size_t pos_ = 0;
+  uint64_t offset_ = 0, points_ = 0;
+};
+
+// Binary PLY whose only element is the vertex, every property a scalar, the
+// data exactly count records long, x y z float or double.
+class PlySource final : public PointSource {
+ public:
+  static constexpr size_t kBatchBytes = size_t{1} << 20;
+
+  // nullptr when the file is not of that simple kind.
+  static std::unique_ptr<PlySource> open(const std::string& path) {
+    auto src = file_source(path);
+    std::string head(static_cast<size_t>(std::min<uint64_t>(src->size(), ply::kMaxHeaderBytes)), '\0');
+    if (!head.empty()) src->read_at(0, head.data(), head.size());
+    ply::Header h;
+    std::string error;
+    if (!ply::parse_header(head, &h, &error) || h.format == ply::Format::kAscii || h.elements.size() != 1 ||
+        h.elements[0].name != "vertex")
+      return nullptr;
+    auto s = std::unique_ptr<PlySource>(new PlySource(std::move(src), h));
+    return s->usable() ? std::move(s) : nullptr;
+  }
+  const CloudHeader& header() const override { return header_; }
+  size_t read(double* xyz, size_t max_points) override {
+    const size_t n = static_cast<size_t>(std::min<uint64_t>({max_points, left_, batch_}));
+    if (n == 0) return 0;
+    src_->read_at(next_offset_, buffer_.data(), n * record_);
+    for (size_t i = 0; i < n; ++i)
+      for (int a = 0; a < 3; ++a)
+        xyz[3 * i + a] =
+            ply::binary_value(axis_type_[a], buffer_.data() + i * record_ + axis_at_[a], big_endian_);
+    next_offset_ += n * record_;
+    left_ -= n;
+    return n;
+  }
+
+ private:
+  PlySource(std::unique_ptr<ByteSource> src, const ply::Header& h)
+      : src_(std::move(src)), big_endian_(h.format == ply::Format::kBinaryBigEndian) {
+    const ply::Element& e = h.elements[0];
+    size_t at = 0;
+    int found = 0;
+    scalars_ = true;
+    for (const ply::Property& p : e.properties) {
+      scalars_ = scalars_ && !p.is_list;
+      for (int a = 0; a < 3; ++a)
+        if (p.name == std::string(1, static_cast<char>('x' + a)) && !p.is_list && !ply::is_integer(p.type)) {
+          axis_at_[a] = at;
+          axis_type_[a] = p.type;
+          ++found;
+        }
+      at += ply::type_size(p.type);
+    }
+    record_ = at;
+    axes_ = found == 3;
+    next_offset_ = h.data_offset;
+    left_ = e.count;
+    header_.format = "ply";
+    header_.count_known = true;
+    header_.point_count = e.count;
+  }
+  bool usable() {
+    if (!scalars_ || !axes_ || record_ == 0 || next_offset_ > src_->size()) return false;
+    const uint64_t data = src_->size() - next_offset_;
+    if (data % record_ != 0 || data / record_ != left_) return false;
+    batch_ = std::max<size_t>(1, kBatchBytes / record_);
+    buffer_.resize(static_cast<size_t>(std::min<uint64_t>(batch_, std::max<uint64_t>(left_, 1))) * record_);
+    batch_ = buffer_.size() / record_;
+    return true;
+  }
+
+  std::unique_ptr<ByteSource> src_;
+  bool big_endian_;
+  bool scalars_ = false, axes_ = false;
+  size_t axis_at_[3] = {0, 0, 0};
+  ply::Type axis_type_[3] = {ply::Type::kFloat32, ply::Type::kFloat32, ply::Type::kFloat32};
+  size_t record_ = 0, batch_ = 1;
+  uint64_t next_offset_ = 0, left_ = 0;
+  std::vector<uint8_t> buffer_;
+  CloudHeader header_;
+};
+
 std::string file_head(const std::string& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (f == nullptr) return "";
@@ -149,8 +295,12 @@ std::unique_ptr<PointSource> open_point_source(const std::string& path) {
   if (path == kStdinPath) return open_stdin();
   const std::string head = file_head(path);
   switch (sniff_cloud_format(head)) {
-    case CloudFormat::kLas: return std::make_unique<LasSource>(path, nullptr, file_source(path));
-    case CloudFormat::kPly: return whole_cloud(path, "ply");
+    case SniffedFormat::kLas: return std::make_unique<LasSource>(path, nullptr, file_source(path));
+    case SniffedFormat::kPly: {
+      if (auto ply = PlySource::open(path)) return ply;
+      return whole_cloud(path, "ply");
+    }
+    case SniffedFormat::kText: return std::make_unique<TextSource>(path);
     default: return whole_cloud(path, "text");  // read_cloud names foreign formats
   }
 }

@@ -51,13 +51,12 @@ bool header_columns(const std::vector<std::string_view>& fields, std::size_t col
   return true;
 }
 
-// Next line at *pos without its comment and line end; false at the end of the text.
+// Next line at *pos without its line end; false at the end of the text.
 bool next_line(const std::string& text, std::size_t* pos, std::string_view* line) {
   if (*pos >= text.size()) return false;
   std::size_t end = text.find('\n', *pos);
   if (end == std::string::npos) end = text.size();
   *line = std::string_view(text).substr(*pos, end - *pos);
-  *line = line->substr(0, line->find('#'));
   *pos = end + 1;
   return true;
 }
@@ -66,45 +65,56 @@ bool blank(std::string_view line) { return line.find_first_not_of(" \t\r\v\f") =
 
 }  // namespace
 
+bool TextCloudParser::line(std::string_view line, double point[kAxes], bool* has_point, std::string* error) {
+  *has_point = false;
+  ++number_;
+  if (line.find('\0') != std::string_view::npos) {
+    if (error) *error = kTextBinaryMessage;
+    return false;
+  }
+  line = line.substr(0, line.find('#'));
+  if (blank(line)) return true;
+  auto sep = static_cast<text::Separator>(separator_);
+  if (first_) {
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (line.substr(start, 2) == "//") line.remove_prefix(start + 2);  // CloudCompare's header
+    sep = text::choose_separator(line);
+    separator_ = static_cast<char>(sep);
+  }
+  std::string why;
+  if (!text::split_fields(line, sep, &fields_, &why)) return fail(error, number_, why);
+  if (first_ && (first_ = false, is_header(fields_, sep))) {
+    if (!header_columns(fields_, column_, &why)) return fail(error, number_, why);
+    return true;
+  }
+  for (int a = 0; a < kAxes; ++a) {
+    if (column_[a] >= fields_.size()) {
+      return fail(error, number_,
+                  "fewer values than the columns x y z need (separator " +
+                      std::string(text::separator_name(sep)) + ")");
+    }
+    if (!text::parse_field(fields_[column_[a]], sep, &point[a], &why)) return fail(error, number_, why);
+  }
+  *has_point = true;
+  return true;
+}
+
 bool read_text_cloud(const std::string& text, std::vector<double>* xyz, std::string* error) {
   xyz->clear();
   if (text.find('\0') != std::string::npos) {
-    if (error) *error = "binary data in a text point cloud (neither PLY nor x y z text)";
+    if (error) *error = kTextBinaryMessage;
     return false;
   }
-  bool first = true;
-  text::Separator sep = text::Separator::kSpaces;
-  std::size_t column[kAxes] = {0, 1, 2};
-  std::vector<std::string_view> fields;
-  std::string why;
-  std::size_t number = 0;
+  TextCloudParser parser;
   std::string_view line;
   for (std::size_t pos = 0; next_line(text, &pos, &line);) {
-    ++number;
-    if (blank(line)) continue;
-    if (first) {
-      const std::size_t start = line.find_first_not_of(" \t");
-      if (line.substr(start, 2) == "//") line.remove_prefix(start + 2);  // CloudCompare's header
-      sep = text::choose_separator(line);
-    }
-    if (!text::split_fields(line, sep, &fields, &why)) return fail(error, number, why);
-    if (first && (first = false, is_header(fields, sep))) {
-      if (!header_columns(fields, column, &why)) return fail(error, number, why);
-      continue;
-    }
     double point[kAxes];
-    for (int a = 0; a < kAxes; ++a) {
-      if (column[a] >= fields.size()) {
-        return fail(error, number,
-                    "fewer values than the columns x y z need (separator " +
-                        std::string(text::separator_name(sep)) + ")");
-      }
-      if (!text::parse_field(fields[column[a]], sep, &point[a], &why)) return fail(error, number, why);
-    }
-    xyz->insert(xyz->end(), point, point + kAxes);
+    bool has_point = false;
+    if (!parser.line(line, point, &has_point, error)) return false;
+    if (has_point) xyz->insert(xyz->end(), point, point + kAxes);
   }
   if (xyz->empty()) {
-    if (error) *error = "no points in the text point cloud";
+    if (error) *error = kTextEmptyMessage;
     return false;
   }
   return true;

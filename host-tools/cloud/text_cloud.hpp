@@ -7,11 +7,32 @@
 // ignored. Without a header, the first three columns are x y z.
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace spinhash::host {
 
 bool read_text_cloud(const std::string& text, std::vector<double>* xyz, std::string* error);
+
+// The same rules a line at a time, for reading a file in chunks.
+class TextCloudParser {
+ public:
+  // Takes the next line (without its '\n'). True when it was read: *has_point
+  // says whether it held a point (written to point[0..3)); false with
+  // *error ("text cloud line N: ...") otherwise.
+  bool line(std::string_view line, double point[3], bool* has_point, std::string* error);
+
+ private:
+  bool first_ = true;
+  char separator_ = ' ';  // a text::Separator, chosen by the first line
+  std::size_t column_[3] = {0, 1, 2};
+  std::size_t number_ = 0;
+  std::vector<std::string_view> fields_;
+};
+
+constexpr const char* kTextBinaryMessage = "binary data in a text point cloud (neither PLY nor x y z text)";
+constexpr const char* kTextEmptyMessage = "no points in the text point cloud";
 
 }  // namespace spinhash::host

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <map>
+#include <memory>
+#include <mutex>
 
 namespace spinhash::host::laz {
 namespace {
@@ -25,14 +28,33 @@ SymbolModel::SymbolModel(uint32_t symbols)
   }
   distribution_.assign(symbols_, 0);
   symbol_count_.assign(symbols_, 0);
+  // The starts by alphabet size, shared by all models (and threads) and never freed.
+  static std::mutex mutex;
+  static std::map<uint32_t, std::unique_ptr<Start>> starts;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    auto& start = starts[symbols_];
+    if (!start) {
+      compute_start();
+      start = std::make_unique<Start>(Start{total_count_, distribution_, decoder_table_});
+    }
+    start_ = start.get();
+  }
   reset();
 }
 
-void SymbolModel::reset() {
+void SymbolModel::compute_start() {
   total_count_ = 0;
   update_cycle_ = symbols_;
   std::fill(symbol_count_.begin(), symbol_count_.end(), 1u);
   update();
+}
+
+void SymbolModel::reset() {
+  total_count_ = start_->total_count;
+  distribution_ = start_->distribution;
+  decoder_table_ = start_->decoder_table;
+  std::fill(symbol_count_.begin(), symbol_count_.end(), 1u);
   symbols_until_update_ = update_cycle_ = (symbols_ + 6) >> 1;
 }
 

@@ -29,11 +29,22 @@ class SymbolModel {
   void reset();   // back to the equiprobable start of a chunk
   void update();  // recompute the distribution from the counts
 
+  // The equiprobable start, computed once per alphabet size and copied by
+  // reset(): every chunk of a LAZ file resets every model it uses.
+  struct Start {
+    uint32_t total_count = 0;
+    std::vector<uint32_t> distribution, decoder_table;
+  };
+
   uint32_t symbols_;
   uint32_t last_symbol_;
   uint32_t table_size_ = 0, table_shift_ = 0;
   uint32_t total_count_ = 0, update_cycle_ = 0, symbols_until_update_ = 0;
   std::vector<uint32_t> distribution_, symbol_count_, decoder_table_;
+  const Start* start_ = nullptr;
+
+ private:
+  void compute_start();
 };
 
 class BitModel {

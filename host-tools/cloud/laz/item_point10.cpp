@@ -3,6 +3,7 @@
 // source id). Version 1 predicts x and y from the median of the last three
 // differences; version 2 from streaming medians per return context and z
 // from the last height per return level.
+#include <algorithm>
 #include <array>
 #include <memory>
 
@@ -49,6 +50,14 @@ constexpr uint8_t kReturnMap[8][8] = {{15, 14, 13, 12, 11, 10, 9, 8},  {14, 0, 1
                                       {11, 6, 7, 8, 9, 13, 13, 12},    {10, 10, 11, 12, 13, 14, 14, 13},
                                       {9, 10, 11, 12, 13, 14, 15, 14}, {8, 9, 10, 11, 12, 13, 14, 15}};
 
+// Contexts of y and z: the (even) corrector bit count of x, or of x and y,
+// capped; a single return adds one. Intensity: the first three return maps.
+constexpr uint32_t kDyContextCap = 20, kDzContextCap = 18, kIntensityContexts = 3;
+// Version 1 uses the bit counts as they are, capped; a small one picks the
+// scan angle's context.
+constexpr uint32_t kV1ContextCap = 19, kV1SmallK = 3;
+constexpr int kV1Diffs = 3;  // the last differences of x and y kept
+
 uint32_t even_capped(uint32_t k, uint32_t cap) { return k < cap ? (k & ~1u) : cap; }
 
 class Point10V2 final : public PointwiseItem {
@@ -84,7 +93,8 @@ class Point10V2 final : public PointwiseItem {
     const uint32_t level = n > r ? n - r : r - n;
     if (changed != 0 && (changed & 16u) == 0) put_u16(l + kIntensityAt, last_intensity_[m]);
     if (changed != 0 && (changed & 16u) != 0) {
-      const uint16_t v = static_cast<uint16_t>(intensity_.decompress(dec, last_intensity_[m], m < 3 ? m : 3));
+      const uint16_t v = static_cast<uint16_t>(
+          intensity_.decompress(dec, last_intensity_[m], std::min(m, kIntensityContexts)));
       put_u16(l + kIntensityAt, v);
       last_intensity_[m] = v;
     }
@@ -94,12 +104,12 @@ class Point10V2 final : public PointwiseItem {
     put_i32(l + kXAt,
             static_cast<int32_t>(static_cast<uint32_t>(get_i32(l + kXAt)) + static_cast<uint32_t>(diff)));
     x_median_[m].add(diff);
-    diff = dy_.decompress(dec, y_median_[m].get(), single + even_capped(dx_.k(), 20));
+    diff = dy_.decompress(dec, y_median_[m].get(), single + even_capped(dx_.k(), kDyContextCap));
     put_i32(l + kYAt,
             static_cast<int32_t>(static_cast<uint32_t>(get_i32(l + kYAt)) + static_cast<uint32_t>(diff)));
     y_median_[m].add(diff);
     const uint32_t k_bits = (dx_.k() + dy_.k()) / 2;
-    const int32_t z = dz_.decompress(dec, last_height_[level], single + even_capped(k_bits, 18));
+    const int32_t z = dz_.decompress(dec, last_height_[level], single + even_capped(k_bits, kDzContextCap));
     put_i32(l + kZAt, z);
     last_height_[level] = z;
     std::copy(last_.begin(), last_.end(), out);
@@ -142,7 +152,7 @@ int32_t median3(const int32_t* v) {
 class Point10V1 final : public PointwiseItem {
  public:
   void init(const uint8_t* first) override {
-    for (int i = 0; i < 3; ++i) last_dx_[i] = last_dy_[i] = 0;
+    for (int i = 0; i < kV1Diffs; ++i) last_dx_[i] = last_dy_[i] = 0;
     next_ = 0;
     dx_.reset();
     dy_.reset();
@@ -164,16 +174,16 @@ class Point10V1 final : public PointwiseItem {
     put_i32(out + kXAt,
             static_cast<int32_t>(static_cast<uint32_t>(get_i32(l + kXAt)) + static_cast<uint32_t>(dx)));
     uint32_t k_bits = dx_.k();
-    const int32_t dy = dy_.decompress(dec, median3(last_dy_), k_bits < 19 ? k_bits : 19);
+    const int32_t dy = dy_.decompress(dec, median3(last_dy_), std::min(k_bits, kV1ContextCap));
     put_i32(out + kYAt,
             static_cast<int32_t>(static_cast<uint32_t>(get_i32(l + kYAt)) + static_cast<uint32_t>(dy)));
     k_bits = (k_bits + dy_.k()) / 2;
-    put_i32(out + kZAt, dz_.decompress(dec, get_i32(l + kZAt), k_bits < 19 ? k_bits : 19));
+    put_i32(out + kZAt, dz_.decompress(dec, get_i32(l + kZAt), std::min(k_bits, kV1ContextCap)));
     const uint32_t changed = dec.decode_symbol(changed_);
     if (changed != 0) decode_attributes(dec, changed, k_bits, out);
     last_dx_[next_] = dx;
     last_dy_[next_] = dy;
-    next_ = next_ == 2 ? 0 : next_ + 1;
+    next_ = next_ == kV1Diffs - 1 ? 0 : next_ + 1;
     std::copy(out, out + kPoint10Bytes, last_.begin());
   }
 
@@ -187,7 +197,7 @@ class Point10V1 final : public PointwiseItem {
     if (changed & 8u) out[kClassAt] = static_cast<uint8_t>(dec.decode_symbol(classes_.at(l[kClassAt])));
     if (changed & 4u)
       out[kScanAngleAt] =
-          static_cast<uint8_t>(scan_angle_.decompress(dec, l[kScanAngleAt], k_bits < 3 ? 1 : 0));
+          static_cast<uint8_t>(scan_angle_.decompress(dec, l[kScanAngleAt], k_bits < kV1SmallK ? 1 : 0));
     if (changed & 2u)
       out[kUserDataAt] = static_cast<uint8_t>(dec.decode_symbol(user_data_.at(l[kUserDataAt])));
     if (changed & 1u)
@@ -195,7 +205,7 @@ class Point10V1 final : public PointwiseItem {
   }
 
   std::array<uint8_t, kPoint10Bytes> last_{};
-  int32_t last_dx_[3] = {}, last_dy_[3] = {};
+  int32_t last_dx_[kV1Diffs] = {}, last_dy_[kV1Diffs] = {};
   int next_ = 0;
   IntegerDecompressor dx_{32, 1}, dy_{32, 20}, dz_{32, 20};
   IntegerDecompressor intensity_{16, 1}, scan_angle_{8, 2}, source_{16, 1};

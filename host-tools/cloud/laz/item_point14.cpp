@@ -102,6 +102,10 @@ uint32_t level_of(uint32_t n, uint32_t r) {
   const uint32_t d = n > r ? n - r : r - n;
   return d < kLevels - 1 ? d : kLevels - 1;
 }
+// Contexts of y and z: the (even) corrector bit count of x, or of x and y,
+// capped; a single return adds one.
+constexpr uint32_t kDyContextCap = 20, kDzContextCap = 18;
+
 uint32_t even_capped(uint32_t k, uint32_t cap) { return k < cap ? (k & ~1u) : cap; }
 
 // Models created when first needed (a fresh model equals a reset one).
@@ -237,7 +241,7 @@ class Point14Item final : public LayeredItem {
     switch (changed & 3u) {
       case 0: break;
       case 1: p.return_number = static_cast<uint8_t>((last_r + 1) % kReturnSymbols); break;
-      case 2: p.return_number = static_cast<uint8_t>((last_r + 15) % kReturnSymbols); break;
+      case 2: p.return_number = static_cast<uint8_t>((last_r + kReturnSymbols - 1) % kReturnSymbols); break;
       default:
         if (time_changed) {
           p.return_number = static_cast<uint8_t>(dec_[kXY].decode_symbol(c->return_number.at(last_r)));
@@ -255,12 +259,12 @@ class Point14Item final : public LayeredItem {
     int32_t diff = c->dx.decompress(dec_[kXY], c->x_median[mc].get(), single);
     p.x = static_cast<int32_t>(static_cast<uint32_t>(p.x) + static_cast<uint32_t>(diff));
     c->x_median[mc].add(diff);
-    diff = c->dy.decompress(dec_[kXY], c->y_median[mc].get(), single + even_capped(c->dx.k(), 20));
+    diff = c->dy.decompress(dec_[kXY], c->y_median[mc].get(), single + even_capped(c->dx.k(), kDyContextCap));
     p.y = static_cast<int32_t>(static_cast<uint32_t>(p.y) + static_cast<uint32_t>(diff));
     c->y_median[mc].add(diff);
     if (present_[kZ]) {
       const uint32_t k_bits = (c->dx.k() + c->dy.k()) / 2;
-      p.z = c->dz.decompress(dec_[kZ], c->last_z[level], single + even_capped(k_bits, 18));
+      p.z = c->dz.decompress(dec_[kZ], c->last_z[level], single + even_capped(k_bits, kDzContextCap));
       c->last_z[level] = p.z;
     }
   }
