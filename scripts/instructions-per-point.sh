@@ -12,11 +12,12 @@
 # count covers push and flush (not generation or loading). Stages: terrain
 # (classify_terrain), segmentation (segment_objects), recognition
 # (Recognizer::recognize); "rest" is the stream's buffer, window gathering,
-# object boxes, ownership and size gates. Writes DIR/instructions-per-point.csv
-# and prints a Markdown table.
+# object boxes, ownership and size gates (split on the host: rest_buffer,
+# rest_gather, rest_objects). Writes DIR/instructions-per-point.csv and
+# prints a Markdown table.
 set -euo pipefail
 
-usage() { sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 side=100 out="instructions-per-point-out" host_build="$root/build" target="" target_build=""
@@ -50,11 +51,19 @@ host_line=$(valgrind --tool=callgrind --toggle-collect='spinhash::SceneStream::p
 declare -A host
 host[total]=$(awk '/^(summary|totals):/ {print $2; exit}' "$cg")
 annotated=$(callgrind_annotate --inclusive=yes --threshold=100 "$cg")
-for s in "${stages[@]}"; do
-  # "  1,234 (12.3%)  file:function [object]": the first line naming the function.
-  host[$s]=$(grep -F "${functions[$s]}" <<< "$annotated" | grep -v '__wrap_' | head -1 |
-    awk '{gsub(",", "", $1); print $1}')
-done
+inclusive() {  # "  1,234 (12.3%)  file:function [object]": the first line naming the function
+  grep -F "$1" <<< "$annotated" | grep -v '__wrap_' | head -1 | awk '{gsub(",", "", $1); print $1}'
+}
+for s in "${stages[@]}"; do host[$s]=$(inclusive "${functions[$s]}"); done
+# The rest, split on the host only: into the frame and the buffer (push and
+# flush less run_row), each window's points gathered from the buffer
+# (run_row less run_window), and per window the object boxes, gathering and
+# sorting of object points, ownership and size gates (run_window less the stages).
+run_row=$(inclusive '::run_row(spinhash::StreamBuffers&')
+run_window=$(inclusive 'spinhash::run_window(')
+host[rest_buffer]=$(( host[total] - run_row ))
+host[rest_gather]=$(( run_row - run_window ))
+host[rest_objects]=$(( run_window - host[terrain] - host[segmentation] - host[recognition] ))
 
 # Target: qemu-user with the marker-counting plugin.
 declare -A tgt
@@ -91,7 +100,9 @@ host[rest]=$(rest host)
 tgt[rest]=$(rest tgt)
 csv="$out/instructions-per-point.csv"
 echo "stage,points,x86_64_instructions,${target:-target}_instructions" > "$csv"
-for s in total "${stages[@]}" rest; do echo "$s,$points,${host[$s]},${tgt[$s]:-}" >> "$csv"; done
+for s in total "${stages[@]}" rest rest_buffer rest_gather rest_objects; do
+  echo "$s,$points,${host[$s]},${tgt[$s]:-}" >> "$csv"
+done
 
 echo "| stage | x86-64 instructions | per point | share | ${target:-target} instructions | per point | share |"
 echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: |"

@@ -1,11 +1,13 @@
 // Work per input point of the scene stream (scripts/instructions-per-point.sh):
-//   stream_runner prepare DIR [SIDE_M]  writes DIR/toy.shdb (the toy database)
-//                 and DIR/strip.f64 (raw native float64 xyz, scan order): a
+//   stream_runner prepare DIR [SIDE_M]  writes DIR/toy.shdb (the toy database),
+//                 DIR/strip.f64 (raw native float64 xyz, scan order): a
 //                 SIDE x SIDE m strip (default 100) of sloped terrain at
-//                 0.1 m spacing with toy vehicles, one per 300 m2 of ground
+//                 0.1 m spacing with toy vehicles, one per 300 m2 of ground,
+//                 and DIR/truth.f64 (x y model per vehicle)
 //   stream_runner run DIR               pushes the strip through SceneStream
 //                 in 4 kB chunks and flushes, between spinhash_bench_begin()
-//                 and spinhash_bench_end(); prints points, objects and stats
+//                 and spinhash_bench_end(); prints points, objects, vehicles
+//                 found and named right first, and stats
 // Counted by callgrind on the host and by scripts/qemu/insn_count.c under
 // qemu-user. The link wraps the three stages (-Wl,--wrap, tests/CMakeLists.txt)
 // so that each call runs between markers of its own: the plugin counts a
@@ -104,6 +106,9 @@ constexpr double kSlopeDeg = 4.0;
 constexpr double kUnderside = 0.35;           // m: model points below are not seen from the air
 constexpr uint32_t kChunkPoints = 4096 / 24;  // 4 kB of xyz doubles
 constexpr uint32_t kBufferedPoints = 1u << 21;
+constexpr uint32_t kMaxKept =
+    4096;  // objects kept for the truth check (fixed: nothing allocated while counted)
+constexpr double kFoundRadius = 1.5;  // m between a vehicle's centre and its object's
 
 int fail(const std::string& what) {
   std::fprintf(stderr, "stream_runner: %s\n", what.c_str());
@@ -135,17 +140,19 @@ std::vector<double> place_vehicles(double side, uint32_t count) {
 }
 
 // The strip, sorted along track (x): scan order.
-std::vector<double> strip(double side, uint32_t* vehicles) {
+std::vector<double> strip(double side, std::vector<double>* truth) {
   test::TerrainShape t;
   t.slope_deg = kSlopeDeg;
   test::Tile tile;
   test::add_terrain_rect(tile, t, -0.5 * side, 0.5 * side, -0.5 * side, 0.5 * side, kSpacing, 0.02, 9);
-  *vehicles = static_cast<uint32_t>(std::lround(side * side / kGroundPerVehicle));
-  const std::vector<double> at = place_vehicles(side, *vehicles);
-  for (size_t i = 0; i < at.size(); i += 3)
-    test::add_model(
-        tile, t, test::toy_vehicle_points(static_cast<uint32_t>(i / 3 % test::kToyModels), kVehicleSpacing),
-        at[i], at[i + 1], at[i + 2], kUnderside);
+  const auto vehicles = static_cast<uint32_t>(std::lround(side * side / kGroundPerVehicle));
+  const std::vector<double> at = place_vehicles(side, vehicles);
+  for (size_t i = 0; i < at.size(); i += 3) {
+    const uint32_t model = static_cast<uint32_t>(i / 3 % test::kToyModels);
+    test::add_model(tile, t, test::toy_vehicle_points(model, kVehicleSpacing), at[i], at[i + 1], at[i + 2],
+                    kUnderside);
+    truth->insert(truth->end(), {at[i], at[i + 1], static_cast<double>(model)});
+  }
   test::remove_occluded_ground(tile);
   const size_t n = tile.xyz.size() / 3;
   std::vector<size_t> order(n);
@@ -158,6 +165,13 @@ std::vector<double> strip(double side, uint32_t* vehicles) {
   return xyz;
 }
 
+// Raw native float64: written and read on little-endian machines alike.
+bool write_doubles(const std::string& path, const std::vector<double>& v, std::string* error) {
+  std::vector<uint8_t> bytes(v.size() * sizeof(double));
+  std::memcpy(bytes.data(), v.data(), bytes.size());
+  return host::write_file_atomically(path, bytes, error);
+}
+
 int prepare(const std::string& dir, double side) {
   test::ToyDatabase toy;
   if (!test::make_toy_database(&toy)) return fail("toy database");
@@ -166,12 +180,12 @@ int prepare(const std::string& dir, double side) {
           dir + "/toy.shdb", std::vector<uint8_t>(toy.bytes.data(), toy.bytes.data() + toy.bytes.size()),
           &error))
     return fail(error);
-  uint32_t vehicles = 0;
-  const std::vector<double> xyz = strip(side, &vehicles);
-  std::vector<uint8_t> bytes(xyz.size() * sizeof(double));
-  std::memcpy(bytes.data(), xyz.data(), bytes.size());
-  if (!host::write_file_atomically(dir + "/strip.f64", bytes, &error)) return fail(error);
-  std::printf("strip: %.0f x %.0f m, %zu points, %u vehicles\n", side, side, xyz.size() / 3, vehicles);
+  std::vector<double> truth;
+  const std::vector<double> xyz = strip(side, &truth);
+  if (!write_doubles(dir + "/strip.f64", xyz, &error) || !write_doubles(dir + "/truth.f64", truth, &error))
+    return fail(error);
+  std::printf("strip: %.0f x %.0f m, %zu points, %zu vehicles\n", side, side, xyz.size() / 3,
+              truth.size() / 3);
   return 0;
 }
 
@@ -191,22 +205,55 @@ StreamConfig bench_config(const double* first) {
   return c;
 }
 
+struct Kept {
+  double x, y;
+  int64_t model;  // -1 without a ranking
+};
+
 struct Tally {
   uint64_t by_kind[kObjectKinds] = {};
   uint64_t confident = 0;
+  Kept kept[kMaxKept];
+  uint32_t kept_count = 0;
 };
 
 void tally(void* context, const SceneObject& o, int64_t, uint32_t) {
   Tally& t = *static_cast<Tally*>(context);
   ++t.by_kind[static_cast<uint32_t>(o.kind)];
   t.confident += o.confident ? 1u : 0u;
+  if (t.kept_count < kMaxKept)
+    t.kept[t.kept_count++] = Kept{o.center[0], o.center[1], o.ranking_count ? o.ranking[0].model : -1};
+}
+
+struct Score {
+  uint32_t vehicles = 0, found = 0, right_first = 0, twice = 0;
+};
+
+// Each true vehicle against the objects whose centre lies within kFoundRadius.
+Score score(const Tally& t, const host::AlignedBytes& truth) {
+  Score s;
+  const auto* v = reinterpret_cast<const double*>(truth.data());
+  s.vehicles = static_cast<uint32_t>(truth.size() / (3 * sizeof(double)));
+  for (uint32_t i = 0; i < s.vehicles; ++i) {
+    uint32_t near = 0, right = 0;
+    for (uint32_t k = 0; k < t.kept_count; ++k) {
+      if (std::hypot(t.kept[k].x - v[3 * i], t.kept[k].y - v[3 * i + 1]) > kFoundRadius) continue;
+      ++near;
+      right += t.kept[k].model == static_cast<int64_t>(v[3 * i + 2]) ? 1u : 0u;
+    }
+    s.found += near > 0 ? 1u : 0u;
+    s.right_first += right > 0 ? 1u : 0u;
+    s.twice += near > 1 ? 1u : 0u;
+  }
+  return s;
 }
 
 int run(const std::string& dir) {
-  host::AlignedBytes blob, cloud;
+  host::AlignedBytes blob, cloud, truth;
   std::string error;
   if (!host::read_file(dir + "/toy.shdb", &blob, &error) ||
-      !host::read_file(dir + "/strip.f64", &cloud, &error))
+      !host::read_file(dir + "/strip.f64", &cloud, &error) ||
+      !host::read_file(dir + "/truth.f64", &truth, &error))
     return fail(error + " (run prepare first)");
   Database db;
   if (Database::open(blob.data(), blob.size(), &db) != Status::kOk) return fail("database does not open");
@@ -216,7 +263,7 @@ int run(const std::string& dir) {
   const StreamConfig config = bench_config(xyz);
   host::AlignedBytes workspace(required_stream_workspace_bytes(config));
   SceneStream stream;
-  Tally t;
+  static Tally t;  // large: not on the stack
   if (stream.init(&db, config, workspace.data(), workspace.size(), tally, &t) != Status::kOk)
     return fail("init failed");
   Status status = Status::kOk;
@@ -229,11 +276,13 @@ int run(const std::string& dir) {
   const Status f = stream.flush();
   spinhash_bench_end();
   const StreamStats& st = stream.stats();
+  const Score sc = score(t, truth);
   std::printf(
-      "points=%u objects=%llu vehicle_candidates=%llu confident=%llu too_small=%llu too_large=%llu "
-      "not_vehicle_shaped=%llu unknown=%llu windows=%llu not_owned=%llu late=%llu overflow=%llu "
-      "hypotheses=%llu workspace=%zu status=%s\n",
-      n, static_cast<unsigned long long>(st.objects_reported), static_cast<unsigned long long>(t.by_kind[0]),
+      "points=%u vehicles=%u found=%u right_first=%u twice=%u objects=%llu vehicle_candidates=%llu "
+      "confident=%llu too_small=%llu too_large=%llu not_vehicle_shaped=%llu unknown=%llu windows=%llu "
+      "not_owned=%llu late=%llu overflow=%llu hypotheses=%llu workspace=%zu status=%s\n",
+      n, sc.vehicles, sc.found, sc.right_first, sc.twice,
+      static_cast<unsigned long long>(st.objects_reported), static_cast<unsigned long long>(t.by_kind[0]),
       static_cast<unsigned long long>(t.confident), static_cast<unsigned long long>(t.by_kind[1]),
       static_cast<unsigned long long>(t.by_kind[2]), static_cast<unsigned long long>(t.by_kind[3]),
       static_cast<unsigned long long>(t.by_kind[4]), static_cast<unsigned long long>(st.windows),
