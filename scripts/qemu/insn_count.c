@@ -10,7 +10,11 @@
  *
  * Counting starts when a translation block that begins in `begin` runs and
  * stops at one that begins in `end`; each block counts all its instructions
- * (blocks rarely exit early), as libinsn.so does. Prints "insns N" at exit. */
+ * (blocks rarely exit early), as libinsn.so does. Prints "insns N" at exit.
+ *
+ * Stages (scripts/instructions-per-point.sh): each argument stage=NAME also
+ * counts between spinhash_bench_NAME_begin and spinhash_bench_NAME_end (up
+ * to 15 stages; they may nest in the whole run) and prints "insns.NAME N". */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -36,47 +40,79 @@ void qemu_plugin_outs(const char* string);
 #define EXPORT __attribute__((visibility("default")))
 EXPORT int qemu_plugin_version = 1;
 
-enum { kPlain = 0, kBegin = 1, kEnd = 2, kKindBits = 2 };
-static char begin_symbol[128] = "spinhash_bench_begin";
-static char end_symbol[128] = "spinhash_bench_end";
-static int counting; /* user mode, one vCPU: no locking */
-static uint64_t instructions;
+enum { kPlain = 0, kBegin = 1, kEnd = 2, kKindBits = 2, kCounterBits = 4, kMaxCounters = 1 << kCounterBits };
+enum { kShift = kKindBits + kCounterBits };
 
-/* userdata: the block's instruction count and kind, packed in the pointer. */
+/* A pair of markers and the instructions run between their calls. */
+struct counter {
+  char name[32];
+  char begin[128];
+  char end[128];
+  int counting; /* user mode, one vCPU: no locking */
+  uint64_t instructions;
+};
+/* Counter 0 is the whole run ("insns N"); stage=NAME adds one per stage. */
+static struct counter counters[kMaxCounters] = {{"", "spinhash_bench_begin", "spinhash_bench_end", 0, 0}};
+static unsigned counter_count = 1;
+
+/* userdata: the block's instruction count, its marker's counter and kind,
+ * packed in the pointer. */
 static void on_block(unsigned int vcpu, void* userdata) {
   const uintptr_t packed = (uintptr_t)userdata;
+  const unsigned kind = (unsigned)(packed & ((1u << kKindBits) - 1u));
+  struct counter* marked = &counters[(packed >> kKindBits) & (kMaxCounters - 1u)];
   (void)vcpu;
-  if ((packed & 3u) == kBegin) counting = 1;
-  if ((packed & 3u) == kEnd) counting = 0;
-  if (counting) instructions += packed >> kKindBits;
+  if (kind == kBegin) marked->counting = 1;
+  if (kind == kEnd) marked->counting = 0;
+  for (unsigned i = 0; i < counter_count; ++i)
+    if (counters[i].counting) counters[i].instructions += packed >> kShift;
 }
 
 static void on_translate(qemu_plugin_id_t id, struct qemu_plugin_tb* tb) {
   const size_t n = qemu_plugin_tb_n_insns(tb);
   const char* symbol = n > 0 ? qemu_plugin_insn_symbol(qemu_plugin_tb_get_insn(tb, 0)) : NULL;
-  uintptr_t kind = kPlain;
+  uintptr_t kind = kPlain, which = 0;
   (void)id;
-  if (symbol != NULL && strcmp(symbol, begin_symbol) == 0) kind = kBegin;
-  if (symbol != NULL && strcmp(symbol, end_symbol) == 0) kind = kEnd;
+  for (unsigned i = 0; symbol != NULL && i < counter_count; ++i) {
+    if (strcmp(symbol, counters[i].begin) == 0) kind = kBegin, which = i;
+    if (strcmp(symbol, counters[i].end) == 0) kind = kEnd, which = i;
+  }
   qemu_plugin_register_vcpu_tb_exec_cb(tb, on_block, QEMU_PLUGIN_CB_NO_REGS,
-                                       (void*)(((uintptr_t)n << kKindBits) | kind));
+                                       (void*)(((uintptr_t)n << kShift) | (which << kKindBits) | kind));
 }
 
 static void on_exit(qemu_plugin_id_t id, void* userdata) {
-  char line[64];
+  char line[96];
   (void)id;
   (void)userdata;
-  snprintf(line, sizeof line, "insns %llu\n", (unsigned long long)instructions);
+  snprintf(line, sizeof line, "insns %llu\n", (unsigned long long)counters[0].instructions);
   qemu_plugin_outs(line);
+  for (unsigned i = 1; i < counter_count; ++i) {
+    snprintf(line, sizeof line, "insns.%s %llu\n", counters[i].name,
+             (unsigned long long)counters[i].instructions);
+    qemu_plugin_outs(line);
+  }
 }
 
 static void copy_arg(char* out, size_t size, const char* value) { snprintf(out, size, "%s", value); }
 
+/* stage=NAME: counts between spinhash_bench_NAME_begin and _end as well. */
+static void add_stage(const char* name) {
+  if (counter_count == kMaxCounters) return;
+  struct counter* c = &counters[counter_count];
+  copy_arg(c->name, sizeof c->name, name);
+  snprintf(c->begin, sizeof c->begin, "spinhash_bench_%s_begin", name);
+  snprintf(c->end, sizeof c->end, "spinhash_bench_%s_end", name);
+  ++counter_count;
+}
+
 EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_t* info, int argc, char** argv) {
   (void)info;
   for (int i = 0; i < argc; ++i) {
-    if (strncmp(argv[i], "begin=", 6) == 0) copy_arg(begin_symbol, sizeof begin_symbol, argv[i] + 6);
-    if (strncmp(argv[i], "end=", 4) == 0) copy_arg(end_symbol, sizeof end_symbol, argv[i] + 4);
+    if (strncmp(argv[i], "begin=", 6) == 0)
+      copy_arg(counters[0].begin, sizeof counters[0].begin, argv[i] + 6);
+    if (strncmp(argv[i], "end=", 4) == 0) copy_arg(counters[0].end, sizeof counters[0].end, argv[i] + 4);
+    if (strncmp(argv[i], "stage=", 6) == 0) add_stage(argv[i] + 6);
   }
   qemu_plugin_register_vcpu_tb_trans_cb(id, on_translate);
   qemu_plugin_register_atexit_cb(id, on_exit, NULL);

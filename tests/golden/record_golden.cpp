@@ -1,5 +1,7 @@
 // Records the golden vectors on the host: the toy database in both byte
-// orders, a set of query clouds, and the ranking every target must reproduce.
+// orders, a set of query clouds, and the ranking every target must reproduce;
+// then a short flight-line strip and the stream's objects on it
+// (record_golden_stream.cpp).
 //   cmake --build build --target record_golden && build/tests/record_golden tests/golden
 // Re-record (and review the diff) whenever recognition changes on purpose.
 #include <cinttypes>
@@ -14,6 +16,7 @@
 #include "blob/file_io.hpp"
 #include "db/database_builder.hpp"
 #include "golden/golden_format.hpp"
+#include "golden/record_golden_stream.hpp"
 #include "spinhash/recognizer.hpp"
 #include "support/toy_database.hpp"
 
@@ -143,7 +146,8 @@ bool record(const std::string& dir) {
                le.size(), next_point);
   for (const golden::GoldenQuery& g : expected) write_entry(h, g);
   std::fprintf(h, "};\n\n}  // namespace golden\n}  // namespace spinhash\n");
-  return std::fclose(h) == 0 || fail("cannot close golden_expected.hpp");
+  if (std::fclose(h) != 0) return fail("cannot close golden_expected.hpp");
+  return golden::record_stream(dir, db);
 }
 
 }  // namespace

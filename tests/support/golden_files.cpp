@@ -7,6 +7,7 @@
 #include "blob/byte_order.hpp"
 #include "blob/file_io.hpp"
 #include "golden/golden_expected.hpp"
+#include "golden/golden_stream_expected.hpp"
 
 namespace spinhash {
 namespace test {
@@ -37,6 +38,16 @@ std::vector<float> golden_query_points() {
   std::vector<float> xyz(raw.size() / golden::kBytesPerCoordinate);
   for (size_t i = 0; i < xyz.size(); ++i)
     xyz[i] = golden::decode_mm(raw.data() + golden::kBytesPerCoordinate * i);
+  return xyz;
+}
+
+std::vector<double> golden_stream_points() {
+  host::AlignedBytes raw = read_golden("golden_stream.i16");
+  REQUIRE(raw.size() == static_cast<size_t>(golden::kStreamPoints) * 3u * golden::kStreamBytesPerCoordinate);
+  std::vector<double> xyz(raw.size() / golden::kStreamBytesPerCoordinate);
+  for (size_t i = 0; i < xyz.size(); ++i)
+    xyz[i] =
+        golden::decode_stream(raw.data() + golden::kStreamBytesPerCoordinate * i, static_cast<int>(i % 3));
   return xyz;
 }
 

@@ -11,6 +11,8 @@ namespace test {
 host::AlignedBytes golden_blob(bool own_byte_order);
 // Every golden query, decoded (xyz floats; GoldenQuery::first_point indexes triples).
 std::vector<float> golden_query_points();
+// The stream's golden strip (golden_stream.i16), georeferenced xyz doubles in scan order.
+std::vector<double> golden_stream_points();
 
 }  // namespace test
 }  // namespace spinhash
