@@ -38,6 +38,7 @@ struct ToWgs84::Impl {
 
 ToWgs84::ToWgs84(const std::string& definition) : impl_(std::make_unique<Impl>()) {
   impl_->ctx = proj_context_create();
+  proj_log_level(impl_->ctx, PJ_LOG_NONE);  // failures come back as the exception's message
   PJ* raw = proj_create_crs_to_crs(impl_->ctx, definition.c_str(), "EPSG:4326", nullptr);
   if (raw != nullptr) {
     impl_->pj = proj_normalize_for_visualization(impl_->ctx, raw);  // lon, lat order
