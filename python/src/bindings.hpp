@@ -10,5 +10,6 @@ void bind_result(pybind11::module_& m);      // py_result.cpp
 void bind_recognizer(pybind11::module_& m);  // py_recognizer.cpp
 void bind_scene(pybind11::module_& m);       // py_scene.cpp
 void bind_cloud(pybind11::module_& m);       // py_cloud.cpp
+void bind_survey(pybind11::module_& m);      // py_survey.cpp
 
 }  // namespace spinhash::python
