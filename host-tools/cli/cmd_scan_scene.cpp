@@ -4,10 +4,12 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cloud/cloud_reader.hpp"
 #include "cloud/cloud_writer.hpp"
 #include "pipeline/model_sources.hpp"
 #include "scan/scan_simulator.hpp"
 #include "scan/scene_simulator.hpp"
+#include "survey/cut_tiles.hpp"
 
 namespace spinhash::cli {
 namespace {
@@ -17,6 +19,8 @@ struct ScanSceneArgs {
   std::vector<std::string> unknown;
   std::string output;
   std::string truth;
+  std::string tiles_out;  // also cut into LAS tiles here, when given
+  double tile_size = 40.0;
   std::vector<double> offset;
   host::SceneOptions options;
 };
@@ -60,6 +64,16 @@ int run_scan_scene(ScanSceneArgs& a) {
     print_error(kCommand, error);
     return kExitError;
   }
+  if (!a.tiles_out.empty()) {
+    const int n = survey::cut_into_tiles(scan.xyz, scan.classification, a.tile_size, a.tiles_out,
+                                         host::cloud_name(a.output), &error);
+    if (n < 0) {
+      print_error(kCommand, error);
+      return kExitError;
+    }
+    std::fprintf(stderr, "spinhash scan-scene: %d tiles of %g m in %s\n", n, a.tile_size,
+                 a.tiles_out.c_str());
+  }
   std::fprintf(stderr,
                "spinhash scan-scene: %s: %zu points from %u views (%llu rays), %zu objects; truth %s\n",
                a.output.c_str(), scan.size(), a.options.views, static_cast<unsigned long long>(scan.rays),
@@ -80,6 +94,12 @@ void add_scan_scene_command(CLI::App& app, int* exit_code) {
       ->required();
   cmd->add_option("--truth", a->truth,
                   "truth CSV: kind, model, centre, extent, pose per object (default OUTPUT.truth.csv)");
+  cmd->add_option(
+      "--tiles-out", a->tiles_out,
+      "also cut the scene into LAS tiles on the absolute --tile-size lattice, written here (a survey)");
+  cmd->add_option("--tile-size", a->tile_size, "side of the --tiles-out tiles, m")
+      ->check(CLI::Range(survey::kMinTileSize, survey::kMaxTileSize))
+      ->capture_default_str();
   cmd->add_option("--size", o.size, "tile side, m")
       ->check(CLI::Range(1.0, host::kMaxSceneSize))
       ->capture_default_str();

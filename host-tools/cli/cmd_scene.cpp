@@ -11,6 +11,7 @@
 #include "cloud/cloud_reader.hpp"
 #include "cloud/point_source.hpp"
 #include "pipeline/database_file.hpp"
+#include "pipeline/object_box.hpp"
 #include "pipeline/object_json.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/recognition_session.hpp"
@@ -32,24 +33,6 @@ struct SceneArgs {
   std::string picture_dir;  // a top-down PNG per tile, when given
   SceneConfig config;
 };
-
-// An object as an outlined box: the model (with "?" when not confident) on
-// vehicle candidates, what it is on the others.
-host::PictureBox picture_box(const Database& db, const SceneObject& o) {
-  host::PictureBox b;
-  b.center[0] = o.center[0], b.center[1] = o.center[1];
-  b.length = o.extent[0], b.width = o.extent[1], b.heading_deg = o.heading_deg;
-  if (o.kind == ObjectKind::kVehicleCandidate && o.ranking_count > 0) {
-    b.label = pipeline::model_name(db, o.ranking[0].model) + (o.confident ? "" : " ?");
-    b.style = o.confident ? host::BoxStyle::kConfident : host::BoxStyle::kUnsure;
-  } else {
-    b.label = object_kind_name(o.kind);
-    b.style = o.kind == ObjectKind::kVehicleCandidate || o.kind == ObjectKind::kUnknown
-                  ? host::BoxStyle::kUnsure
-                  : host::BoxStyle::kNotVehicle;
-  }
-  return b;
-}
 
 bool write_picture(const SceneArgs& a, const std::string& name, const std::vector<double>& xyz,
                    const std::vector<host::PictureBox>& boxes, uint32_t confident, std::string* error) {
@@ -85,7 +68,7 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s\n", pipeline::object_json(name, index++, file.db, o, ms).c_str());
-    if (!a.picture_dir.empty()) boxes.push_back(picture_box(file.db, o));
+    if (!a.picture_dir.empty()) boxes.push_back(pipeline::object_box(file.db, o));
     confident += o.confident ? 1u : 0u;
   };
   pipeline::TileStreamResult r;

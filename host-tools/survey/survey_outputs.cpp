@@ -5,6 +5,7 @@
 #include "blob/file_io.hpp"
 #include "pipeline/json_line.hpp"
 #include "pipeline/version.hpp"
+#include "render/survey_picture.hpp"
 #include "survey/gpkg_writer.hpp"
 
 namespace spinhash::survey {
@@ -97,6 +98,25 @@ std::string survey_json(const Catalogue& c, const std::vector<TileResult>& done,
          "\n]}\n";
 }
 
+bool write_overview(const std::string& path, const Catalogue& c, const std::vector<TileResult>& done,
+                    std::string* error) {
+  std::vector<host::SurveyPictureTile> tiles;
+  for (const CatalogueTile& t : c.tiles)
+    if (t.error.empty())
+      tiles.push_back({{t.header.min[0], t.header.min[1]}, {t.header.max[0], t.header.max[1]}, t.name});
+  std::vector<host::PictureBox> boxes;
+  uint32_t vehicles = 0, confident = 0;
+  for (const TileResult& r : done)
+    for (const host::PictureBox& b : r.boxes) {
+      boxes.push_back(b);
+      vehicles += b.style != host::BoxStyle::kNotVehicle, confident += b.style == host::BoxStyle::kConfident;
+    }
+  const std::string title = std::to_string(done.size()) + " of " + std::to_string(c.tiles.size()) +
+                            " tiles: " + std::to_string(vehicles) + " vehicles, " +
+                            std::to_string(confident) + " confident";
+  return tiles.empty() || host::write_survey_picture(path, tiles, boxes, title, error);
+}
+
 }  // namespace
 
 bool write_survey_outputs(const std::string& dir, const Catalogue& catalogue,
@@ -109,6 +129,7 @@ bool write_survey_outputs(const std::string& dir, const Catalogue& catalogue,
   return write_text(dir + "/detections.jsonl", lines, error) &&
          write_text(geo, geojson(catalogue, done), error) &&
          write_geopackage(geo, dir + "/detections.gpkg", catalogue.crs.proj_definition(), error) &&
+         write_overview(dir + "/overview.png", catalogue, done, error) &&
          write_text(dir + "/survey.json", survey_json(catalogue, done, report), error);
 }
 

@@ -14,6 +14,7 @@
 #include "pipeline/database_file.hpp"
 #include "pipeline/exit_codes.hpp"
 #include "pipeline/json_line.hpp"
+#include "pipeline/version.hpp"
 #include "survey/footprint.hpp"
 #include "survey/survey_progress.hpp"
 #include "survey/tile_run.hpp"
@@ -43,8 +44,8 @@ std::string file_digest(const std::string& path) {
 }
 
 std::string settings_key(const SurveyOptions& o) {
-  return "db=" + file_digest(o.db_path) + ";top=" + std::to_string(o.scene.top_n) +
-         ";max_objects=" + std::to_string(o.scene.max_objects) +
+  return "spinhash=" + std::string(pipeline::version()) + ";db=" + file_digest(o.db_path) +
+         ";top=" + std::to_string(o.scene.top_n) + ";max_objects=" + std::to_string(o.scene.max_objects) +
          ";max_window_points=" + std::to_string(o.scene.max_tile_points);
 }
 

@@ -16,6 +16,16 @@ std::string num(double v) {
   return buf;
 }
 
+template <class Rest>
+host::PictureBox parse_box(std::istringstream& ls, const Rest& rest) {
+  host::PictureBox b;
+  int style = 0;
+  ls >> style >> b.center[0] >> b.center[1] >> b.length >> b.width >> b.heading_deg;
+  b.style = static_cast<host::BoxStyle>(style);
+  b.label = unescape_line(rest(ls));
+  return b;
+}
+
 }  // namespace
 
 std::string result_text(const TileResult& r) {
@@ -33,6 +43,10 @@ std::string result_text(const TileResult& r) {
          escape_line(kv.first) + "\n";
   for (const std::string& l : r.lines) s += "line " + l + "\n";  // JSON: no raw newline
   for (const std::string& f : r.features) s += "feature " + f + "\n";
+  for (const host::PictureBox& b : r.boxes)
+    s += "box " + std::to_string(static_cast<int>(b.style)) + " " + num(b.center[0]) + " " +
+         num(b.center[1]) + " " + num(b.length) + " " + num(b.width) + " " + num(b.heading_deg) + " " +
+         escape_line(b.label) + "\n";
   return s + "end\n";
 }
 
@@ -82,6 +96,8 @@ bool parse_result_text(const std::string& text, TileResult* out, std::string* er
       r.lines.push_back(rest(ls));
     else if (w == "feature")
       r.features.push_back(rest(ls));
+    else if (w == "box")
+      r.boxes.push_back(parse_box(ls, rest));
     else if (w == "end")
       end = true;
   }

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "render/tile_picture.hpp"
+
 namespace spinhash::survey {
 
 struct ModelCount {
@@ -25,8 +27,9 @@ struct TileResult {
   double read_ms = 0, stream_ms = 0, total_ms = 0;
   std::map<std::string, uint32_t> kinds;
   std::map<std::string, ModelCount> models;
-  std::vector<std::string> lines;     // detections.jsonl, one per object
-  std::vector<std::string> features;  // detections.geojson, one per vehicle candidate
+  std::vector<std::string> lines;       // detections.jsonl, one per object
+  std::vector<std::string> features;    // detections.geojson, one per vehicle candidate
+  std::vector<host::PictureBox> boxes;  // overview.png, one per object
 };
 
 std::string result_text(const TileResult& r);

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "pipeline/json_line.hpp"
+#include "pipeline/object_box.hpp"
 #include "pipeline/object_json.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/status_word.hpp"
@@ -71,6 +72,7 @@ TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfi
     if (o.kind == ObjectKind::kVehicleCandidate)
       r.features.push_back(feature_json(members, o, to_wgs84.get()));
     count(r, db, o);
+    r.boxes.push_back(pipeline::object_box(db, o));
   };
   const pipeline::TileStreamResult s = pipeline::stream_tile(db, source, options, keep);
   r.status = pipeline::status_word(s.status);

@@ -148,7 +148,7 @@ TEST_CASE("survey: 2 x 2 tiles give the whole scene's vehicles, each once, the s
   CHECK(contains(s.output("full", "survey.json"), "\"tiles_done\":4"));
 }
 
-TEST_CASE("survey: the GeoJSON parses as a FeatureCollection and the GeoPackage opens") {
+TEST_CASE("survey: the GeoJSON parses as a FeatureCollection, the GeoPackage opens, the overview is a PNG") {
   const Survey& s = generated();
   const std::string geo = s.dir.file("full") + "/detections.geojson";
   const size_t n = vehicles(s.output("full", "detections.jsonl")).size();
@@ -159,6 +159,7 @@ TEST_CASE("survey: the GeoJSON parses as a FeatureCollection and the GeoPackage 
       shell_quoted(geo) + " " + std::to_string(n);
   CHECK(std::system(check.c_str()) == 0);
   CHECK(strict_json_lines(s.dir, s.output("full", "detections.jsonl")));
+  CHECK(s.output("full", "overview.png").substr(1, 3) == "PNG");
   if (std::system("command -v ogrinfo > /dev/null") == 0) {
     const std::string gpkg = s.dir.file("full") + "/detections.gpkg";
     const std::string info = "ogrinfo -so " + shell_quoted(gpkg) +
