@@ -52,9 +52,10 @@ awk -v median="$median_ms" '
 
 echo "== a small survey: an 80 m scene cut into 2 x 2 LAS tiles of 40 m, vehicles across the cuts"
 $spinhash scan-scene "$out/fleet" -o "$out/survey-scene.las" --size 80 --vehicles 16 --trees 4 --seed 3 \
-  --tiles-out "$out/survey-tiles" --tile-size 40
+  --tiles-out "$out/survey-tiles" --tile-size 40 2>/dev/null
 $spinhash survey --db "$out/fleet.shdb" --out "$out/survey" --quiet "$out/survey-tiles"
 found=$(grep -c '"kind":"vehicle"' "$out/survey/detections.jsonl" || true)
 confident=$(grep -c '"kind":"vehicle".*"confident":true' "$out/survey/detections.jsonl" || true)
-echo "survey: $found vehicles ($confident confident) in 4 tiles; GeoPackage $out/survey/detections.gpkg," \
+tiles=$(find "$out/survey-tiles" -name '*.las' | wc -l)
+echo "survey: $found vehicles ($confident confident) in $tiles tiles; GeoPackage $out/survey/detections.gpkg," \
      "picture $out/survey/overview.png"

@@ -65,7 +65,12 @@ int run_scan_scene(ScanSceneArgs& a) {
     return kExitError;
   }
   if (!a.tiles_out.empty()) {
-    const int n = survey::cut_into_tiles(scan.xyz, scan.classification, a.tile_size, a.tiles_out,
+    survey::CutOptions cut;
+    cut.size = a.tile_size;
+    for (int k = 0; k < 2; ++k)  // the scene's square: its few stray hits beyond are left out
+      cut.keep_min[k] = a.options.offset[k] - 0.5 * a.options.size,
+      cut.keep_max[k] = a.options.offset[k] + 0.5 * a.options.size;
+    const int n = survey::cut_into_tiles(scan.xyz, scan.classification, cut, a.tiles_out,
                                          host::cloud_name(a.output), &error);
     if (n < 0) {
       print_error(kCommand, error);

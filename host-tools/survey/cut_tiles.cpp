@@ -8,17 +8,20 @@
 
 namespace spinhash::survey {
 
-int cut_into_tiles(const std::vector<double>& xyz, const std::vector<uint8_t>& classification, double size,
-                   const std::string& dir, const std::string& prefix, std::string* error) {
+int cut_into_tiles(const std::vector<double>& xyz, const std::vector<uint8_t>& classification,
+                   const CutOptions& o, const std::string& dir, const std::string& prefix,
+                   std::string* error) {
   struct Part {
     std::vector<double> xyz;
     std::vector<uint8_t> classification;
   };
   std::map<std::pair<int64_t, int64_t>, Part> parts;
   for (size_t i = 0; i + 2 < xyz.size(); i += 3) {
-    if (!std::isfinite(xyz[i]) || !std::isfinite(xyz[i + 1])) continue;
-    Part& p = parts[{static_cast<int64_t>(std::floor(xyz[i] / size)),
-                     static_cast<int64_t>(std::floor(xyz[i + 1] / size))}];
+    if (!(xyz[i] >= o.keep_min[0] && xyz[i] < o.keep_max[0] && xyz[i + 1] >= o.keep_min[1] &&
+          xyz[i + 1] < o.keep_max[1]))
+      continue;  // outside, or not finite
+    Part& p = parts[{static_cast<int64_t>(std::floor(xyz[i] / o.size)),
+                     static_cast<int64_t>(std::floor(xyz[i + 1] / o.size))}];
     p.xyz.insert(p.xyz.end(), xyz.begin() + static_cast<long>(i), xyz.begin() + static_cast<long>(i) + 3);
     if (!classification.empty()) p.classification.push_back(classification[i / 3]);
   }

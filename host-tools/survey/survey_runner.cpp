@@ -214,10 +214,10 @@ int run_survey(const SurveyOptions& options, const std::vector<std::string>& arg
   for (const Refusal& r : s.refused)
     std::fprintf(stderr, "spinhash survey: refused %s: %s\n", r.path.c_str(), r.reason.c_str());
   if (code != pipeline::kExitError)
-    std::fprintf(
-        stderr,
-        "spinhash survey: wrote %s/{detections.jsonl,detections.geojson,detections.gpkg,survey.json}\n",
-        options.out_dir.c_str());
+    std::fprintf(stderr,
+                 "spinhash survey: wrote "
+                 "%s/{detections.jsonl,detections.geojson,detections.gpkg,overview.png,survey.json}\n",
+                 options.out_dir.c_str());
   return code;
 }
 
