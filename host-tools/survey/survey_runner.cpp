@@ -43,6 +43,14 @@ std::string file_digest(const std::string& path) {
   return hex;
 }
 
+// A fresh run forgets the stored results: only the *.result files of the
+// results folder go (never a folder the user may have named DIR/tiles).
+void remove_results(const std::string& folder) {
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(folder, ec))
+    if (e.path().extension() == ".result") fs::remove(e.path(), ec);
+}
+
 std::string settings_key(const SurveyOptions& o) {
   return "spinhash=" + std::string(pipeline::version()) + ";db=" + file_digest(o.db_path) +
          ";top=" + std::to_string(o.scene.top_n) + ";max_objects=" + std::to_string(o.scene.max_objects) +
@@ -68,10 +76,11 @@ bool load_result(const std::string& out_dir, const SurveyTask& task, TileResult*
 std::string manifest_json(const PreparedSurvey& s, const std::vector<bool>& done) {
   std::string tiles;
   for (size_t i = 0; i < s.tasks.size(); ++i)
-    tiles += (tiles.empty() ? "\n  " : ",\n  ") + std::string("{\"tile\":") +
-             json_string(s.tasks[i].tile.name) + ",\"path\":" + json_string(s.tasks[i].tile.path) +
-             ",\"done\":" + (done[i] ? "true" : "false") +
-             ",\"result\":" + json_string("tiles/" + s.tasks[i].tile.name + ".result") + "}";
+    tiles +=
+        (tiles.empty() ? "\n  " : ",\n  ") + std::string("{\"tile\":") + json_string(s.tasks[i].tile.name) +
+        ",\"path\":" + json_string(s.tasks[i].tile.path) + ",\"done\":" + (done[i] ? "true" : "false") +
+        ",\"result\":" + json_string(std::string(kResultsFolder) + "/" + s.tasks[i].tile.name + ".result") +
+        "}";
   return "{\"database\":" + json_string(s.options.db_path) +
          ",\"buffer_m\":" + pipeline::json_number(s.options.buffer) +
          ",\"crs\":" + json_string(s.catalogue.crs.describe()) + ",\"tiles\":[" + tiles + "\n]}\n";
@@ -92,7 +101,7 @@ SceneConfig default_survey_scene() {
 }
 
 std::string result_path(const std::string& out_dir, const std::string& tile_name) {
-  return out_dir + "/tiles/" + tile_name + ".result";
+  return out_dir + "/" + kResultsFolder + "/" + tile_name + ".result";
 }
 
 bool store_result(const std::string& out_dir, const TileResult& result, std::string* error) {
@@ -111,12 +120,13 @@ bool prepare_survey(const SurveyOptions& options, const std::vector<std::string>
   for (const CatalogueTile& t : s.catalogue.tiles)
     if (!t.error.empty()) s.refused.push_back({t.name, t.path, t.error});
   std::error_code ec;
-  if (!options.resume) fs::remove_all(options.out_dir + "/tiles", ec);
-  fs::create_directories(options.out_dir + "/tiles", ec);
+  const std::string results = options.out_dir + "/" + kResultsFolder;
+  fs::create_directories(results, ec);
   if (ec) {
-    *error = "cannot make " + options.out_dir + "/tiles: " + ec.message();
+    *error = "cannot make " + results + ": " + ec.message();
     return false;
   }
+  if (!options.resume) remove_results(results);
   s.tasks = plan_survey(s.catalogue, options.buffer, settings_key(options));
   if (!s.tasks.empty() && !s.tasks[0].crs.empty()) {
     try {

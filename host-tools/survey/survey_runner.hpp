@@ -36,11 +36,14 @@ struct PreparedSurvey {
 
 // False with *error: arguments naming nothing, tiles that do not share a
 // CRS or a name, an output folder that cannot be made. Without resume, the
-// folder's stored results are removed (a fresh run).
+// stored results (tile-results/*.result) are removed: a fresh run.
 bool prepare_survey(const SurveyOptions& options, const std::vector<std::string>& args, PreparedSurvey* out,
                     std::string* error);
 
-// tiles/NAME.result in the output folder, written atomically.
+// Where each tile's result is stored in the output folder: NAME.result.
+constexpr const char* kResultsFolder = "tile-results";
+
+// tile-results/NAME.result in the output folder, written atomically.
 std::string result_path(const std::string& out_dir, const std::string& tile_name);
 bool store_result(const std::string& out_dir, const TileResult& result, std::string* error);
 

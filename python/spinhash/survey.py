@@ -6,7 +6,7 @@ outputs as ``spinhash survey`` (docs/survey.md).
 
 Paths travel to the workers, points do not: every worker reads its tiles
 itself (they must be readable at the same paths there) and opens the
-database once. The client stores each tile's result in DIR/tiles/ as it
+database once. The client stores each tile's result in DIR/tile-results/ as it
 comes (atomically), so an interrupted run loses nothing; ``resume=True``
 skips the tiles done. The outputs (detections.jsonl, detections.geojson,
 detections.gpkg, survey.json) are written by the same C++ code as the CLI's.

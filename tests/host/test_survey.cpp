@@ -173,8 +173,8 @@ TEST_CASE("survey --resume: an interrupted run loses nothing and a re-run duplic
   const std::string full = s.output("full", "detections.jsonl");
   SUBCASE("a tile's result lost in a crash (and a temporary left behind) is redone alone") {
     std::filesystem::copy(s.dir.file("full"), s.dir.file("crash"), std::filesystem::copy_options::recursive);
-    std::filesystem::remove(s.dir.file("crash") + "/tiles/t01.result");
-    write_bytes(s.dir.file("crash") + "/tiles/.t01.result.tmp.abc123", "half a result");
+    std::filesystem::remove(s.dir.file("crash") + "/tile-results/t01.result");
+    write_bytes(s.dir.file("crash") + "/tile-results/.t01.result.tmp.abc123", "half a result");
     const CliRun r = s.run("crash", "--resume");
     REQUIRE(r.exit_code == 0);
     CHECK(contains(s.output("crash", "survey.json"), "\"tiles_resumed\":3"));
@@ -211,6 +211,14 @@ TEST_CASE("survey: bad input has a clear message and exit status") {
                               shell_quoted(s.dir.file("bad")) + " " + shell_quoted(s.tiles));
   CHECK(no_db.exit_code == 1);
   CHECK(run_spinhash(s.dir, "survey --db x --out y --jobs 0 z").exit_code == 2);
+  // A fresh run clears only its own stored results: --out over the folder
+  // that holds the input tiles (DIR/tiles) leaves them alone.
+  const CliRun here =
+      run_spinhash(s.dir, "survey --quiet --jobs 2 --db " + shell_quoted(s.db) + " --out " +
+                              shell_quoted(s.dir.path().string()) + " " + shell_quoted(s.tiles + "/t00.las"));
+  CHECK(here.exit_code == 0);
+  for (const char* t : {"t00", "t01", "t10", "t11"})
+    CHECK(std::filesystem::exists(s.tiles + "/" + t + ".las"));
 }
 
 TEST_CASE("survey plan: ownership by half-open core, thin gaps to the nearest tile, holes to none") {
