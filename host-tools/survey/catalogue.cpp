@@ -88,6 +88,8 @@ Catalogue read_catalogue(const std::vector<std::string>& sorted_paths) {
 }
 
 bool check_catalogue(Catalogue& catalogue, std::string* error) {
+  catalogue.crs = host::Crs{};
+  catalogue.notes.clear();
   std::map<std::string, std::string> names;
   const CatalogueTile* first_known = nullptr;
   for (const CatalogueTile& t : catalogue.tiles) {

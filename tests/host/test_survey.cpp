@@ -15,8 +15,12 @@
 #include "cli_runner.hpp"
 #include "cloud/cloud_reader.hpp"
 #include "cloud/las_writer.hpp"
+#include "pipeline/database_file.hpp"
 #include "survey/footprint.hpp"
+#include "survey/gpkg_writer.hpp"
+#include "survey/survey_runner.hpp"
 #include "survey/task.hpp"
+#include "survey/tile_run.hpp"
 
 using namespace spinhash::host::test;
 namespace survey = spinhash::survey;
@@ -257,4 +261,42 @@ TEST_CASE("survey footprint: a rectangle along the heading, in WGS 84 through PR
   CHECK(ll[0][0] == doctest::Approx(15.0).epsilon(1e-4));
   CHECK(ll[0][1] == doctest::Approx(0.0).epsilon(1e-3));
   CHECK_THROWS(survey::ToWgs84("EPSG:999999"));
+}
+
+TEST_CASE(
+    "survey with a CRS: lon/lat GeoJSON through PROJ, a GeoPackage in the tiles' CRS; mismatches refused") {
+  const Survey& s = generated();
+  spinhash::pipeline::DatabaseFile db;
+  std::string error;
+  REQUIRE_MESSAGE(spinhash::pipeline::load_database(s.db, &db, &error), error);
+  survey::Catalogue cat = survey::read_catalogue({s.tiles + "/t00.las", s.tiles + "/t01.las"});
+  REQUIRE(survey::check_catalogue(cat, &error));
+  std::vector<survey::SurveyTask> tasks = survey::plan_survey(cat, survey::kDefaultBuffer, "test");
+  REQUIRE(tasks.size() == 2);
+  tasks[0].crs = "EPSG:32633", tasks[0].crs_name = "EPSG:32633";  // as the LAS readers set it
+  const survey::TileResult r = survey::run_task(db.db, tasks[0], survey::default_survey_scene());
+  REQUIRE(!r.features.empty());
+  // UTM 33N, E 512 km N 5400 km: about 15.16 E 48.75 N.
+  const std::string& f = r.features[0];
+  const double lon = std::atof(f.c_str() + f.find("[[[") + 3);
+  const double lat = std::atof(f.c_str() + f.find(',', f.find("[[[")) + 1);
+  CHECK(lon == doctest::Approx(15.16).epsilon(0.01));
+  CHECK(lat == doctest::Approx(48.75).epsilon(0.01));
+  CHECK(contains(f, "\"crs\":\"EPSG:32633\""));
+  const std::string geo = s.dir.file("crs.geojson"), gpkg = s.dir.file("crs.gpkg");
+  write_bytes(geo, "{\"type\":\"FeatureCollection\",\"features\":[" + f + "]}");
+  REQUIRE_MESSAGE(survey::write_geopackage(geo, gpkg, "EPSG:32633", &error), error);
+  if (std::system("command -v ogrinfo > /dev/null") == 0)
+    CHECK(std::system(
+              ("ogrinfo -so " + shell_quoted(gpkg) + " detections | grep -q 'UTM zone 33N'").c_str()) == 0);
+
+  survey::Catalogue mixed = cat;
+  mixed.tiles[0].header.crs.horizontal_epsg = 32633;
+  REQUIRE(survey::check_catalogue(mixed, &error));
+  CHECK(mixed.crs.describe() == "EPSG:32633");
+  REQUIRE(mixed.notes.size() == 1);  // t01 declares none: assumed to be in it, and said so
+  CHECK(contains(mixed.notes[0], "t01"));
+  mixed.tiles[1].header.crs.horizontal_epsg = 25833;
+  CHECK_FALSE(survey::check_catalogue(mixed, &error));
+  CHECK(contains(error, "do not share a CRS"));
 }
