@@ -27,10 +27,10 @@ namespace survey = spinhash::survey;
 
 namespace {
 
-constexpr double kCentreX = 512000.0,
-                 kCentreY = 5400000.0;  // scan-scene's default offset: the scene's centre
-constexpr double kSceneSize = 80.0;     // m: 2 x 2 tiles of 40 m
-constexpr double kSameCentre = 0.01;    // m: the issue's "centre within 1 cm"
+// scan-scene's default offset: the scene's centre, where the tiles meet.
+constexpr double kCentreX = 512000.0, kCentreY = 5400000.0;
+constexpr double kSameCentre = 0.01;  // m: the issue's "centre within 1 cm"
+constexpr int kKillAfterS = 3;        // s: within the 4-tile survey's run (about 10 s on one core)
 
 struct Detection {
   std::string model;
@@ -186,6 +186,17 @@ TEST_CASE("survey --resume: an interrupted run loses nothing and a re-run duplic
     REQUIRE(s.run("crash", "--resume").exit_code == 0);  // nothing left to do: the same again
     CHECK(contains(s.output("crash", "survey.json"), "\"tiles_resumed\":4"));
     CHECK(s.output("crash", "detections.jsonl") == full);
+  }
+  SUBCASE("a run killed mid-way (SIGKILL, whenever it comes) is completed by --resume") {
+    const std::string cmd = "timeout -s KILL " + std::to_string(kKillAfterS) +
+                            " '" SPINHASH_TEST_BINARY "' survey --quiet --jobs 1 --db " + shell_quoted(s.db) +
+                            " --out " + shell_quoted(s.dir.file("killed")) + " " + shell_quoted(s.tiles) +
+                            " 2> /dev/null";
+    CHECK(std::system(cmd.c_str()) != 0);  // killed before the end
+    const CliRun r = s.run("killed", "--resume --jobs 2");
+    INFO(r.err);
+    CHECK(r.exit_code == 0);
+    CHECK(s.output("killed", "detections.jsonl") == full);
   }
   SUBCASE("an unreadable tile is refused with the reason; fixed, --resume completes the survey") {
     const std::string tile = s.tiles + "/t10.las", saved = read_bytes(tile);
