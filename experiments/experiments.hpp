@@ -14,7 +14,13 @@ void add_lsh_experiment(CLI::App* parent, int* exit_code);
 // Simulated airborne tiles through the scene recognizer: recall, top-1, false
 // alarms and time per tile against slope, point spacing and noise.
 void add_scene_experiment(CLI::App* parent, int* exit_code);
+// Simulated flight lines through the SceneStream: recall, top-1, false
+// alarms, duplicates and points per second against density.
+void add_stream_experiment(CLI::App* parent, int* exit_code);
 // Warzone 2100's PIE models (vehicles, structures) to OBJ meshes.
 void add_prepare_warzone(CLI::App* parent, int* exit_code);
+
+// laz-speed: LAS/LAZ decoding speed and peak memory (laz_speed.cpp).
+void add_laz_speed(CLI::App* parent, int* exit_code);
 
 }  // namespace spinhash::experiment

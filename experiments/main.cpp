@@ -18,7 +18,9 @@ int main(int argc, char** argv) {
   spinhash::experiment::add_scaling_experiment(&app, &exit_code);
   spinhash::experiment::add_lsh_experiment(&app, &exit_code);
   spinhash::experiment::add_scene_experiment(&app, &exit_code);
+  spinhash::experiment::add_stream_experiment(&app, &exit_code);
   spinhash::experiment::add_prepare_warzone(&app, &exit_code);
+  spinhash::experiment::add_laz_speed(&app, &exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

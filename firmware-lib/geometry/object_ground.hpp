@@ -44,7 +44,7 @@ constexpr float kMinObjectGroundShare = 0.15f;  // points on the terrain that sa
 constexpr float kMinGroundCellShare = 0.3f;     // occupied cells that are ground, likewise
 constexpr uint32_t kObjectGroundScratchFloats = 4u * kTerrainCells;  // lowest point, mean, spread, count
 
-// When the n points stand on terrain, drops those within 3 sigma of the
+// When the n points stand on terrain, drops those within kClearanceSigmas of the
 // ground's measured roughness above it (at least kMinClearance, at most
 // `clearance` m), compacting xyz in place, and returns how many went;
 // otherwise (no terrain found, clearance 0) keeps every point and returns 0. `scratch`

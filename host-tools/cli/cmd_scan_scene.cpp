@@ -1,12 +1,16 @@
 // spinhash scan-scene MESHES... -o TILE.las: a simulated airborne tile (terrain,
-// vehicles resting on it, clutter) with its truth (host-tools/scan/scene_simulator.hpp).
+// vehicles resting on it, clutter) with its truth (host-tools/scan/scene_simulator.hpp);
+// with --length, a flight line of such tiles in scan order with GPS time
+// (host-tools/scan/flight_line.hpp).
 #include <cstdio>
 #include <memory>
 
 #include "cli/commands.hpp"
 #include "cloud/cloud_reader.hpp"
 #include "cloud/cloud_writer.hpp"
+#include "cloud/las_writer.hpp"
 #include "pipeline/model_sources.hpp"
+#include "scan/flight_line.hpp"
 #include "scan/scan_simulator.hpp"
 #include "scan/scene_simulator.hpp"
 #include "survey/cut_tiles.hpp"
@@ -23,6 +27,8 @@ struct ScanSceneArgs {
   double tile_size = 40.0;
   std::vector<double> offset;
   host::SceneOptions options;
+  double length = 0.0;  // m: a flight line of --size tiles along +y (0: one tile)
+  double speed = 60.0;  // m/s
 };
 
 constexpr const char* kCommand = "scan-scene";
@@ -35,6 +41,34 @@ bool load(const std::vector<std::string>& inputs, std::vector<host::Mesh>* out, 
     out->push_back(std::move(m.mesh));
   }
   return true;
+}
+
+// A flight line in scan order: LAS with GPS time (PLY without).
+int write_flight_line(const ScanSceneArgs& a, const std::vector<host::Mesh>& vehicles,
+                      const std::vector<host::Mesh>& unknown, const std::string& truth) {
+  host::FlightLineOptions line;
+  line.segment = a.options;
+  line.length = a.length;
+  line.speed = a.speed;
+  const host::FlightLineScan f = host::simulate_flight_line(vehicles, unknown, line);
+  std::string error;
+  if (!f.scan.ok()) {
+    print_error(kCommand, f.scan.error);
+    return kExitError;
+  }
+  const bool las = host::cloud_format_for(a.output) == host::CloudFormat::kLas;
+  if (!(las ? host::write_las(a.output, f.scan.xyz, f.scan.classification, f.gps_time, &error)
+            : host::write_cloud(a.output, f.scan.xyz, f.scan.classification, false, &error)) ||
+      !host::write_scene_truth(truth, f.scan.objects, &error)) {
+    print_error(kCommand, error);
+    return kExitError;
+  }
+  std::fprintf(stderr,
+               "spinhash scan-scene: %s: a %.0f m flight line of %u segments, %zu points in scan order "
+               "(largest lag %.1f m), %zu objects; truth %s\n",
+               a.output.c_str(), a.length, f.segments, f.scan.size(), f.max_lag, f.scan.objects.size(),
+               truth.c_str());
+  return kExitOk;
 }
 
 int run_scan_scene(ScanSceneArgs& a) {
@@ -53,12 +87,13 @@ int run_scan_scene(ScanSceneArgs& a) {
     print_error(kCommand, error);
     return kExitError;
   }
+  const std::string truth = a.truth.empty() ? a.output + ".truth.csv" : a.truth;
+  if (a.length > 0.0) return write_flight_line(a, vehicles, unknown, truth);
   const host::SceneScan scan = host::simulate_scene(vehicles, unknown, a.options);
   if (!scan.ok()) {
     print_error(kCommand, scan.error);
     return kExitError;
   }
-  const std::string truth = a.truth.empty() ? a.output + ".truth.csv" : a.truth;
   if (!host::write_cloud(a.output, scan.xyz, scan.classification, false, &error) ||
       !host::write_scene_truth(truth, scan.objects, &error)) {
     print_error(kCommand, error);
@@ -119,6 +154,20 @@ void add_scan_scene_command(CLI::App& app, int* exit_code) {
       ->capture_default_str();
   cmd->add_option("--vehicles", o.vehicles, "vehicles from MESHES (two side by side, one under a tree)")
       ->check(CLI::Range(0u, host::kMaxSceneVehicles))
+      ->capture_default_str();
+  cmd->add_option("--parked-rows", o.parked_rows,
+                  "rows of --row-length vehicles parked side by side (of --vehicles, after the pair)")
+      ->check(CLI::Range(0u, host::kMaxSceneVehicles))
+      ->capture_default_str();
+  cmd->add_option("--row-length", o.row_length, "vehicles per parked row")
+      ->check(CLI::Range(2u, 16u))
+      ->capture_default_str();
+  cmd->add_option("--length", a->length,
+                  "a flight line of this many m along +y, of --size tiles, in scan order with GPS time "
+                  "(0: one tile)")
+      ->check(CLI::Range(0.0, host::kMaxFlightLineLength));
+  cmd->add_option("--speed", a->speed, "the flight line's speed, m/s (its GPS time)")
+      ->check(CLI::Range(1.0, 500.0))
       ->capture_default_str();
   cmd->add_option("--unknown", a->unknown, "meshes of vehicles not in the database: files or folders");
   cmd->add_option("--unknown-vehicles", o.unknown_vehicles, "vehicles drawn from --unknown")

@@ -129,6 +129,14 @@ void add_scene_command(CLI::App& app, int* exit_code) {
                   "points a scene window holds (default: sized from the tile's density; more: counted, "
                   "not answered)")
       ->check(CLI::Range(1u, 1u << 26));
+  cmd->add_option("--window-core", a->config.window_core,
+                  "m: the windows' owned squares (a multiple of the grid cells, 0.5 m)")
+      ->check(CLI::Range(1.0f, 2000.0f))
+      ->capture_default_str();
+  cmd->add_option("--window-margin", a->config.window_margin,
+                  "m seen beyond a window's core: half the longest vehicle plus the terrain filter's reach")
+      ->check(CLI::Range(0.0f, 2000.0f))
+      ->capture_default_str();
   cmd->add_option("--max-objects", a->config.max_objects,
                   "objects per tile (more: the rest are not recognised)")
       ->check(CLI::Range(1u, 1u << 16));

@@ -1,5 +1,6 @@
 #include "cloud/cloud_reader.hpp"
 
+#include "cloud/format_sniff.hpp"
 #include "cloud/las_reader.hpp"
 #include "cloud/ply_body.hpp"
 #include "cloud/ply_header.hpp"
@@ -13,10 +14,6 @@
 
 namespace spinhash::host {
 namespace {
-
-bool starts_with_ply_magic(const std::string& bytes) {
-  return bytes.rfind("ply\n", 0) == 0 || bytes.rfind("ply\r\n", 0) == 0;
-}
 
 // All of standard input, binary; false past max_bytes.
 bool read_stdin_bytes(uint64_t max_bytes, std::string* bytes, std::string* error) {
@@ -60,7 +57,7 @@ bool parse_cloud(const std::string& bytes, std::vector<double>* xyz, std::string
       LasCloud las;
       ok = parse_las(bytes, &las, error);
       if (ok) *xyz = std::move(las.xyz);
-    } else if (starts_with_ply_magic(bytes)) {
+    } else if (is_ply(bytes)) {
       ply::Header header;
       ok = ply::parse_header(bytes, &header, error) && ply::read_body(bytes, header, xyz, error);
     } else {

@@ -12,6 +12,7 @@ namespace {
 
 constexpr uint8_t kWriteFormat = 1;          // x y z, intensity, flags, class, ..., GPS time
 constexpr uint16_t kWriteRecordLength = 28;  // kLasMinRecordLength[1]
+constexpr size_t kGpsTimeAt = 20;            // the record's GPS time (double)
 constexpr uint8_t kUnclassified = 1;         // ASPRS class 1
 constexpr uint8_t kLegacyClassMask = 0x1F;   // formats 0-5 hold 5 bits of class
 constexpr uint8_t kSingleReturn = 0x09;      // return 1 of 1
@@ -53,7 +54,18 @@ std::string header(uint64_t n, const double offset[3], const double lo[3], const
 
 bool las_bytes(const std::vector<double>& xyz, const std::vector<uint8_t>& classification, std::string* out,
                std::string* error) {
+  return las_bytes(xyz, classification, {}, out, error);
+}
+
+bool las_bytes(const std::vector<double>& xyz, const std::vector<uint8_t>& classification,
+               const std::vector<double>& gps_time, std::string* out, std::string* error) {
   const size_t n = xyz.size() / 3;
+  if (!gps_time.empty() && gps_time.size() != n) {
+    if (error)
+      *error =
+          "LAS writer: " + std::to_string(gps_time.size()) + " times for " + std::to_string(n) + " points";
+    return false;
+  }
   if (!classification.empty() && classification.size() != n) {
     if (error)
       *error = "LAS writer: " + std::to_string(classification.size()) + " classes for " + std::to_string(n) +
@@ -95,6 +107,7 @@ bool las_bytes(const std::vector<double>& xyz, const std::vector<uint8_t>& class
     rec[14] = static_cast<char>(kSingleReturn);
     rec[15] =
         static_cast<char>((classification.empty() ? kUnclassified : classification[i]) & kLegacyClassMask);
+    put_double(&rec, kGpsTimeAt, gps_time.empty() ? 0.0 : gps_time[i]);
     out->append(rec);
   }
   return true;
@@ -102,8 +115,14 @@ bool las_bytes(const std::vector<double>& xyz, const std::vector<uint8_t>& class
 
 bool write_las(const std::string& path, const std::vector<double>& xyz,
                const std::vector<uint8_t>& classification, std::string* error) {
+  return write_las(path, xyz, classification, {}, error);
+}
+
+bool write_las(const std::string& path, const std::vector<double>& xyz,
+               const std::vector<uint8_t>& classification, const std::vector<double>& gps_time,
+               std::string* error) {
   std::string bytes;
-  return las_bytes(xyz, classification, &bytes, error) &&
+  return las_bytes(xyz, classification, gps_time, &bytes, error) &&
          write_file_atomically(path, bytes.data(), bytes.size(), error);
 }
 

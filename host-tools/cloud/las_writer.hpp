@@ -1,5 +1,5 @@
 // Writes LAS 1.2, point data format 1 (x y z, intensity 0, classification,
-// GPS time 0): the format every lidar tool reads. Coordinates are stored as
+// GPS time: given or 0): the format every lidar tool reads. Coordinates are stored as
 // 32-bit integers at kLasWriteScale with the offset at the cloud's floored
 // minimum, so georeferenced clouds keep millimetres.
 #pragma once
@@ -18,8 +18,15 @@ constexpr double kLasWriteScale = 0.001;  // m per integer step
 bool las_bytes(const std::vector<double>& xyz, const std::vector<uint8_t>& classification, std::string* out,
                std::string* error);
 
+// The same with a GPS time per point (seconds; empty: 0 for every point).
+bool las_bytes(const std::vector<double>& xyz, const std::vector<uint8_t>& classification,
+               const std::vector<double>& gps_time, std::string* out, std::string* error);
+
 // The same, written to `path` atomically (nothing is left behind on failure).
 bool write_las(const std::string& path, const std::vector<double>& xyz,
                const std::vector<uint8_t>& classification, std::string* error);
+bool write_las(const std::string& path, const std::vector<double>& xyz,
+               const std::vector<uint8_t>& classification, const std::vector<double>& gps_time,
+               std::string* error);
 
 }  // namespace spinhash::host

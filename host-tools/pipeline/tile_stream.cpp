@@ -137,6 +137,12 @@ void spill(host::PointSource& source, size_t chunk, uint32_t picture_points, Cel
   cells.finish();
 }
 
+// Cells of a square grid of `cell` m over `edge` m, with the snap's extra row.
+uint32_t grid_cells(double edge, float cell) {
+  const double per_side = std::ceil(edge / cell) + 2.0;
+  return static_cast<uint32_t>(std::min(per_side * per_side, 16777216.0));
+}
+
 // The columns (cells across the track) holding more than outliers.
 struct Swath {
   int64_t lo = 0, hi = 0;
@@ -181,6 +187,12 @@ StreamConfig band_config(const TileStreamOptions& o, const TileExtent& e, const 
   const double window_area = (core + 2.0 * margin) * (core + 2.0 * margin);
   const double band_width = std::min(width, static_cast<double>(kBandColumns) * core) + 2.0 * margin;
   const double buffer_area = (2.0 * core + 2.0 * margin) * band_width;
+  // The grids hold a whole window, whatever its size.
+  const double seen = core + 2.0 * margin;
+  c.scene.max_terrain_cells =
+      std::max<uint32_t>(c.scene.max_terrain_cells, grid_cells(seen, o.scene.terrain_cell));
+  c.scene.max_segment_cells =
+      std::max<uint32_t>(c.scene.max_segment_cells, grid_cells(seen, o.scene.segment_cell));
   if (c.scene.max_tile_points == 0)
     c.scene.max_tile_points =
         static_cast<uint32_t>(std::clamp<double>(density * window_area, kMinWindowPoints, kMaxWindowPoints));

@@ -139,6 +139,47 @@ class Layout {
     return false;
   }
 
+  // A row of parked vehicles (a parking lot's row): each beside the one
+  // before, a gap in [kSideBySideGapMin, kSideBySideGapMax] apart, parked
+  // either way round, all clear of the rest.
+  bool place_row(const std::vector<const Mesh*>& row, std::string* error) {
+    for (uint32_t attempt = 0; attempt < kMaxPlacementAttempts; ++attempt) {
+      const double yaw = random_yaw();
+      std::vector<PlacedObject> placed;
+      placed.push_back(place_vehicle(*row[0], SceneObjectKind::kVehicle, t_, random_xy(), yaw));
+      if (!fits(placed[0], *out_, o_.size, t_)) continue;
+      const Eigen::Vector2d l = placed[0].base.lateral();
+      bool ok = true;
+      for (size_t k = 1; k < row.size() && ok; ++k) {
+        const PlacedObject& prev = placed.back();
+        const double gap = rng_.uniform(kSideBySideGapMin + 0.1, kSideBySideGapMax - 0.1);
+        const double yaw_k = rng_.chance(0.5) ? yaw : yaw + kPi;
+        const Eigen::Vector2d ip = interval_along(prev.mesh, prev.base.center, l);
+        Eigen::Vector2d at = prev.base.center + (ip[1] + gap + 0.5 * row[k]->bounding_box().size().y()) * l;
+        PlacedObject pk;
+        for (int pass = 0; pass < 2; ++pass) {  // a second pass corrects for the tilt
+          pk = place_vehicle(*row[k], SceneObjectKind::kVehicle, t_, at, yaw_k);
+          at += (gap - (interval_along(pk.mesh, prev.base.center, l)[0] - ip[1])) * l;
+        }
+        const double real_gap = interval_along(pk.mesh, prev.base.center, l)[0] - ip[1];
+        std::vector<PlacedObject> others = *out_;
+        others.insert(others.end(), placed.begin(), placed.end() - 1);  // the previous is its neighbour
+        ok = real_gap >= kSideBySideGapMin && real_gap <= kSideBySideGapMax && fits(pk, others, o_.size, t_);
+        placed.push_back(std::move(pk));
+      }
+      if (!ok) continue;
+      for (PlacedObject& p : placed) {
+        p.truth.flags |= kSideBySide;
+        out_->push_back(std::move(p));
+      }
+      return true;
+    }
+    *error = "cannot place a row of " + std::to_string(row.size()) + " parked vehicles in a " +
+             std::to_string(o_.size) + " m tile after " + std::to_string(kMaxPlacementAttempts) +
+             " attempts: use a larger --size or fewer objects";
+    return false;
+  }
+
   // A tree whose crown overhangs one of the `count` vehicles from `first`:
   // the last if it fits there (its crown inside the tile, its trunk clear of
   // everything), else the one before, ...
@@ -316,6 +357,12 @@ bool lay_out_scene(const std::vector<Mesh>& vehicles, const std::vector<Mesh>& u
   if (o.vehicles >= 2) {
     if (!lay.place_pair(model(0), model(1), error)) return false;
     k = 2;
+  }
+  for (uint32_t r = 0; r < o.parked_rows && k + o.row_length <= o.vehicles; ++r) {
+    std::vector<const Mesh*> row;
+    for (uint32_t j = 0; j < o.row_length; ++j) row.push_back(&model(k + j));
+    if (!lay.place_row(row, error)) return false;
+    k += o.row_length;
   }
   for (; k < o.vehicles; ++k) {
     const Mesh& m = model(k);

@@ -60,6 +60,7 @@ SceneScan run_scene(const std::vector<Mesh>& vehicles, const std::vector<Mesh>& 
   TerrainSpec spec;
   spec.size = o.size;
   spec.slope_deg = o.slope_deg;
+  spec.slope_azimuth_deg = o.slope_azimuth_deg;
   spec.bump_height = o.bump_height;
   spec.curb_height = o.curb_height;
   spec.seed = o.seed;

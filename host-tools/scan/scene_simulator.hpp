@@ -30,11 +30,15 @@ constexpr double kSideBySideGapMin = 0.5;         // m between the parked pair's
 constexpr double kSideBySideGapMax = 1.0;
 
 struct SceneOptions {
-  double size = 40.0;        // m, side of the square tile
-  double slope_deg = 8.0;    // terrain plane, random direction
-  double bump_height = 0.3;  // m, largest bump (0: none)
+  double size = 40.0;               // m, side of the square tile
+  double slope_deg = 8.0;           // terrain plane, random direction
+  double slope_azimuth_deg = -1.0;  // the plane's rising direction from +x (< 0: random)
+  double bump_height = 0.3;         // m, largest bump (0: none)
   double curb_height = 0.15;
   uint32_t vehicles = 5;  // from the database meshes; the first two side by side, the last under a tree
+  uint32_t parked_rows =
+      0;  // rows of row_length vehicles parked side by side (of `vehicles`, after the pair)
+  uint32_t row_length = 4;
   uint32_t unknown_vehicles = 0;  // from the unknown meshes
   uint32_t trees = 3;             // one of them over a vehicle
   uint32_t buildings = 1;

@@ -17,7 +17,8 @@ constexpr double kCurbRamp = 0.1;                           // m over which the 
 
 Terrain::Terrain(const TerrainSpec& spec) : spec_(spec) {
   SeededRandom rng(mix_seed(spec.seed, kTerrainStream));
-  const double azimuth = rng.uniform(0.0, 2.0 * kPi);
+  const double drawn = rng.uniform(0.0, 2.0 * kPi);
+  const double azimuth = spec.slope_azimuth_deg >= 0.0 ? spec.slope_azimuth_deg * kDegToRad : drawn;
   const double rise = std::tan(spec.slope_deg * kDegToRad);
   gradient_ = rise * Eigen::Vector2d(std::cos(azimuth), std::sin(azimuth));
   const double half = 0.5 * spec.size;

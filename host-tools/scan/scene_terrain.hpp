@@ -17,10 +17,11 @@ constexpr double kTerrainCell = 0.2;         // m: mesh grid step (keeps bumps a
 constexpr uint32_t kMaxTerrainCells = 2000;  // per side: bounds the mesh for huge tiles
 
 struct TerrainSpec {
-  double size = 40.0;         // m, tile side
-  double slope_deg = 0.0;     // of the plane
-  double bump_height = 0.3;   // m, largest |amplitude| of a bump
-  double curb_height = 0.15;  // m, the step's rise
+  double size = 40.0;               // m, tile side
+  double slope_deg = 0.0;           // of the plane
+  double slope_azimuth_deg = -1.0;  // direction it rises to, degrees from +x (< 0: drawn from the seed)
+  double bump_height = 0.3;         // m, largest |amplitude| of a bump
+  double curb_height = 0.15;        // m, the step's rise
   uint64_t seed = 1;
 };
 

@@ -14,6 +14,7 @@ PYBIND11_MODULE(_spinhash, m) {
   spinhash::python::bind_result(m);
   spinhash::python::bind_recognizer(m);
   spinhash::python::bind_scene(m);
+  spinhash::python::bind_scene_stream(m);
   spinhash::python::bind_cloud(m);
   spinhash::python::bind_survey(m);
 }

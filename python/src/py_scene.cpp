@@ -14,6 +14,7 @@
 #include "py_config.hpp"
 #include "py_database.hpp"
 #include "py_result.hpp"
+#include "py_scene.hpp"
 
 namespace py = pybind11;
 
@@ -115,6 +116,12 @@ class PySceneRecognizer {
 std::unique_ptr<PySceneRecognizer> make_scene(const std::shared_ptr<PyDatabase>& db, const py::object& config,
                                               const py::kwargs& kwargs) {
   if (!db) throw py::type_error("SceneRecognizer needs a spinhash.Database");
+  return std::make_unique<PySceneRecognizer>(db, scene_config_from(config, kwargs));
+}
+
+}  // namespace
+
+SceneConfig scene_config_from(const py::object& config, const py::kwargs& kwargs) {
   SceneConfig scene;
   RecognizerConfig base;
   base.ground_clearance = 0.0f;  // the scene's terrain classifier removes the ground (as `spinhash scene`)
@@ -127,10 +134,10 @@ std::unique_ptr<PySceneRecognizer> make_scene(const std::shared_ptr<PyDatabase>&
       recognizer_kwargs[item.first] = item.second;
   }
   scene.recognizer = recognizer_config(base, config, recognizer_kwargs);
-  return std::make_unique<PySceneRecognizer>(db, scene);
+  return scene;
 }
 
-}  // namespace
+py::dict scene_stats_dict(const SceneStats& st) { return scene_stats(st); }
 
 void bind_scene(py::module_& m) {
   py::class_<PySceneRecognizer>(m, "SceneRecognizer",

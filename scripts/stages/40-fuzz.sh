@@ -11,7 +11,7 @@ jobs=$(nproc 2>/dev/null || echo 2)
 fuzz_seconds=${FUZZ_SECONDS:-45}
 timeout_seconds=30      # one input taking longer is a hang (a normal one takes < 1 s under ASan)
 recognize_max_len=8192  # bytes: above max_points (1024) as int16 triples, so thinning is reached
-targets=(database_open cloud_reader las_reader recognize)
+targets=(database_open cloud_reader las_reader laz_reader recognize)
 start=$SECONDS
 
 cmake --preset fuzz >/dev/null

@@ -113,7 +113,7 @@ TEST_CASE("kernels: the selected L1 kernel is the one the target's flags call fo
   expected = "avx2";
 #elif defined(__x86_64__)
   expected = "sse2";
-#elif defined(__aarch64__)
+#elif defined(__ARM_NEON)  // aarch64, and armhf built with -mfpu=neon
   expected = "neon";
 #endif
   CHECK(std::strcmp(l1_kernel_name(), expected) == 0);

@@ -10,6 +10,7 @@
 
 #include "spinhash/recognizer.hpp"
 #include "spinhash/scene.hpp"
+#include "spinhash/scene_stream.hpp"
 
 using namespace spinhash;
 
@@ -19,10 +20,11 @@ struct WorkspaceThreshold {
   size_t default_config;  // RecognizerConfig{}
   size_t points_20000;    // RecognizerConfig{} with max_points = 20000
   size_t scene_300000;    // SceneConfig{}: a 300 000-point tile, its grids and a default recognizer
+  size_t stream_1m;       // StreamConfig{}: windows of 300 000 points, 1 M points buffered
 };
 // Pointer-sized members make 64-bit layouts larger than 32-bit ones.
-constexpr WorkspaceThreshold kThreshold64 = {6386224, 5556304, 24023504};
-constexpr WorkspaceThreshold kThreshold32 = {6386064, 5556144, 24023248};
+constexpr WorkspaceThreshold kThreshold64 = {6386224, 5556304, 30380496, 54219792};
+constexpr WorkspaceThreshold kThreshold32 = {6386064, 5556144, 30380240, 54219536};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
 constexpr size_t kToleranceBytes = 1024;
@@ -55,4 +57,12 @@ TEST_CASE("workspace: a 300 000-point scene tile needs the recorded number of by
   cfg.max_tile_points = 300000;
   CAPTURE(sizeof(void*));
   check_close(required_scene_workspace_bytes(cfg), kThreshold.scene_300000);
+}
+
+TEST_CASE("workspace: a stream of 300 000-point windows and 1 M buffered points needs the recorded bytes") {
+  StreamConfig cfg;
+  cfg.scene.max_tile_points = 300000;
+  cfg.max_buffered_points = 1000000;
+  CAPTURE(sizeof(void*));
+  check_close(required_stream_workspace_bytes(cfg), kThreshold.stream_1m);
 }

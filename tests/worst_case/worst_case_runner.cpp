@@ -3,6 +3,11 @@
 //   worst_case_runner prepare DIR        builds the databases and clouds (natively)
 //   worst_case_runner run DIR CASE       one recognition, the part callgrind counts
 //   worst_case_runner golden GOLDEN_DIR [INDEX]  the golden queries (all, or one)
+//   worst_case_runner query DB.shdb CLOUD.f64 MODE  one query of the instruction
+//                 benchmark (scripts/instructions-per-query.sh --target): raw
+//                 little-endian float64 xyz, the default config in MODE (bran,
+//                 sran, sind), recognition between spinhash_bench_begin() and
+//                 spinhash_bench_end(), where scripts/qemu/insn_count.c counts
 // Cases:
 //   max_points    toy database, a query of exactly config.max_points points
 //   symmetric     toy models plus a sphere, a sphere query: every doublet on a
@@ -143,6 +148,48 @@ int run(const std::string& dir, const std::string& name) {
                    name != "max_points", RecognizerConfig{});
 }
 
+}  // namespace
+
+// Markers around the counted recognition: a QEMU plugin counts the
+// instructions between their calls (no callgrind on emulated targets).
+extern "C" __attribute__((noinline)) void spinhash_bench_begin() { __asm__ volatile(""); }
+extern "C" __attribute__((noinline)) void spinhash_bench_end() { __asm__ volatile(""); }
+
+namespace {
+
+bool parse_mode(const std::string& name, Mode* mode) {
+  const struct {
+    const char* name;
+    Mode mode;
+  } modes[] = {{"bran", Mode::kBran}, {"sran", Mode::kSran}, {"sind", Mode::kSind}};
+  for (const auto& m : modes)
+    if (name == m.name) *mode = m.mode;
+  return name == "bran" || name == "sran" || name == "sind";
+}
+
+int query(const std::string& db_path, const std::string& cloud_path, const std::string& mode_name) {
+  host::AlignedBytes blob, cloud;
+  std::string error;
+  RecognizerConfig cfg;
+  if (!parse_mode(mode_name, &cfg.mode)) return fail("unknown mode " + mode_name);
+  if (!host::read_file(db_path, &blob, &error) || !host::read_file(cloud_path, &cloud, &error))
+    return fail(error);
+  Database db;
+  if (Database::open(blob.data(), blob.size(), &db) != Status::kOk) return fail("database does not open");
+  const auto* xyz = reinterpret_cast<const double*>(cloud.data());  // 64-byte aligned buffer
+  host::AlignedBytes workspace(required_workspace_bytes(cfg));
+  Recognizer rec;
+  if (rec.init(&db, cfg, workspace.data(), workspace.size()) != Status::kOk) return fail("init failed");
+  spinhash_bench_begin();
+  const Result r = rec.recognize(xyz, static_cast<uint32_t>(cloud.size() / (3 * sizeof(double))));
+  spinhash_bench_end();
+  if (r.status != Status::kOk || r.ranking_count == 0)
+    return fail(std::string("query: ") + status_name(r.status));
+  std::printf("top=%s hypotheses=%u features=%u\n", db.model(r.ranking[0].model).name, r.stats.hypotheses,
+              r.stats.features);
+  return 0;
+}
+
 int golden_queries(const std::string& dir, int only) {
   host::AlignedBytes blob, raw;
   std::string error;
@@ -170,8 +217,11 @@ int golden_queries(const std::string& dir, int only) {
 int main(int argc, char** argv) {
   if (argc == 3 && std::strcmp(argv[1], "prepare") == 0) return prepare(argv[2]);
   if (argc == 4 && std::strcmp(argv[1], "run") == 0) return run(argv[2], argv[3]);
+  if (argc == 5 && std::strcmp(argv[1], "query") == 0) return query(argv[2], argv[3], argv[4]);
   if ((argc == 3 || argc == 4) && std::strcmp(argv[1], "golden") == 0)
     return golden_queries(argv[2], argc == 4 ? std::atoi(argv[3]) : -1);
-  std::fprintf(stderr, "usage: worst_case_runner prepare DIR | run DIR CASE | golden GOLDEN_DIR [INDEX]\n");
+  std::fprintf(stderr,
+               "usage: worst_case_runner prepare DIR | run DIR CASE | golden GOLDEN_DIR [INDEX] | "
+               "query DB.shdb CLOUD.f64 MODE\n");
   return 2;
 }

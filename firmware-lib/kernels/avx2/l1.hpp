@@ -42,7 +42,7 @@ SPINHASH_AVX2_INLINE uint32_t sad(const uint8_t* a, const uint8_t* b, uint32_t n
 }
 
 SPINHASH_AVX2_INLINE uint32_t l1_distance(const uint8_t* a, const uint8_t* b, uint32_t dims) {
-  return sad(a, b, dims);
+  return distance_paper_first<sad>(a, b, dims);
 }
 
 SPINHASH_AVX2_INLINE uint32_t l1_distance_within(const uint8_t* a, const uint8_t* b, uint32_t dims,

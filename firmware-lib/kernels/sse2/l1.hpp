@@ -51,7 +51,9 @@ inline uint32_t sad(const uint8_t* a, const uint8_t* b, uint32_t n) {
   return horizontal_sum(acc) + reference::sad(a + i, b + i, n - i);
 }
 
-inline uint32_t l1_distance(const uint8_t* a, const uint8_t* b, uint32_t dims) { return sad(a, b, dims); }
+inline uint32_t l1_distance(const uint8_t* a, const uint8_t* b, uint32_t dims) {
+  return distance_paper_first<sad>(a, b, dims);
+}
 
 inline uint32_t l1_distance_within(const uint8_t* a, const uint8_t* b, uint32_t dims, uint32_t bound) {
   return within_paper_first<sad>(a, b, dims, bound);

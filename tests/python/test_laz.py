@@ -1,0 +1,53 @@
+"""spinhash.read_cloud reads LAZ and COPC through the same decoder as the CLI,
+read_cloud_header gives a header and its CRS without the points, iter_cloud
+hands out the points in chunks (tests skip when ../shared/data/laz is absent)."""
+import pathlib
+
+import numpy as np
+import pytest
+
+import spinhash
+
+LAZ = pathlib.Path(__file__).resolve().parents[2].parent / "shared" / "data" / "laz"
+pytestmark = pytest.mark.skipif(not LAZ.is_dir(), reason="LAZ samples live in shared/, beside the clone")
+
+
+def test_a_laz_tile_reads_as_its_las_twin():
+    laz = spinhash.read_cloud(LAZ / "twins" / "autzen_trim.laz")
+    las = spinhash.read_cloud(LAZ / "twins" / "autzen_trim.las")
+    assert laz.shape == (110000, 3)
+    np.testing.assert_array_equal(laz, las)
+
+
+def test_copc_holds_the_points_of_its_twin_in_another_order():
+    copc = spinhash.read_cloud(LAZ / "twins" / "simple-rgb.copc.laz")
+    las = spinhash.read_cloud(LAZ / "twins" / "simple-rgb.las")
+    key = lambda a: np.round(a, 2)[np.lexsort(np.round(a, 2).T)]
+    np.testing.assert_allclose(key(copc), key(las), atol=1e-6)
+
+
+def test_the_header_and_crs_come_without_the_points():
+    h = spinhash.read_cloud_header(LAZ / "twins" / "1815.laz")
+    assert h["format"] == "laz" and h["point_count"] == 1247 and h["las_point_format"] == 1
+    assert h["crs"]["epsg"] == 6580 and h["crs"]["vertical_epsg"] == 5703
+    wkt = spinhash.read_cloud_header(LAZ / "crs" / "file_with_both_wkt_and_geotiff_vlrs.las")["crs"]
+    assert wkt["source"] == "wkt" and wkt["name"] == "WKT: NAD83_2011_Nebraska_ft"
+    bad = spinhash.read_cloud_header(LAZ / "crs" / "bad-geotiff-keys.las")["crs"]
+    assert bad["epsg"] == 32617 and len(bad["warnings"]) == 1
+
+
+@pytest.mark.parametrize("chunk", [1, 7, 4096, 200000])
+def test_chunks_give_the_whole_cloud(chunk):
+    path = LAZ / "twins" / "1_4_w_evlr.laz"
+    chunks = spinhash.iter_cloud(path, chunk_points=chunk)
+    assert chunks.header["point_count"] == 1000
+    parts = list(chunks)
+    assert all(1 <= len(p) <= chunk for p in parts)
+    np.testing.assert_array_equal(np.concatenate(parts), spinhash.read_cloud(path))
+
+
+def test_broken_laz_raises_naming_the_problem():
+    with pytest.raises(ValueError, match="compressor 16"):
+        spinhash.read_cloud(LAZ / "broken" / "broken_compressor.laz")
+    with pytest.raises(ValueError, match="coder 15"):
+        list(spinhash.iter_cloud(LAZ / "broken" / "broken_coder.laz"))
