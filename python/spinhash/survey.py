@@ -12,6 +12,7 @@ skips the tiles done. The outputs (detections.jsonl, detections.geojson,
 detections.gpkg, survey.json) are written by the same C++ code as the CLI's.
 """
 import argparse
+import contextlib
 import json
 import os
 import sys
@@ -50,7 +51,8 @@ def _collect(client, survey, futures, names, show_progress):
     """Stores each result as it comes; (name, path, reason) of the tiles that failed for good."""
     from distributed import as_completed, progress
     if show_progress and futures:
-        progress(futures, notebook=False)
+        with contextlib.redirect_stdout(sys.stderr):  # progress on stderr, as the CLI's
+            progress(futures, notebook=False)
         print(file=sys.stderr)
     failed = []
     for future in as_completed(futures):
