@@ -70,16 +70,19 @@ void fill(Canvas* c, const Quad& q, Rgb col) {
     }
 }
 
-// The first of right, left, above, below the vehicle where the label meets
-// no placed label and no vehicle; false when none is free.
-bool place_label(const PixelRect& v, int w, int h, const std::vector<PixelRect>& taken, PixelRect* out) {
+// The first of right, left, above, below the vehicle where the label lies
+// within the picture and meets no placed label and no vehicle; false when
+// none is free.
+bool place_label(const PixelRect& v, int w, int h, const PixelRect& picture,
+                 const std::vector<PixelRect>& taken, PixelRect* out) {
   const int cy = (v.y0 + v.y1) / 2 - h / 2, cx = (v.x0 + v.x1) / 2 - w / 2;
   const PixelRect options[4] = {{v.x1 + kLabelGapPx, cy, v.x1 + kLabelGapPx + w, cy + h},
                                 {v.x0 - kLabelGapPx - w, cy, v.x0 - kLabelGapPx, cy + h},
                                 {cx, v.y0 - kLabelGapPx - h, cx + w, v.y0 - kLabelGapPx},
                                 {cx, v.y1 + kLabelGapPx, cx + w, v.y1 + kLabelGapPx + h}};
   for (const PixelRect& o : options)
-    if (std::none_of(taken.begin(), taken.end(), [&](const PixelRect& t) { return t.overlaps(o); })) {
+    if (o.x0 >= picture.x0 && o.y0 >= picture.y0 && o.x1 <= picture.x1 && o.y1 <= picture.y1 &&
+        std::none_of(taken.begin(), taken.end(), [&](const PixelRect& t) { return t.overlaps(o); })) {
       *out = o;
       return true;
     }
@@ -141,6 +144,7 @@ bool write_survey_picture(const std::string& path, const std::vector<SurveyPictu
   }
   for (const PictureBox& b : boxes)  // clutter first, as outlines, so that vehicles lie on top
     if (b.style == BoxStyle::kNotVehicle) outline(&c, corners(f, b), kClutter);
+  const PixelRect inside{0, kTitleBandPx, static_cast<int>(c.width()) - 1, h - kLegendBandPx};
   std::vector<PixelRect> taken;
   for (const PictureBox& b : boxes)
     if (b.style != BoxStyle::kNotVehicle) taken.push_back(bounds(corners(f, b)));
@@ -151,7 +155,8 @@ bool write_survey_picture(const std::string& path, const std::vector<SurveyPictu
     fill(&c, q, sure ? kConfidentFill : kUnsureFill);
     outline(&c, q, sure ? kConfidentEdge : kUnsureEdge);
     PixelRect at;
-    if (place_label(bounds(q), Canvas::text_width(b.label, kLabelScale), 5 * kLabelScale, taken, &at)) {
+    if (place_label(bounds(q), Canvas::text_width(b.label, kLabelScale), 5 * kLabelScale, inside, taken,
+                    &at)) {
       taken.push_back(at);
       c.text(at.x0, at.y0, b.label, kLabelScale, sure ? kConfidentEdge : kUnsureEdge);
     }
