@@ -3,7 +3,8 @@
 # builds, generates 56 procedural look-alike vehicles (7 families), compiles
 # them into a database, simulates airborne 3-view scans of every vehicle
 # (5 cm noise, random pose, georeferenced) and recognises them with batch
-# RANSAC, then prints accuracy and time. Everything lands in demo-out/.
+# RANSAC, then prints accuracy and time; ends with a small survey of 4 adjacent
+# generated LAS tiles (spinhash survey). Everything lands in demo-out/.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
@@ -48,3 +49,13 @@ awk -v median="$median_ms" '
     top1 += (first == q); top5 += (index($0, "\"model\":\"" q "\"") > 0) }
   END { printf "%d queries: right model first %.1f%%, in the top 5 %.1f%%, median %.0f ms per query\n",
                n, 100 * top1 / n, 100 * top5 / n, median }' "$out/results.jsonl"
+
+echo "== a small survey: an 80 m scene cut into 2 x 2 LAS tiles of 40 m, vehicles across the cuts"
+$spinhash scan-scene "$out/fleet" -o "$out/survey-scene.las" --size 80 --vehicles 16 --trees 4 --seed 3 \
+  --tiles-out "$out/survey-tiles" --tile-size 40 2>/dev/null
+$spinhash survey --db "$out/fleet.shdb" --out "$out/survey" --quiet "$out/survey-tiles"
+found=$(grep -c '"kind":"vehicle"' "$out/survey/detections.jsonl" || true)
+confident=$(grep -c '"kind":"vehicle".*"confident":true' "$out/survey/detections.jsonl" || true)
+tiles=$(find "$out/survey-tiles" -name '*.las' | wc -l)
+echo "survey: $found vehicles ($confident confident) in $tiles tiles; GeoPackage $out/survey/detections.gpkg," \
+     "picture $out/survey/overview.png"

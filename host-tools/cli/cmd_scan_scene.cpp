@@ -6,12 +6,14 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cloud/cloud_reader.hpp"
 #include "cloud/cloud_writer.hpp"
 #include "cloud/las_writer.hpp"
 #include "pipeline/model_sources.hpp"
 #include "scan/flight_line.hpp"
 #include "scan/scan_simulator.hpp"
 #include "scan/scene_simulator.hpp"
+#include "survey/cut_tiles.hpp"
 
 namespace spinhash::cli {
 namespace {
@@ -21,6 +23,8 @@ struct ScanSceneArgs {
   std::vector<std::string> unknown;
   std::string output;
   std::string truth;
+  std::string tiles_out;  // also cut into LAS tiles here, when given
+  double tile_size = 40.0;
   std::vector<double> offset;
   host::SceneOptions options;
   double length = 0.0;  // m: a flight line of --size tiles along +y (0: one tile)
@@ -95,6 +99,21 @@ int run_scan_scene(ScanSceneArgs& a) {
     print_error(kCommand, error);
     return kExitError;
   }
+  if (!a.tiles_out.empty()) {
+    survey::CutOptions cut;
+    cut.size = a.tile_size;
+    for (int k = 0; k < 2; ++k)  // the scene's square: its few stray hits beyond are left out
+      cut.keep_min[k] = a.options.offset[k] - 0.5 * a.options.size,
+      cut.keep_max[k] = a.options.offset[k] + 0.5 * a.options.size;
+    const int n = survey::cut_into_tiles(scan.xyz, scan.classification, cut, a.tiles_out,
+                                         host::cloud_name(a.output), &error);
+    if (n < 0) {
+      print_error(kCommand, error);
+      return kExitError;
+    }
+    std::fprintf(stderr, "spinhash scan-scene: %d tiles of %g m in %s\n", n, a.tile_size,
+                 a.tiles_out.c_str());
+  }
   std::fprintf(stderr,
                "spinhash scan-scene: %s: %zu points from %u views (%llu rays), %zu objects; truth %s\n",
                a.output.c_str(), scan.size(), a.options.views, static_cast<unsigned long long>(scan.rays),
@@ -115,6 +134,12 @@ void add_scan_scene_command(CLI::App& app, int* exit_code) {
       ->required();
   cmd->add_option("--truth", a->truth,
                   "truth CSV: kind, model, centre, extent, pose per object (default OUTPUT.truth.csv)");
+  cmd->add_option(
+      "--tiles-out", a->tiles_out,
+      "also cut the scene into LAS tiles on the absolute --tile-size lattice, written here (a survey)");
+  cmd->add_option("--tile-size", a->tile_size, "side of the --tiles-out tiles, m")
+      ->check(CLI::Range(survey::kMinTileSize, survey::kMaxTileSize))
+      ->capture_default_str();
   cmd->add_option("--size", o.size, "tile side, m")
       ->check(CLI::Range(1.0, host::kMaxSceneSize))
       ->capture_default_str();

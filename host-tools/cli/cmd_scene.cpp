@@ -8,11 +8,11 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "cli/json_line.hpp"
-#include "cli/result_json.hpp"
 #include "cloud/cloud_reader.hpp"
 #include "cloud/point_source.hpp"
 #include "pipeline/database_file.hpp"
+#include "pipeline/object_box.hpp"
+#include "pipeline/object_json.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/recognizer_flags.hpp"
@@ -35,58 +35,11 @@ struct SceneArgs {
   SceneConfig config;
 };
 
-// An object as an outlined box: the model (with "?" when not confident) on
-// vehicle candidates, what it is on the others.
-host::PictureBox picture_box(const Database& db, const SceneObject& o) {
-  host::PictureBox b;
-  b.center[0] = o.center[0], b.center[1] = o.center[1];
-  b.length = o.extent[0], b.width = o.extent[1], b.heading_deg = o.heading_deg;
-  if (o.kind == ObjectKind::kVehicleCandidate && o.ranking_count > 0) {
-    b.label = pipeline::model_name(db, o.ranking[0].model) + (o.confident ? "" : " ?");
-    b.style = o.confident ? host::BoxStyle::kConfident : host::BoxStyle::kUnsure;
-  } else {
-    b.label = object_kind_name(o.kind);
-    b.style = o.kind == ObjectKind::kVehicleCandidate || o.kind == ObjectKind::kUnknown
-                  ? host::BoxStyle::kUnsure
-                  : host::BoxStyle::kNotVehicle;
-  }
-  return b;
-}
-
 bool write_picture(const SceneArgs& a, const std::string& name, const std::vector<double>& xyz,
                    const std::vector<host::PictureBox>& boxes, uint32_t confident, std::string* error) {
   const std::string title =
       name + ": " + std::to_string(boxes.size()) + " objects, " + std::to_string(confident) + " confident";
   return host::write_tile_picture(a.picture_dir + "/" + name + ".png", xyz, boxes, title, error);
-}
-
-std::string triple_json(const double v[3], int digits) {
-  return "[" + json_number(v[0], digits) + "," + json_number(v[1], digits) + "," + json_number(v[2], digits) +
-         "]";
-}
-
-std::string object_json(const std::string& tile, uint32_t k, const Database& db, const SceneObject& o,
-                        double time_ms) {
-  const bool ranked = o.ranking_count > 0;
-  std::string s =
-      "{\"tile\":" + json_string(tile) + ",\"object\":" + std::to_string(k) +
-      ",\"kind\":" + json_string(object_kind_name(o.kind)) + ",\"status\":\"" + status_word(o.status) +
-      "\",\"model\":" + (ranked ? json_string(pipeline::model_name(db, o.ranking[0].model)) : "null") +
-      ",\"confident\":" + (o.confident ? "true" : "false") +
-      ",\"group_size\":" + std::to_string(o.group_size) +
-      ",\"score\":" + (ranked ? json_number(o.ranking[0].score) : "null") + ",\"ranking\":[";
-  for (uint32_t j = 0; j < o.ranking_count; ++j)
-    s += std::string(j ? "," : "") +
-         "{\"model\":" + json_string(pipeline::model_name(db, o.ranking[j].model)) +
-         ",\"score\":" + json_number(o.ranking[j].score) + "}";
-  s += "],\"pose\":" + (ranked && o.ranking[0].has_pose ? pose_json(o.ranking[0].pose) : std::string("null"));
-  s +=
-      ",\"ground_gap\":" + (std::isfinite(o.ground_gap) ? json_number(o.ground_gap, 4) : std::string("null"));
-  const double extent[3] = {o.extent[0], o.extent[1], o.extent[2]};
-  s += ",\"points\":" + std::to_string(o.points) + ",\"center\":" + triple_json(o.center, 15) +
-       ",\"extent\":" + triple_json(extent, 4) + ",\"time_ms\":" + json_number(time_ms, 6) + "," +
-       json_version_member() + "}";
-  return s;
 }
 
 // The stream's counts of what it did not answer, for stderr ("" when none).
@@ -115,8 +68,8 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
   const pipeline::ObjectCallback print = [&](const SceneObject& o) {
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::printf("%s\n", object_json(name, index++, file.db, o, ms).c_str());
-    if (!a.picture_dir.empty()) boxes.push_back(picture_box(file.db, o));
+    std::printf("%s\n", pipeline::object_json(name, index++, file.db, o, ms).c_str());
+    if (!a.picture_dir.empty()) boxes.push_back(pipeline::object_box(file.db, o));
     confident += o.confident ? 1u : 0u;
   };
   pipeline::TileStreamResult r;

@@ -29,5 +29,6 @@ void add_recognize_command(CLI::App& app, int* exit_code);
 void add_generate_command(CLI::App& app, int* exit_code);
 void add_scene_command(CLI::App& app, int* exit_code);
 void add_scan_scene_command(CLI::App& app, int* exit_code);
+void add_survey_command(CLI::App& app, int* exit_code);
 
 }  // namespace spinhash::cli

@@ -1,21 +1,15 @@
-// Minimal JSON output for the JSON Lines of `recognize` and friends.
+// The JSON writer of the command's lines lives in pipeline/json_line.hpp
+// (the survey writes the same lines); the commands use it under cli::.
 #pragma once
-#include <initializer_list>
-#include <string>
-#include <vector>
+#include "pipeline/json_line.hpp"
 
 namespace spinhash::cli {
 
-// Quoted and escaped. Text that is not valid UTF-8 (file names are bytes on
-// POSIX) gets U+FFFD for each byte that does not start a valid sequence, so
-// every line stays valid JSON.
-std::string json_string(const std::string& s);
-std::string json_number(double v, int digits = 9);  // null for NaN / infinity
-// `"key":raw_value` and `{m1,m2,...}`: raw values are already JSON.
-std::string json_member(const char* key, const std::string& raw_value);
-std::string json_object(std::initializer_list<std::string> members);
-std::string json_array(const std::vector<std::string>& raw_values);
-// `"version":"X.Y.Z"` (pipeline/version.hpp): the last member of every JSON line.
-std::string json_version_member();
+using pipeline::json_array;
+using pipeline::json_member;
+using pipeline::json_number;
+using pipeline::json_object;
+using pipeline::json_string;
+using pipeline::json_version_member;
 
 }  // namespace spinhash::cli

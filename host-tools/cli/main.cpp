@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   spinhash::cli::add_generate_command(app, &exit_code);
   spinhash::cli::add_scene_command(app, &exit_code);
   spinhash::cli::add_scan_scene_command(app, &exit_code);
+  spinhash::cli::add_survey_command(app, &exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,6 +1,7 @@
 #include "cli/result_json.hpp"
 
 #include "cli/json_line.hpp"
+#include "pipeline/object_json.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/status_word.hpp"
 #include "spinhash/config_fields.h"
@@ -8,17 +9,9 @@
 namespace spinhash::cli {
 
 using pipeline::model_name;
+using pipeline::pose_json;
 
 const char* status_word(Status s) { return pipeline::status_word(s); }
-
-std::string pose_json(const Pose& p) {
-  std::string s = "[";
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) s += json_number(static_cast<double>(p.rotation[3 * r + c])) + ",";
-    s += json_number(p.translation[r], 15) + ",";  // georeferenced: keep millimetres at 10^7 m
-  }
-  return s + "0,0,0,1]";
-}
 
 namespace {
 

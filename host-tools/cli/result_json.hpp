@@ -9,9 +9,6 @@ namespace spinhash::cli {
 // Status as a stable snake_case word for machine readers ("ok", "empty_cloud", ...).
 const char* status_word(Status s);
 
-// A pose as 16 numbers, row-major 4x4 (translation with 15 digits: georeferenced).
-std::string pose_json(const Pose& p);
-
 // {"query":..,"status":..,"ranking":[{"model":..,"score":..},..],"pose":[16]|null,
 //  "time_ms":..,"hypotheses":..} plus "error" when not ok and a "stats" object.
 std::string result_json(const std::string& query, const Database& db, const Result& r, uint32_t top,

@@ -11,5 +11,6 @@ void bind_recognizer(pybind11::module_& m);    // py_recognizer.cpp
 void bind_scene(pybind11::module_& m);         // py_scene.cpp
 void bind_scene_stream(pybind11::module_& m);  // py_scene_stream.cpp
 void bind_cloud(pybind11::module_& m);         // py_cloud.cpp
+void bind_survey(pybind11::module_& m);        // py_survey.cpp
 
 }  // namespace spinhash::python

@@ -1,9 +1,10 @@
-// The `spinhash` Python module: recognition of numpy point clouds against a
+// spinhash._spinhash, the compiled half of the `spinhash` package
+// (python/spinhash/__init__.py re-exports it): recognition of numpy point clouds against a
 // spinhash database, through the same host pipeline as the spinhash command.
 #include "bindings.hpp"
 #include "pipeline/version.hpp"
 
-PYBIND11_MODULE(spinhash, m) {
+PYBIND11_MODULE(_spinhash, m) {
   m.doc() =
       "spinhash: 3D object recognition in airborne lidar point clouds (spin images, LSH, batch RANSAC). "
       "See docs/python.md.";
@@ -15,4 +16,5 @@ PYBIND11_MODULE(spinhash, m) {
   spinhash::python::bind_scene(m);
   spinhash::python::bind_scene_stream(m);
   spinhash::python::bind_cloud(m);
+  spinhash::python::bind_survey(m);
 }

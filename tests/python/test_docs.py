@@ -39,9 +39,10 @@ def test_the_install_commands_install_an_importable_module(tmp_path):
     prefix = tmp_path / "prefix"
     subprocess.run([shutil.which("cmake"), "--install", build, "--prefix", prefix, "--component", "python"],
                    check=True, capture_output=True)
-    installed = list(prefix.rglob("spinhash*.so"))
+    installed = list(prefix.rglob("spinhash/_spinhash*.so"))
     assert len(installed) == 1
-    site = installed[0].parent
+    assert (installed[0].parent / "__init__.py").is_file() and (installed[0].parent / "survey.py").is_file()
+    site = installed[0].parent.parent
     # Where this interpreter looks under a prefix: lib/python3.X/<dist-packages on Debian, else site-packages>.
     version = f"python{sys.version_info.major}.{sys.version_info.minor}"
     assert site.relative_to(prefix) == pathlib.Path("lib", version, pathlib.Path(sysconfig.get_path("platlib")).name)

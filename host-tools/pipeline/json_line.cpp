@@ -1,11 +1,11 @@
-#include "cli/json_line.hpp"
+#include "pipeline/json_line.hpp"
 
 #include <cmath>
 #include <cstdio>
 
 #include "pipeline/version.hpp"
 
-namespace spinhash::cli {
+namespace spinhash::pipeline {
 namespace {
 
 constexpr const char* kReplacement = "\xEF\xBF\xBD";  // U+FFFD in UTF-8
@@ -88,6 +88,6 @@ std::string json_array(const std::vector<std::string>& raw_values) {
   return s + "]";
 }
 
-std::string json_version_member() { return "\"version\":" + json_string(pipeline::version()); }
+std::string json_version_member() { return "\"version\":" + json_string(version()); }
 
-}  // namespace spinhash::cli
+}  // namespace spinhash::pipeline

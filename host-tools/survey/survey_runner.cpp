@@ -1,0 +1,234 @@
+#include "survey/survey_runner.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "blob/file_io.hpp"
+#include "pipeline/database_file.hpp"
+#include "pipeline/exit_codes.hpp"
+#include "pipeline/json_line.hpp"
+#include "pipeline/version.hpp"
+#include "survey/footprint.hpp"
+#include "survey/survey_progress.hpp"
+#include "survey/tile_run.hpp"
+
+namespace spinhash::survey {
+namespace {
+
+namespace fs = std::filesystem;
+using pipeline::json_string;
+
+constexpr uint64_t kFnvOffset = 1469598103934665603ull, kFnvPrime = 1099511628211ull;
+constexpr size_t kHashChunk = size_t{1} << 20;
+
+// The database's digest (FNV-1a 64 of its bytes): a result made with
+// another database is not reused.
+std::string file_digest(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<char> buf(kHashChunk);
+  uint64_t h = kFnvOffset;
+  while (in) {
+    in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
+    for (std::streamsize i = 0; i < in.gcount(); ++i) h = (h ^ static_cast<uint8_t>(buf[i])) * kFnvPrime;
+  }
+  char hex[20];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
+// A fresh run forgets the stored results: only the *.result files of the
+// results folder go (never a folder the user may have named DIR/tiles).
+void remove_results(const std::string& folder) {
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(folder, ec))
+    if (e.path().extension() == ".result") fs::remove(e.path(), ec);
+}
+
+std::string settings_key(const SurveyOptions& o) {
+  return "spinhash=" + std::string(pipeline::version()) + ";db=" + file_digest(o.db_path) +
+         ";top=" + std::to_string(o.scene.top_n) + ";max_objects=" + std::to_string(o.scene.max_objects) +
+         ";max_window_points=" + std::to_string(o.scene.max_tile_points);
+}
+
+bool read_text(const std::string& path, std::string* text) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream s;
+  s << in.rdbuf();
+  *text = s.str();
+  return true;
+}
+
+// The stored result of a task, when it exists and was made from the same inputs.
+bool load_result(const std::string& out_dir, const SurveyTask& task, TileResult* r) {
+  std::string text, error;
+  return read_text(result_path(out_dir, task.tile.name), &text) && parse_result_text(text, r, &error) &&
+         r->key == task.key;
+}
+
+std::string manifest_json(const PreparedSurvey& s, const std::vector<bool>& done) {
+  std::string tiles;
+  for (size_t i = 0; i < s.tasks.size(); ++i)
+    tiles +=
+        (tiles.empty() ? "\n  " : ",\n  ") + std::string("{\"tile\":") + json_string(s.tasks[i].tile.name) +
+        ",\"path\":" + json_string(s.tasks[i].tile.path) + ",\"done\":" + (done[i] ? "true" : "false") +
+        ",\"result\":" + json_string(std::string(kResultsFolder) + "/" + s.tasks[i].tile.name + ".result") +
+        "}";
+  return "{\"database\":" + json_string(s.options.db_path) +
+         ",\"buffer_m\":" + pipeline::json_number(s.options.buffer) +
+         ",\"crs\":" + json_string(s.catalogue.crs.describe()) + ",\"tiles\":[" + tiles + "\n]}\n";
+}
+
+bool write_manifest(const PreparedSurvey& s, const std::vector<bool>& done, std::string* error) {
+  const std::string text = manifest_json(s, done);
+  return host::write_file_atomically(s.options.out_dir + "/manifest.json", text.data(), text.size(), error);
+}
+
+}  // namespace
+
+SceneConfig default_survey_scene() {
+  SceneConfig c;
+  c.recognizer.ground_clearance = 0.0f;  // the scene's terrain classifier removes the ground
+  c.max_tile_points = 0;                 // sized per tile from its density (tile_stream.hpp)
+  return c;
+}
+
+std::string result_path(const std::string& out_dir, const std::string& tile_name) {
+  return out_dir + "/" + kResultsFolder + "/" + tile_name + ".result";
+}
+
+bool store_result(const std::string& out_dir, const TileResult& result, std::string* error) {
+  const std::string text = result_text(result);
+  return host::write_file_atomically(result_path(out_dir, result.name), text.data(), text.size(), error);
+}
+
+bool prepare_survey(const SurveyOptions& options, const std::vector<std::string>& args, PreparedSurvey* out,
+                    std::string* error) {
+  PreparedSurvey s;
+  s.options = options;
+  std::vector<std::string> paths;
+  if (!expand_tile_arguments(args, &paths, error)) return false;
+  s.catalogue = read_catalogue(paths);
+  if (!check_catalogue(s.catalogue, error)) return false;
+  for (const CatalogueTile& t : s.catalogue.tiles)
+    if (!t.error.empty()) s.refused.push_back({t.name, t.path, t.error});
+  std::error_code ec;
+  const std::string results = options.out_dir + "/" + kResultsFolder;
+  fs::create_directories(results, ec);
+  if (ec) {
+    *error = "cannot make " + results + ": " + ec.message();
+    return false;
+  }
+  if (!options.resume) remove_results(results);
+  s.tasks = plan_survey(s.catalogue, options.buffer, settings_key(options));
+  if (!s.tasks.empty() && !s.tasks[0].crs.empty()) {
+    try {
+      const ToWgs84 probe(s.tasks[0].crs);  // refused now rather than on every tile
+    } catch (const std::exception& e) {
+      *error = e.what();
+      return false;
+    }
+  }
+  for (const SurveyTask& t : s.tasks) {
+    TileResult r;
+    s.done.push_back(options.resume && load_result(options.out_dir, t, &r));
+  }
+  if (!write_manifest(s, s.done, error)) return false;
+  *out = std::move(s);
+  return true;
+}
+
+int finish_survey(const PreparedSurvey& s, const std::vector<Refusal>& failed, double wall_s,
+                  std::string* error) {
+  std::vector<TileResult> results;
+  std::vector<bool> done(s.tasks.size(), false);
+  bool all_ok = s.refused.empty() && failed.empty();
+  for (size_t i = 0; i < s.tasks.size(); ++i) {
+    TileResult r;
+    if (!load_result(s.options.out_dir, s.tasks[i], &r)) {
+      all_ok = false;
+      continue;
+    }
+    all_ok = all_ok && r.status == "ok";
+    done[i] = true;
+    results.push_back(std::move(r));
+  }
+  SurveyReport report;
+  report.database = s.options.db_path;
+  report.buffer = s.options.buffer;
+  report.jobs = s.options.jobs;
+  report.tiles_total = static_cast<uint32_t>(s.catalogue.tiles.size());
+  for (bool d : s.done) report.tiles_resumed += d ? 1u : 0u;
+  report.wall_s = wall_s;
+  report.refused = s.refused;
+  report.refused.insert(report.refused.end(), failed.begin(), failed.end());
+  if (!write_survey_outputs(s.options.out_dir, s.catalogue, results, report, error) ||
+      !write_manifest(s, done, error))
+    return pipeline::kExitError;
+  return all_ok ? pipeline::kExitOk : pipeline::kExitCheckFailed;
+}
+
+int run_survey(const SurveyOptions& options, const std::vector<std::string>& args) {
+  const auto t0 = std::chrono::steady_clock::now();
+  PreparedSurvey s;
+  std::string error;
+  pipeline::DatabaseFile db;
+  if (!pipeline::load_database(options.db_path, &db, &error) || !prepare_survey(options, args, &s, &error)) {
+    std::fprintf(stderr, "spinhash survey: %s\n", error.c_str());
+    return pipeline::kExitError;
+  }
+  std::vector<size_t> todo;
+  for (size_t i = 0; i < s.tasks.size(); ++i)
+    if (!s.done[i]) todo.push_back(i);
+  SurveyProgress progress(static_cast<uint32_t>(s.tasks.size()),
+                          static_cast<uint32_t>(s.tasks.size() - todo.size()), options.quiet);
+  std::vector<Refusal> failed;
+  std::mutex failed_mutex;
+  std::atomic<size_t> next{0};
+  const auto worker = [&]() {
+    for (size_t k; (k = next++) < todo.size();) {
+      const SurveyTask& task = s.tasks[todo[k]];
+      std::string why;
+      try {
+        const TileResult r = run_task(db.db, task, options.scene);
+        if (store_result(options.out_dir, r, &why)) {
+          progress.tile_done(r.points_tile);
+          continue;
+        }
+      } catch (const std::exception& e) {
+        why = e.what();
+      }
+      std::lock_guard<std::mutex> lock(failed_mutex);
+      failed.push_back({task.tile.name, task.tile.path, why});
+      std::fprintf(stderr, "spinhash survey: %s: %s\n", task.tile.name.c_str(), why.c_str());
+      progress.tile_done(0);
+    }
+  };
+  const unsigned jobs = options.jobs > 0 ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> threads;
+  for (unsigned j = 0; j < std::min<size_t>(jobs, std::max<size_t>(todo.size(), 1)); ++j)
+    threads.emplace_back(worker);
+  for (std::thread& t : threads) t.join();
+  std::sort(failed.begin(), failed.end(), [](const Refusal& a, const Refusal& b) { return a.path < b.path; });
+  s.options.jobs = jobs;
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const int code = finish_survey(s, failed, wall, &error);
+  if (code == pipeline::kExitError) std::fprintf(stderr, "spinhash survey: %s\n", error.c_str());
+  for (const Refusal& r : s.refused)
+    std::fprintf(stderr, "spinhash survey: refused %s: %s\n", r.path.c_str(), r.reason.c_str());
+  if (code != pipeline::kExitError)
+    std::fprintf(stderr,
+                 "spinhash survey: wrote "
+                 "%s/{detections.jsonl,detections.geojson,detections.gpkg,overview.png,survey.json}\n",
+                 options.out_dir.c_str());
+  return code;
+}
+
+}  // namespace spinhash::survey

@@ -1,0 +1,86 @@
+#include "survey/tile_run.hpp"
+
+#include <chrono>
+#include <memory>
+
+#include "pipeline/json_line.hpp"
+#include "pipeline/object_box.hpp"
+#include "pipeline/object_json.hpp"
+#include "pipeline/recognition_session.hpp"
+#include "pipeline/status_word.hpp"
+#include "pipeline/tile_stream.hpp"
+#include "pipeline/version.hpp"
+#include "survey/buffered_source.hpp"
+#include "survey/footprint.hpp"
+
+namespace spinhash::survey {
+namespace {
+
+using pipeline::json_string;
+
+// The survey's members: the scene's, then the CRS, the native footprint and
+// the version. The JSON line, the GeoJSON properties and the GeoPackage's
+// columns all come from this one list.
+std::vector<pipeline::JsonMember> survey_members(const SurveyTask& task, uint32_t k, const Database& db,
+                                                 const SceneObject& o) {
+  std::vector<pipeline::JsonMember> m = pipeline::object_members(task.tile.name, k, db, o);
+  m.push_back({"crs", json_string(task.crs_name)});
+  m.push_back({"footprint", "[" + ring_json(footprint(o), kNativeDigits) + "]"});
+  m.push_back({"version", json_string(pipeline::version())});
+  return m;
+}
+
+std::string feature_json(const std::vector<pipeline::JsonMember>& members, const SceneObject& o,
+                         const ToWgs84* to_wgs84) {
+  const Ring native = footprint(o);
+  const std::string ring =
+      to_wgs84 ? ring_json(to_wgs84->transform(native), kLonLatDigits) : ring_json(native, kNativeDigits);
+  return "{\"type\":\"Feature\",\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[" + ring +
+         "]},\"properties\":" + pipeline::members_json(members) + "}";
+}
+
+void count(TileResult& r, const Database& db, const SceneObject& o) {
+  ++r.kinds[object_kind_name(o.kind)];
+  if (o.kind != ObjectKind::kVehicleCandidate || o.ranking_count == 0) return;
+  ModelCount& m = r.models[pipeline::model_name(db, o.ranking[0].model)];
+  ++m.candidates;
+  m.confident += o.confident ? 1u : 0u;
+}
+
+}  // namespace
+
+TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfig& scene) {
+  const auto t0 = std::chrono::steady_clock::now();
+  TileResult r;
+  r.index = task.index, r.name = task.tile.name, r.path = task.tile.path, r.key = task.key;
+  std::unique_ptr<ToWgs84> to_wgs84 = task.crs.empty() ? nullptr : std::make_unique<ToWgs84>(task.crs);
+  BufferedSource source(task);
+  pipeline::TileStreamOptions options;
+  options.scene = scene;
+  options.own_given = true;  // what the tile might own; owner_of decides among its neighbours
+  const Rect own = task.tile.core.grown(kGapTolerance);
+  std::copy(own.min, own.min + 2, options.own_min);
+  std::copy(own.max, own.max + 2, options.own_max);
+  const pipeline::ObjectCallback keep = [&](const SceneObject& o) {
+    const TaskTile* owner = owner_of(task, o.center[0], o.center[1]);
+    if (owner != &task.tile) {
+      ++(owner == nullptr ? r.objects_in_holes : r.objects_not_owned);
+      return;
+    }
+    const auto members = survey_members(task, static_cast<uint32_t>(r.lines.size()), db, o);
+    r.lines.push_back(pipeline::members_json(members));
+    if (o.kind == ObjectKind::kVehicleCandidate)
+      r.features.push_back(feature_json(members, o, to_wgs84.get()));
+    count(r, db, o);
+    r.boxes.push_back(pipeline::object_box(db, o));
+  };
+  const pipeline::TileStreamResult s = pipeline::stream_tile(db, source, options, keep);
+  r.status = pipeline::status_word(s.status);
+  r.points_tile = source.tile_points(), r.points_buffer = source.buffer_points();
+  r.objects_not_owned += s.objects_not_owned;
+  r.read_ms = s.read_ms, r.stream_ms = s.stream_ms;
+  r.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace spinhash::survey

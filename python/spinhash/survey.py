@@ -1,0 +1,156 @@
+"""A whole survey of adjacent tiles on Dask: one task per tile, with its
+neighbours' buffer, each object reported by the tile that owns it; the same
+outputs as ``spinhash survey`` (docs/survey.md).
+
+    python3 -m spinhash.survey --db DB.shdb --out DIR [--workers N | --scheduler tcp://HOST:8786] TILE...
+
+Paths travel to the workers, points do not: every worker reads its tiles
+itself (they must be readable at the same paths there) and opens the
+database once. The client stores each tile's result in DIR/tile-results/ as it
+comes (atomically), so an interrupted run loses nothing; ``resume=True``
+skips the tiles done. The outputs (detections.jsonl, detections.geojson,
+detections.gpkg, survey.json) are written by the same C++ code as the CLI's.
+"""
+import argparse
+import contextlib
+import json
+import os
+import sys
+import uuid
+import warnings
+
+from . import _spinhash
+
+DEFAULT_BUFFER = 40.0  # m: half the longest vehicle + the terrain filter's reach (docs/survey.md)
+DEFAULT_RETRIES = 3  # a task that raises is tried again this many times (a worker that dies: Dask reschedules)
+EXIT_OK, EXIT_ERROR, EXIT_USAGE, EXIT_CHECK_FAILED = 0, 1, 2, 3  # as `spinhash survey` (docs/cli.md)
+
+_databases = {}  # per worker process: path -> spinhash.Database, opened once
+
+
+def _database(path):
+    db = _databases.get(path)
+    if db is None:
+        db = _databases[path] = _spinhash.Database(path)
+    return db
+
+
+def run_tile(db_path, task, top_n=5, max_objects=256):
+    """One tile's task on a worker: its result as text (stored by the client)."""
+    return _spinhash._survey_run_task(_database(db_path), task, top_n, max_objects)
+
+
+def _local_client(workers):
+    from distributed import Client, LocalCluster
+    cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
+                           dashboard_address=None)
+    return Client(cluster)
+
+
+def _collect(client, survey, futures, names, show_progress):
+    """Stores each result as it comes; (name, path, reason) of the tiles that failed for good."""
+    from distributed import as_completed, progress
+    if show_progress and futures:
+        with contextlib.redirect_stdout(sys.stderr):  # progress on stderr, as the CLI's
+            progress(futures, notebook=False)
+        print(file=sys.stderr)
+    failed = []
+    for future in as_completed(futures):
+        name, path = names[future.key]
+        try:
+            survey.store(future.result())
+        except Exception as error:  # noqa: BLE001  (an unreadable tile, a worker lost too often)
+            failed.append((name, path, f"{type(error).__name__}: {error}"))
+    return sorted(failed, key=lambda f: f[1])
+
+
+def run(db_path, tiles, out_dir, client=None, *, workers=None, buffer=DEFAULT_BUFFER, resume=False, top_n=5,
+        max_objects=256, retries=DEFAULT_RETRIES, progress=True, geodataframe=True):
+    """Runs the survey of `tiles` (files or folders) into `out_dir`.
+
+    client: a distributed.Client (None: a local cluster of `workers` processes).
+    Returns the detections as a geopandas GeoDataFrame with the CRS set (the
+    tiles' CRS; a local engineering CRS when they declare none), with
+    ``attrs["survey"]`` (survey.json) and ``attrs["exit_status"]`` (0, or 3
+    when tiles were refused or failed: survey.json says why); None when
+    geodataframe is False. ValueError for inputs the survey refuses (tiles
+    that do not share a CRS, no tile, ...)."""
+    db_path = os.path.abspath(db_path)
+    out_dir = os.path.abspath(out_dir)
+    os.makedirs(out_dir, exist_ok=True)
+    survey = _spinhash._survey_prepare(db_path, [os.path.abspath(t) for t in tiles], out_dir, buffer, resume,
+                                       top_n, max_objects)
+    own_client = client is None
+    if own_client:
+        client = _local_client(workers)
+    try:
+        token = uuid.uuid4().hex[:8]
+        names, futures = {}, []
+        for name, path, task in survey.pending():
+            key = f"spinhash-tile-{name}-{token}"
+            names[key] = (name, path)
+            futures.append(client.submit(run_tile, db_path, task, top_n, max_objects, key=key, retries=retries,
+                                         pure=False))
+        failed = _collect(client, survey, futures, names, progress)
+    finally:
+        if own_client:
+            cluster = client.cluster
+            client.close()
+            cluster.close()
+    status = survey.finish(failed)
+    for name, path, reason in failed + list(survey.refused):
+        warnings.warn(f"spinhash.survey: {path}: {reason}", RuntimeWarning, stacklevel=2)
+    if not geodataframe:
+        return None
+    return _geodataframe(out_dir, status)
+
+
+def _geodataframe(out_dir, status):
+    import geopandas
+    frame = geopandas.read_file(os.path.join(out_dir, "detections.gpkg"), layer="detections")
+    with open(os.path.join(out_dir, "survey.json"), encoding="utf-8") as f:
+        frame.attrs["survey"] = json.load(f)
+    frame.attrs["exit_status"] = status
+    return frame
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="python3 -m spinhash.survey", description=__doc__.split("\n\n")[0])
+    parser.add_argument("--db", required=True, help="database file (readable by every worker at this path)")
+    parser.add_argument("--out", required=True, help="output folder, on the client")
+    where = parser.add_mutually_exclusive_group()
+    where.add_argument("--workers", type=int, help="local worker processes (default: every core)")
+    where.add_argument("--scheduler", help="a running Dask scheduler, tcp://HOST:8786")
+    parser.add_argument("--buffer", type=float, default=DEFAULT_BUFFER, help="m of the neighbours' points (40)")
+    parser.add_argument("--resume", action="store_true", help="keep the tiles a previous run in OUT finished")
+    parser.add_argument("--retries", type=int, default=DEFAULT_RETRIES, help="tries again for a failed task")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    parser.add_argument("tiles", nargs="+", help="tiles (LAS, LAZ, PLY, text) or folders of them")
+    args = parser.parse_args(argv)
+    if args.workers is not None and args.workers < 1:
+        parser.error("--workers must be at least 1")
+    client = None
+    try:
+        if args.scheduler:
+            from distributed import Client
+            client = Client(args.scheduler)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            frame = run(args.db, args.tiles, args.out, client, workers=args.workers, buffer=args.buffer,
+                        resume=args.resume, retries=args.retries, progress=not args.quiet)
+    except (ValueError, OSError, RuntimeError) as error:
+        print(f"spinhash.survey: {error}", file=sys.stderr)
+        return EXIT_ERROR
+    finally:
+        if client is not None:
+            client.close()
+    report = frame.attrs["survey"]
+    for refused in report["refused"]:
+        print(f"spinhash.survey: refused {refused['path']}: {refused['reason']}", file=sys.stderr)
+    print(f"spinhash.survey: {len(frame)} vehicle candidates from {report['tiles_done']} of "
+          f"{report['tiles_total']} tiles; wrote {args.out}/detections.gpkg and the rest", file=sys.stderr)
+    return frame.attrs["exit_status"]
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,130 @@
+// The C++ survey for spinhash.survey (python/spinhash/survey.py): prepare
+// (catalogue, plan, resume) and finish (the outputs) on the client, and one
+// tile's task on a worker, with the very code `spinhash survey` runs, so the
+// results are the same byte for byte.
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "cloud/point_source.hpp"
+#include "pipeline/exit_codes.hpp"
+#include "py_database.hpp"
+#include "survey/survey_runner.hpp"
+#include "survey/tile_run.hpp"
+
+namespace py = pybind11;
+
+namespace spinhash::python {
+namespace {
+
+constexpr uint32_t kMaxTopN = 64, kMaxObjects = 1u << 16;  // as `spinhash survey`'s --top and --max-objects
+
+SceneConfig survey_scene(uint32_t top_n, uint32_t max_objects) {
+  if (top_n < 1 || top_n > kMaxTopN) throw py::value_error("top_n must be in [1, 64]");
+  if (max_objects < 1 || max_objects > kMaxObjects)
+    throw py::value_error("max_objects must be in [1, 65536]");
+  SceneConfig c = survey::default_survey_scene();
+  c.top_n = top_n, c.max_objects = max_objects;
+  return c;
+}
+
+class PySurvey {
+ public:
+  explicit PySurvey(survey::PreparedSurvey s) : s_(std::move(s)), start_(std::chrono::steady_clock::now()) {}
+
+  // (name, path, task text) of every tile not done yet, in path order.
+  std::vector<std::tuple<std::string, std::string, std::string>> pending() const {
+    std::vector<std::tuple<std::string, std::string, std::string>> v;
+    for (size_t i = 0; i < s_.tasks.size(); ++i)
+      if (!s_.done[i])
+        v.emplace_back(s_.tasks[i].tile.name, s_.tasks[i].tile.path, survey::task_text(s_.tasks[i]));
+    return v;
+  }
+
+  void store(const std::string& text) const {
+    survey::TileResult r;
+    std::string error;
+    if (!survey::parse_result_text(text, &r, &error)) throw py::value_error("survey result: " + error);
+    if (!survey::store_result(s_.options.out_dir, r, &error)) throw std::runtime_error(error);
+  }
+
+  int finish(const std::vector<std::tuple<std::string, std::string, std::string>>& failed) const {
+    std::vector<survey::Refusal> f;
+    for (const auto& t : failed) f.push_back({std::get<0>(t), std::get<1>(t), std::get<2>(t)});
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    std::string error;
+    const int code = survey::finish_survey(s_, f, wall, &error);
+    if (code == pipeline::kExitError) throw std::runtime_error(error);
+    return code;
+  }
+
+  size_t tiles() const { return s_.catalogue.tiles.size(); }
+  std::string crs() const { return s_.catalogue.crs.proj_definition(); }
+  std::vector<std::tuple<std::string, std::string, std::string>> refused() const {
+    std::vector<std::tuple<std::string, std::string, std::string>> v;
+    for (const survey::Refusal& r : s_.refused) v.emplace_back(r.tile, r.path, r.reason);
+    return v;
+  }
+
+ private:
+  survey::PreparedSurvey s_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+std::unique_ptr<PySurvey> prepare(const std::string& db_path, const std::vector<std::string>& tiles,
+                                  const std::string& out_dir, double buffer, bool resume, uint32_t top_n,
+                                  uint32_t max_objects) {
+  if (!(buffer >= survey::kMinBuffer && buffer <= survey::kMaxBuffer))
+    throw py::value_error("buffer must be in [0, 1000] m");
+  survey::SurveyOptions o;
+  o.db_path = db_path, o.out_dir = out_dir, o.buffer = buffer, o.resume = resume;
+  o.scene = survey_scene(top_n, max_objects);
+  survey::PreparedSurvey s;
+  std::string error;
+  if (!survey::prepare_survey(o, tiles, &s, &error)) throw py::value_error("survey: " + error);
+  return std::make_unique<PySurvey>(std::move(s));
+}
+
+std::string run_task(const std::shared_ptr<PyDatabase>& db, const std::string& task_text, uint32_t top_n,
+                     uint32_t max_objects) {
+  if (!db) throw py::type_error("survey_run_task needs a spinhash.Database");
+  const SceneConfig scene = survey_scene(top_n, max_objects);
+  survey::SurveyTask task;
+  std::string error;
+  if (!survey::parse_task_text(task_text, &task, &error)) throw py::value_error("survey task: " + error);
+  py::gil_scoped_release unlocked;
+  try {
+    return survey::result_text(survey::run_task(db->file.db, task, scene));
+  } catch (const host::CloudError& e) {
+    py::gil_scoped_acquire locked;
+    PyErr_SetString(PyExc_OSError, e.what());
+    throw py::error_already_set();
+  }
+}
+
+}  // namespace
+
+void bind_survey(py::module_& m) {
+  py::class_<PySurvey>(m, "_Survey", "a prepared survey (spinhash.survey drives it)")
+      .def("pending", &PySurvey::pending, "(name, path, task) of each tile left to run, in path order")
+      .def("store", &PySurvey::store, py::arg("result"), "stores a tile's result atomically in OUT/tiles/")
+      .def("finish", &PySurvey::finish, py::arg("failed"),
+           "writes the outputs from the stored results; the exit status of `spinhash survey`")
+      .def_property_readonly("tiles", &PySurvey::tiles)
+      .def_property_readonly("crs", &PySurvey::crs, "the tiles' PROJ definition ('' when unknown)")
+      .def_property_readonly("refused", &PySurvey::refused,
+                             "(name, path, reason) of tiles whose header failed");
+  m.def("_survey_prepare", &prepare, py::arg("db_path"), py::arg("tiles"), py::arg("out_dir"),
+        py::arg("buffer") = survey::kDefaultBuffer, py::arg("resume") = false, py::arg("top_n") = 5u,
+        py::arg("max_objects") = 256u);
+  m.def("_survey_run_task", &run_task, py::arg("db"), py::arg("task"), py::arg("top_n") = 5u,
+        py::arg("max_objects") = 256u,
+        "one survey task (its tile with the neighbours' buffer): the tile's result as text. OSError when the "
+        "tile or a neighbour cannot be read.");
+}
+
+}  // namespace spinhash::python

@@ -1,0 +1,163 @@
+"""spinhash.survey on a real Dask cluster: a `dask-scheduler` and two
+`dask-worker` processes on 127.0.0.1 (nothing beyond loopback). A generated
+scene cut into 2 x 2 tiles gives the same files as `spinhash survey`; a
+worker killed in the middle of a run loses and duplicates nothing."""
+import json
+import os
+import signal
+import socket
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import spinhash
+from spinhash import survey
+
+from conftest import run_cli
+
+pytest.importorskip("distributed")
+pytest.importorskip("geopandas")
+
+CENTRE = (512000.0, 5400000.0)  # scan-scene's default offset: the scene's centre, where the tiles meet
+OUTPUTS = ("detections.jsonl", "detections.geojson")
+STARTUP_S = 60  # a scheduler and its workers come up within this on a loaded 2-core CI machine
+PROCESSES_EXIT_S = 10
+
+
+@pytest.fixture(scope="module")
+def tiles(fleet, tmp_path_factory):
+    """A 64 m scene of 10 vehicles cut into 2 x 2 text tiles at its centre (millimetres, as LAS keeps)."""
+    root = tmp_path_factory.mktemp("survey")
+    scene = root / "scene.las"
+    run_cli("scan-scene", fleet.meshes, "-o", scene, "--size", 64, "--vehicles", 10, "--trees", 2, "--seed", 5)
+    points = spinhash.read_cloud(str(scene))
+    folder = root / "tiles"
+    folder.mkdir()
+    for i in range(2):
+        for j in range(2):
+            keep = ((points[:, 0] >= CENTRE[0]) == bool(i)) & ((points[:, 1] >= CENTRE[1]) == bool(j))
+            np.savetxt(folder / f"t{i}{j}.xyz", points[keep], fmt="%.3f")
+    return folder
+
+
+@pytest.fixture(scope="module")
+def cli_out(fleet, tiles, tmp_path_factory):
+    out = tmp_path_factory.mktemp("cli") / "out"
+    run_cli("survey", "--quiet", "--jobs", 2, "--db", fleet.db, "--out", out, tiles)
+    assert len(vehicles(out)) >= 8
+    return out
+
+
+def vehicles(out):
+    lines = [json.loads(line) for line in (out / "detections.jsonl").read_text().splitlines()]
+    return [o for o in lines if o["kind"] == "vehicle"]
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+class Cluster:
+    """A scheduler and two workers (no nanny: a killed worker stays dead), as separate processes."""
+
+    def __init__(self, log_dir):
+        self.address = f"tcp://127.0.0.1:{free_port()}"
+        self.logs = []
+        self.scheduler = self._start(log_dir, "scheduler", ["dask-scheduler", "--host", "127.0.0.1", "--port",
+                                                            self.address.rsplit(":", 1)[1], "--no-dashboard"])
+        self.workers = [self._start(log_dir, f"worker{k}",
+                                    ["dask-worker", self.address, "--host", "127.0.0.1", "--nthreads", "1",
+                                     "--no-nanny", "--no-dashboard", "--name", f"w{k}"]) for k in range(2)]
+        from distributed import Client
+        self.client = Client(self.address, timeout=STARTUP_S)
+        self.client.wait_for_workers(2, timeout=STARTUP_S)
+
+    def _start(self, log_dir, name, argv):
+        log = open(log_dir / f"{name}.log", "w")
+        self.logs.append(log)
+        return subprocess.Popen(argv, stdout=log, stderr=subprocess.STDOUT, env=os.environ.copy())
+
+    def close(self):
+        self.client.close()
+        for p in self.workers + [self.scheduler]:
+            if p.poll() is None:
+                p.send_signal(signal.SIGINT)
+        for p in self.workers + [self.scheduler]:
+            try:
+                p.wait(PROCESSES_EXIT_S)
+            except subprocess.TimeoutExpired:
+                p.kill()
+                p.wait()
+        for log in self.logs:
+            log.close()
+
+
+@pytest.fixture
+def cluster(tmp_path):
+    c = Cluster(tmp_path)
+    yield c
+    c.close()
+
+
+def test_the_module_on_a_real_scheduler_gives_the_cli_files(fleet, tiles, cli_out, cluster, tmp_path):
+    out = tmp_path / "dask"
+    status = survey.main(["--db", str(fleet.db), "--out", str(out), "--scheduler", cluster.address, "--quiet",
+                          str(tiles)])
+    assert status == 0
+    for name in OUTPUTS:
+        assert (out / name).read_bytes() == (cli_out / name).read_bytes(), name
+    report = json.loads((out / "survey.json").read_text())
+    assert report["tiles_done"] == 4 and report["refused"] == []
+
+
+def test_a_worker_killed_mid_run_loses_and_duplicates_nothing(fleet, tiles, cli_out, cluster, tmp_path):
+    out = tmp_path / "dask"
+    result = {}
+
+    def run():
+        result["frame"] = survey.run(str(fleet.db), [str(tiles)], str(out), cluster.client, progress=False)
+
+    runner = threading.Thread(target=run)
+    runner.start()
+    victim = cluster.workers[0]
+    deadline = time.monotonic() + STARTUP_S
+    while time.monotonic() < deadline:  # kill it while it works on a tile
+        busy = cluster.client.processing()
+        if any(tasks for address, tasks in busy.items() if cluster.client.scheduler_info()["workers"]
+               .get(address, {}).get("name") == "w0"):
+            break
+        time.sleep(0.05)
+    else:
+        pytest.fail("worker w0 never got a tile")
+    victim.kill()
+    victim.wait()
+    runner.join(timeout=300)
+    assert not runner.is_alive()
+    for name in OUTPUTS:
+        assert (out / name).read_bytes() == (cli_out / name).read_bytes(), name
+    frame = result["frame"]
+    assert frame.crs is not None  # the tiles declare none: the local engineering CRS, not WGS 84
+    assert len(frame) == len(json.loads((out / "detections.geojson").read_text())["features"])
+    assert frame.attrs["exit_status"] == 0
+    centres = [tuple(np.round(v["center"][:2], 3)) for v in vehicles(out)]
+    assert len(centres) == len(set(centres))  # each vehicle once
+
+
+def test_bad_input_is_refused_with_a_clear_error(fleet, tmp_path):
+    with pytest.raises(ValueError, match="no such file"):
+        survey.run(str(fleet.db), [str(tmp_path / "missing.las")], str(tmp_path / "out"), client=object())
+    assert survey.main(["--db", str(fleet.db), "--out", str(tmp_path / "o"), str(tmp_path / "missing.las")]) == 1
+    with pytest.raises(SystemExit):
+        survey.main(["--db", "x", "--out", "y", "--workers", "2", "--scheduler", "tcp://127.0.0.1:1", "t.las"])
+
+
+def test_the_package_keeps_the_extension_s_names():
+    assert spinhash.Database is spinhash._spinhash.Database
+    assert spinhash.__version__ == spinhash._spinhash.__version__
+    assert callable(survey.run) and sys.modules["spinhash.survey"] is survey
