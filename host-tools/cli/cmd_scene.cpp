@@ -64,17 +64,21 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
   options.picture_points = a.picture_dir.empty() ? 0u : kPicturePoints;
   std::vector<host::PictureBox> boxes;
   uint32_t index = 0, confident = 0;
+  std::string crs;  // the file's CRS on every line (empty: it declares none)
   const auto start = std::chrono::steady_clock::now();
   const pipeline::ObjectCallback print = [&](const SceneObject& o) {
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::printf("%s\n", pipeline::object_json(name, index++, file.db, o, ms).c_str());
+    std::printf("%s\n", pipeline::object_json(name, index++, file.db, o, crs, ms).c_str());
     if (!a.picture_dir.empty()) boxes.push_back(pipeline::object_box(file.db, o));
     confident += o.confident ? 1u : 0u;
   };
   pipeline::TileStreamResult r;
   try {
     std::unique_ptr<host::PointSource> source = host::open_point_source(path);
+    if (source->header().crs.known()) crs = source->header().crs.describe();
+    for (const std::string& w : source->header().crs.warnings)
+      std::fprintf(stderr, "spinhash scene: %s: CRS: %s\n", name.c_str(), w.c_str());
     r = pipeline::stream_tile(file.db, *source, options, print);
   } catch (const std::exception& e) {
     std::fflush(stdout);
@@ -85,11 +89,12 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
   const std::string lost = lost_text(r.stats);
   std::fprintf(
       stderr,
-      "spinhash scene: %s: %s; %s; %llu windows in %u bands, workspace %.1f MB; read %.1f ms, stream "
-      "%.1f ms%s%s\n",
-      name.c_str(), status_name(r.status), pipeline::scene_stats_text(r.stats.scene).c_str(),
-      static_cast<unsigned long long>(r.stats.windows), r.bands, r.workspace_bytes / 1e6, r.read_ms,
-      r.stream_ms, lost.empty() ? "" : "; not answered: ", lost.c_str());
+      "spinhash scene: %s: %s; CRS %s; %s; %llu windows in %u bands, workspace %.1f MB; read %.1f ms, "
+      "stream %.1f ms%s%s\n",
+      name.c_str(), status_name(r.status), crs.empty() ? "unknown (the file's own coordinates)" : crs.c_str(),
+      pipeline::scene_stats_text(r.stats.scene).c_str(), static_cast<unsigned long long>(r.stats.windows),
+      r.bands, r.workspace_bytes / 1e6, r.read_ms, r.stream_ms,
+      lost.empty() ? "" : "; not answered: ", lost.c_str());
   int exit_code = r.status == Status::kOk ? kExitOk : kExitCheckFailed;
   std::string error;
   if (!a.picture_dir.empty() && !write_picture(a, name, r.picture_xyz, boxes, confident, &error)) {

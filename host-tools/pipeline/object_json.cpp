@@ -53,6 +53,7 @@ std::vector<JsonMember> object_members(const std::string& tile, uint32_t k, cons
       {"points", std::to_string(o.points)},
       {"center", triple_json(o.center, 15)},
       {"extent", triple_json(extent, 4)},
+      {"heading_deg", json_number(o.heading_deg, 5)},
   };
 }
 
@@ -63,8 +64,9 @@ std::string members_json(const std::vector<JsonMember>& members) {
 }
 
 std::string object_json(const std::string& tile, uint32_t k, const Database& db, const SceneObject& o,
-                        double time_ms) {
+                        const std::string& crs, double time_ms) {
   std::vector<JsonMember> members = object_members(tile, k, db, o);
+  members.push_back({"crs", crs.empty() ? std::string("null") : json_string(crs)});
   members.push_back({"time_ms", json_number(time_ms, 6)});
   members.push_back({"version", json_string(version())});
   return members_json(members);

@@ -17,16 +17,19 @@ struct JsonMember {
 };
 
 // "tile", "object", "kind", "status", "model", "confident", "group_size",
-// "score", "ranking", "pose", "ground_gap", "points", "center", "extent".
+// "score", "ranking", "pose", "ground_gap", "points", "center", "extent",
+// "heading_deg".
 std::vector<JsonMember> object_members(const std::string& tile, uint32_t k, const Database& db,
                                        const SceneObject& o);
 
 // {"key":value,...} in the members' order.
 std::string members_json(const std::vector<JsonMember>& members);
 
-// `scene`'s line: the object's members, then "time_ms" and "version".
+// `scene`'s line: the object's members, then "crs" (the tile's, as
+// Crs::describe() names it; null when the file declares none), "time_ms"
+// and "version".
 std::string object_json(const std::string& tile, uint32_t k, const Database& db, const SceneObject& o,
-                        double time_ms);
+                        const std::string& crs, double time_ms);
 
 // A pose as 16 numbers, row-major 4x4 (translation with 15 digits: georeferenced).
 std::string pose_json(const Pose& p);
