@@ -6,6 +6,7 @@
 #include "match/likelihood.hpp"
 #include "match/oriented_point.hpp"
 #include "spinhash/blob_format.hpp"
+#include "spinhash/database.hpp"
 #include "spinhash/recognizer.hpp"
 
 namespace spinhash {
@@ -41,5 +42,28 @@ float residual_limit(const Result& r, const RecognizerConfig& cfg);
 // residual_structure(), at most residual_limit()).
 bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
                   float residual_f);
+
+// How densely the scan samples a vehicle the size of `model`: the object's
+// points (after terrain removal) per m^2 of the model box's top (x by y).
+float scan_density(const ExtractStats& s, const blob::ModelRecord& model);
+
+// Whether a scan this dense carries the evidence to name one model
+// (kMinModelDensity): a sparse survey tells a car from a bus, not one sedan
+// from another.
+bool dense_enough_for_model(float density);
+
+// The classes of r's ranking, each scored by its first model in the ranking
+// (its best but for the twins order_twins_by_residuals swaps), best first
+// (ties by class id); returns how many (at most kVehicleClassCount).
+uint32_t rank_classes(const Database& db, const Result& r, RankedClass* out);
+
+// The first class stands alone: its best model explains the query as
+// is_confident() asks (inliers, log-likelihood), the scan does not reach
+// beyond that model's box by more than the class allows (`fit`), the next
+// class scores at least min_margin x sqrt(features) lower, the database
+// holds a second class to tell it from, the class is not "unclassified",
+// and the scan is dense enough (kMinClassDensity) with kMinClassFeatures.
+bool is_class_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
+                        float density);
 
 }  // namespace spinhash

@@ -72,7 +72,8 @@ std::string object_json(const std::string& tile, uint32_t k, const Database& db,
       ",\"kind\":" + json_string(object_kind_name(o.kind)) + ",\"status\":\"" + status_word(o.status) +
       "\",\"model\":" + (ranked ? json_string(pipeline::model_name(db, o.ranking[0].model)) : "null") +
       ",\"confident\":" + (o.confident ? "true" : "false") +
-      ",\"group_size\":" + std::to_string(o.group_size) +
+      ",\"group_size\":" + std::to_string(o.group_size) + "," +
+      class_json(db, o.classes, o.class_count, o.class_confident) +
       ",\"score\":" + (ranked ? json_number(o.ranking[0].score) : "null") + ",\"ranking\":[";
   for (uint32_t j = 0; j < o.ranking_count; ++j)
     s += std::string(j ? "," : "") +

@@ -1,6 +1,7 @@
 #include "cli/result_json.hpp"
 
 #include "cli/json_line.hpp"
+#include "cli/report_keys.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/status_word.hpp"
 #include "spinhash/config_fields.h"
@@ -38,6 +39,21 @@ std::string stats_json(const RecognitionStats& st) {
 
 }  // namespace
 
+std::string class_json(const Database& db, const RankedClass* ranking, uint32_t count, bool confident) {
+  namespace k = class_keys;
+  std::string s = json_member(
+      k::kClass, count > 0 ? json_string(vehicle_class_name(ranking[0].vehicle_class)) : std::string("null"));
+  s += "," + json_member(k::kClassConfident, confident ? "true" : "false");
+  std::string list;
+  for (uint32_t i = 0; i < count; ++i) {
+    list += std::string(i ? "," : "") + "{" +
+            json_member(k::kClass, json_string(vehicle_class_name(ranking[i].vehicle_class))) + "," +
+            json_member(k::kScore, json_number(static_cast<double>(ranking[i].score), 7)) + "," +
+            json_member(k::kModel, json_string(model_name(db, ranking[i].model))) + "}";
+  }
+  return s + "," + json_member(k::kClassRanking, "[" + list + "]");
+}
+
 std::string result_json(const std::string& query, const Database& db, const Result& r, uint32_t top,
                         double time_ms) {
   std::string s = "{\"query\":" + json_string(query) + ",\"status\":" + json_string(status_word(r.status));
@@ -53,6 +69,8 @@ std::string result_json(const std::string& query, const Database& db, const Resu
   s += r.ranking_count > 0 && r.ranking[0].has_pose ? pose_json(r.ranking[0].pose) : std::string("null");
   s += std::string(",\"confident\":") + (r.confident ? "true" : "false");
   s += ",\"group_size\":" + std::to_string(r.status == Status::kOk ? r.group_size : 0u);
+  const bool ok = r.status == Status::kOk;
+  s += "," + class_json(db, r.class_ranking, ok ? r.class_ranking_count : 0u, ok && r.class_confident);
   s += ",\"time_ms\":" + json_number(time_ms, 4) + ",\"hypotheses\":" + std::to_string(r.stats.hypotheses);
   s += ",\"stats\":" + stats_json(r.stats) + "," + json_version_member() + "}";
   return s;

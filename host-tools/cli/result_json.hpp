@@ -13,7 +13,12 @@ const char* status_word(Status s);
 std::string pose_json(const Pose& p);
 
 // {"query":..,"status":..,"ranking":[{"model":..,"score":..},..],"pose":[16]|null,
+//  "confident":..,"group_size":..,"class":..,"class_confident":..,"class_ranking":[..],
 //  "time_ms":..,"hypotheses":..} plus "error" when not ok and a "stats" object.
+// "class":..,"class_confident":..,"class_ranking":[..] (class_keys; no
+// braces): the class level of an answer, for recognize and scene lines.
+std::string class_json(const Database& db, const RankedClass* ranking, uint32_t count, bool confident);
+
 std::string result_json(const std::string& query, const Database& db, const Result& r, uint32_t top,
                         double time_ms);
 
