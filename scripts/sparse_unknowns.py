@@ -61,6 +61,7 @@ def main():
     ap.add_argument("--seeds", default="1")
     ap.add_argument("--noise", type=float, default=0.05)
     ap.add_argument("--ground", type=float, default=6.0, help="ground square half size with the noisy scans")
+    ap.add_argument("--conds", default="clean,noisy", help="clean: the vehicle alone; noisy: --noise, ground, tilt")
     a = ap.parse_args()
     S, out = a.spinhash, a.out
     os.makedirs(out, exist_ok=True)
@@ -86,7 +87,7 @@ def main():
             area = footprint(mesh)
             for sp in a.spacings.split(","):
                 for seed in a.seeds.split(","):
-                    for cond in ("clean", "noisy"):
+                    for cond in a.conds.split(","):
                         q = os.path.join(qdir, "%s_%s_%s_%s.ply" % (f[:-4], sp, seed, cond))
                         if not os.path.exists(q):
                             extra = ["--noise", str(a.noise), "--ground", str(a.ground), "--tilt"] if cond == "noisy" else []

@@ -21,11 +21,6 @@ constexpr float kSpreadMarginFactor = 2.0f;
 // wrong ones 2.16 and 2.35 (docs/results.md 9k).
 constexpr float kSpreadResidualFactor = 0.8f;
 
-// The least density, object points per m^2 of the model's top, at which a
-// model is named confidently. Surveys at 10-30 points per m^2 return a few
-// hundred points of a car: its class, not its model (issue 28).
-// TODO(measure): set from the sparse experiment.
-constexpr float kMinModelDensity = 50.0f;
 // The least density and query features for a confident class.
 constexpr float kMinClassDensity = 5.0f;
 constexpr uint32_t kMinClassFeatures = 12;

@@ -2,7 +2,7 @@
 // spinhash database, through the same host pipeline as the spinhash command.
 #include "bindings.hpp"
 #include "pipeline/version.hpp"
-#include "spinhash/vehicle_classes.h"
+#include "spinhash/vehicle_class.hpp"
 
 PYBIND11_MODULE(spinhash, m) {
   m.doc() =
@@ -10,10 +10,10 @@ PYBIND11_MODULE(spinhash, m) {
       "See docs/python.md.";
   m.attr("__version__") = spinhash::pipeline::version();
   // Every class a model can carry, in id order (spinhash/vehicle_classes.h).
-  m.attr("CLASS_NAMES") = pybind11::make_tuple(
-#define SPINHASH_PY_CLASS_NAME(id, Name, name, help) name,
-      SPINHASH_VEHICLE_CLASSES(SPINHASH_PY_CLASS_NAME) nullptr);
-#undef SPINHASH_PY_CLASS_NAME
+  pybind11::list classes;
+  for (uint32_t id = 0; id < spinhash::kVehicleClassCount; ++id)
+    classes.append(spinhash::vehicle_class_name(id));
+  m.attr("CLASS_NAMES") = pybind11::tuple(classes);
   spinhash::python::bind_database(m);
   spinhash::python::bind_config(m);
   spinhash::python::bind_result(m);

@@ -98,7 +98,7 @@ TEST_CASE("a class is never confident on little evidence, a poor fit, an overhan
   CHECK_FALSE(is_class_confident(f.r, cfg, kFeatures, kPinned, kDense));
 }
 
-TEST_CASE("scan density: the object's points per m^2 of the model's top; a model needs 50") {
+TEST_CASE("scan density: the object's points per m^2 of the model's top; a model needs kMinModelDensity") {
   blob::ModelRecord rec{};
   rec.bbox_min[0] = -2.0f, rec.bbox_max[0] = 2.0f;  // 4 x 2 m: 8 m^2
   rec.bbox_min[1] = -1.0f, rec.bbox_max[1] = 1.0f;
@@ -107,9 +107,10 @@ TEST_CASE("scan density: the object's points per m^2 of the model's top; a model
   s.points_ground = 500;
   s.points_nonfinite = 100;
   CHECK(scan_density(s, rec) == doctest::Approx(50.0f));
-  CHECK(dense_enough_for_model(50.0f));
-  CHECK_FALSE(dense_enough_for_model(49.0f));
-  s.points_ground = 2000;  // more dropped than counted: no points, not a wrap-around
+  CHECK(dense_enough_for_model(kMinModelDensity));
+  CHECK_FALSE(dense_enough_for_model(kMinModelDensity - 1.0f));
+  CHECK(kMinModelDensity >= 70.0f);  // above what a 30 per m^2 survey returns of a car
+  s.points_ground = 2000;            // more dropped than counted: no points, not a wrap-around
   CHECK(scan_density(s, rec) == 0.0f);
 }
 
@@ -138,6 +139,6 @@ TEST_CASE("a recognised toy carries its class ranking; thinned to a sparse scan 
   const Result s = rec.recognize(sparse.data(), static_cast<uint32_t>(sparse.size() / 3));
   REQUIRE(s.status == Status::kOk);
   CAPTURE(s.stats.extract.points_in);
-  CHECK(scan_density(s.stats.extract, toy().db.model(1)) < 50.0f);
+  CHECK(scan_density(s.stats.extract, toy().db.model(1)) < kMinModelDensity);
   CHECK_FALSE(s.confident);
 }
