@@ -7,8 +7,11 @@
 #include <vector>
 
 #include "blob/aligned_bytes.hpp"
+#include "geometry/normals.hpp"
 #include "recognize/confidence.hpp"
 #include "spinhash/recognizer.hpp"
+#include "support/geometry_fixtures.hpp"
+#include "support/grid_fixture.hpp"
 #include "support/toy_database.hpp"
 
 using namespace spinhash;
@@ -141,4 +144,30 @@ TEST_CASE("a recognised toy carries its class ranking; thinned to a sparse scan 
   CAPTURE(s.stats.extract.points_in);
   CHECK(scan_density(s.stats.extract, toy().db.model(1)) < kMinModelDensity);
   CHECK_FALSE(s.confident);
+}
+
+TEST_CASE("a sparse scan's normals come from a grown radius") {
+  const FeatureParams fp;  // normal radius 0.4 m, as the databases
+  ExtractorCapacity cap;
+  host::AlignedBytes ws(1u << 24);
+  Arena arena(ws.data(), ws.size());
+  FeatureExtractor ex;
+  REQUIRE(ex.init(fp, cap, arena) == Status::kOk);
+  // 0.45 m between points: none has a neighbour within 0.4 m, every one
+  // but the edges' has four within 0.6 m.
+  const std::vector<float> box = test::box_surface(4.0f, 2.0f, 1.5f, 0.45f);
+  const uint32_t n = static_cast<uint32_t>(box.size() / 3);
+  test::GridFixture g(box, fp.normal_radius);
+  std::vector<float> normals(box.size());
+  std::vector<uint8_t> has(n);
+  CHECK(estimate_normals(g.grid, box.data(), n, fp.normal_radius, normals.data(), has.data()) == 0u);
+  CloudView cloud;
+  cloud.xyz_f = box.data();
+  cloud.count = n;
+  FeatureSet fs;
+  ExtractStats st;
+  REQUIRE(ex.extract(cloud, OrientationHint{}, &fs, &st) == Status::kOk);
+  CAPTURE(st.points_equalised);
+  CHECK(static_cast<float>(st.points_oriented) >= 0.5f * static_cast<float>(st.points_equalised));
+  CHECK(fs.count >= 20u);  // features to recognise it by
 }
