@@ -18,6 +18,19 @@ ones. Density is the scan's points per m^2 of the scanned mesh's footprint
 import argparse, json, os, subprocess, sys
 from collections import defaultdict
 
+# Scan settings per condition. clean, noisy: the paper's query scans (3 views
+# at 45 degrees elevation, 45 degrees apart), whose ground holds far fewer
+# points per m^2 than the vehicle. survey: two opposite flight lines at 70
+# degrees elevation, the ground at 1.9 / spacing^2 points per m^2 (0.3 m:
+# 21, 0.4 m: 12), as an airborne survey; survey_ground with the ground, 5 cm
+# noise and a tilt.
+CONDITIONS = {
+    "clean": lambda a: [],
+    "noisy": lambda a: ["--noise", str(a.noise), "--ground", str(a.ground), "--tilt"],
+    "survey": lambda a: ["--views", "2", "--elevation", "70", "--azimuth-step", "180"],
+    "survey_ground": lambda a: ["--views", "2", "--elevation", "70", "--azimuth-step", "180", "--noise",
+                                str(a.noise), "--ground", str(a.ground), "--tilt"],
+}
 STRETCHES = {"long": (1.12, 1.0), "short": (0.90, 1.0), "wide": (1.0, 1.08)}
 
 
@@ -61,7 +74,7 @@ def main():
     ap.add_argument("--seeds", default="1")
     ap.add_argument("--noise", type=float, default=0.05)
     ap.add_argument("--ground", type=float, default=6.0, help="ground square half size with the noisy scans")
-    ap.add_argument("--conds", default="clean,noisy", help="clean: the vehicle alone; noisy: --noise, ground, tilt")
+    ap.add_argument("--conds", default="clean,noisy", help="of CONDITIONS: clean, noisy, survey, survey_ground")
     a = ap.parse_args()
     S, out = a.spinhash, a.out
     os.makedirs(out, exist_ok=True)
@@ -90,7 +103,7 @@ def main():
                     for cond in a.conds.split(","):
                         q = os.path.join(qdir, "%s_%s_%s_%s.ply" % (f[:-4], sp, seed, cond))
                         if not os.path.exists(q):
-                            extra = ["--noise", str(a.noise), "--ground", str(a.ground), "--tilt"] if cond == "noisy" else []
+                            extra = CONDITIONS[cond](a)
                             run([S, "scan", mesh, "--spacing", sp, "--random-pose", "--seed", seed, "-o", q] + extra)
                         queries.append((q, f[:-4] if known else None, family(f), area, cond, sp))
     rows = []

@@ -53,6 +53,16 @@ struct Outermost {
       if (x[a] > hi[0][a]) hi[0][a] = x[a];
     }
   }
+  // m^2 of the box's top within the outermost features' x and y span.
+  float seen_area(const blob::ModelRecord& m) const {
+    float area = 1.0f;
+    for (int a = 0; a < 2; ++a) {
+      const float from = lo[0][a] > m.bbox_min[a] ? lo[0][a] : m.bbox_min[a];
+      const float to = hi[0][a] < m.bbox_max[a] ? hi[0][a] : m.bbox_max[a];
+      area *= to > from ? to - from : 0.0f;
+    }
+    return area;
+  }
   // Per tested face, how far the k-th outermost feature stops short of it
   // (> 0) or reaches past it (< 0).
   void gaps(const blob::ModelRecord& m, int k, float* gap) const {
@@ -76,6 +86,7 @@ ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model,
   float reach[kTestedFaces], second[kTestedFaces];
   out.gaps(model, 0, reach);
   out.gaps(model, 1, second);
+  fit.seen_area = out.seen_area(model);
   for (int i = 0; i < kTestedFaces; ++i) {
     fit.shortfall = reach[i] > fit.shortfall ? reach[i] : fit.shortfall;
     fit.overhang = -second[i] > fit.overhang ? -second[i] : fit.overhang;
@@ -87,11 +98,10 @@ float residual_limit(const Result& r, const RecognizerConfig& cfg) {
   return r.stats.candidates_spread ? kSpreadResidualFactor * cfg.max_residual_f : cfg.max_residual_f;
 }
 
-float scan_density(const ExtractStats& s, const blob::ModelRecord& model) {
+float scan_density(const ExtractStats& s, const ExtentFit& fit) {
   const uint32_t dropped = s.points_nonfinite + s.points_ground;
   const float points = static_cast<float>(s.points_in > dropped ? s.points_in - dropped : 0u);
-  const float area = (model.bbox_max[0] - model.bbox_min[0]) * (model.bbox_max[1] - model.bbox_min[1]);
-  return points / (area > kMinTopArea ? area : kMinTopArea);
+  return points / (fit.seen_area > kMinTopArea ? fit.seen_area : kMinTopArea);
 }
 
 bool dense_enough_for_model(float density) { return density >= kMinModelDensity; }
