@@ -43,7 +43,8 @@ std::vector<pipeline::ModelMesh> with_lookalikes(const std::vector<pipeline::Mod
     for (const pipeline::ModelMesh& m : originals) {
       const CopyKind kind = static_cast<CopyKind>(k % kinds);
       const uint32_t level = k / kinds + 1;
-      pipeline::ModelMesh copy{m.name + "~" + kind_tag(kind) + std::to_string(level), m.mesh};
+      pipeline::ModelMesh copy{m.name + "~" + kind_tag(kind) + std::to_string(level), m.mesh,
+                               m.vehicle_class};
       copy.mesh.name = copy.name;
       copy.mesh.apply_transform(copy_transform(kind, level));
       out.push_back(std::move(copy));

@@ -2,6 +2,7 @@
 
 #include "mesh/vehicle_generator.hpp"
 #include "pipeline/build_database_file.hpp"
+#include "pipeline/model_classes.hpp"
 
 namespace spinhash::experiment {
 
@@ -9,7 +10,8 @@ std::vector<pipeline::ModelMesh> generated_models(uint32_t count, uint64_t fleet
   std::vector<pipeline::ModelMesh> out;
   for (host::Mesh& m : host::generate_fleet(count, fleet_seed)) {
     std::string name = m.name;
-    out.push_back(pipeline::ModelMesh{std::move(name), std::move(m)});
+    const VehicleClass cls = pipeline::class_from_name(name);  // the family: "sedan-03" is a sedan
+    out.push_back(pipeline::ModelMesh{std::move(name), std::move(m), cls});
   }
   return out;
 }

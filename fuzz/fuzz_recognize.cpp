@@ -34,8 +34,8 @@ constexpr float kModelSpacing = 0.08f;  // m
 bool make_database(test::ToyDatabase* out) {
   std::vector<host::ModelCloud> clouds;
   for (uint32_t i : kFuzzModels)
-    clouds.push_back(
-        host::ModelCloud{"toy-" + std::to_string(i), test::toy_vehicle_points(i, kModelSpacing)});
+    clouds.push_back(host::ModelCloud{"toy-" + std::to_string(i), test::toy_vehicle_points(i, kModelSpacing),
+                                      test::toy_class(i)});
   host::BlobContent content;
   host::BuildReport report;
   std::vector<uint8_t> bytes;

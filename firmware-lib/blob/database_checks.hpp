@@ -26,7 +26,8 @@ static_assert(offsetof(blob::ModelRecord, first_feature) == 48 &&
                   offsetof(blob::ModelRecord, grid_offset_base) == 68 &&
                   offsetof(blob::ModelRecord, bbox_max) == 96 &&
                   offsetof(blob::ModelRecord, field_dims) == 108 &&
-                  offsetof(blob::ModelRecord, reserved) == 124,
+                  offsetof(blob::ModelRecord, vehicle_class) == 124 &&
+                  offsetof(blob::ModelRecord, reserved) == 125,
               "model record layout");
 
 constexpr uint32_t kSlotCount = blob::kSectionIdCount + 1;  // indexed by SectionId; slot 0 unused

@@ -81,6 +81,9 @@ spinhash_status finish(const RecognizerSlot& sl, const Result& r, spinhash_resul
   out->ranking_count = r.status == Status::kOk ? r.ranking_count : 0u;
   out->confident = r.confident ? 1u : 0u;
   out->group_size = r.status == Status::kOk ? r.group_size : 0u;
+  out->class_ranking_count = r.status == Status::kOk ? r.class_ranking_count : 0u;
+  out->class_confident = r.status == Status::kOk && r.class_confident ? 1u : 0u;
+  out->class_ranking_ = r.class_ranking;
   to_c_stats(r.stats, &out->stats);
   out->ranking_ = r.ranking;
   out->database_ = sl.database;
@@ -142,6 +145,16 @@ const char* spinhash_database_model_name(const spinhash_database* db, uint32_t i
   return d->model(index).name;  // NUL-terminated: checked by Database::open
 }
 
+uint32_t spinhash_database_model_class(const spinhash_database* db, uint32_t index) SPINHASH_NOEXCEPT {
+  const Database* d = view(db);
+  if (d == nullptr || index >= d->model_count()) return SPINHASH_CLASS_COUNT;
+  return d->model(index).vehicle_class;  // < SPINHASH_CLASS_COUNT: checked by Database::open
+}
+
+const char* spinhash_class_name(uint32_t vehicle_class) SPINHASH_NOEXCEPT {
+  return vehicle_class_name(vehicle_class);
+}
+
 spinhash_status spinhash_recognizer_init(spinhash_recognizer* rec, const spinhash_database* db,
                                          const spinhash_config* config, void* workspace,
                                          size_t workspace_bytes) SPINHASH_NOEXCEPT {
@@ -186,6 +199,20 @@ spinhash_status spinhash_result_entry(const spinhash_result* result, uint32_t ra
   }
   out->pose[15] = 1.0;
   out->name = spinhash_database_model_name(result->database_, m.model);
+  return SPINHASH_OK;
+}
+
+spinhash_status spinhash_result_class(const spinhash_result* result, uint32_t rank,
+                                      spinhash_ranked_class* out) SPINHASH_NOEXCEPT {
+  if (result == nullptr || out == nullptr || result->status != SPINHASH_OK ||
+      rank >= result->class_ranking_count || result->class_ranking_ == nullptr)
+    return SPINHASH_INVALID_ARGUMENT;
+  const RankedClass& c = static_cast<const RankedClass*>(result->class_ranking_)[rank];
+  *out = spinhash_ranked_class{};
+  out->vehicle_class = c.vehicle_class;
+  out->score = c.score;
+  out->model = c.model;
+  out->name = vehicle_class_name(c.vehicle_class);
   return SPINHASH_OK;
 }
 

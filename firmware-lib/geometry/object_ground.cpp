@@ -12,6 +12,20 @@ namespace {
 
 constexpr float kEmptyCell = 3.0e38f;  // lowest point of a cell without points
 constexpr uint32_t kMinPlaneCells = 3;
+// CellStats::spread of a cell without kMinRoughnessPoints ground points: none
+// (kUnmeasured), or a few, all within kRoughnessBand of its low lowest point
+// (kSparseFlat: ground a sparse scan samples thinly, issue 28: at 10-20
+// points per m^2 the 1 m cells the footprint's edge cuts hold 1-4 points, and
+// two thirds of the border cells of a vehicle on open ground were not
+// measured, so its ground was never removed).
+constexpr float kUnmeasured = -1.0f;
+constexpr float kSparseFlat = -2.0f;
+// A sparse scan's terrain shows at least this many cells of measured, clean
+// ground: bare vehicles scanned at 12-32 points per m^2 show 0-18 (a
+// truck's box roof the most), and a pickup's roof, hood and bed passed
+// every other test (it lost 75 % of its points as "ground" before this);
+// with a 12 m ground square around them 27-147.
+constexpr uint32_t kMinSparseGroundCells = 24;
 
 struct Grid {
   float x0 = 0.0f, y0 = 0.0f, cell = kMinTerrainCell;
@@ -121,12 +135,22 @@ void accumulate(const float* xyz, uint32_t n, const Grid& g, const Plane& plane,
   }
   for (uint32_t c = 0; c < kTerrainCells; ++c) {
     if (cs.count[c] < static_cast<float>(kMinRoughnessPoints)) {
-      cs.spread[c] = -1.0f;
+      cs.spread[c] = cs.count[c] > 0.0f ? kSparseFlat : kUnmeasured;
       continue;
     }
     cs.mean[c] /= cs.count[c];
     const float var = cs.spread[c] / cs.count[c] - cs.mean[c] * cs.mean[c];
     cs.spread[c] = std::sqrt(var > 0.0f ? var : 0.0f);
+  }
+}
+
+// Sparse-flat cells with a point above the roughness band hold an object.
+void unflatten_occupied(const float* xyz, uint32_t n, const Grid& g, const float* lowest,
+                        const CellStats& cs) {
+  for (uint32_t i = 0; i < n; ++i) {
+    const float* p = xyz + 3u * i;
+    const uint32_t c = g.cell_of(p);
+    if (cs.spread[c] == kSparseFlat && p[2] > lowest[c] + kRoughnessBand) cs.spread[c] = kUnmeasured;
   }
 }
 
@@ -158,8 +182,10 @@ bool occupied_at(const float* lowest, int32_t i, int32_t j) {
 
 // Share of the footprint's border cells (occupied, with an empty 4-neighbour)
 // that are clean ground: terrain reaches beyond the objects on it, while a
-// bare object's outline is its sides.
-float clean_border_share(const float* lowest, const CellStats& cs) {
+// bare object's outline is its sides. With `sparse` cells (grown for a
+// sparse scan) a sparse-flat border cell counts as clean: a cell the
+// footprint's edge cuts holds too few points for a spread.
+float clean_border_share(const float* lowest, const CellStats& cs, bool sparse) {
   uint32_t border = 0, clean = 0;
   for (uint32_t c = 0; c < kTerrainCells; ++c) {
     if (lowest[c] == kEmptyCell) continue;
@@ -169,9 +195,15 @@ float clean_border_share(const float* lowest, const CellStats& cs) {
         occupied_at(lowest, i, j + 1))
       continue;
     ++border;
-    clean += cs.count[c] > 0.0f ? 1u : 0u;
+    clean += cs.count[c] > 0.0f || (sparse && cs.spread[c] == kSparseFlat) ? 1u : 0u;
   }
   return border > 0 ? static_cast<float>(clean) / static_cast<float>(border) : 0.0f;
+}
+
+uint32_t clean_cells(const CellStats& cs) {
+  uint32_t k = 0;
+  for (uint32_t c = 0; c < kTerrainCells; ++c) k += cs.count[c] > 0.0f ? 1u : 0u;
+  return k;
 }
 
 // Clean ground cells keep their mean as level; the others take their clean
@@ -223,7 +255,10 @@ uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* sc
       sigma > kMaxGroundRoughness)
     return 0;
   mark_clean(cs, sigma);
-  if (clean_border_share(lowest, cs) < kMinCleanBorderShare) return 0;
+  const bool sparse = g.cell > kMinTerrainCell;  // cells grown for a sparse scan
+  if (sparse && clean_cells(cs) < kMinSparseGroundCells) return 0;
+  unflatten_occupied(xyz, n, g, lowest, cs);
+  if (clean_border_share(lowest, cs, sparse) < kMinCleanBorderShare) return 0;
   fill_levels(cs);
   // kClearanceSigmas of the ground's own roughness, within [kMinClearance, clearance].
   float drop = kClearanceSigmas * sigma;

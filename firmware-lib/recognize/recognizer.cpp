@@ -107,8 +107,18 @@ bool first_is_confident(const SearchContext& ctx, const Result& result) {
   const uint32_t first = result.ranking[0].model;
   const RigidPose& pose = ctx.buf.best[first].pose;
   const ExtentFit fit = extent_fit(ctx.query, ctx.db.model(first), pose);
+  if (!dense_enough_for_model(scan_density(result.stats.extract, fit))) return false;
   if (!is_confident(result, ctx.cfg, ctx.query.count, fit, 0.0f)) return false;
   return is_confident(result, ctx.cfg, ctx.query.count, fit, residual_structure(ctx, first, pose));
+}
+
+// The class tests of the first class's best model under its pose.
+bool first_class_is_confident(const SearchContext& ctx, const Result& result) {
+  if (result.class_ranking_count == 0) return false;
+  const uint32_t model = result.ranking[result.class_ranking[0].best_rank].model;
+  const blob::ModelRecord& record = ctx.db.model(model);
+  const ExtentFit fit = extent_fit(ctx.query, record, ctx.buf.best[model].pose);
+  return is_class_confident(result, ctx.cfg, ctx.query.count, fit, scan_density(result.stats.extract, fit));
 }
 
 uint32_t rank_models(const Database& db, RecognizerBuffers& b, const double origin[3]) {
@@ -231,6 +241,9 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
   result.group_size = lookalike_group_size(result, config_, fs.count);
   order_twins_by_residuals(ctx, b.ranking, result.group_size);
   result.confident = first_is_confident(ctx, result);
+  result.class_ranking = b.classes;
+  result.class_ranking_count = rank_classes(*db_, result, b.classes);
+  result.class_confident = first_class_is_confident(ctx, result);
   return result;
 }
 

@@ -33,16 +33,17 @@ struct ResidualSample {
 struct RecognizerBuffers {
   FeatureExtractor extractor;
   LshSearcher searcher;
-  uint8_t* query_spins = nullptr;       // max_features * max_spin_dims
-  Candidate* candidates = nullptr;      // max_features * candidate_stride
-  uint32_t* candidate_count = nullptr;  // max_features
-  float* cumulative = nullptr;          // max_features: sampling weights, running sum
-  int32_t* matches = nullptr;           // max_features: the last verified pose's matches (refinement.cpp)
-  ModelBest* best = nullptr;            // max_models
-  RankedModel* ranking = nullptr;       // max_models
-  uint32_t candidate_stride = 0;        // largest W of any mode
-  CellGrid feature_grid;                // the query features (visible_surface.cpp)
-  ResidualSample* residuals = nullptr;  // max_features (residual_structure.cpp)
+  uint8_t* query_spins = nullptr;           // max_features * max_spin_dims
+  Candidate* candidates = nullptr;          // max_features * candidate_stride
+  uint32_t* candidate_count = nullptr;      // max_features
+  float* cumulative = nullptr;              // max_features: sampling weights, running sum
+  int32_t* matches = nullptr;               // max_features: the last verified pose's matches (refinement.cpp)
+  ModelBest* best = nullptr;                // max_models
+  RankedModel* ranking = nullptr;           // max_models
+  uint32_t candidate_stride = 0;            // largest W of any mode
+  CellGrid feature_grid;                    // the query features (visible_surface.cpp)
+  ResidualSample* residuals = nullptr;      // max_features (residual_structure.cpp)
+  RankedClass classes[kVehicleClassCount];  // Result::class_ranking
 };
 
 // The leading model as BRAN's stop on evidence follows it (evidence_stop.cpp).

@@ -33,6 +33,10 @@ bool size_agrees(const ObjectShape& o, const blob::ModelRecord& m, float toleran
   return std::fabs(o.length() - len) <= tolerance * len && std::fabs(o.width() - wid) <= tolerance * wid;
 }
 
+// A confident class may differ more from its leader's box: members of a
+// class differ by tens of centimetres, classes by metres.
+constexpr float kClassSizeFactor = 2.0f;
+
 // The model's box bottom above the terrain under `pose` (world-aligned,
 // from the object's origin, which lies at (ds, dt) in the window's grid
 // frame), m: the mean over its four bottom corners that have terrain under
@@ -191,6 +195,12 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
   out.confident =
       r.confident && size_agrees(o, best, c.max_size_mismatch) && not_sunk(out.ground_gap, c.max_ground_sink);
   out.group_size = r.group_size;
+  out.class_count = r.class_ranking_count;
+  for (uint32_t j = 0; j < r.class_ranking_count && j < kVehicleClassCount; ++j)
+    out.classes[j] = r.class_ranking[j];
+  out.class_confident =
+      r.class_confident && out.class_count > 0 &&
+      size_agrees(o, db.model(out.classes[0].model), kClassSizeFactor * c.max_size_mismatch);
 }
 
 }  // namespace

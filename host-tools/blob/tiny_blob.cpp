@@ -7,6 +7,7 @@
 
 #include "db/nearest_field.hpp"
 #include "spinhash/database.hpp"
+#include "spinhash/vehicle_class.hpp"
 
 namespace spinhash {
 namespace host {
@@ -92,6 +93,7 @@ void add_field(BlobContent* c, blob::ModelRecord* m) {
 void add_model(uint32_t i, uint32_t count, Rng& rng, BlobContent* c) {
   blob::ModelRecord m{};
   std::snprintf(m.name, sizeof(m.name), "tiny_%u", i);
+  m.vehicle_class = static_cast<uint8_t>(1u + i % (kVehicleClassCount - 1u));  // every class but unclassified
   m.first_feature = static_cast<uint32_t>(c->feature_models.size());
   m.feature_count = count;
   m.grid_dims[0] = 1u + i % 3u;

@@ -1,8 +1,10 @@
-// The keys of `info --format json` and `verify --format json`, defined once:
+// The keys of `info --format json` and `verify --format json`, and the class
+// keys of `recognize` and `scene`, defined once:
 // the writers (cmd_info.cpp, cmd_verify.cpp) use these constants and
 // tests/host/test_field_mirrors.cpp checks every one against docs/cli.md and
 // the command's output.
 #pragma once
+#include "pipeline/class_json.hpp"
 
 namespace spinhash::cli {
 
@@ -34,14 +36,15 @@ constexpr const char* kField = "nearest_field";  // object: cell, reach, slots, 
 constexpr const char* kReach = "reach";
 constexpr const char* kSlots = "slots";
 constexpr const char* kEntries = "entries";
-constexpr const char* kModelList = "model_list";  // [{name, features, extent}]
+constexpr const char* kModelList = "model_list";  // [{name, class, features, extent}]
 constexpr const char* kName = "name";
+constexpr const char* kClass = "class";  // the model's vehicle class (vehicle_classes.h)
 constexpr const char* kExtent = "extent";
 constexpr const char* kAll[] = {
     kFormat, kBytes,        kBytesPerFeature, kFingerprint, kModels, kFeatures,     kSpinImages,   kBins,
     kRadius, kSupportAngle, kQuantScale,      kSampling,    kVoxel,  kNormalRadius, kBasisSpacing, kLsh,
     kTables, kBits,         kBuckets,         kDc,          kGrid,   kCell,         kOffsets,      kField,
-    kReach,  kSlots,        kEntries,         kModelList,   kName,   kExtent};
+    kReach,  kSlots,        kEntries,         kModelList,   kName,   kClass,        kExtent};
 }  // namespace info_keys
 
 namespace verify_keys {
@@ -62,5 +65,9 @@ constexpr const char* kStatus = "status";
 constexpr const char* kAll[] = {kIntegrity, kError,   kModels, kFeatures, kMode, kNoise,       kScans,
                                 kHits,      kMissing, kMisses, kModel,    kScan, kRankedFirst, kStatus};
 }  // namespace verify_keys
+
+// The class keys of `recognize` and `scene` JSON lines: one list, in
+// pipeline/class_json.hpp (the survey writes them too).
+namespace class_keys = pipeline::class_keys;
 
 }  // namespace spinhash::cli

@@ -1,6 +1,8 @@
 #include "cli/result_json.hpp"
 
 #include "cli/json_line.hpp"
+#include "cli/report_keys.hpp"
+#include "pipeline/class_json.hpp"
 #include "pipeline/object_json.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/status_word.hpp"
@@ -46,6 +48,9 @@ std::string result_json(const std::string& query, const Database& db, const Resu
   s += r.ranking_count > 0 && r.ranking[0].has_pose ? pose_json(r.ranking[0].pose) : std::string("null");
   s += std::string(",\"confident\":") + (r.confident ? "true" : "false");
   s += ",\"group_size\":" + std::to_string(r.status == Status::kOk ? r.group_size : 0u);
+  const bool ok = r.status == Status::kOk;
+  s += "," +
+       pipeline::class_json(db, r.class_ranking, ok ? r.class_ranking_count : 0u, ok && r.class_confident);
   s += ",\"time_ms\":" + json_number(time_ms, 4) + ",\"hypotheses\":" + std::to_string(r.stats.hypotheses);
   s += ",\"stats\":" + stats_json(r.stats) + "," + json_version_member() + "}";
   return s;

@@ -10,7 +10,9 @@ namespace spinhash::cli {
 const char* status_word(Status s);
 
 // {"query":..,"status":..,"ranking":[{"model":..,"score":..},..],"pose":[16]|null,
+//  "confident":..,"group_size":..,"class":..,"class_confident":..,"class_ranking":[..],
 //  "time_ms":..,"hypotheses":..} plus "error" when not ok and a "stats" object.
+
 std::string result_json(const std::string& query, const Database& db, const Result& r, uint32_t top,
                         double time_ms);
 

@@ -29,11 +29,12 @@ float choose_quant_scale(const std::vector<ModelFeatures>& feats, float percenti
   return 255.0f / values[k];
 }
 
-blob::ModelRecord make_record(const std::string& name, uint32_t first, uint32_t count, const ModelGrid& g,
+blob::ModelRecord make_record(const ModelCloud& model, uint32_t first, uint32_t count, const ModelGrid& g,
                               uint32_t grid_base, const ModelFeatures& mf) {
   blob::ModelRecord r;
   std::memset(&r, 0, sizeof r);
-  std::memcpy(r.name, name.data(), name.size());
+  std::memcpy(r.name, model.name.data(), model.name.size());
+  r.vehicle_class = static_cast<uint8_t>(model.vehicle_class);
   r.first_feature = first;
   r.feature_count = count;
   r.grid_offset_base = grid_base;
@@ -106,12 +107,17 @@ bool check_inputs(const std::vector<ModelCloud>& models, const BuildOptions& opt
     *error = "need between 1 and " + std::to_string(kMaxModels) + " models";
     return false;
   }
-  for (const ModelCloud& m : models)
+  for (const ModelCloud& m : models) {
     if (m.name.empty() || m.name.size() >= kMaxModelNameBytes) {
       *error =
           "model name '" + m.name + "' must be 1 to " + std::to_string(kMaxModelNameBytes - 1) + " bytes";
       return false;
     }
+    if (static_cast<uint32_t>(m.vehicle_class) >= kVehicleClassCount) {
+      *error = "model '" + m.name + "': no such vehicle class";
+      return false;
+    }
+  }
   if (opt.lsh_tables < 1 || opt.lsh_tables > kMaxLshTables || opt.lsh_bits < 1 ||
       opt.lsh_bits > kMaxLshBits) {
     *error = "LSH tables must be 1.." + std::to_string(kMaxLshTables) + " and bits 1.." +
@@ -155,9 +161,8 @@ bool build_database(const std::vector<ModelCloud>& models, const BuildOptions& o
   report->features_per_model.clear();
   for (size_t i = 0; i < models.size(); ++i) {
     ModelGrid g = build_model_grid(feats[i].positions, feats[i].count, opt.grid_cell);
-    c.models.push_back(make_record(models[i].name, static_cast<uint32_t>(c.feature_models.size()),
-                                   feats[i].count, g, static_cast<uint32_t>(c.grid_offsets.size()),
-                                   feats[i]));
+    c.models.push_back(make_record(models[i], static_cast<uint32_t>(c.feature_models.size()), feats[i].count,
+                                   g, static_cast<uint32_t>(c.grid_offsets.size()), feats[i]));
     append_model(&c, static_cast<uint16_t>(i), feats[i], g, scale, dims);
     if (!append_field(&c, opt, error)) return false;
     report->features_per_model.push_back(feats[i].count);

@@ -9,6 +9,7 @@
 #include "blob/blob_content.hpp"
 #include "db/nearest_field.hpp"
 #include "spinhash/config.hpp"
+#include "spinhash/vehicle_class.hpp"
 
 namespace spinhash {
 namespace host {
@@ -16,6 +17,7 @@ namespace host {
 struct ModelCloud {
   std::string name;         // <= kMaxModelNameBytes - 1 bytes
   std::vector<double> xyz;  // model frame, metres
+  VehicleClass vehicle_class = VehicleClass::kUnclassified;
 };
 
 struct BuildOptions {

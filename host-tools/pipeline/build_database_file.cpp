@@ -5,6 +5,7 @@
 
 #include "blob/blob_writer.hpp"
 #include "blob/file_io.hpp"
+#include "pipeline/model_classes.hpp"
 #include "pipeline/progress.hpp"
 
 namespace spinhash::pipeline {
@@ -61,6 +62,11 @@ void add_build_flags(CLI::App* cmd, BuildSettings* s) {
                                                 {"big", host::ByteOrder::kBig}};
   cmd->add_option("--byte-order", s->byte_order, "byte order of the target that reads the blob")
       ->transform(CLI::CheckedTransformer(orders, CLI::ignore_case));
+  cmd->add_option(
+         "--classes", s->class_manifest,
+         "manifest of 'MODEL_NAME CLASS' lines; without it a model's class is its folder's name or "
+         "its name's first word when that is a class (pickup/x.obj, sedan-03.obj), else unclassified")
+      ->check(CLI::ExistingFile);
   cmd->add_flag("--quiet", s->quiet, "no progress on stderr");
 }
 
@@ -69,6 +75,7 @@ bool build_database_file(const std::vector<ModelMesh>& meshes, const BuildSettin
   auto start = std::chrono::steady_clock::now();
   std::vector<host::ModelCloud> clouds;
   if (!scan_models(meshes, s.scan_spacing, &clouds, error, s.quiet)) return false;
+  if (!s.class_manifest.empty() && !apply_class_manifest(s.class_manifest, &clouds, error)) return false;
   host::BlobContent content;
   Progress progress("features", static_cast<uint32_t>(clouds.size()), s.quiet);
   if (!host::build_database(clouds, s.options, &content, &summary->report, error, report_progress, &progress))

@@ -15,6 +15,7 @@ struct BuildSettings {
   host::BuildOptions options;
   double scan_spacing = 0.05;  // m between model-scan rays at the object
   host::ByteOrder byte_order = host::ByteOrder::kNative;
+  std::string class_manifest;  // "MODEL_NAME CLASS" lines (model_classes.hpp); "": folders and names
   bool quiet = false;
 };
 

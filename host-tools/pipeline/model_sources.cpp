@@ -4,6 +4,7 @@
 #include <set>
 
 #include "mesh/mesh_loader.hpp"
+#include "pipeline/model_classes.hpp"
 #include "pipeline/progress.hpp"
 #include "scan/scan_simulator.hpp"
 #include "spinhash/limits.hpp"
@@ -25,6 +26,7 @@ bool load_model_meshes(const std::vector<std::string>& inputs, std::vector<Model
     const std::string& f = files[i];
     ModelMesh m;
     m.name = std::filesystem::path(f).stem().string();
+    m.vehicle_class = class_of_file(f);
     std::string why;
     if (m.name.empty() || m.name.size() >= kMaxModelNameBytes) {
       problems.push_back(f + ": model name must be 1 to " + std::to_string(kMaxModelNameBytes - 1) +
@@ -58,7 +60,7 @@ bool scan_models(const std::vector<ModelMesh>& meshes, double spacing, std::vect
       *error = m.name + ": scan failed: " + (scan.ok() ? std::string("no points") : scan.error);
       return false;
     }
-    out->push_back(host::ModelCloud{m.name, std::move(scan.xyz)});
+    out->push_back(host::ModelCloud{m.name, std::move(scan.xyz), m.vehicle_class});
     progress.tick(static_cast<uint32_t>(out->size()));
   }
   return true;

@@ -13,9 +13,11 @@ namespace spinhash::pipeline {
 struct ModelMesh {
   std::string name;  // file stem
   host::Mesh mesh;
+  VehicleClass vehicle_class = VehicleClass::kUnclassified;  // model_classes.hpp
 };
 
-// Files and directories (their mesh files) to loaded meshes. Tries every
+// Files and directories (their mesh files) to loaded meshes, each with the
+// class its folder or name gives (class_of_file). Tries every
 // file; false when any input is missing or holds no mesh, a file won't load
 // or has a bad name (empty, too long, a second file with the same stem):
 // then *error has one line per such input or file, naming it, and a last

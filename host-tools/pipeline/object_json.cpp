@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "pipeline/class_json.hpp"
 #include "pipeline/json_line.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/status_word.hpp"
@@ -38,7 +39,7 @@ std::vector<JsonMember> object_members(const std::string& tile, uint32_t k, cons
                                        const SceneObject& o) {
   const bool ranked = o.ranking_count > 0;
   const double extent[3] = {o.extent[0], o.extent[1], o.extent[2]};
-  return {
+  std::vector<JsonMember> members = {
       {"tile", json_string(tile)},
       {"object", std::to_string(k)},
       {"kind", json_string(object_kind_name(o.kind))},
@@ -46,6 +47,9 @@ std::vector<JsonMember> object_members(const std::string& tile, uint32_t k, cons
       {"model", ranked ? json_string(model_name(db, o.ranking[0].model)) : "null"},
       {"confident", o.confident ? "true" : "false"},
       {"group_size", std::to_string(o.group_size)},
+  };
+  for (JsonMember& m : class_members(db, o.classes, o.class_count, o.class_confident)) members.push_back(m);
+  const std::vector<JsonMember> rest = {
       {"score", ranked ? json_number(o.ranking[0].score) : "null"},
       {"ranking", ranking_json(db, o)},
       {"pose", ranked && o.ranking[0].has_pose ? pose_json(o.ranking[0].pose) : std::string("null")},
@@ -55,6 +59,8 @@ std::vector<JsonMember> object_members(const std::string& tile, uint32_t k, cons
       {"extent", triple_json(extent, 4)},
       {"heading_deg", json_number(o.heading_deg, 5)},
   };
+  members.insert(members.end(), rest.begin(), rest.end());
+  return members;
 }
 
 std::string members_json(const std::vector<JsonMember>& members) {

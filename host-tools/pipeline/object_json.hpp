@@ -17,8 +17,8 @@ struct JsonMember {
 };
 
 // "tile", "object", "kind", "status", "model", "confident", "group_size",
-// "score", "ranking", "pose", "ground_gap", "points", "center", "extent",
-// "heading_deg".
+// "class", "class_confident", "class_ranking" (class_json.hpp), "score", "ranking", "pose", "ground_gap",
+// "points", "center", "extent", "heading_deg".
 std::vector<JsonMember> object_members(const std::string& tile, uint32_t k, const Database& db,
                                        const SceneObject& o);
 

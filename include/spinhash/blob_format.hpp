@@ -1,4 +1,4 @@
-// On-disk layout of a spinhash database blob (.shdb), format v3.
+// On-disk layout of a spinhash database blob (.shdb), format v4.
 // docs/blob-format.md is the normative description; these structs mirror it.
 // All integers and floats are stored in the byte order named by the header.
 #pragma once
@@ -10,8 +10,9 @@ namespace spinhash {
 namespace blob {
 
 constexpr char kMagic[8] = {'S', 'P', 'I', 'N', 'H', 'S', 'H', 'D'};
-// v3: normals up within 45 degrees of vertical; v2: the nearest-feature field.
-constexpr uint32_t kFormatVersion = 3;
+// v4: a vehicle class per model; v3: normals up within 45 degrees of
+// vertical; v2: the nearest-feature field.
+constexpr uint32_t kFormatVersion = 4;
 constexpr uint32_t kByteOrderMark = 0x01020304u;  // reads 0x04030201 on the other byte order
 constexpr uint32_t kSectionAlignment = 64;
 
@@ -94,7 +95,8 @@ struct ModelRecord {
   float bbox_max[3];
   uint32_t field_dims[3];  // voxels along x, y, z of the nearest-feature field (0 when none)
   uint32_t field_base;     // index into kNearestField of voxel (0,0,0)'s first slot
-  uint8_t reserved[4];     // zero (pads the record to 128 bytes)
+  uint8_t vehicle_class;   // < kVehicleClassCount (vehicle_classes.h; 0: unclassified)
+  uint8_t reserved[3];     // zero (pads the record to 128 bytes)
 };
 static_assert(sizeof(ModelRecord) == 128, "model record is 128 bytes");
 

@@ -9,6 +9,7 @@
 #include "spinhash/database.hpp"
 #include "spinhash/features.hpp"
 #include "spinhash/status.hpp"
+#include "spinhash/vehicle_class.hpp"
 
 namespace spinhash {
 
@@ -26,6 +27,16 @@ struct RankedModel {
   bool has_pose = false;
   uint32_t hypotheses = 0;  // poses verified for this model
   uint32_t inliers = 0;     // query features within Delta under the best pose
+};
+
+// One vehicle class of the database (vehicle_classes.h), scored by its best
+// model: the level an answer can give when the scan does not tell one model
+// from another (a sparse scan: "a pickup", not which).
+struct RankedClass {
+  uint32_t vehicle_class = 0;  // VehicleClass id (vehicle_class_name())
+  float score = 0.0f;          // its best model's score (RankedModel::score)
+  uint32_t model = 0;          // that model (database index)
+  uint32_t best_rank = 0;      // that model's place in Result::ranking
 };
 
 struct RecognitionStats {
@@ -58,6 +69,15 @@ struct Result {
   // does not tell them apart (BRAN, SRAN). 1: the first stands alone (always
   // for SIND, which ranks by votes); 0: no ranking.
   uint32_t group_size = 0;
+  // The classes of the ranked models, best first (by their best model's
+  // score; ties by class id); in the workspace like `ranking`.
+  const RankedClass* class_ranking = nullptr;
+  uint32_t class_ranking_count = 0;
+  // The first class leads the next by min_margin x sqrt(features), its best
+  // model explains the scan as `confident` asks (without the look-alike,
+  // extent-shortfall and density tests: a class is told apart on less) and
+  // the scan carries enough evidence (docs/api.md, section 3).
+  bool class_confident = false;
   RecognitionStats stats;
 };
 

@@ -93,6 +93,10 @@ struct SceneObject {
   uint32_t ranking_count = 0;            // <= top_n
   bool confident = false;
   uint32_t group_size = 0;  // Result::group_size of its recognition (may exceed ranking_count)
+  // The class level (Result::class_ranking; best_rank may exceed ranking_count).
+  RankedClass classes[kVehicleClassCount] = {};
+  uint32_t class_count = 0;
+  bool class_confident = false;  // Result::class_confident and the class leader's size agrees
   // The best model's bottom above the terrain under its pose, m (mean of its
   // box's four bottom corners; < 0: sunk into it); NaN without a ranking or
   // without terrain under it.

@@ -23,6 +23,7 @@
 #include <stdint.h>
 
 #include "spinhash/config_fields.h"
+#include "spinhash/vehicle_classes.h"
 
 #ifdef __cplusplus
 #define SPINHASH_NOEXCEPT noexcept /* the C++ side never throws */
@@ -120,8 +121,14 @@ typedef struct spinhash_result {
   /* Leading models within min_margin x sqrt(features) of the first: the scan
    * does not tell them apart (1: the first stands alone; 0: no ranking). */
   uint32_t group_size;
+  /* The classes of the ranked models, best first (spinhash_result_class),
+   * and whether the first is confident: it leads the next class by
+   * min_margin x sqrt(features) on enough evidence (docs/api.md). */
+  uint32_t class_ranking_count;
+  uint32_t class_confident;
   spinhash_stats stats;
   const void* ranking_;               /* private */
+  const void* class_ranking_;         /* private */
   const spinhash_database* database_; /* private: for model names */
 } spinhash_result;
 
@@ -136,6 +143,14 @@ typedef struct spinhash_ranked_model {
   double pose[16];
   const char* name; /* NUL-terminated, inside the blob */
 } spinhash_ranked_model;
+
+/* One ranked vehicle class: scored by its best model. */
+typedef struct spinhash_ranked_class {
+  uint32_t vehicle_class; /* id in SPINHASH_VEHICLE_CLASSES (vehicle_classes.h) */
+  float score;            /* its best model's score */
+  uint32_t model;         /* that model */
+  const char* name;       /* the class's name, e.g. "pickup" */
+} spinhash_ranked_class;
 
 /* Log levels passed to the hook. */
 #define SPINHASH_LOG_ERROR 1
@@ -163,6 +178,12 @@ uint32_t spinhash_database_model_count(const spinhash_database* db) SPINHASH_NOE
 /* Name of model `index`, or a null pointer when out of range / not open. */
 const char* spinhash_database_model_name(const spinhash_database* db, uint32_t index) SPINHASH_NOEXCEPT;
 
+/* Vehicle class id of model `index` (vehicle_classes.h), or
+ * SPINHASH_CLASS_COUNT when out of range / not open. */
+uint32_t spinhash_database_model_class(const spinhash_database* db, uint32_t index) SPINHASH_NOEXCEPT;
+/* Name of class id `vehicle_class` ("sedan", ...); "unknown" outside the list. */
+const char* spinhash_class_name(uint32_t vehicle_class) SPINHASH_NOEXCEPT;
+
 /* Carves every buffer from the workspace; the database must outlive rec. */
 spinhash_status spinhash_recognizer_init(spinhash_recognizer* rec, const spinhash_database* db,
                                          const spinhash_config* config, void* workspace,
@@ -175,6 +196,9 @@ spinhash_status spinhash_recognize_f64(spinhash_recognizer* rec, const double* x
 /* Entry `rank` (0 = best) of a successful result. */
 spinhash_status spinhash_result_entry(const spinhash_result* result, uint32_t rank,
                                       spinhash_ranked_model* out) SPINHASH_NOEXCEPT;
+/* Class `rank` (0 = best) of a successful result. */
+spinhash_status spinhash_result_class(const spinhash_result* result, uint32_t rank,
+                                      spinhash_ranked_class* out) SPINHASH_NOEXCEPT;
 
 #ifdef __cplusplus
 }

@@ -3,12 +3,18 @@
 // spinhash database, through the same host pipeline as the spinhash command.
 #include "bindings.hpp"
 #include "pipeline/version.hpp"
+#include "spinhash/vehicle_class.hpp"
 
 PYBIND11_MODULE(_spinhash, m) {
   m.doc() =
       "spinhash: 3D object recognition in airborne lidar point clouds (spin images, LSH, batch RANSAC). "
       "See docs/python.md.";
   m.attr("__version__") = spinhash::pipeline::version();
+  // Every class a model can carry, in id order (spinhash/vehicle_classes.h).
+  pybind11::list classes;
+  for (uint32_t id = 0; id < spinhash::kVehicleClassCount; ++id)
+    classes.append(spinhash::vehicle_class_name(id));
+  m.attr("CLASS_NAMES") = pybind11::tuple(classes);
   spinhash::python::bind_database(m);
   spinhash::python::bind_config(m);
   spinhash::python::bind_result(m);

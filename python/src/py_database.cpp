@@ -56,6 +56,7 @@ py::list models(const PyDatabase& d) {
     const blob::ModelRecord& r = d.file.db.model(m);
     py::dict model;
     model["name"] = pipeline::model_name(d.file.db, m);
+    model["class"] = vehicle_class_name(r.vehicle_class);
     model["features"] = r.feature_count;
     model["extent"] = py::make_tuple(static_cast<double>(r.bbox_max[0] - r.bbox_min[0]),
                                      static_cast<double>(r.bbox_max[1] - r.bbox_min[1]),
@@ -106,7 +107,8 @@ void bind_database(py::module_& m) {
       .def_static("from_bytes", &open_bytes, py::arg("data"),
                   "Opens a database held in bytes (copied; ValueError when it is not a valid database).")
       .def_property_readonly("names", &model_names, "model names, in database order")
-      .def_property_readonly("models", &models, "one dict per model: name, features, extent (x, y, z in m)")
+      .def_property_readonly("models", &models,
+                             "one dict per model: name, class, features, extent (x, y, z in m)")
       .def_property_readonly("info", &info, "format, size and the parameters the database was built with")
       .def("__len__", [](const PyDatabase& d) { return d.file.db.model_count(); })
       .def("__repr__", [](const PyDatabase& d) {

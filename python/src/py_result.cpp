@@ -34,6 +34,19 @@ py::list ranking_list(const Database& db, const std::vector<RankedModel>& rankin
   return out;
 }
 
+py::list class_list(const Database& db, const RankedClass* classes, uint32_t count) {
+  py::list out;
+  for (uint32_t i = 0; i < count; ++i)
+    out.append(py::make_tuple(vehicle_class_name(classes[i].vehicle_class),
+                              static_cast<double>(classes[i].score),
+                              pipeline::model_name(db, classes[i].model)));
+  return out;
+}
+
+py::object first_class(const RankedClass* classes, uint32_t count) {
+  return count > 0 ? py::object(py::str(vehicle_class_name(classes[0].vehicle_class))) : py::none();
+}
+
 py::object best_pose(const std::vector<RankedModel>& ranking) {
   if (ranking.empty() || !ranking[0].has_pose) return py::none();
   return pose_matrix(ranking[0].pose);
@@ -46,6 +59,9 @@ ResultCopy copy_result(const Result& r, double time_ms) {
   c.result = r;
   c.result.ranking = nullptr;
   if (r.ranking != nullptr) c.ranking.assign(r.ranking, r.ranking + r.ranking_count);
+  c.result.class_ranking = nullptr;
+  if (r.status == Status::kOk && r.class_ranking != nullptr)
+    c.classes.assign(r.class_ranking, r.class_ranking + r.class_ranking_count);
   c.time_ms = time_ms;
   return c;
 }
@@ -58,6 +74,10 @@ PyResult make_result(const Database& db, const ResultCopy& r) {
   out.pose = best_pose(r.ranking);
   out.confident = r.result.confident;
   out.group_size = r.result.status == Status::kOk ? r.result.group_size : 0u;
+  const uint32_t classes = static_cast<uint32_t>(r.classes.size());
+  out.vehicle_class = first_class(r.classes.data(), classes);
+  out.class_confident = r.result.status == Status::kOk && r.result.class_confident;
+  out.class_ranking = class_list(db, r.classes.data(), classes);
   out.stats = stats_dict(r.result.stats);
   out.time_ms = r.time_ms;
   return out;
@@ -75,6 +95,9 @@ PySceneObject make_scene_object(const Database& db, const SceneObjectCopy& c) {
   out.pose = best_pose(c.ranking);
   out.confident = o.confident;
   out.group_size = o.group_size;
+  out.vehicle_class = first_class(o.classes, o.class_count);
+  out.class_confident = o.class_confident;
+  out.class_ranking = class_list(db, o.classes, o.class_count);
   out.ground_gap =
       std::isfinite(o.ground_gap) ? py::object(py::float_(static_cast<double>(o.ground_gap))) : py::none();
   out.points = o.points;
@@ -97,6 +120,12 @@ void bind_result(py::module_& m) {
       .def_readonly("group_size", &PyResult::group_size,
                     "leading models the scan does not tell apart (within min_margin); 1: the first "
                     "stands alone")
+      .def_readonly("vehicle_class", &PyResult::vehicle_class,
+                    "the first class's name (the CLI's \"class\"), e.g. 'pickup'; None without a ranking")
+      .def_readonly("class_confident", &PyResult::class_confident,
+                    "the first class leads the next by min_margin on enough evidence")
+      .def_readonly("class_ranking", &PyResult::class_ranking,
+                    "[(class name, score, best model's name), ...], best first")
       .def_readonly("stats", &PyResult::stats, "the CLI's \"stats\" object as a dict")
       .def_readonly("time_ms", &PyResult::time_ms, "wall time of the recognition, ms")
       .def_property_readonly(
@@ -109,7 +138,9 @@ void bind_result(py::module_& m) {
       .def("__repr__", [](const PyResult& r) {
         std::string best = r.ranking.empty() ? "None" : std::string(py::repr(r.ranking[0]));
         return "spinhash.Result(status=" + std::string(py::repr(r.status)) + ", best=" + best +
-               ", confident=" + (r.confident ? "True" : "False") + ")";
+               ", confident=" + (r.confident ? "True" : "False") +
+               ", vehicle_class=" + std::string(py::repr(r.vehicle_class)) +
+               ", class_confident=" + (r.class_confident ? "True" : "False") + ")";
       });
   py::class_<PySceneObject>(m, "SceneObject",
                             "One object of a tile: the fields of a line of `spinhash scene`.")
@@ -124,6 +155,11 @@ void bind_result(py::module_& m) {
                     "a confident recognition that fits the object's size")
       .def_readonly("group_size", &PySceneObject::group_size,
                     "leading models its recognition does not tell apart (within min_margin)")
+      .def_readonly("vehicle_class", &PySceneObject::vehicle_class, "the first class's name, or None")
+      .def_readonly("class_confident", &PySceneObject::class_confident,
+                    "a confident class whose leader fits the object's size")
+      .def_readonly("class_ranking", &PySceneObject::class_ranking,
+                    "[(class name, score, best model's name), ...], best first")
       .def_readonly("ground_gap", &PySceneObject::ground_gap,
                     "best model's box bottom above the terrain under its pose, m, or None")
       .def_readonly("points", &PySceneObject::points, "points in the object")

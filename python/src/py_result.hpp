@@ -15,6 +15,7 @@ namespace spinhash::python {
 struct ResultCopy {
   Result result;
   std::vector<RankedModel> ranking;
+  std::vector<RankedClass> classes;  // class_ranking
   double time_ms = 0.0;
 };
 ResultCopy copy_result(const Result& r, double time_ms);
@@ -25,8 +26,11 @@ struct PyResult {
   pybind11::list ranking;  // (model name, score), best first
   pybind11::object pose;   // 4x4 float64 of the best model, or None (SIND, nothing found)
   bool confident = false;
-  uint32_t group_size = 0;  // Result::group_size
-  pybind11::dict stats;     // SPINHASH_STATS_FIELDS under the CLI's JSON keys
+  uint32_t group_size = 0;         // Result::group_size
+  pybind11::object vehicle_class;  // the first class's name (the CLI's "class"), or None
+  bool class_confident = false;
+  pybind11::list class_ranking;  // (class name, score, model name), best first
+  pybind11::dict stats;          // SPINHASH_STATS_FIELDS under the CLI's JSON keys
   double time_ms = 0.0;
 };
 PyResult make_result(const Database& db, const ResultCopy& r);
@@ -46,6 +50,9 @@ struct PySceneObject {
   pybind11::object pose;   // 4x4 float64, or None
   bool confident = false;
   uint32_t group_size = 0;
+  pybind11::object vehicle_class;  // as PyResult
+  bool class_confident = false;
+  pybind11::list class_ranking;
   pybind11::object ground_gap;  // m: best model's bottom above the terrain, or None
   uint32_t points = 0;
   pybind11::tuple center;  // georeferenced footprint centre, z mid-height

@@ -100,6 +100,26 @@ TEST_CASE("C API: the golden blob opens, recognises in float and double, and nam
   CHECK(best32.pose[0] == doctest::Approx(want.pose[0]).epsilon(1e-5));
   spinhash_ranked_model past;
   CHECK(spinhash_result_entry(&r64, r64.ranking_count, &past) == SPINHASH_INVALID_ARGUMENT);
+
+  // The class level: toy-0 is a sedan (toy_class), and so the first class.
+  CHECK(spinhash_database_model_class(&db, 0) == 1u);
+  CHECK(std::strcmp(spinhash_class_name(spinhash_database_model_class(&db, 0)), "sedan") == 0);
+  CHECK(spinhash_database_model_class(&db, 6) == SPINHASH_CLASS_COUNT);
+  CHECK(std::strcmp(spinhash_class_name(SPINHASH_CLASS_COUNT), "unknown") == 0);
+  REQUIRE(r32.class_ranking_count >= 2u);
+  CHECK(r32.class_ranking_count <= SPINHASH_CLASS_COUNT);
+  CHECK(r64.class_confident == r32.class_confident);
+  spinhash_ranked_class first, second, beyond;
+  REQUIRE(spinhash_result_class(&r32, 0, &first) == SPINHASH_OK);
+  REQUIRE(spinhash_result_class(&r32, 1, &second) == SPINHASH_OK);
+  CHECK(std::strcmp(first.name, "sedan") == 0);
+  CHECK(first.model == best32.model);
+  CHECK(first.score == best32.score);
+  CHECK(second.score <= first.score);
+  CHECK(second.vehicle_class != first.vehicle_class);
+  CHECK(spinhash_result_class(&r32, r32.class_ranking_count, &beyond) == SPINHASH_INVALID_ARGUMENT);
+  CHECK(spinhash_result_class(&r32, 0, nullptr) == SPINHASH_INVALID_ARGUMENT);
+  CHECK(spinhash_result_class(nullptr, 0, &beyond) == SPINHASH_INVALID_ARGUMENT);
 }
 
 TEST_CASE("C API: bad arguments are statuses, never crashes") {

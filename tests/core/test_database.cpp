@@ -10,11 +10,16 @@
 
 #include "blob/blob_writer.hpp"
 #include "blob/tiny_blob.hpp"
+#include "spinhash/vehicle_class.hpp"
 #include "support/blob_patch.hpp"
 #include "support/golden_files.hpp"
 
 using spinhash::Database;
+using spinhash::kVehicleClassCount;
+using spinhash::parse_vehicle_class;
 using spinhash::Status;
+using spinhash::vehicle_class_name;
+using spinhash::VehicleClass;
 using spinhash::test::BlobPatch;
 namespace blob = spinhash::blob;
 namespace host = spinhash::host;
@@ -177,8 +182,8 @@ TEST_CASE("a byte-swapped byte-order mark alone is kBlobWrongByteOrder") {
   CHECK(b.open() == Status::kBlobWrongByteOrder);
 }
 
-TEST_CASE("version 1 (no nearest-feature field) and the next version are kBlobUnsupportedVersion") {
-  for (uint32_t version : {1u, blob::kFormatVersion + 1u}) {
+TEST_CASE("versions 1-3 (no vehicle class) and the next version are kBlobUnsupportedVersion") {
+  for (uint32_t version : {1u, 2u, 3u, blob::kFormatVersion + 1u}) {
     BlobPatch b = fresh();
     b.header().version = version;
     b.reseal_header();
@@ -407,6 +412,39 @@ TEST_CASE("bad model names are kBlobBadModelTable") {
   Database db;
   CHECK(ok.open(&db) == Status::kOk);
   CHECK(db.find_model(std::string(spinhash::kMaxModelNameBytes - 1u, 'z').c_str()) == 2);
+}
+
+TEST_CASE("every model's vehicle class is read back; a class outside the list is kBlobBadModelTable") {
+  Database db;
+  REQUIRE(fresh().open(&db) == Status::kOk);
+  for (uint32_t i = 0; i < kModels; ++i) CHECK(db.model(i).vehicle_class == tiny().models[i].vehicle_class);
+  CHECK(db.model(0).vehicle_class != 0u);  // the tiny blob gives every model a class
+  for (uint32_t bad : {kVehicleClassCount, 0xFFu}) {
+    CAPTURE(bad);
+    BlobPatch b = fresh();
+    b.model(1).vehicle_class = static_cast<uint8_t>(bad);
+    b.reseal();
+    CHECK(b.open() == Status::kBlobBadModelTable);
+  }
+  BlobPatch last = fresh();  // the last class and "unclassified" are valid
+  last.model(0).vehicle_class = static_cast<uint8_t>(kVehicleClassCount - 1u);
+  last.model(1).vehicle_class = 0u;
+  last.reseal();
+  CHECK(last.open() == Status::kOk);
+}
+
+TEST_CASE("class names: every id has a name that parses back to it; others do not parse") {
+  for (uint32_t id = 0; id < kVehicleClassCount; ++id) {
+    VehicleClass c = VehicleClass::kOther;
+    CHECK(parse_vehicle_class(vehicle_class_name(id), &c));
+    CHECK(static_cast<uint32_t>(c) == id);
+  }
+  CHECK(std::string(vehicle_class_name(kVehicleClassCount)) == "unknown");
+  CHECK_FALSE(parse_vehicle_class("Sedan", nullptr));
+  CHECK_FALSE(parse_vehicle_class("sedans", nullptr));
+  CHECK_FALSE(parse_vehicle_class("", nullptr));
+  CHECK_FALSE(parse_vehicle_class(nullptr, nullptr));
+  CHECK(parse_vehicle_class("apc", nullptr));
 }
 
 // A named corruption of a fresh blob; check_corruptions reseals each and
@@ -787,6 +825,7 @@ TEST_CASE("non-zero reserved fields and name tails are kBlobNotZeroed, even re-s
       {"table entry reserved2", [](BlobPatch& b) { b.entry(10).reserved2 = 0x80000000u; }},
       {"params reserved", [](BlobPatch& b) { b.params().reserved[47] = 2; }},
       {"model reserved", [](BlobPatch& b) { b.model(2).reserved[0] = 3; }},
+      {"model reserved, last byte", [](BlobPatch& b) { b.model(0).reserved[2] = 0x40; }},
       {"a name's tail", [](BlobPatch& b) { b.model(1).name[spinhash::kMaxModelNameBytes - 1u] = 'x'; }},
       {"padding after the table",
        [](BlobPatch& b) {

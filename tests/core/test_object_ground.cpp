@@ -282,3 +282,42 @@ TEST_CASE("sparse ground (0.24 m) around a toy vehicle is dropped on level and 1
     CHECK(dropped <= truth_ground + 0.05 * (n - truth_ground));
   }
 }
+
+TEST_CASE(
+    "a survey's sparse ground (0.35 m, 8 per m^2) around a sparse toy is dropped; the bare toy keeps its "
+    "points") {
+  // The 1 m cells the footprint's edge cuts hold a point or two: too few for
+  // a spread, but flat (sparse-flat cells count as clean border).
+  for (double slope : {0.0, 10.0}) {
+    CAPTURE(slope);
+    uint32_t truth_ground = 0;
+    const test::Tile tile = toy_on_plane(slope, 0.4, 0.35f, 0.03, 5, &truth_ground);
+    // A round patch of ground (4.5 m): the cells along its edge are cut.
+    std::vector<float> pts;
+    truth_ground = 0;
+    for (size_t i = 0; i < tile.ground.size(); ++i) {
+      const float x = static_cast<float>(tile.xyz[3 * i]), y = static_cast<float>(tile.xyz[3 * i + 1]);
+      if (tile.ground[i] && x * x + y * y > 4.5f * 4.5f) continue;
+      truth_ground += tile.ground[i];
+      pts.insert(pts.end(), {x, y, static_cast<float>(tile.xyz[3 * i + 2])});
+    }
+    const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
+    std::vector<float> scratch(kObjectGroundScratchFloats);
+    const uint32_t dropped = remove_object_ground(pts.data(), n, kClearance, scratch.data());
+    CHECK(dropped >= 0.95 * truth_ground);
+    CHECK(dropped <= truth_ground + 0.05 * (n - truth_ground));
+  }
+  // The toys alone at that spacing: their roofs and hoods are flat, but a
+  // bare vehicle shows too few clean cells to be terrain.
+  for (uint32_t toy = 0; toy < test::kToyModels; ++toy) {
+    CAPTURE(toy);
+    const std::vector<double> model = test::toy_vehicle_points(toy, 0.35f);
+    std::vector<float> pts;
+    for (size_t i = 0; i < model.size(); i += 3)
+      if (model[i + 2] > 0.2)
+        pts.insert(pts.end(), {float(model[i]), float(model[i + 1]), float(model[i + 2])});
+    std::vector<float> scratch(kObjectGroundScratchFloats);
+    CHECK(remove_object_ground(pts.data(), static_cast<uint32_t>(pts.size() / 3), kClearance,
+                               scratch.data()) == 0u);
+  }
+}

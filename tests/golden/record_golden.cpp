@@ -74,8 +74,8 @@ void write_entry(FILE* h, const golden::GoldenQuery& g) {
 bool record(const std::string& dir) {
   std::vector<host::ModelCloud> clouds;
   for (uint32_t i = 0; i < test::kToyModels; ++i)
-    clouds.push_back(
-        host::ModelCloud{"toy-" + std::to_string(i), test::toy_vehicle_points(i, kModelSpacing)});
+    clouds.push_back(host::ModelCloud{"toy-" + std::to_string(i), test::toy_vehicle_points(i, kModelSpacing),
+                                      test::toy_class(i)});
   host::BlobContent content;
   host::BuildReport report;
   std::string error;

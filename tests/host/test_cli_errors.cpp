@@ -269,7 +269,7 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
   // The older format says which it is and how to get the current one.
   const Run old = f.run("info " + f.q(dir.file("format1.shdb")));
   CHECK(contains(old.err,
-                 "format 1; this spinhash reads format 3: rebuild it from its meshes with `spinhash build`"));
+                 "format 1; this spinhash reads format 4: rebuild it from its meshes with `spinhash build`"));
   write_bytes(dir.file("empty.shdb"), "");
   const Run empty = f.run("verify " + f.q(dir.file("empty.shdb")));
   CHECK(empty.exit_code == kExitError);

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "cli_runner.hpp"
@@ -155,4 +156,46 @@ TEST_CASE("scene finds the scanned vehicle on sloped ground, with a georeference
   REQUIRE(spinhash::host::read_file_bytes(pictures + "/tile-7.png", 1u << 24, &png, &error));
   CHECK(png.rfind("\x89PNG\r\n\x1a\n", 0) == 0);
   CHECK(png.size() > 1000);
+}
+
+TEST_CASE(
+    "build gives each model its class: a manifest, then the folder's name, then the name's first word") {
+  TempDir dir("cli-classes");
+  const std::string gen = dir.file("gen");
+  REQUIRE(run_spinhash(dir, "generate --count 3 -o " + shell_quoted(gen)).exit_code ==
+          0);                                     // sedan, van, truck
+  const std::string folder = dir.file("pickup");  // a folder named after a class
+  std::filesystem::create_directories(folder);
+  std::filesystem::rename(gen + "/van-00.obj", folder + "/hilux.obj");
+  const std::string db = dir.file("c.shdb"), manifest = dir.file("classes.txt");
+  write_bytes(manifest, "# model class\ntruck-00 bus  # a manifest overrides the name\n");
+  CliRun b = run_spinhash(dir, "build --quiet --classes " + shell_quoted(manifest) + " -o " +
+                                   shell_quoted(db) + " " + shell_quoted(gen) + " " + shell_quoted(folder));
+  INFO(b.err);
+  REQUIRE(b.exit_code == 0);
+  CliRun info = run_spinhash(dir, "info --format json " + shell_quoted(db));
+  CHECK(contains(info.out, "{\"name\":\"sedan-00\",\"class\":\"sedan\""));
+  CHECK(contains(info.out, "{\"name\":\"truck-00\",\"class\":\"bus\""));
+  CHECK(contains(info.out, "{\"name\":\"hilux\",\"class\":\"pickup\""));
+  write_bytes(manifest, "truck-00 lorry\nnobody sedan\nsedan-00\n");
+  CliRun bad = run_spinhash(dir, "build --quiet --classes " + shell_quoted(manifest) + " -o " +
+                                     shell_quoted(dir.file("bad.shdb")) + " " + shell_quoted(gen));
+  CHECK(bad.exit_code == 1);
+  CHECK(contains(bad.err, "classes.txt:1: unknown class 'lorry'"));
+  CHECK(contains(bad.err, "classes.txt:2: no model named 'nobody'"));
+  CHECK(contains(bad.err, "classes.txt:3: expected 'MODEL_NAME CLASS'"));
+}
+
+TEST_CASE("recognize answers with a class ranking; a sparse scan names a class, never a model, confidently") {
+  const Pipeline& p = pipeline();
+  const std::string query = p.dir.file("sparse.ply");
+  REQUIRE(run_spinhash(p.dir, "scan " + shell_quoted(p.meshes + "/truck-00.obj") + " -o " +
+                                  shell_quoted(query) + " --random-pose --seed 4 --spacing 0.45")
+              .exit_code == 0);
+  CliRun r = run_spinhash(p.dir, "recognize --db " + shell_quoted(p.db) + " " + shell_quoted(query));
+  INFO(r.out);
+  REQUIRE(r.exit_code == 0);
+  CHECK(contains(r.out, "\"class\":\"truck\""));
+  CHECK(contains(r.out, "\"class_ranking\":[{\"class\":\"truck\""));
+  CHECK(contains(r.out, "\"confident\":false"));  // a few points per m^2: not enough to name a model
 }

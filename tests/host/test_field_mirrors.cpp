@@ -8,6 +8,7 @@
 #include "cli/report_keys.hpp"
 #include "cli_runner.hpp"
 #include "spinhash/config_fields.h"
+#include "spinhash/vehicle_classes.h"
 
 namespace {
 
@@ -84,4 +85,34 @@ TEST_CASE("every key of info and verify --format json is in their output and in 
     CHECK(t::contains(all, "\"" + std::string(key) + "\":"));
     CHECK(t::contains(docs, "`" + std::string(key) + "`"));
   }
+}
+
+TEST_CASE(
+    "every class key of recognize and scene lines, and every class name, is in docs/cli.md and the output") {
+  namespace t = spinhash::host::test;
+  const t::TempDir dir("field-mirrors-class");
+  const std::string meshes = dir.file("meshes"), db = dir.file("two.shdb"), q = dir.file("q.ply");
+  REQUIRE(t::run_spinhash(dir, "generate --count 2 -o " + t::shell_quoted(meshes)).exit_code == 0);
+  REQUIRE(t::run_spinhash(dir, "build --quiet -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
+              .exit_code == 0);
+  REQUIRE(t::run_spinhash(dir, "scan " + t::shell_quoted(meshes + "/van-00.obj") + " --random-pose -o " +
+                                   t::shell_quoted(q))
+              .exit_code == 0);
+  const t::CliRun rec =
+      t::run_spinhash(dir, "recognize --db " + t::shell_quoted(db) + " " + t::shell_quoted(q));
+  REQUIRE(rec.exit_code == 0);
+  const std::string docs = read_bytes(SPINHASH_SOURCE_DIR "/docs/cli.md");
+  for (const char* key : spinhash::cli::class_keys::kAll) {
+    INFO("class key ", std::string(key));
+    CHECK(t::contains(rec.out, "\"" + std::string(key) + "\":"));
+    CHECK(t::contains(docs, "`" + std::string(key) + "`"));
+  }
+  CHECK(t::contains(rec.out, "\"class\":\"van\""));  // generate names the fleet by family: van-00 is a van
+#define SPINHASH_CLASS_DOCUMENTED(id, Name, name, help) \
+  {                                                     \
+    INFO("class " name);                                \
+    CHECK(t::contains(docs, "`" name "`"));             \
+  }
+  SPINHASH_VEHICLE_CLASSES(SPINHASH_CLASS_DOCUMENTED)
+#undef SPINHASH_CLASS_DOCUMENTED
 }

@@ -82,3 +82,15 @@ def test_the_settings_table_is_the_config():
         if name in spinhash.Config.ranges:
             lo, hi = (ast.literal_eval(v) for v in valid.split(" - "))
             assert (lo, hi) == spinhash.Config.ranges[name], name
+
+
+def test_the_class_level_is_documented_and_every_class_named():
+    """docs/python.md names the class attributes; CLASS_NAMES is vehicle_classes.h's list, in id order."""
+    for attribute in ("vehicle_class", "class_confident", "class_ranking", "CLASS_NAMES"):
+        assert f"`{attribute}`" in DOC or f"`spinhash.{attribute}`" in DOC
+        if attribute != "CLASS_NAMES":
+            assert hasattr(spinhash.Result, attribute) and hasattr(spinhash.SceneObject, attribute)
+    header = (SOURCE_DIR / "include" / "spinhash" / "vehicle_classes.h").read_text()
+    listed = re.findall(r'C\((\d+), \w+, "([a-z]+)"', header)
+    assert [int(i) for i, _ in listed] == list(range(len(listed)))
+    assert spinhash.CLASS_NAMES == tuple(name for _, name in listed)

@@ -26,7 +26,19 @@ def assert_same_answer(result, line):
     assert result.confident == line["confident"]
     assert result.group_size == line["group_size"]
     assert result.group_size >= (1 if result.ranking else 0)
+    assert_same_classes(result, line)
     assert result.stats == line["stats"]
+
+
+def assert_same_classes(answer, line):
+    """The class level: the CLI's class, class_confident and class_ranking."""
+    assert answer.vehicle_class == line["class"]
+    assert answer.class_confident == line["class_confident"]
+    assert [(c, m) for c, _, m in answer.class_ranking] == \
+        [(entry["class"], entry["model"]) for entry in line["class_ranking"]]
+    for (_, score, _), entry in zip(answer.class_ranking, line["class_ranking"]):
+        assert score == pytest.approx(entry["score"], rel=1e-6, abs=1e-9)
+    assert all(c in spinhash.CLASS_NAMES for c, _, _ in answer.class_ranking)
 
 
 @pytest.mark.parametrize("mode", ["bran", "sran", "sind"])
@@ -37,6 +49,7 @@ def test_each_mode_matches_the_cli(fleet, truck_query, mode):
     assert_same_answer(result, line)
     assert result.model == "truck-00"
     assert len(result.ranking) >= 2
+    assert result.vehicle_class == "truck"  # the fleet's family
 
 
 def test_keyword_settings_match_the_cli_flags(fleet, truck_query):
@@ -82,4 +95,4 @@ def test_database_describes_itself_as_info_does(fleet):
     assert f"{db.info['bins_alpha']}x{db.info['bins_beta']} bins" in text
     field = f"nearest field {db.info['field_cell']:g} m voxels, reach {db.info['field_reach']:g} m, "
     assert field + f"{db.info['field_slots']} slots, {db.info['field_entry_count']} entries" in text
-    assert db.info["format_version"] == 3 and db.info["field_entry_count"] > 0
+    assert db.info["format_version"] == 4 and db.info["field_entry_count"] > 0

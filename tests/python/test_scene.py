@@ -36,6 +36,9 @@ def test_the_scene_matches_the_cli(fleet, tile):
         assert (obj.kind, obj.status, obj.model, obj.confident, obj.group_size, obj.points) == \
             (line["kind"], line["status"], line["model"], line["confident"], line["group_size"],
              line["points"])
+        assert (obj.vehicle_class, obj.class_confident) == (line["class"], line["class_confident"])
+        assert [(c, m) for c, _, m in obj.class_ranking] == \
+            [(entry["class"], entry["model"]) for entry in line["class_ranking"]]
         assert [name for name, _ in obj.ranking] == [entry["model"] for entry in line["ranking"]]
         for (_, score), entry in zip(obj.ranking, line["ranking"]):
             assert score == pytest.approx(entry["score"], rel=1e-6)

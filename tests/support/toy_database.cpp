@@ -24,7 +24,15 @@ const Box kToyParts[kToyModels][2] = {
     {{0, 0, 0.7f, 3.8f, 1.7f, 0.8f}, {0.2f, 0, 1.3f, 1.5f, 1.5f, 0.5f}},     // small car
 };
 
+const VehicleClass kToyClasses[kToyModels] = {VehicleClass::kSedan, VehicleClass::kPickup,
+                                              VehicleClass::kTruck, VehicleClass::kTracked,
+                                              VehicleClass::kVan,   VehicleClass::kSedan};
+
 }  // namespace
+
+VehicleClass toy_class(uint32_t index) {
+  return index < kToyModels ? kToyClasses[index] : VehicleClass::kUnclassified;
+}
 
 std::vector<double> toy_vehicle_points(uint32_t index, float spacing) {
   std::vector<double> out;
@@ -42,7 +50,8 @@ std::vector<double> toy_vehicle_points(uint32_t index, float spacing) {
 std::vector<host::ModelCloud> toy_clouds() {
   std::vector<host::ModelCloud> clouds;
   for (uint32_t i = 0; i < kToyModels; ++i)
-    clouds.push_back(host::ModelCloud{"toy-" + std::to_string(i), toy_vehicle_points(i, 0.05f)});
+    clouds.push_back(
+        host::ModelCloud{"toy-" + std::to_string(i), toy_vehicle_points(i, 0.05f), toy_class(i)});
   return clouds;
 }
 
@@ -61,7 +70,7 @@ bool make_database(const std::vector<host::ModelCloud>& clouds, ToyDatabase* out
 bool make_toy_database(ToyDatabase* out, uint32_t twin_of) {
   std::vector<host::ModelCloud> clouds = toy_clouds();
   if (twin_of < kToyModels)
-    clouds.push_back(host::ModelCloud{"toy-twin", toy_vehicle_points(twin_of, 0.05f)});
+    clouds.push_back(host::ModelCloud{"toy-twin", toy_vehicle_points(twin_of, 0.05f), toy_class(twin_of)});
   return make_database(clouds, out);
 }
 

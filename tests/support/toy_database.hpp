@@ -14,6 +14,9 @@ namespace test {
 // Surface points of toy vehicle `index` (0..kToyModels-1) in its model frame.
 std::vector<double> toy_vehicle_points(uint32_t index, float spacing);
 constexpr uint32_t kToyModels = 6;
+// The class of toy `index`: sedan, pickup, truck, tracked, van, sedan (two
+// sedans, so a class has more than one model).
+VehicleClass toy_class(uint32_t index);
 
 struct ToyDatabase {
   host::AlignedBytes bytes;

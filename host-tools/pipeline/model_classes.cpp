@@ -1,0 +1,79 @@
+#include "pipeline/model_classes.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace spinhash::pipeline {
+namespace {
+
+bool class_named(const std::string& word, VehicleClass* out) {
+  return parse_vehicle_class(word.c_str(), out);
+}
+
+std::string class_list() {
+  std::string s;
+  for (uint32_t id = 0; id < kVehicleClassCount; ++id)
+    s += (id ? ", " : "") + std::string(vehicle_class_name(id));
+  return s;
+}
+
+// One manifest line into `name` and `cls`; false with *why when it is not "NAME CLASS".
+bool parse_line(const std::string& line, std::string* name, VehicleClass* cls, std::string* why) {
+  std::istringstream in(line.substr(0, line.find('#')));
+  std::string word, extra;
+  if (!(in >> *name)) return false;  // blank or comment
+  if (!(in >> word) || (in >> extra)) {
+    *why = "expected 'MODEL_NAME CLASS'";
+    return true;
+  }
+  if (!class_named(word, cls)) *why = "unknown class '" + word + "' (classes: " + class_list() + ")";
+  return true;
+}
+
+}  // namespace
+
+VehicleClass class_from_name(const std::string& name) {
+  VehicleClass c = VehicleClass::kUnclassified;
+  class_named(name.substr(0, name.find_first_of("-_")), &c);
+  return c;
+}
+
+VehicleClass class_of_file(const std::string& path) {
+  const std::filesystem::path p(path);
+  VehicleClass c = VehicleClass::kUnclassified;
+  if (class_named(p.parent_path().filename().string(), &c)) return c;
+  return class_from_name(p.stem().string());
+}
+
+bool apply_class_manifest(const std::string& path, std::vector<host::ModelCloud>* models,
+                          std::string* error) {
+  std::ifstream in(path);
+  if (!in) {
+    *error = path + ": cannot read the class manifest";
+    return false;
+  }
+  std::map<std::string, host::ModelCloud*> by_name;
+  for (host::ModelCloud& m : *models) by_name[m.name] = &m;
+  std::set<std::string> seen;
+  std::string line, problems;
+  for (uint32_t n = 1; std::getline(in, line); ++n) {
+    std::string name, why;
+    VehicleClass cls = VehicleClass::kUnclassified;
+    if (!parse_line(line, &name, &cls, &why)) continue;
+    if (why.empty() && by_name.count(name) == 0) why = "no model named '" + name + "'";
+    if (why.empty() && !seen.insert(name).second) why = "model '" + name + "' named twice";
+    if (!why.empty()) {
+      problems += path + ":" + std::to_string(n) + ": " + why + "\n";
+      continue;
+    }
+    by_name[name]->vehicle_class = cls;
+  }
+  if (problems.empty()) return true;
+  *error = problems.substr(0, problems.size() - 1);
+  return false;
+}
+
+}  // namespace spinhash::pipeline
