@@ -3,6 +3,7 @@
 // One JSON object per query per line on stdout; progress and errors on stderr.
 #include <cctype>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <memory>
 
@@ -10,6 +11,7 @@
 #include "cli/json_line.hpp"
 #include "cli/result_json.hpp"
 #include "cloud/cloud_reader.hpp"
+#include "cloud/point_source.hpp"
 #include "pipeline/answer_overlay.hpp"
 #include "pipeline/database_file.hpp"
 #include "pipeline/recognition_session.hpp"
@@ -22,6 +24,18 @@ using pipeline::DatabaseFile;
 using pipeline::load_database;
 using pipeline::RecognitionSession;
 namespace {
+
+// The query file's CRS as its header declares it ("" for none, standard
+// input, or a header that cannot be read again).
+std::string query_crs(const std::string& path) {
+  if (path == host::kStdinPath) return "";
+  try {
+    const host::Crs crs = host::read_cloud_header(path).crs;
+    return crs.known() ? crs.describe() : "";
+  } catch (const std::exception&) {
+    return "";
+  }
+}
 
 struct RecognizeArgs {
   std::string db_path;
@@ -87,7 +101,7 @@ int run_recognize(const RecognizeArgs& a) {
       continue;
     }
     Result r = session.recognize(xyz);
-    std::printf("%s\n", result_json(name, file.db, r, a.top, session.last_ms()).c_str());
+    std::printf("%s\n", result_json(name, file.db, r, a.top, session.last_ms(), query_crs(q)).c_str());
     std::fflush(stdout);  // a line per query as soon as it is known
     if (r.status != Status::kOk) exit_code = kExitCheckFailed;
     if (!write_answer_views(a, name, file.db, xyz, r, &error)) {

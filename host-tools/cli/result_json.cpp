@@ -34,7 +34,7 @@ std::string stats_json(const RecognitionStats& st) {
 }  // namespace
 
 std::string result_json(const std::string& query, const Database& db, const Result& r, uint32_t top,
-                        double time_ms) {
+                        double time_ms, const std::string& crs) {
   std::string s = "{\"query\":" + json_string(query) + ",\"status\":" + json_string(status_word(r.status));
   if (r.status != Status::kOk) s += ",\"error\":" + json_string(status_name(r.status));
   s += ",\"ranking\":[";
@@ -51,6 +51,7 @@ std::string result_json(const std::string& query, const Database& db, const Resu
   const bool ok = r.status == Status::kOk;
   s += "," +
        pipeline::class_json(db, r.class_ranking, ok ? r.class_ranking_count : 0u, ok && r.class_confident);
+  s += ",\"crs\":" + (crs.empty() ? std::string("null") : json_string(crs));
   s += ",\"time_ms\":" + json_number(time_ms, 4) + ",\"hypotheses\":" + std::to_string(r.stats.hypotheses);
   s += ",\"stats\":" + stats_json(r.stats) + "," + json_version_member() + "}";
   return s;

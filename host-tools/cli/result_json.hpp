@@ -13,7 +13,9 @@ const char* status_word(Status s);
 //  "confident":..,"group_size":..,"class":..,"class_confident":..,"class_ranking":[..],
 //  "time_ms":..,"hypotheses":..} plus "error" when not ok and a "stats" object.
 
+// crs: the query file's coordinate reference system (the pose's
+// translation is in it), as Crs::describe() names it; "" writes null.
 std::string result_json(const std::string& query, const Database& db, const Result& r, uint32_t top,
-                        double time_ms);
+                        double time_ms, const std::string& crs = "");
 
 }  // namespace spinhash::cli
