@@ -97,6 +97,11 @@ Status run_complete_rows(StreamBuffers& b) {
   Status status = Status::kOk;
   const double settled = b.stats.furthest_along - b.max_lag;
   while (settled >= static_cast<double>(b.next_row + 1) * b.lattice.core + b.lattice.margin) {
+    if (b.ring.count == 0) {  // nothing buffered (a confirmed gap): skip the empty rows at once
+      b.next_row = b.lattice.row_of(settled - b.lattice.margin);
+      b.stats.done_until = static_cast<double>(b.next_row) * b.lattice.core;
+      break;
+    }
     status = worse(status, run_row(b, b.next_row));
     ++b.next_row;
     b.ring.drop_before(needed_from(b, b.next_row));
