@@ -415,8 +415,9 @@ TEST_CASE("bad model names are kBlobBadModelTable") {
 }
 
 TEST_CASE("every model's vehicle class is read back; a class outside the list is kBlobBadModelTable") {
+  BlobPatch blob = fresh();  // the database views these bytes: they must outlive it
   Database db;
-  REQUIRE(fresh().open(&db) == Status::kOk);
+  REQUIRE(blob.open(&db) == Status::kOk);
   for (uint32_t i = 0; i < kModels; ++i) CHECK(db.model(i).vehicle_class == tiny().models[i].vehicle_class);
   CHECK(db.model(0).vehicle_class != 0u);  // the tiny blob gives every model a class
   for (uint32_t bad : {kVehicleClassCount, 0xFFu}) {
