@@ -59,21 +59,23 @@ void collect(void* context, const SceneObject& object, int64_t, uint32_t) {
   ++b.count;
 }
 
-// The finite points' min corner and their count.
-uint32_t finite_min_corner(const double* xyz, uint32_t n, double* origin) {
-  for (int a = 0; a < 3; ++a) origin[a] = kUnbounded;
+// The finite points' min and max corners (x y z) and their count.
+uint32_t finite_bounds(const double* xyz, uint32_t n, double* lo, double* hi) {
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = kUnbounded;
+    hi[a] = -kUnbounded;
+  }
   uint32_t m = 0;
   for (uint32_t i = 0; i < n; ++i) {
     const double* p = xyz + 3u * i;
-    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) continue;
-    for (int a = 0; a < 3; ++a) origin[a] = p[a] < origin[a] ? p[a] : origin[a];
+    if (!finite_xyz(p)) continue;
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = p[a] < lo[a] ? p[a] : lo[a];
+      hi[a] = p[a] > hi[a] ? p[a] : hi[a];
+    }
     ++m;
   }
   return m;
-}
-
-bool finite_point(const double* p) {
-  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
 // Cells a grid of `cell` m needs over [0, ds] x [0, dt].
@@ -153,7 +155,8 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
   // Heading +x; the origin on the absolute lattice of window cores below
   // the min corner, as `spinhash scene` streams a file: the same grid cells.
   StreamFrame frame;
-  const uint32_t m = finite_min_corner(xyz, n, frame.origin);
+  double hi[3];
+  const uint32_t m = finite_bounds(xyz, n, frame.origin, hi);
   const double core = static_cast<double>(c.window_core);
   res.stats.points_nonfinite = n - m;
   res.stats.workspace_used = used_bytes_;
@@ -162,13 +165,10 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
     res.stats.points_in = n;
     return res;
   }
-  for (int a = 0; m > 0 && a < 2; ++a) frame.origin[a] = std::floor(frame.origin[a] / core) * core;
-  double extent[2] = {0.0, 0.0};
-  for (uint32_t i = 0; i < n; ++i) {
-    const double* p = xyz + 3u * i;
-    if (!finite_point(p)) continue;
-    for (int a = 0; a < 2; ++a)
-      extent[a] = p[a] - frame.origin[a] > extent[a] ? p[a] - frame.origin[a] : extent[a];
+  double extent[2];
+  for (int a = 0; a < 2; ++a) {
+    frame.origin[a] = std::floor(frame.origin[a] / core) * core;
+    extent[a] = hi[a] - frame.origin[a];
   }
   const bool one_window = m <= c.max_tile_points &&
                           grid_cells(extent[0], extent[1], c.terrain_cell) <= c.max_terrain_cells &&
@@ -189,19 +189,17 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
       WindowJob job;
       job.row = k;
       job.col = j;
-      if (one_window) {
-        job.core = FrameRect{-kUnbounded, kUnbounded, -kUnbounded, kUnbounded};
-      } else {
-        job.core = lattice.core_rect(k, j);
-        const FrameRect seen = lattice.seen_rect(k, j);
+      job.core =
+          one_window ? FrameRect{-kUnbounded, kUnbounded, -kUnbounded, kUnbounded} : lattice.core_rect(k, j);
+      const FrameRect seen = one_window ? job.core : lattice.seen_rect(k, j);
+      if (!one_window) {  // the window's local origin: its seen rectangle's corner (one window: 0, 0)
         job.s0 = seen.s0;
         job.t0 = seen.t0;
       }
-      const FrameRect seen = one_window ? job.core : lattice.seen_rect(k, j);
       uint32_t got = 0;
       bool full = false;
       for (uint32_t i = 0; i < n && !full; ++i) {
-        if (!finite_point(xyz + 3u * i)) continue;
+        if (!finite_xyz(xyz + 3u * i)) continue;
         double stz[3];
         frame.to_frame(xyz + 3u * i, stz);
         if (seen.holds(stz[0], stz[1])) full = !append_window_point(b.window, &got, job, stz, i);

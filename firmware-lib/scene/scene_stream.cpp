@@ -36,8 +36,6 @@ namespace {
 
 const StreamStats kNoStreamStats{};  // stats() before init
 
-bool finite3(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
-
 bool extent_ok(float v) { return std::isfinite(v) && std::fabs(v) <= kMaxStreamExtent; }
 
 Status carve(Arena& arena, const StreamConfig& c, StreamBuffers& b) {
@@ -151,7 +149,7 @@ Status hold_jump(StreamBuffers& b, const double* stz) {
 }
 
 Status push_one(StreamBuffers& b, const double* xyz) {
-  if (!finite3(xyz)) {
+  if (!finite_xyz(xyz)) {
     ++b.stats.scene.points_nonfinite;
     return Status::kOk;
   }
@@ -177,7 +175,7 @@ Status push_one(StreamBuffers& b, const double* xyz) {
 }  // namespace
 
 bool stream_config_valid(const StreamConfig& c) noexcept {
-  const bool origin_ok = !c.origin_given || finite3(c.origin);
+  const bool origin_ok = !c.origin_given || finite_xyz(c.origin);
   return scene_config_valid(c.scene) && origin_ok && std::isfinite(c.heading_deg) &&
          std::fabs(c.heading_deg) <= 360.0f && extent_ok(c.swath_min) && extent_ok(c.swath_max) &&
          c.swath_min < c.swath_max && extent_ok(c.own_min) && extent_ok(c.own_max) && c.own_min < c.own_max &&

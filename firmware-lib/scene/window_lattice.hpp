@@ -8,6 +8,11 @@
 
 namespace spinhash {
 
+// A point with three finite coordinates (the rest is counted, never used).
+inline bool finite_xyz(const double* p) {
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
 // s along track, t across (counter-clockwise from s), z up, from an origin.
 struct StreamFrame {
   double origin[3] = {0, 0, 0};
