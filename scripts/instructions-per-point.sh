@@ -10,7 +10,7 @@
 # spacing, toy vehicles at one per 300 m2, scan order) and the toy database,
 # then pushes the strip through SceneStream in 4 kB chunks and flushes. The
 # count covers push and flush (not generation or loading). Stages: terrain
-# (classify_terrain), segmentation (segment_objects), recognition
+# (build_strip_terrain + terrain_heights), segmentation (segment_objects), recognition
 # (Recognizer::recognize); "rest" is the stream's buffer, window gathering,
 # object boxes, ownership and size gates (split on the host: rest_buffer,
 # rest_gather, rest_objects). Writes DIR/instructions-per-point.csv and
@@ -38,7 +38,8 @@ mkdir -p "$out"
 out=$(cd "$out" && pwd)
 stages=(terrain segmentation recognition)
 # The stages' functions as callgrind names them (demangled).
-declare -A functions=([terrain]='spinhash::classify_terrain(' [segmentation]='spinhash::segment_objects('
+declare -A functions=([strip_terrain]='spinhash::build_strip_terrain(' [heights]='spinhash::terrain_heights('
+                      [segmentation]='spinhash::segment_objects('
                       [recognition]='spinhash::Recognizer::recognize(float const*')
 
 "$runner" prepare "$out" "$side"
@@ -54,7 +55,8 @@ annotated=$(callgrind_annotate --inclusive=yes --threshold=100 "$cg")
 inclusive() {  # "  1,234 (12.3%)  file:function [object]": the first line naming the function
   grep -F "$1" <<< "$annotated" | grep -v '__wrap_' | head -1 | awk '{gsub(",", "", $1); print $1}'
 }
-for s in "${stages[@]}"; do host[$s]=$(inclusive "${functions[$s]}"); done
+for s in strip_terrain heights segmentation recognition; do host[$s]=$(inclusive "${functions[$s]}"); done
+host[terrain]=$(( host[strip_terrain] + host[heights] ))  # each strip's grid + each window's heights
 # The rest, split on the host only: into the frame and the buffer (push and
 # flush less run_row), each window's points gathered from the buffer
 # (run_row less run_window), and per window the object boxes, gathering and
@@ -62,8 +64,8 @@ for s in "${stages[@]}"; do host[$s]=$(inclusive "${functions[$s]}"); done
 run_row=$(inclusive '::run_row(spinhash::StreamBuffers&')
 run_window=$(inclusive 'spinhash::run_window(')
 host[rest_buffer]=$(( host[total] - run_row ))
-host[rest_gather]=$(( run_row - run_window ))
-host[rest_objects]=$(( run_window - host[terrain] - host[segmentation] - host[recognition] ))
+host[rest_gather]=$(( run_row - run_window - host[strip_terrain] ))
+host[rest_objects]=$(( run_window - host[heights] - host[segmentation] - host[recognition] ))
 
 # Target: qemu-user with the marker-counting plugin.
 declare -A tgt

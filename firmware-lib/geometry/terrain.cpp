@@ -72,32 +72,6 @@ void open_grid(const float* in, TerrainGrid& g, uint32_t r) {
   terrain_line_filter(g.scratch, g.opened, g.line, g.nx, g.ny, r, false, false);
 }
 
-// Lowest z per cell, then the mean of the points within kTerrainLowBand of
-// it: unbiased on slopes (the lowest point sits at the downhill edge) and
-// steadier under range noise than the minimum alone.
-void fill_low_means(const float* xyz, uint32_t n, TerrainGrid& g) {
-  const uint32_t cells = g.nx * g.ny;
-  for (uint32_t c = 0; c < cells; ++c) {
-    g.value[c] = NAN;
-    g.scratch[c] = 0.0f;  // sum
-    g.opened[c] = 0.0f;   // count
-  }
-  for (uint32_t i = 0; i < n; ++i) {
-    const float* p = xyz + 3u * i;
-    const uint32_t c = cell_coord(p[1], g.y0, g.cell, g.ny) * g.nx + cell_coord(p[0], g.x0, g.cell, g.nx);
-    if (no_data(g.value[c]) || p[2] < g.value[c]) g.value[c] = p[2];
-  }
-  for (uint32_t i = 0; i < n; ++i) {
-    const float* p = xyz + 3u * i;
-    const uint32_t c = cell_coord(p[1], g.y0, g.cell, g.ny) * g.nx + cell_coord(p[0], g.x0, g.cell, g.nx);
-    if (p[2] > g.value[c] + kTerrainLowBand) continue;
-    g.scratch[c] += p[2] - g.value[c];  // relative to the minimum: small sums, no float drift
-    g.opened[c] += 1.0f;
-  }
-  for (uint32_t c = 0; c < cells; ++c)
-    if (g.opened[c] > 0.0f) g.value[c] += g.scratch[c] / g.opened[c];
-}
-
 // The progressive morphological filter: windows of half-width 1, 2, 4, ...
 // cells up to params.max_window; the height tolerance grows with the window
 // by the slope allowance, capped at dh_max. g.surface ends as the last opening.
@@ -123,6 +97,10 @@ uint32_t progressive_filter(TerrainGrid& g, const TerrainParams& params) {
     ++windows;
   }
   return windows;
+}
+
+uint32_t terrain_cell_index(const TerrainGrid& g, const float* p) {
+  return cell_coord(p[1], g.y0, g.cell, g.ny) * g.nx + cell_coord(p[0], g.x0, g.cell, g.nx);
 }
 
 bool is_ground_cell(const TerrainGrid& g, uint32_t c) { return !no_data(g.value[c]) && !g.off_ground[c]; }
@@ -195,10 +173,43 @@ void TerrainGrid::carve(Arena& arena, uint32_t cells) {
   off_ground = arena.alloc<uint8_t>(cells);
 }
 
+namespace {
+
+// terrain_height_at where the point's four cell centres lie inside the grid
+// and all have data (nearly every point): the general path's operations in
+// its order, without its per-corner tests; false elsewhere. fx, fy >= 0, so
+// truncation is the floor.
+bool height_inside(const TerrainGrid& g, float fx, float fy, float* z) {
+  if (!(fx >= 0.0f && fy >= 0.0f && fx < static_cast<float>(g.nx - 1u) && fy < static_cast<float>(g.ny - 1u)))
+    return false;
+  const uint32_t ix = static_cast<uint32_t>(fx), iy = static_cast<uint32_t>(fy);
+  const float* row = g.surface + iy * g.nx + ix;
+  const float v00 = row[0], v10 = row[1], v01 = row[g.nx], v11 = row[g.nx + 1u];
+  if (no_data(v00) || no_data(v10) || no_data(v01) || no_data(v11)) return false;
+  const float tx = fx - static_cast<float>(ix), ty = fy - static_cast<float>(iy);
+  const float w00 = (1.0f - tx) * (1.0f - ty), w10 = tx * (1.0f - ty), w01 = (1.0f - tx) * ty, w11 = tx * ty;
+  float sum = 0.0f, weight = 0.0f;
+  sum += w00 * v00;
+  weight += w00;
+  sum += w10 * v10;
+  weight += w10;
+  sum += w01 * v01;
+  weight += w01;
+  sum += w11 * v11;
+  weight += w11;
+  if (!(weight > 1e-6f)) return false;
+  *z = sum / weight;
+  return true;
+}
+
+}  // namespace
+
 float terrain_height_at(const TerrainGrid& g, float x, float y) {
   // Cell-centre coordinates: (x - x0) / cell - 0.5.
   const float fx = (x - g.x0) / g.cell - 0.5f;
   const float fy = (y - g.y0) / g.cell - 0.5f;
+  float inside;
+  if (height_inside(g, fx, fy, &inside)) return inside;
   const float bx = std::floor(fx), by = std::floor(fy);
   const float tx = fx - bx, ty = fy - by;
   float sum = 0.0f, weight = 0.0f;
@@ -218,6 +229,56 @@ float terrain_height_at(const TerrainGrid& g, float x, float y) {
   return g.surface[cell_coord(y, g.y0, g.cell, g.ny) * g.nx + cell_coord(x, g.x0, g.cell, g.nx)];
 }
 
+bool terrain_begin(TerrainGrid& g, float cell, const float* lo, const float* hi) {
+  if (!fit_xy_bounds(lo, hi, cell, g)) return false;
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c) {
+    g.value[c] = NAN;     // lowest z
+    g.scratch[c] = 0.0f;  // low band: sum
+    g.opened[c] = 0.0f;   // low band: count
+  }
+  return true;
+}
+
+void terrain_add_lowest(TerrainGrid& g, const float* p) {
+  const uint32_t c = terrain_cell_index(g, p);
+  if (no_data(g.value[c]) || p[2] < g.value[c]) g.value[c] = p[2];
+}
+
+void terrain_add_low_band(TerrainGrid& g, const float* p) {
+  const uint32_t c = terrain_cell_index(g, p);
+  if (p[2] > g.value[c] + kTerrainLowBand) return;
+  g.scratch[c] += p[2] - g.value[c];  // relative to the minimum: small sums, no float drift
+  g.opened[c] += 1.0f;
+}
+
+uint32_t terrain_finish(TerrainGrid& g, const TerrainParams& params, uint32_t* cells_ground) {
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c)
+    if (g.opened[c] > 0.0f) g.value[c] += g.scratch[c] / g.opened[c];
+  const uint32_t windows = progressive_filter(g, params);
+  fill_terrain_surface(g, static_cast<uint32_t>(params.max_window / params.cell) + 2u);
+  uint32_t ground_cells = 0;
+  for (uint32_t c = 0; c < cells; ++c) ground_cells += is_ground_cell(g, c) ? 1u : 0u;
+  if (cells_ground) *cells_ground = ground_cells;
+  return windows;
+}
+
+uint32_t terrain_heights(const TerrainGrid& g, const float* xyz, uint32_t n, float ground_height,
+                         float* height, uint8_t* ground) {
+  uint32_t on_ground = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const float* p = xyz + 3u * i;
+    height[i] = p[2] - terrain_height_at(g, p[0], p[1]);
+    ground[i] = height[i] <= ground_height ? 1u : 0u;
+    on_ground += ground[i];
+  }
+  return on_ground;
+}
+
+// Lowest z per cell, then the mean of the points within kTerrainLowBand of
+// it: unbiased on slopes (the lowest point sits at the downhill edge) and
+// steadier under range noise than the minimum alone.
 Status classify_terrain(const float* xyz, uint32_t n, const TerrainParams& params, TerrainGrid& g,
                         float* height, uint8_t* ground, TerrainStats* stats) {
   if (!terrain_params_valid(params) || (n > 0 && (xyz == nullptr || height == nullptr || ground == nullptr)))
@@ -227,19 +288,19 @@ Status classify_terrain(const float* xyz, uint32_t n, const TerrainParams& param
     if (stats) *stats = st;
     return Status::kOk;
   }
-  if (!fit_xy_frame(xyz, n, params.cell, g)) return Status::kTileTooLarge;
-  fill_low_means(xyz, n, g);
-  st.windows = progressive_filter(g, params);
-  fill_terrain_surface(g, static_cast<uint32_t>(params.max_window / params.cell) + 2u);
-  const uint32_t cells = g.nx * g.ny;
-  for (uint32_t c = 0; c < cells; ++c) st.cells_ground += is_ground_cell(g, c) ? 1u : 0u;
-  for (uint32_t i = 0; i < n; ++i) {
-    const float* p = xyz + 3u * i;
-    height[i] = p[2] - terrain_height_at(g, p[0], p[1]);
-    ground[i] = height[i] <= params.ground_height ? 1u : 0u;
-    st.points_ground += ground[i];
-  }
-  st.cells = cells;
+  float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
+  for (uint32_t i = 1; i < n; ++i)
+    for (uint32_t a = 0; a < 2u; ++a) {
+      const float v = xyz[3u * i + a];
+      lo[a] = v < lo[a] ? v : lo[a];
+      hi[a] = v > hi[a] ? v : hi[a];
+    }
+  if (!terrain_begin(g, params.cell, lo, hi)) return Status::kTileTooLarge;
+  for (uint32_t i = 0; i < n; ++i) terrain_add_lowest(g, xyz + 3u * i);
+  for (uint32_t i = 0; i < n; ++i) terrain_add_low_band(g, xyz + 3u * i);
+  st.windows = terrain_finish(g, params, &st.cells_ground);
+  st.points_ground = terrain_heights(g, xyz, n, params.ground_height, height, ground);
+  st.cells = g.nx * g.ny;
   if (stats) *stats = st;
   return Status::kOk;
 }

@@ -56,6 +56,20 @@ struct TerrainStats {
 Status classify_terrain(const float* xyz, uint32_t n, const TerrainParams& params, TerrainGrid& grid,
                         float* height, uint8_t* ground, TerrainStats* stats);
 
+// classify_terrain in steps, for a grid that several windows share (a strip
+// of a scene's row of windows) over points that are not in one array. The
+// same operations in the same order: begin over the points' footprint (x, y
+// bounds; false when it needs more cells than carved), every point through
+// add_lowest, then every point again, in the same order, through
+// add_low_band, finish (returns the PMF windows run), then the heights of
+// any points within the footprint (returns how many are ground).
+bool terrain_begin(TerrainGrid& grid, float cell, const float* lo, const float* hi);
+void terrain_add_lowest(TerrainGrid& grid, const float* p);
+void terrain_add_low_band(TerrainGrid& grid, const float* p);
+uint32_t terrain_finish(TerrainGrid& grid, const TerrainParams& params, uint32_t* cells_ground);
+uint32_t terrain_heights(const TerrainGrid& grid, const float* xyz, uint32_t n, float ground_height,
+                         float* height, uint8_t* ground);
+
 // Terrain z at (x, y): bilinear over the cell centres around it, skipping
 // cells without data (the point's own cell always has some).
 float terrain_height_at(const TerrainGrid& grid, float x, float y);

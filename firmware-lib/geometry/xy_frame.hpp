@@ -12,6 +12,24 @@ namespace spinhash {
 // Min corner and size in cells of `n` xyz points' footprint at cells of
 // `cell` m; false when that exceeds `max_cells` (the tile is too large for
 // the workspace: never truncated). n > 0.
+// The grid over the footprint [lo, hi] (x, y): its min corner snapped down
+// to a multiple of the cell; false when it needs more than max_cells.
+template <class Grid>
+bool fit_xy_bounds(const float* lo, const float* hi, float cell, Grid& g) {
+  const float x0 = std::floor(lo[0] / cell) * cell, y0 = std::floor(lo[1] / cell) * cell;
+  const float fx = (hi[0] - x0) / cell + 1.0f, fy = (hi[1] - y0) / cell + 1.0f;
+  if (!(fx * fy <= static_cast<float>(g.max_cells))) return false;
+  g.cell = cell;
+  g.x0 = x0;
+  g.y0 = y0;
+  g.nx = static_cast<uint32_t>(fx);
+  g.ny = static_cast<uint32_t>(fy);
+  return true;
+}
+
+// Min corner and size in cells of `n` xyz points' footprint at cells of
+// `cell` m; false when that exceeds `max_cells` (the tile is too large for
+// the workspace: never truncated). n > 0.
 template <class Grid>
 bool fit_xy_frame(const float* xyz, uint32_t n, float cell, Grid& g) {
   float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
@@ -21,15 +39,7 @@ bool fit_xy_frame(const float* xyz, uint32_t n, float cell, Grid& g) {
       lo[a] = v < lo[a] ? v : lo[a];
       hi[a] = v > hi[a] ? v : hi[a];
     }
-  for (uint32_t a = 0; a < 2u; ++a) lo[a] = std::floor(lo[a] / cell) * cell;
-  const float fx = (hi[0] - lo[0]) / cell + 1.0f, fy = (hi[1] - lo[1]) / cell + 1.0f;
-  if (!(fx * fy <= static_cast<float>(g.max_cells))) return false;
-  g.cell = cell;
-  g.x0 = lo[0];
-  g.y0 = lo[1];
-  g.nx = static_cast<uint32_t>(fx);
-  g.ny = static_cast<uint32_t>(fy);
-  return true;
+  return fit_xy_bounds(lo, hi, cell, g);
 }
 
 }  // namespace spinhash

@@ -84,6 +84,47 @@ double grid_cells(double ds, double dt, float cell) {
   return (ds / c + 2.0) * (dt / c + 2.0);
 }
 
+// One window (k, j) of a tile: its points gathered straight from the tile
+// into the strip's local frame at (s0, t0), then the stages. A window whose
+// points or terrain (`terrain`) did not fit is counted and lost.
+struct TileWindows {
+  const Database* db;
+  const SceneConfig* c;
+  const StreamFrame* frame;
+  const double* xyz;
+  uint32_t n;
+  const WindowLattice* lattice;
+  bool one_window;
+};
+
+Status run_tile_window(const TileWindows& t, Status terrain, int64_t k, uint32_t j, double s0, double t0,
+                       WindowBuffers& w, const WindowOutput& out) {
+  WindowJob job;
+  job.row = k;
+  job.col = j;
+  job.core =
+      t.one_window ? FrameRect{-kUnbounded, kUnbounded, -kUnbounded, kUnbounded} : t.lattice->core_rect(k, j);
+  const FrameRect seen = t.one_window ? job.core : t.lattice->seen_rect(k, j);
+  job.s0 = s0;
+  job.t0 = t0;
+  uint32_t got = 0;
+  bool full = false;
+  for (uint32_t i = 0; i < t.n && !full; ++i) {
+    if (!finite_xyz(t.xyz + 3u * i)) continue;
+    double stz[3];
+    t.frame->to_frame(t.xyz + 3u * i, stz);
+    if (seen.holds(stz[0], stz[1])) full = !append_window_point(w, &got, job, stz, i);
+  }
+  if (got == 0) return Status::kOk;
+  ++out.scene->windows;
+  const WindowSource src{t.xyz, true, t.frame};
+  const Status s = full || terrain != Status::kOk ? Status::kWindowOverflow
+                                                  : run_window(*t.db, *t.c, *t.frame, src, job, got, w, out);
+  if (s != Status::kWindowOverflow && s != Status::kTileTooLarge) return s;
+  ++out.scene->windows_overflowed;
+  return Status::kWindowOverflow;
+}
+
 }  // namespace
 
 const char* object_kind_name(ObjectKind k) noexcept {
@@ -184,38 +225,26 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
   uint64_t reported = 0, not_owned = 0;
   const WindowOutput out{collect, &b, &res.stats, &reported, &not_owned};
   res.status = Status::kOk;
+  const TileWindows tile{db_, &c, &frame, xyz, n, &lattice, one_window};
+  const uint32_t per_strip = one_window ? 1u : strip_columns(c);
   for (int64_t k = 0; k < rows; ++k) {
-    for (uint32_t j = 0; j < cols; ++j) {
-      WindowJob job;
-      job.row = k;
-      job.col = j;
-      job.core =
-          one_window ? FrameRect{-kUnbounded, kUnbounded, -kUnbounded, kUnbounded} : lattice.core_rect(k, j);
-      const FrameRect seen = one_window ? job.core : lattice.seen_rect(k, j);
-      if (!one_window) {  // the window's local origin: its seen rectangle's corner (one window: 0, 0)
-        job.s0 = seen.s0;
-        job.t0 = seen.t0;
-      }
-      uint32_t got = 0;
-      bool full = false;
-      for (uint32_t i = 0; i < n && !full; ++i) {
-        if (!finite_xyz(xyz + 3u * i)) continue;
-        double stz[3];
-        frame.to_frame(xyz + 3u * i, stz);
-        if (seen.holds(stz[0], stz[1])) full = !append_window_point(b.window, &got, job, stz, i);
-      }
-      if (got == 0) continue;
-      ++res.stats.windows;
-      const Status s =
-          full ? Status::kWindowOverflow : run_window(*db_, c, frame, src, job, got, b.window, out);
-      if (s == Status::kWindowOverflow || s == Status::kTileTooLarge) {
-        ++res.stats.windows_overflowed;
-        res.status = Status::kWindowOverflow;
-      } else if (s == Status::kTooManyObjects && res.status == Status::kOk) {
-        res.status = s;
-      } else if (s != Status::kOk && s != Status::kTooManyObjects) {
-        res.status = s;
-        return res;
+    for (uint32_t j0 = 0; j0 < cols; j0 += per_strip) {
+      const uint32_t j1 = j0 + per_strip < cols ? j0 + per_strip : cols;
+      const FrameRect strip = one_window ? FrameRect{-kUnbounded, kUnbounded, -kUnbounded, kUnbounded}
+                                         : strip_rect(lattice, k, j0, j1);
+      const double s0 = one_window ? 0.0 : strip.s0, t0 = one_window ? 0.0 : strip.t0;
+      const Status terrain = build_strip_terrain(c, src, n, strip, s0, t0, b.window, &res.stats);
+      if (terrain == Status::kEmptyCloud) continue;
+      for (uint32_t j = j0; j < j1; ++j) {
+        const Status s = run_tile_window(tile, terrain, k, j, s0, t0, b.window, out);
+        if (s == Status::kWindowOverflow) {
+          res.status = Status::kWindowOverflow;
+        } else if (s == Status::kTooManyObjects && res.status == Status::kOk) {
+          res.status = s;
+        } else if (s != Status::kOk && s != Status::kTooManyObjects) {
+          res.status = s;
+          return res;
+        }
       }
     }
   }

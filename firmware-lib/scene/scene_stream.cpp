@@ -55,21 +55,31 @@ Status worse(Status a, Status b) {
   return a != Status::kOk ? a : b;
 }
 
-// Runs the windows of row k over the buffer.
-Status run_row(StreamBuffers& b, int64_t k) {
-  Status status = Status::kOk;
+// A window of the strip whose points or terrain did not fit: counted, lost.
+Status overflowed(StreamBuffers& b, uint32_t points) {
+  ++b.stats.windows_overflowed;
+  b.stats.points_in_overflowed += points;
+  return Status::kWindowOverflow;
+}
+
+// Runs the windows [j0, j1) of row k, a strip sharing one terrain grid.
+Status run_strip(StreamBuffers& b, int64_t k, uint32_t j0, uint32_t j1) {
   const WindowSource src{b.ring.stz, false, &b.frame};
   const WindowOutput out{b.sink, b.sink_context, &b.stats.scene, &b.stats.objects_reported,
                          &b.stats.objects_not_owned};
-  const uint32_t cols = b.lattice.columns();
-  for (uint32_t j = 0; j < cols; ++j) {
+  const FrameRect strip = strip_rect(b.lattice, k, j0, j1);
+  const Status terrain = build_strip_terrain(b.config.scene, src, b.ring.count, strip, strip.s0, strip.t0,
+                                             b.window, &b.stats.scene);
+  if (terrain == Status::kEmptyCloud) return Status::kOk;  // nothing to see here
+  Status status = Status::kOk;
+  for (uint32_t j = j0; j < j1; ++j) {
     WindowJob job;
     job.row = k;
     job.col = j;
     job.core = b.lattice.core_rect(k, j);
+    job.s0 = strip.s0;  // the strip's local frame, in which its terrain lies
+    job.t0 = strip.t0;
     const FrameRect seen = b.lattice.seen_rect(k, j);
-    job.s0 = seen.s0;
-    job.t0 = seen.t0;
     uint32_t got = 0, missed = 0;
     for (uint32_t i = 0; i < b.ring.count; ++i) {
       const double* p = b.ring.stz + 3u * static_cast<size_t>(i);
@@ -78,15 +88,21 @@ Status run_row(StreamBuffers& b, int64_t k) {
     }
     if (got == 0) continue;
     ++b.stats.windows;
-    Status s = missed > 0 ? Status::kWindowOverflow
-                          : run_window(*b.db, b.config.scene, b.frame, src, job, got, b.window, out);
-    if (s == Status::kTileTooLarge) s = Status::kWindowOverflow;
-    if (s == Status::kWindowOverflow) {
-      ++b.stats.windows_overflowed;
-      b.stats.points_in_overflowed += got + missed;
-    }
+    Status s = missed > 0 || terrain != Status::kOk
+                   ? Status::kWindowOverflow
+                   : run_window(*b.db, b.config.scene, b.frame, src, job, got, b.window, out);
+    if (s == Status::kTileTooLarge || s == Status::kWindowOverflow) s = overflowed(b, got + missed);
     status = worse(status, s);
   }
+  return status;
+}
+
+// Runs the windows of row k over the buffer, strip by strip.
+Status run_row(StreamBuffers& b, int64_t k) {
+  Status status = Status::kOk;
+  const uint32_t cols = b.lattice.columns(), per_strip = strip_columns(b.config.scene);
+  for (uint32_t j0 = 0; j0 < cols; j0 += per_strip)
+    status = worse(status, run_strip(b, k, j0, j0 + per_strip < cols ? j0 + per_strip : cols));
   return status;
 }
 

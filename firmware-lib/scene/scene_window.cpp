@@ -13,6 +13,7 @@ namespace spinhash {
 namespace {
 
 constexpr float kRadToDeg = 180.0f / 3.14159265f;
+constexpr uint32_t kMaxStripColumns = 1024;  // windows sharing one terrain grid: a bound for the sizing loop
 
 ObjectKind classify(const ObjectShape& o, const SceneConfig& c) {
   if (o.hmin > c.max_clearance) return ObjectKind::kNotVehicleShaped;  // crown, overhang
@@ -261,17 +262,79 @@ Status WindowBuffers::init_recognizer(const Database* db, const SceneConfig& c) 
   return recognizer.init(db, scene_object_config(c), recognizer_workspace_, recognizer_bytes_);
 }
 
+uint32_t strip_columns(const SceneConfig& c) {
+  const double cell = static_cast<double>(c.terrain_cell), core = static_cast<double>(c.window_core);
+  const double seen = core + 2.0 * static_cast<double>(c.window_margin);
+  const double rows = seen / cell + 2.0;  // with the snap's extra cells, as the grid may need
+  uint32_t m = 1;
+  while (m < kMaxStripColumns &&
+         (static_cast<double>(m + 1u) * core + 2.0 * static_cast<double>(c.window_margin)) / cell + 2.0 <=
+             static_cast<double>(c.max_terrain_cells) / rows)
+    ++m;
+  return m;
+}
+
+FrameRect strip_rect(const WindowLattice& lattice, int64_t k, uint32_t j0, uint32_t j1) {
+  FrameRect r = lattice.seen_rect(k, j0);
+  r.t1 = lattice.seen_rect(k, j1 - 1u).t1;
+  return r;
+}
+
+namespace {
+
+// Calls f(p) with the local float point p of each of src's n points that
+// lies in `seen`, in index order. The stream's buffer holds finite frame
+// points already; a tile's world points may be anything.
+template <class F>
+void for_strip_points(const WindowSource& src, uint32_t n, const FrameRect& seen, double s0, double t0,
+                      F&& f) {
+  float p[3];
+  for (uint32_t i = 0; i < n; ++i) {
+    double world[3];
+    const double* stz = src.data + 3u * static_cast<size_t>(i);
+    if (src.world) {
+      if (!finite_xyz(stz)) continue;
+      src.frame->to_frame(stz, world);
+      stz = world;
+    }
+    if (!seen.holds(stz[0], stz[1])) continue;
+    p[0] = static_cast<float>(stz[0] - s0);
+    p[1] = static_cast<float>(stz[1] - t0);
+    p[2] = static_cast<float>(stz[2]);
+    f(p);
+  }
+}
+
+}  // namespace
+
+Status build_strip_terrain(const SceneConfig& c, const WindowSource& src, uint32_t n, const FrameRect& seen,
+                           double s0, double t0, WindowBuffers& b, SceneStats* st) {
+  float lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  uint32_t inside = 0;
+  for_strip_points(src, n, seen, s0, t0, [&](const float* p) {
+    ++inside;
+    for (int a = 0; a < 2; ++a) {
+      lo[a] = p[a] < lo[a] ? p[a] : lo[a];
+      hi[a] = p[a] > hi[a] ? p[a] : hi[a];
+    }
+  });
+  if (inside == 0) return Status::kEmptyCloud;
+  if (!terrain_begin(b.terrain, c.terrain_cell, lo, hi)) return Status::kTileTooLarge;
+  for_strip_points(src, n, seen, s0, t0, [&](const float* p) { terrain_add_lowest(b.terrain, p); });
+  for_strip_points(src, n, seen, s0, t0, [&](const float* p) { terrain_add_low_band(b.terrain, p); });
+  const uint32_t windows = terrain_finish(b.terrain, scene_terrain_params(c), nullptr);
+  st->terrain_cells = add_saturated(st->terrain_cells, b.terrain.nx * b.terrain.ny);
+  st->terrain_windows = add_saturated(st->terrain_windows, windows);
+  return Status::kOk;
+}
+
 Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& frame, const WindowSource& src,
                   const WindowJob& job, uint32_t n, WindowBuffers& b, const WindowOutput& out) {
   SceneStats& st = *out.scene;
   st.points_in = add_saturated(st.points_in, n);
   if (n == 0) return Status::kOk;
-  TerrainStats ts;
-  Status s = classify_terrain(b.local, n, scene_terrain_params(c), b.terrain, b.height, b.ground, &ts);
-  if (s != Status::kOk) return s;
-  st.points_ground = add_saturated(st.points_ground, ts.points_ground);
-  st.terrain_cells = add_saturated(st.terrain_cells, ts.cells);
-  st.terrain_windows = add_saturated(st.terrain_windows, ts.windows);
+  st.points_ground = add_saturated(
+      st.points_ground, terrain_heights(b.terrain, b.local, n, c.ground_height, b.height, b.ground));
   SegmentParams sp;
   sp.cell = c.segment_cell;
   sp.split_height = c.layer_split_height;

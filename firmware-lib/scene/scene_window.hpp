@@ -76,6 +76,22 @@ RecognizerConfig scene_object_config(const SceneConfig& c);
 TerrainParams scene_terrain_params(const SceneConfig& c);
 bool scene_gates_valid(const SceneConfig& c);
 
+// Consecutive windows of one row share one terrain grid (a strip): as many
+// columns as max_terrain_cells holds over their seen rectangles, at least
+// one. Each point is then classified once per row, not once per window.
+uint32_t strip_columns(const SceneConfig& c);
+
+// The seen rectangle of the strip of columns [j0, j1) of row k.
+FrameRect strip_rect(const WindowLattice& lattice, int64_t k, uint32_t j0, uint32_t j1);
+
+// Builds b.terrain over the points of src (indices 0..n-1) that lie in
+// `seen`, in the local frame at (s0, t0) that the strip's windows then use
+// (their WindowJob's s0, t0). kOk, kEmptyCloud (no point in the strip),
+// kTileTooLarge (their footprint needs more cells than carved). Counts the
+// grid's cells and PMF windows into *st.
+Status build_strip_terrain(const SceneConfig& c, const WindowSource& src, uint32_t n, const FrameRect& seen,
+                           double s0, double t0, WindowBuffers& b, SceneStats* st);
+
 // Appends one point (stream frame stz, source index) to the window's
 // local buffer; false when the window is full.
 inline bool append_window_point(WindowBuffers& b, uint32_t* n, const WindowJob& job, const double* stz,
@@ -90,7 +106,8 @@ inline bool append_window_point(WindowBuffers& b, uint32_t* n, const WindowJob& 
   return true;
 }
 
-// Runs the stages on the window's n points and reports the objects it
+// Runs the stages on the window's n points, over the terrain its strip
+// built (b.terrain, in the job's local frame), and reports the objects it
 // owns. kOk, kTooManyObjects (objects past max_objects dropped, counted),
 // kTileTooLarge (the window's footprint exceeds the grids: nothing reported).
 Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& frame, const WindowSource& src,

@@ -137,10 +137,10 @@ void spill(host::PointSource& source, size_t chunk, uint32_t picture_points, Cel
   cells.finish();
 }
 
-// Cells of a square grid of `cell` m over `edge` m, with the snap's extra row.
-uint32_t grid_cells(double edge, float cell) {
-  const double per_side = std::ceil(edge / cell) + 2.0;
-  return static_cast<uint32_t>(std::min(per_side * per_side, 16777216.0));
+// Cells of a grid of `cell` m over w x h m, with the snap's extra rows.
+uint32_t grid_cells(double w, double h, float cell) {
+  const double cells = (std::ceil(w / cell) + 2.0) * (std::ceil(h / cell) + 2.0);
+  return static_cast<uint32_t>(std::min(cells, 16777216.0));
 }
 
 // The columns (cells across the track) holding more than outliers.
@@ -187,12 +187,13 @@ StreamConfig band_config(const TileStreamOptions& o, const TileExtent& e, const 
   const double window_area = (core + 2.0 * margin) * (core + 2.0 * margin);
   const double band_width = std::min(width, static_cast<double>(kBandColumns) * core) + 2.0 * margin;
   const double buffer_area = (2.0 * core + 2.0 * margin) * band_width;
-  // The grids hold a whole window, whatever its size.
+  // The segmentation grid holds a whole window, the terrain grid the band's
+  // windows side by side (one strip per row), whatever their size.
   const double seen = core + 2.0 * margin;
   c.scene.max_terrain_cells =
-      std::max<uint32_t>(c.scene.max_terrain_cells, grid_cells(seen, o.scene.terrain_cell));
+      std::max<uint32_t>(c.scene.max_terrain_cells, grid_cells(band_width, seen, o.scene.terrain_cell));
   c.scene.max_segment_cells =
-      std::max<uint32_t>(c.scene.max_segment_cells, grid_cells(seen, o.scene.segment_cell));
+      std::max<uint32_t>(c.scene.max_segment_cells, grid_cells(seen, seen, o.scene.segment_cell));
   if (c.scene.max_tile_points == 0)
     c.scene.max_tile_points =
         static_cast<uint32_t>(std::clamp<double>(density * window_area, kMinWindowPoints, kMaxWindowPoints));

@@ -170,3 +170,68 @@ TEST_CASE("terrain: the opening's line filter equals the direct scan for every w
         }
   }
 }
+
+namespace {
+
+// terrain_height_at's definition: bilinear over the four cell centres
+// around (x, y), skipping cells outside the grid or without data, else the
+// point's own cell (the general path, written out here as the reference of
+// the fast path for points whose four cells all have data).
+float reference_height(const TerrainGrid& g, float x, float y) {
+  const float fx = (x - g.x0) / g.cell - 0.5f, fy = (y - g.y0) / g.cell - 0.5f;
+  const float bx = std::floor(fx), by = std::floor(fy), tx = fx - bx, ty = fy - by;
+  float sum = 0.0f, weight = 0.0f;
+  for (int dy = 0; dy < 2; ++dy)
+    for (int dx = 0; dx < 2; ++dx) {
+      const float cx = bx + static_cast<float>(dx), cy = by + static_cast<float>(dy);
+      if (cx < 0.0f || cy < 0.0f || cx >= static_cast<float>(g.nx) || cy >= static_cast<float>(g.ny))
+        continue;
+      const float v = g.surface[static_cast<uint32_t>(cy) * g.nx + static_cast<uint32_t>(cx)];
+      if (std::isnan(v)) continue;
+      const float w = (dx ? tx : 1.0f - tx) * (dy ? ty : 1.0f - ty);
+      sum += w * v;
+      weight += w;
+    }
+  if (weight > 1e-6f) return sum / weight;
+  auto coord = [](float v, float v0, float cell, uint32_t count) {
+    const float c = (v - v0) / cell;
+    if (!(c > 0.0f)) return 0u;
+    const uint32_t i = static_cast<uint32_t>(c);
+    return i < count ? i : count - 1u;
+  };
+  return g.surface[coord(y, g.y0, g.cell, g.ny) * g.nx + coord(x, g.x0, g.cell, g.nx)];
+}
+
+}  // namespace
+
+TEST_CASE("terrain: the height lookup equals its definition bit for bit, inside, at the edges and by holes") {
+  constexpr uint32_t kNx = 23, kNy = 17;
+  std::vector<float> surface(kNx * kNy);
+  uint64_t state = 99;
+  auto uniform = [&state] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<float>(state >> 40) / static_cast<float>(1u << 24);
+  };
+  for (float& v : surface) v = uniform() < 0.1f ? NAN : 300.0f + 5.0f * uniform();  // holes: no data
+  TerrainGrid g;
+  g.surface = surface.data();
+  g.nx = kNx;
+  g.ny = kNy;
+  g.cell = 0.5f;
+  g.x0 = -3.5f;
+  g.y0 = 12.0f;
+  uint32_t compared = 0;
+  for (int i = 0; i < 20000; ++i) {  // beyond the grid on every side, and exactly on cell centres
+    float x = g.x0 - 1.0f + (kNx * g.cell + 2.0f) * uniform(),
+          y = g.y0 - 1.0f + (kNy * g.cell + 2.0f) * uniform();
+    if (i % 10 == 0) x = g.x0 + g.cell * (0.5f + static_cast<float>(i % kNx));
+    const float got = terrain_height_at(g, x, y), want = reference_height(g, x, y);
+    if (std::isnan(want)) {
+      CHECK(std::isnan(got));
+    } else {
+      CHECK(got == want);
+      ++compared;
+    }
+  }
+  CHECK(compared > 15000u);
+}

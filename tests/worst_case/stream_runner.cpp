@@ -24,6 +24,7 @@
 #include "blob/file_io.hpp"
 #include "db/database_builder.hpp"
 #include "geometry/terrain.hpp"
+#include "scene/scene_window.hpp"
 #include "scene/segment.hpp"
 #include "spinhash/scene_stream.hpp"
 #include "support/scene_fixtures.hpp"
@@ -49,8 +50,10 @@ SPINHASH_MARKER(spinhash_bench_recognition_end, 8)
 // The wrapped stages (ld --wrap=SYMBOL sends the core's calls of SYMBOL to
 // __wrap_SYMBOL; __real_SYMBOL is the original). Itanium-mangled names: the
 // same on every Linux target.
+// Terrain is two calls: each strip's grid, then each window's heights on it.
 #define SPINHASH_TERRAIN \
-  _ZN8spinhash16classify_terrainEPKfjRKNS_13TerrainParamsERNS_11TerrainGridEPfPhPNS_12TerrainStatsE
+  _ZN8spinhash19build_strip_terrainERKNS_11SceneConfigERKNS_12WindowSourceEjRKNS_9FrameRectEddRNS_13WindowBuffersEPNS_10SceneStatsE
+#define SPINHASH_HEIGHTS _ZN8spinhash15terrain_heightsERKNS_11TerrainGridEPKfjfPfPh
 #define SPINHASH_SEGMENT \
   _ZN8spinhash15segment_objectsEPKfS1_PKhjRKNS_13SegmentParamsERNS_11SegmentGridEPNS_11ObjectShapeEPjPNS_12SegmentStatsE
 #define SPINHASH_RECOGNIZE _ZN8spinhash10Recognizer9recognizeEPKfj
@@ -59,21 +62,31 @@ SPINHASH_MARKER(spinhash_bench_recognition_end, 8)
 #define SPINHASH_REAL(sym) SPINHASH_JOIN(__real_, sym)
 
 extern "C" {
-Status SPINHASH_REAL(SPINHASH_TERRAIN)(const float* xyz, uint32_t n, const TerrainParams& params,
-                                       TerrainGrid& grid, float* height, uint8_t* ground,
-                                       TerrainStats* stats);
+Status SPINHASH_REAL(SPINHASH_TERRAIN)(const SceneConfig& c, const WindowSource& src, uint32_t n,
+                                       const FrameRect& seen, double s0, double t0, WindowBuffers& b,
+                                       SceneStats* st);
+uint32_t SPINHASH_REAL(SPINHASH_HEIGHTS)(const TerrainGrid& grid, const float* xyz, uint32_t n,
+                                         float ground_height, float* height, uint8_t* ground);
 Status SPINHASH_REAL(SPINHASH_SEGMENT)(const float* xyz, const float* height, const uint8_t* ground,
                                        uint32_t n, const SegmentParams& params, SegmentGrid& grid,
                                        ObjectShape* objects, uint32_t* label, SegmentStats* stats);
 Result SPINHASH_REAL(SPINHASH_RECOGNIZE)(Recognizer* self, const float* xyz, uint32_t count);
 
-Status SPINHASH_WRAP(SPINHASH_TERRAIN)(const float* xyz, uint32_t n, const TerrainParams& params,
-                                       TerrainGrid& grid, float* height, uint8_t* ground,
-                                       TerrainStats* stats) {
+Status SPINHASH_WRAP(SPINHASH_TERRAIN)(const SceneConfig& c, const WindowSource& src, uint32_t n,
+                                       const FrameRect& seen, double s0, double t0, WindowBuffers& b,
+                                       SceneStats* st) {
   spinhash_bench_terrain_begin();
-  const Status s = SPINHASH_REAL(SPINHASH_TERRAIN)(xyz, n, params, grid, height, ground, stats);
+  const Status s = SPINHASH_REAL(SPINHASH_TERRAIN)(c, src, n, seen, s0, t0, b, st);
   spinhash_bench_terrain_end();
   return s;
+}
+
+uint32_t SPINHASH_WRAP(SPINHASH_HEIGHTS)(const TerrainGrid& grid, const float* xyz, uint32_t n,
+                                         float ground_height, float* height, uint8_t* ground) {
+  spinhash_bench_terrain_begin();
+  const uint32_t on_ground = SPINHASH_REAL(SPINHASH_HEIGHTS)(grid, xyz, n, ground_height, height, ground);
+  spinhash_bench_terrain_end();
+  return on_ground;
 }
 
 Status SPINHASH_WRAP(SPINHASH_SEGMENT)(const float* xyz, const float* height, const uint8_t* ground,
