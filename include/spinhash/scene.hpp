@@ -42,9 +42,10 @@ struct SceneConfig {
   float window_margin = 40.0f;  // m
 
   // Capacities of one window.
-  uint32_t max_tile_points = 1u << 21;    // points a window holds (more: kWindowOverflow, counted)
-  uint32_t max_objects = 256;             // objects of >= min_object_points points per window
-  uint32_t max_terrain_cells = 1u << 17;  // terrain grid: 0.5 m cells; windows of a row share it (2 of 64 + 40 m)
+  uint32_t max_tile_points = 1u << 21;  // points a window holds (more: kWindowOverflow, counted)
+  uint32_t max_objects = 256;           // objects of >= min_object_points points per window
+  uint32_t max_terrain_cells =
+      1u << 17;  // terrain grid: 0.5 m cells; windows of a row share it (2 of 64 + 40 m)
   uint32_t max_segment_cells = 1u << 19;  // segmentation grid: 0.25 m cells -> 181 x 181 m
 
   // Terrain (progressive morphological filter).
