@@ -288,13 +288,8 @@ Status classify_terrain(const float* xyz, uint32_t n, const TerrainParams& param
     if (stats) *stats = st;
     return Status::kOk;
   }
-  float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
-  for (uint32_t i = 1; i < n; ++i)
-    for (uint32_t a = 0; a < 2u; ++a) {
-      const float v = xyz[3u * i + a];
-      lo[a] = v < lo[a] ? v : lo[a];
-      hi[a] = v > hi[a] ? v : hi[a];
-    }
+  float lo[2], hi[2];
+  xy_bounds(xyz, n, lo, hi);
   if (!terrain_begin(g, params.cell, lo, hi)) return Status::kTileTooLarge;
   for (uint32_t i = 0; i < n; ++i) terrain_add_lowest(g, xyz + 3u * i);
   for (uint32_t i = 0; i < n; ++i) terrain_add_low_band(g, xyz + 3u * i);

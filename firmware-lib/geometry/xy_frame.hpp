@@ -9,9 +9,6 @@
 
 namespace spinhash {
 
-// Min corner and size in cells of `n` xyz points' footprint at cells of
-// `cell` m; false when that exceeds `max_cells` (the tile is too large for
-// the workspace: never truncated). n > 0.
 // The grid over the footprint [lo, hi] (x, y): its min corner snapped down
 // to a multiple of the cell; false when it needs more than max_cells.
 template <class Grid>
@@ -27,18 +24,25 @@ bool fit_xy_bounds(const float* lo, const float* hi, float cell, Grid& g) {
   return true;
 }
 
-// Min corner and size in cells of `n` xyz points' footprint at cells of
-// `cell` m; false when that exceeds `max_cells` (the tile is too large for
-// the workspace: never truncated). n > 0.
-template <class Grid>
-bool fit_xy_frame(const float* xyz, uint32_t n, float cell, Grid& g) {
-  float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
+// The x, y bounds of n xyz points (n > 0).
+inline void xy_bounds(const float* xyz, uint32_t n, float* lo, float* hi) {
+  lo[0] = hi[0] = xyz[0];
+  lo[1] = hi[1] = xyz[1];
   for (uint32_t i = 1; i < n; ++i)
     for (uint32_t a = 0; a < 2u; ++a) {
       const float v = xyz[3u * i + a];
       lo[a] = v < lo[a] ? v : lo[a];
       hi[a] = v > hi[a] ? v : hi[a];
     }
+}
+
+// Min corner and size in cells of `n` xyz points' footprint at cells of
+// `cell` m; false when that exceeds `max_cells` (the tile is too large for
+// the workspace: never truncated). n > 0.
+template <class Grid>
+bool fit_xy_frame(const float* xyz, uint32_t n, float cell, Grid& g) {
+  float lo[2], hi[2];
+  xy_bounds(xyz, n, lo, hi);
   return fit_xy_bounds(lo, hi, cell, g);
 }
 
