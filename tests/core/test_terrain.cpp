@@ -204,7 +204,12 @@ float reference_height(const TerrainGrid& g, float x, float y) {
 
 }  // namespace
 
-TEST_CASE("terrain: the height lookup equals its definition bit for bit, inside, at the edges and by holes") {
+// Bit for bit where the compiler fuses no multiply-add (x86-64); where it
+// does (aarch64, powerpc), the fast path and the reference may fuse
+// differently, so there they agree to float rounding.
+constexpr float kFusedRounding = 1e-4f;  // m, on heights of ~300 m (a few ulp)
+
+TEST_CASE("terrain: the height lookup equals its definition, inside, at the edges and by holes") {
   constexpr uint32_t kNx = 23, kNy = 17;
   std::vector<float> surface(kNx * kNy);
   uint64_t state = 99;
@@ -229,7 +234,11 @@ TEST_CASE("terrain: the height lookup equals its definition bit for bit, inside,
     if (std::isnan(want)) {
       CHECK(std::isnan(got));
     } else {
+#if defined(__x86_64__) && !defined(__FMA__)
       CHECK(got == want);
+#else
+      CHECK(std::fabs(got - want) <= kFusedRounding);
+#endif
       ++compared;
     }
   }
