@@ -74,7 +74,6 @@ struct WindowOutput {
 
 RecognizerConfig scene_object_config(const SceneConfig& c);
 TerrainParams scene_terrain_params(const SceneConfig& c);
-bool scene_gates_valid(const SceneConfig& c);
 
 // Appends one point (stream frame stz, source index) to the window's
 // local buffer; false when the window is full.
