@@ -81,7 +81,8 @@ bool same_range(const std::string& doc, L lo, H hi, bool has_range) {
   const double dlo = number(doc.substr(1, comma - 1)),
                dhi = number(doc.substr(comma + 2, doc.size() - comma - 3));
   const bool lo_ok = doc.front() == '(' ? dlo == 0.0 && static_cast<float>(lo) == kSmallestPositive
-                                        : doc.front() == '[' && near(dlo, static_cast<double>(lo));
+                                        : doc.front() == '[' && static_cast<float>(lo) != kSmallestPositive &&
+                                              near(dlo, static_cast<double>(lo));
   const bool hi_ok = doc.back() == ')' ? std::isinf(dhi) && static_cast<float>(hi) == kNoUpperBound
                                        : doc.back() == ']' && near(dhi, static_cast<double>(hi));
   return lo_ok && hi_ok;
