@@ -27,42 +27,13 @@ static_assert(alignof(RecognizerSlot) <= alignof(spinhash_recognizer), "recogniz
 static_assert(alignof(spinhash_database) == SPINHASH_STORAGE_ALIGNMENT, "storage alignment macro is stale");
 static_assert(SPINHASH_BUFFER_ALIGNMENT == kBufferAlignment, "buffer alignment macro is stale");
 
-// The C enum must mirror Status value for value (append-only on both sides).
-constexpr bool same(spinhash_status c, Status s) {
-  return static_cast<int32_t>(c) == static_cast<int32_t>(s);
-}
-static_assert(same(SPINHASH_OK, Status::kOk) && same(SPINHASH_INVALID_ARGUMENT, Status::kInvalidArgument) &&
-                  same(SPINHASH_WORKSPACE_TOO_SMALL, Status::kWorkspaceTooSmall) &&
-                  same(SPINHASH_MISALIGNED_BUFFER, Status::kMisalignedBuffer) &&
-                  same(SPINHASH_BLOB_TRUNCATED, Status::kBlobTruncated) &&
-                  same(SPINHASH_BLOB_BAD_MAGIC, Status::kBlobBadMagic) &&
-                  same(SPINHASH_BLOB_UNSUPPORTED_VERSION, Status::kBlobUnsupportedVersion) &&
-                  same(SPINHASH_BLOB_WRONG_BYTE_ORDER, Status::kBlobWrongByteOrder) &&
-                  same(SPINHASH_BLOB_HEADER_CHECKSUM, Status::kBlobHeaderChecksum) &&
-                  same(SPINHASH_BLOB_SECTION_CHECKSUM, Status::kBlobSectionChecksum) &&
-                  same(SPINHASH_BLOB_SECTION_OUT_OF_BOUNDS, Status::kBlobSectionOutOfBounds) &&
-                  same(SPINHASH_BLOB_SECTION_OVERLAP, Status::kBlobSectionOverlap) &&
-                  same(SPINHASH_BLOB_SECTION_MISALIGNED, Status::kBlobSectionMisaligned) &&
-                  same(SPINHASH_BLOB_MISSING_SECTION, Status::kBlobMissingSection) &&
-                  same(SPINHASH_BLOB_DUPLICATE_SECTION, Status::kBlobDuplicateSection) &&
-                  same(SPINHASH_BLOB_COUNT_OVERFLOW, Status::kBlobCountOverflow) &&
-                  same(SPINHASH_BLOB_SIZE_MISMATCH, Status::kBlobSizeMismatch) &&
-                  same(SPINHASH_BLOB_BAD_PARAMETER, Status::kBlobBadParameter) &&
-                  same(SPINHASH_BLOB_BAD_MODEL_TABLE, Status::kBlobBadModelTable) &&
-                  same(SPINHASH_BLOB_BAD_FEATURE, Status::kBlobBadFeature) &&
-                  same(SPINHASH_BLOB_BAD_INDEX, Status::kBlobBadIndex) &&
-                  same(SPINHASH_DATABASE_TOO_LARGE, Status::kDatabaseTooLarge) &&
-                  same(SPINHASH_BLOB_UNKNOWN_SECTION, Status::kBlobUnknownSection) &&
-                  same(SPINHASH_BLOB_NOT_ZEROED, Status::kBlobNotZeroed) &&
-                  same(SPINHASH_EMPTY_CLOUD, Status::kEmptyCloud) &&
-                  same(SPINHASH_TOO_MANY_POINTS, Status::kTooManyPoints) &&
-                  same(SPINHASH_NOT_ENOUGH_FEATURES, Status::kNotEnoughFeatures) &&
-                  same(SPINHASH_NOT_OPEN, Status::kNotOpen) &&
-                  same(SPINHASH_TILE_TOO_LARGE, Status::kTileTooLarge) &&
-                  same(SPINHASH_TOO_MANY_OBJECTS, Status::kTooManyObjects) &&
-                  same(SPINHASH_WINDOW_OVERFLOW, Status::kWindowOverflow) &&
-                  same(SPINHASH_STREAM_FLUSHED, Status::kStreamFlushed),
-              "spinhash_status and spinhash::Status disagree");
+// The C enum and Status are the same list (status_list.h); the C enum's
+// values are ints, as Status's.
+#define SPINHASH_SAME_STATUS(cxx, value, c, word, message)                               \
+  static_assert(static_cast<int32_t>(SPINHASH_##c) == static_cast<int32_t>(Status::cxx), \
+                "spinhash_status and spinhash::Status disagree on " #c);
+SPINHASH_STATUS_LIST(SPINHASH_SAME_STATUS)
+#undef SPINHASH_SAME_STATUS
 
 spinhash_status to_c(Status s) { return static_cast<spinhash_status>(static_cast<int32_t>(s)); }
 

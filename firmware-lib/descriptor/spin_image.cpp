@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "util/fixed_math.hpp"
+#include "util/angle_math.hpp"
 
 namespace spinhash {
 

@@ -8,7 +8,7 @@
 #include "geometry/resample.hpp"
 #include "spinhash/features.hpp"
 #include "spinhash/limits.hpp"
-#include "util/fixed_math.hpp"
+#include "util/angle_math.hpp"
 
 namespace spinhash {
 

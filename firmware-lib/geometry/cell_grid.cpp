@@ -1,6 +1,6 @@
 #include "geometry/cell_grid.hpp"
 
-#include "util/fixed_math.hpp"
+#include "util/fibonacci_hash.hpp"
 
 namespace spinhash {
 

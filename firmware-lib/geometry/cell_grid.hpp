@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "spinhash/arena.hpp"
-#include "util/fixed_math.hpp"  // Fibonacci hashing
+#include "util/fibonacci_hash.hpp"
 
 namespace spinhash {
 
@@ -107,7 +107,7 @@ inline uint64_t CellGrid::pack(int32_t x, int32_t y, int32_t z) {
 }
 
 // Both halves of the key folded by 32-bit products into a Fibonacci hash
-// (util/fixed_math.hpp). Slots only place cells in the table: the cells'
+// (util/fibonacci_hash.hpp). Slots only place cells in the table: the cells'
 // order is the order they were first seen.
 inline uint32_t CellGrid::home_slot(uint64_t key) const {
   constexpr uint32_t kHighHalfMultiplier = 0x85EBCA77u;  // another odd constant (MurmurHash3's)

@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 #include <cmath>
 
-#include "util/fixed_math.hpp"
+#include "util/angle_math.hpp"
 #include "util/heap_sort.hpp"
 
 namespace spinhash {

@@ -3,13 +3,10 @@
 #include <cmath>
 
 #include "geometry/xy_frame.hpp"
+#include "spinhash/limits.hpp"
 
 namespace spinhash {
 namespace {
-
-constexpr float kMinCell = 0.05f;      // m: finer grids cost cells and add nothing at lidar densities
-constexpr float kMaxCell = 10.0f;      // m
-constexpr float kMaxWindowM = 500.0f;  // m: the widest window accepted
 
 bool no_data(float v) { return std::isnan(v); }
 
@@ -158,9 +155,11 @@ void fill_terrain_surface(TerrainGrid& g, uint32_t max_gap) {
 }  // namespace
 
 bool terrain_params_valid(const TerrainParams& p) {
-  return p.cell >= kMinCell && p.cell <= kMaxCell && p.max_window >= p.cell && p.max_window <= kMaxWindowM &&
-         p.slope >= 0.0f && p.slope <= 10.0f && p.dh0 >= 0.0f && p.dh_max >= p.dh0 && p.dh_max <= 100.0f &&
-         p.ground_height >= 0.0f && p.ground_height <= 10.0f;
+  // The bounds of SceneConfig's terrain fields (limits.hpp, scene_fields.h).
+  return p.cell >= kMinSceneTerrainCell && p.cell <= kMaxSceneTerrainCell && p.max_window >= p.cell &&
+         p.max_window <= kMaxTerrainWindow && p.slope >= 0.0f && p.slope <= kMaxTerrainSlope &&
+         p.dh0 >= 0.0f && p.dh_max >= p.dh0 && p.dh_max <= kMaxTerrainDh && p.ground_height >= 0.0f &&
+         p.ground_height <= kMaxGroundHeight;
 }
 
 void TerrainGrid::carve(Arena& arena, uint32_t cells) {

@@ -5,7 +5,7 @@
 #include "kernels/l1_select.hpp"
 #include "spinhash/limits.hpp"
 #include "spinhash/lsh.hpp"
-#include "util/fixed_math.hpp"
+#include "util/fibonacci_hash.hpp"
 #include "util/heap_sort.hpp"
 
 namespace spinhash {

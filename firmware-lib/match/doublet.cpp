@@ -3,7 +3,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "util/fixed_math.hpp"
+#include "util/angle_math.hpp"
 
 namespace spinhash {
 namespace {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "kernels/l1_select.hpp"
-#include "util/fixed_math.hpp"
+#include "util/angle_math.hpp"
 
 namespace spinhash {
 namespace {

@@ -8,7 +8,7 @@
 #include "spinhash/config_fields.h"
 #include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"
-#include "util/fixed_math.hpp"
+#include "util/angle_math.hpp"
 #include "util/heap_sort.hpp"
 
 namespace spinhash {

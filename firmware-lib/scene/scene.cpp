@@ -37,11 +37,6 @@ Status carve(Arena& arena, const SceneConfig& c, SceneBuffers& b) {
   return arena.overflowed() ? Status::kWorkspaceTooSmall : Status::kOk;
 }
 
-bool multiple_of(float v, float cell) {
-  const float k = v / cell;
-  return std::fabs(k - std::round(k)) < 1e-4f;
-}
-
 // The sink of the tile API: each reported object copied into the result.
 void collect(void* context, const SceneObject& object, int64_t, uint32_t) {
   SceneBuffers& b = *static_cast<SceneBuffers*>(context);
@@ -136,19 +131,6 @@ const char* object_kind_name(ObjectKind k) noexcept {
     case ObjectKind::kUnknown: return "unknown";
   }
   return "unknown";
-}
-
-bool scene_config_valid(const SceneConfig& c) noexcept {
-  const bool window_ok = c.window_core > 0.0f && c.window_core <= kMaxWindowEdge && c.window_margin >= 0.0f &&
-                         c.window_margin <= kMaxWindowEdge && multiple_of(c.window_core, c.terrain_cell) &&
-                         multiple_of(c.window_core, c.segment_cell);
-  return required_workspace_bytes(scene_object_config(c)) > 0 &&
-         terrain_params_valid(scene_terrain_params(c)) && scene_gates_valid(c) && window_ok &&
-         c.top_n >= 1u && c.top_n <= kMaxSceneTopN && c.max_objects >= 1u &&
-         c.max_objects <= kMaxSceneObjects && c.max_tile_points >= 1u &&
-         c.max_tile_points <= kMaxSceneTilePoints && c.max_terrain_cells >= 1u &&
-         c.max_terrain_cells <= kMaxSceneGridCells && c.max_segment_cells >= 1u &&
-         c.max_segment_cells <= kMaxSceneGridCells && c.min_object_points >= 1u;
 }
 
 size_t required_scene_workspace_bytes(const SceneConfig& config) noexcept {

@@ -36,8 +36,6 @@ namespace {
 
 const StreamStats kNoStreamStats{};  // stats() before init
 
-bool extent_ok(float v) { return std::isfinite(v) && std::fabs(v) <= kMaxStreamExtent; }
-
 Status carve(Arena& arena, const StreamConfig& c, StreamBuffers& b) {
   b.window.carve(arena, c.scene);
   b.ring.carve(arena, c.max_buffered_points);
@@ -189,16 +187,6 @@ Status push_one(StreamBuffers& b, const double* xyz) {
 }
 
 }  // namespace
-
-bool stream_config_valid(const StreamConfig& c) noexcept {
-  const bool origin_ok = !c.origin_given || finite_xyz(c.origin);
-  return scene_config_valid(c.scene) && origin_ok && std::isfinite(c.heading_deg) &&
-         std::fabs(c.heading_deg) <= 360.0f && extent_ok(c.swath_min) && extent_ok(c.swath_max) &&
-         c.swath_min < c.swath_max && extent_ok(c.own_min) && extent_ok(c.own_max) && c.own_min < c.own_max &&
-         c.own_min >= c.swath_min && c.own_max <= c.swath_max && extent_ok(c.max_lag) && c.max_lag >= 0.0f &&
-         extent_ok(c.max_jump) && c.max_jump > 0.0f && extent_ok(c.max_z_offset) && c.max_z_offset > 0.0f &&
-         c.max_buffered_points >= 1u && c.max_buffered_points <= kMaxStreamBufferedPoints;
-}
 
 size_t required_stream_workspace_bytes(const StreamConfig& config) noexcept {
   if (!stream_config_valid(config)) return 0;

@@ -223,15 +223,6 @@ TerrainParams scene_terrain_params(const SceneConfig& c) {
   return p;
 }
 
-bool scene_gates_valid(const SceneConfig& c) {
-  auto range = [](float lo, float hi) { return lo >= 0.0f && hi >= lo && hi <= 1000.0f; };
-  return range(c.min_length, c.max_length) && range(c.min_width, c.max_width) &&
-         range(c.min_height, c.max_height) && c.max_clearance >= 0.0f && c.max_clearance <= 1000.0f &&
-         c.max_size_mismatch >= 0.0f && c.max_size_mismatch <= 10.0f && c.max_ground_sink >= 0.0f &&
-         c.segment_cell >= 0.02f && c.segment_cell <= 10.0f && c.layer_split_height > 0.0f &&
-         c.layer_split_height <= 1000.0f;
-}
-
 void WindowBuffers::carve(Arena& arena, const SceneConfig& c) {
   const size_t np = c.max_tile_points;
   capacity = c.max_tile_points;

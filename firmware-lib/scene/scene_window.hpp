@@ -74,7 +74,6 @@ struct WindowOutput {
 
 RecognizerConfig scene_object_config(const SceneConfig& c);
 TerrainParams scene_terrain_params(const SceneConfig& c);
-bool scene_gates_valid(const SceneConfig& c);
 
 // Consecutive windows of one row share one terrain grid (a strip): as many
 // columns as max_terrain_cells holds over their seen rectangles, at least

@@ -16,10 +16,10 @@
 #include "pipeline/progress.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/recognizer_flags.hpp"
+#include "pipeline/scene_flags.hpp"
 #include "pipeline/scene_session.hpp"
 #include "pipeline/tile_stream.hpp"
 #include "render/tile_picture.hpp"
-#include "spinhash/limits.hpp"
 
 namespace spinhash::cli {
 
@@ -130,22 +130,7 @@ void add_scene_command(CLI::App& app, int* exit_code) {
   CLI::App* cmd = app.add_subcommand(
       "scene", "find and recognise every vehicle in airborne lidar tiles (LAS, PLY or x y z text, z up)");
   cmd->add_option("--db", a->db_path, "database file")->required();
-  cmd->add_option("--top", a->config.top_n, "models listed per object")->check(CLI::Range(1u, kMaxSceneTopN));
-  cmd->add_option("--max-window-points", a->config.max_tile_points,
-                  "points a scene window holds (default: sized from the tile's density; more: counted, "
-                  "not answered)")
-      ->check(CLI::Range(1u, kMaxSceneTilePoints));
-  cmd->add_option("--window-core", a->config.window_core,
-                  "m: the windows' owned squares (a multiple of the grid cells, 0.5 m)")
-      ->check(CLI::Range(1.0f, kMaxWindowEdge))
-      ->capture_default_str();
-  cmd->add_option("--window-margin", a->config.window_margin,
-                  "m seen beyond a window's core: half the longest vehicle plus the terrain filter's reach")
-      ->check(CLI::Range(0.0f, kMaxWindowEdge))
-      ->capture_default_str();
-  cmd->add_option("--max-objects", a->config.max_objects,
-                  "objects per tile (more: the rest are not recognised)")
-      ->check(CLI::Range(1u, kMaxSceneObjects));
+  pipeline::add_scene_flags(cmd, &a->config);  // --top, --window-core, --max-window-points, ...
   cmd->add_option("--picture-out", a->picture_dir,
                   "folder for a top-down PNG per tile: objects outlined and labelled (green: confident)")
       ->check(CLI::ExistingDirectory);

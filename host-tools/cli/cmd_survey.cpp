@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "pipeline/scene_flags.hpp"
 #include "survey/survey_runner.hpp"
 
 namespace spinhash::cli {
@@ -27,10 +28,7 @@ void add_survey_command(CLI::App& app, int* exit_code) {
       ->check(CLI::Range(survey::kMinBuffer, survey::kMaxBuffer));
   cmd->add_flag("--resume", o->resume, "keep the tiles a previous run in DIR finished (same inputs)");
   cmd->add_flag("--quiet", o->quiet, "no progress line");
-  cmd->add_option("--top", o->scene.top_n, "models listed per object")->check(CLI::Range(1u, 64u));
-  cmd->add_option("--max-objects", o->scene.max_objects,
-                  "objects per tile (more: the rest are not recognised)")
-      ->check(CLI::Range(1u, 1u << 16));
+  pipeline::add_scene_flags(cmd, &o->scene, {"--top", "--max-objects"});
   cmd->add_option("tiles", *tiles, "tiles (LAS, LAZ, PLY, x y z text) or folders of them")->required();
   cmd->callback([o, tiles, exit_code]() { *exit_code = survey::run_survey(*o, *tiles); });
 }

@@ -10,6 +10,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "spinhash/limits.hpp"
+
 namespace spinhash::pipeline {
 namespace {
 
@@ -19,9 +21,9 @@ namespace fs = std::filesystem;
 // tile's mean density (overlapping flight lines double it), and the bounds.
 constexpr double kDensitySafety = 2.5;
 constexpr uint64_t kMinWindowPoints = 100000;
-constexpr uint64_t kMaxWindowPoints = 1u << 26;
+constexpr uint64_t kMaxWindowPoints = kMaxSceneTilePoints;
 constexpr uint64_t kMinBufferedPoints = 200000;
-constexpr uint64_t kMaxBufferedPoints = 1u << 28;
+constexpr uint64_t kMaxBufferedPoints = kMaxStreamBufferedPoints;
 // A 32 m cell across the track holding fewer points than this share of the
 // tile is an outlier (a GNSS glitch), not part of the swath.
 constexpr double kOutlierCellShare = 1e-6;

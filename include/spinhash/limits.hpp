@@ -3,6 +3,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 namespace spinhash {
 
@@ -36,13 +37,29 @@ constexpr uint32_t kMaxStabilityRetries = 32;          // attempts to draw a sta
 constexpr uint32_t kMaxGridCellsPerModel = 1u << 20;
 constexpr uint32_t kMaxFieldVoxelsPerModel = 1u << 24;  // nearest-feature field (blob_format.hpp)
 constexpr uint32_t kMaxFieldSlots = 8;                  // features per field voxel
-// The scene (scene.hpp, scene_stream.hpp): bounds of SceneConfig and StreamConfig.
+// The scene (scene.hpp, scene_stream.hpp): bounds of SceneConfig and
+// StreamConfig, the ranges of scene_fields.h.
 constexpr uint32_t kMaxSceneTopN = 64;              // ranking entries kept per object
 constexpr uint32_t kMaxSceneObjects = 1u << 16;     // objects per window
 constexpr uint32_t kMaxSceneTilePoints = 1u << 26;  // points per window
 constexpr uint32_t kMaxSceneGridCells = 1u << 24;   // terrain or segmentation cells per window
+constexpr float kMinWindowCore = 1.0f;              // m: window_core
 constexpr float kMaxWindowEdge = 2000.0f;           // m: window_core and window_margin
+constexpr float kMinSceneTerrainCell = 0.05f;  // m: finer grids cost cells and add nothing at lidar densities
+constexpr float kMaxSceneTerrainCell = 10.0f;  // m
+constexpr float kMaxTerrainWindow = 500.0f;    // m: the terrain filter's widest opening
+constexpr float kMaxTerrainSlope = 10.0f;      // rise per m
+constexpr float kMaxTerrainDh = 100.0f;        // m: the terrain filter's height thresholds
+constexpr float kMaxGroundHeight = 10.0f;      // m above the terrain that is still ground
+constexpr float kMinSegmentCell = 0.02f;       // m
+constexpr float kMaxSegmentCell = 10.0f;       // m
+constexpr float kMaxSceneGate = 1000.0f;       // m: size gates, clearance and the layer split
+constexpr float kMaxSizeMismatch = 10.0f;      // share of a model's length and width
 constexpr uint32_t kMaxStreamBufferedPoints = 1u << 28;
 constexpr float kMaxStreamExtent = 1.0e5f;  // m: swath edges, lag, jump and z offset
+// The low end of a range open at 0 (v >= it: v > 0), and the high end of
+// a range open above (max_ground_sink).
+constexpr float kSmallestPositive = std::numeric_limits<float>::denorm_min();
+constexpr float kNoUpperBound = std::numeric_limits<float>::infinity();
 
 }  // namespace spinhash

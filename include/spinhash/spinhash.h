@@ -23,6 +23,7 @@
 #include <stdint.h>
 
 #include "spinhash/config_fields.h"
+#include "spinhash/status_list.h"
 #include "spinhash/vehicle_classes.h"
 
 #ifdef __cplusplus
@@ -41,42 +42,10 @@ extern "C" {
 #define SPINHASH_RECOGNIZER_STORAGE_BYTES 320
 #define SPINHASH_STORAGE_ALIGNMENT 8
 
-/* Values mirror spinhash::Status (include/spinhash/status.hpp) exactly and
- * are only ever appended to. */
-typedef enum spinhash_status {
-  SPINHASH_OK = 0,
-  SPINHASH_INVALID_ARGUMENT = 1,
-  SPINHASH_WORKSPACE_TOO_SMALL = 2,
-  SPINHASH_MISALIGNED_BUFFER = 3,
-  SPINHASH_BLOB_TRUNCATED = 10,
-  SPINHASH_BLOB_BAD_MAGIC = 11,
-  SPINHASH_BLOB_UNSUPPORTED_VERSION = 12,
-  SPINHASH_BLOB_WRONG_BYTE_ORDER = 13,
-  SPINHASH_BLOB_HEADER_CHECKSUM = 14,
-  SPINHASH_BLOB_SECTION_CHECKSUM = 15,
-  SPINHASH_BLOB_SECTION_OUT_OF_BOUNDS = 16,
-  SPINHASH_BLOB_SECTION_OVERLAP = 17,
-  SPINHASH_BLOB_SECTION_MISALIGNED = 18,
-  SPINHASH_BLOB_MISSING_SECTION = 19,
-  SPINHASH_BLOB_DUPLICATE_SECTION = 20,
-  SPINHASH_BLOB_COUNT_OVERFLOW = 21,
-  SPINHASH_BLOB_SIZE_MISMATCH = 22,
-  SPINHASH_BLOB_BAD_PARAMETER = 23,
-  SPINHASH_BLOB_BAD_MODEL_TABLE = 24,
-  SPINHASH_BLOB_BAD_FEATURE = 25,
-  SPINHASH_BLOB_BAD_INDEX = 26,
-  SPINHASH_DATABASE_TOO_LARGE = 27,
-  SPINHASH_BLOB_UNKNOWN_SECTION = 28,
-  SPINHASH_BLOB_NOT_ZEROED = 29,
-  SPINHASH_EMPTY_CLOUD = 40,
-  SPINHASH_TOO_MANY_POINTS = 41,
-  SPINHASH_NOT_ENOUGH_FEATURES = 42,
-  SPINHASH_NOT_OPEN = 43,
-  SPINHASH_TILE_TOO_LARGE = 44,
-  SPINHASH_TOO_MANY_OBJECTS = 45,
-  SPINHASH_WINDOW_OVERFLOW = 46,
-  SPINHASH_STREAM_FLUSHED = 47
-} spinhash_status;
+/* Values mirror spinhash::Status (include/spinhash/status.hpp) exactly: both
+ * are SPINHASH_STATUS_LIST (status_list.h), only ever appended to. */
+#define SPINHASH_C_STATUS(cxx, value, c, word, message) SPINHASH_##c = value,
+typedef enum spinhash_status { SPINHASH_STATUS_LIST(SPINHASH_C_STATUS) } spinhash_status;
 
 typedef enum spinhash_mode {
   SPINHASH_MODE_BRAN = 0, /* batch RANSAC over the joint LSH index */

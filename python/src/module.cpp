@@ -3,6 +3,7 @@
 // spinhash database, through the same host pipeline as the spinhash command.
 #include "bindings.hpp"
 #include "pipeline/version.hpp"
+#include "spinhash/status_list.h"
 #include "spinhash/vehicle_class.hpp"
 
 PYBIND11_MODULE(_spinhash, m) {
@@ -15,6 +16,14 @@ PYBIND11_MODULE(_spinhash, m) {
   for (uint32_t id = 0; id < spinhash::kVehicleClassCount; ++id)
     classes.append(spinhash::vehicle_class_name(id));
   m.attr("CLASS_NAMES") = pybind11::tuple(classes);
+  // Every status (spinhash/status_list.h): its word (the `status` of results
+  // and objects) -> (code, message).
+  pybind11::dict statuses;
+#define SPINHASH_PY_STATUS(cxx, value, c, word, message) \
+  statuses[word] = pybind11::make_tuple(value, message);
+  SPINHASH_STATUS_LIST(SPINHASH_PY_STATUS)
+#undef SPINHASH_PY_STATUS
+  m.attr("STATUSES") = statuses;
   spinhash::python::bind_database(m);
   spinhash::python::bind_config(m);
   spinhash::python::bind_result(m);

@@ -15,52 +15,74 @@
 #include "py_database.hpp"
 #include "py_result.hpp"
 #include "py_scene.hpp"
+#include "spinhash/scene_fields.h"
 
 namespace py = pybind11;
 
 namespace spinhash::python {
 namespace {
 
-// The scene's own settings (the CLI's scene options); nullptr for the recognizer's.
-uint32_t* scene_field(SceneConfig* c, const std::string& key) {
-  if (key == "top_n") return &c->top_n;
-  if (key == "max_tile_points") return &c->max_tile_points;
-  if (key == "max_objects") return &c->max_objects;
-  return nullptr;
+std::string type_name(py::handle value) {
+  return std::string(py::str(py::type::handle_of(value).attr("__name__")));
 }
 
-// A scene setting, checked by the core's own rule on an otherwise default config.
-void set_scene_field(SceneConfig* c, const std::string& key, py::handle value) {
+// A Python value as a scene setting's type: TypeError for another type,
+// ValueError for an int beyond uint32.
+uint32_t setting_value(uint32_t*, const std::string& key, py::handle value) {
   if (PyBool_Check(value.ptr()) || !PyLong_Check(value.ptr()))
-    throw py::type_error(key + " must be an int, got " +
-                         std::string(py::str(py::type::handle_of(value).attr("__name__"))));
+    throw py::type_error(key + " must be an int, got " + type_name(value));
   const long long v = PyLong_AsLongLong(value.ptr());
-  SceneConfig probe;
-  *scene_field(&probe, key) = static_cast<uint32_t>(v);
-  if (PyErr_Occurred() || v < 1 || v > 0xFFFFFFFFll || !scene_config_valid(probe)) {
+  if (PyErr_Occurred() || v < 0 || v > 0xFFFFFFFFll) {
     PyErr_Clear();
     throw py::value_error(key + " is out of range: " + std::string(py::repr(value)));
   }
-  *scene_field(c, key) = static_cast<uint32_t>(v);
+  return static_cast<uint32_t>(v);
+}
+float setting_value(float*, const std::string& key, py::handle value) {
+  if (PyBool_Check(value.ptr()) || !(PyLong_Check(value.ptr()) || PyFloat_Check(value.ptr())))
+    throw py::type_error(key + " must be a number, got " + type_name(value));
+  return py::cast<float>(value);
+}
+
+// A scene setting, checked by the core's own rule on an otherwise default config.
+template <typename T>
+void set_checked(SceneConfig* c, T SceneConfig::*member, const std::string& key, py::handle value) {
+  const T v = setting_value(static_cast<T*>(nullptr), key, value);
+  SceneConfig probe;
+  probe.*member = v;
+  if (!scene_config_valid(probe))
+    throw py::value_error(key + " is out of range: " + std::string(py::repr(value)));
+  c->*member = v;
+}
+
+// Takes `key` when it names a field of SPINHASH_SCENE_CONFIG_FIELDS; false
+// for the recognizer's settings.
+bool set_scene_field(SceneConfig* c, const std::string& key, py::handle value) {
+#define SPINHASH_PY_SCENE_FIELD(kind, name, lo, hi, flag, help) \
+  if (key == #name) {                                           \
+    set_checked(c, &SceneConfig::name, key, value);             \
+    return true;                                                \
+  }
+  SPINHASH_SCENE_CONFIG_FIELDS(SPINHASH_PY_SCENE_FIELD)
+#undef SPINHASH_PY_SCENE_FIELD
+  return false;
+}
+
+// One value per kind of SPINHASH_SCENE_STATS_FIELDS.
+py::object stat_U32(uint32_t v) { return py::int_(v); }
+py::object stat_U64(uint64_t v) { return py::int_(v); }
+py::object stat_SIZE(size_t v) { return py::int_(v); }
+py::object stat_KINDS(const uint32_t (&by_kind)[kObjectKinds]) {
+  py::dict kinds;
+  for (uint32_t k = 0; k < kObjectKinds; ++k) kinds[object_kind_name(ObjectKind(k))] = by_kind[k];
+  return std::move(kinds);
 }
 
 py::dict scene_stats(const SceneStats& st) {
-  py::dict d, kinds;
-  d["points"] = st.points_in;
-  d["points_nonfinite"] = st.points_nonfinite;
-  d["points_ground"] = st.points_ground;
-  d["points_in_objects"] = st.points_in_objects;
-  d["points_fragments"] = st.points_fragments;
-  d["terrain_cells"] = st.terrain_cells;
-  d["terrain_windows"] = st.terrain_windows;
-  d["segment_cells"] = st.segment_cells;
-  d["components"] = st.components;
-  d["objects_dropped"] = st.objects_dropped;
-  for (uint32_t k = 0; k < kObjectKinds; ++k) kinds[object_kind_name(ObjectKind(k))] = st.objects_by_kind[k];
-  d["objects_by_kind"] = kinds;
-  d["recognition_hypotheses"] = st.recognition_hypotheses;
-  d["recognition_candidates"] = st.recognition_candidates;
-  d["workspace_used"] = st.workspace_used;
+  py::dict d;
+#define SPINHASH_PY_SCENE_STAT(kind, name, key) d[key] = stat_##kind(st.name);
+  SPINHASH_SCENE_STATS_FIELDS(SPINHASH_PY_SCENE_STAT)
+#undef SPINHASH_PY_SCENE_STAT
   return d;
 }
 
@@ -128,10 +150,7 @@ SceneConfig scene_config_from(const py::object& config, const py::kwargs& kwargs
   py::kwargs recognizer_kwargs;
   for (auto item : kwargs) {
     const std::string key = py::cast<std::string>(item.first);
-    if (scene_field(&scene, key) != nullptr)
-      set_scene_field(&scene, key, item.second);
-    else
-      recognizer_kwargs[item.first] = item.second;
+    if (!set_scene_field(&scene, key, item.second)) recognizer_kwargs[item.first] = item.second;
   }
   scene.recognizer = recognizer_config(base, config, recognizer_kwargs);
   return scene;
@@ -140,12 +159,13 @@ SceneConfig scene_config_from(const py::object& config, const py::kwargs& kwargs
 py::dict scene_stats_dict(const SceneStats& st) { return scene_stats(st); }
 
 void bind_scene(py::module_& m) {
-  py::class_<PySceneRecognizer>(m, "SceneRecognizer",
-                                "Finds and recognises every vehicle in an airborne lidar tile (z up), as "
-                                "`spinhash scene` does.")
-      .def(py::init(&make_scene), py::arg("db"), py::arg("config") = py::none(),
-           "SceneRecognizer(db, config=None, top_n=5, max_tile_points=2097152, max_objects=256, **settings): "
-           "settings as spinhash.Config's (ground_clearance defaults to 0: the terrain is removed)")
+  py::class_<PySceneRecognizer> cls(m, "SceneRecognizer",
+                                    "Finds and recognises every vehicle in an airborne lidar tile (z up), as "
+                                    "`spinhash scene` does.");
+  cls.def(py::init(&make_scene), py::arg("db"), py::arg("config") = py::none(),
+          "SceneRecognizer(db, config=None, top_n=5, max_tile_points=2097152, max_objects=256, **settings): "
+          "any SceneConfig field by name (docs/api.md), the others as spinhash.Config's (ground_clearance "
+          "defaults to 0: the terrain is removed)")
       .def("recognize", &PySceneRecognizer::recognize, py::arg("points"),
            "Every object of an (N, 3) float64 tile: a list of SceneObject. ValueError when the tile is "
            "refused (window_overflow: a window held more than max_tile_points points, ...); a RuntimeWarning "
@@ -156,12 +176,13 @@ void bind_scene(py::module_& m) {
                              "stage statistics of the last tile")
       .def_property_readonly(
           "config", [](const PySceneRecognizer& s) { return s.config().recognizer; },
-          "a copy of the settings each vehicle candidate is recognised with")
-      .def_property_readonly("top_n", [](const PySceneRecognizer& s) { return s.config().top_n; })
-      .def_property_readonly("max_tile_points",
-                             [](const PySceneRecognizer& s) { return s.config().max_tile_points; })
-      .def_property_readonly("max_objects",
-                             [](const PySceneRecognizer& s) { return s.config().max_objects; });
+          "a copy of the settings each vehicle candidate is recognised with");
+  // Every scene setting, read-only (spinhash/scene_fields.h).
+#define SPINHASH_PY_SCENE_PROPERTY(kind, name, lo, hi, flag, help) \
+  cls.def_property_readonly(                                       \
+      #name, [](const PySceneRecognizer& s) { return s.config().name; }, help);
+  SPINHASH_SCENE_CONFIG_FIELDS(SPINHASH_PY_SCENE_PROPERTY)
+#undef SPINHASH_PY_SCENE_PROPERTY
 }
 
 }  // namespace spinhash::python

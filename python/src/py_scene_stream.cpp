@@ -15,6 +15,7 @@
 #include "py_database.hpp"
 #include "py_result.hpp"
 #include "py_scene.hpp"
+#include "spinhash/scene_fields.h"
 #include "spinhash/scene_stream.hpp"
 
 namespace py = pybind11;
@@ -22,53 +23,43 @@ namespace py = pybind11;
 namespace spinhash::python {
 namespace {
 
-// The stream's own settings (the frame, swath, order and buffer), by keyword.
-bool take_stream_setting(StreamConfig* c, const std::string& key, py::handle v) {
-  if (key == "heading_deg")
-    c->heading_deg = py::cast<float>(v);
-  else if (key == "swath_min")
-    c->swath_min = py::cast<float>(v);
-  else if (key == "swath_max")
-    c->swath_max = py::cast<float>(v);
-  else if (key == "own_min")
-    c->own_min = py::cast<float>(v);
-  else if (key == "own_max")
-    c->own_max = py::cast<float>(v);
-  else if (key == "max_lag")
-    c->max_lag = py::cast<float>(v);
-  else if (key == "max_jump")
-    c->max_jump = py::cast<float>(v);
-  else if (key == "max_z_offset")
-    c->max_z_offset = py::cast<float>(v);
-  else if (key == "max_buffered_points")
-    c->max_buffered_points = py::cast<uint32_t>(v);
-  else if (key == "origin") {
-    const auto o = py::cast<std::vector<double>>(v);
-    if (o.size() != 3) throw py::value_error("origin must be 3 numbers (x, y, z)");
-    c->origin_given = true;
-    for (int a = 0; a < 3; ++a) c->origin[a] = o[a];
-  } else {
-    return false;
-  }
+// One keyword per kind of SPINHASH_STREAM_CONFIG_FIELDS (the core checks the
+// whole config). A BOOL is set by the setting it names (origin_given: origin).
+bool take_F32(float* f, py::handle v) {
+  *f = py::cast<float>(v);
+  return true;
+}
+bool take_U32(uint32_t* f, py::handle v) {
+  *f = py::cast<uint32_t>(v);
+  return true;
+}
+bool take_BOOL(bool*, py::handle) { return false; }
+bool take_VEC3D(double (*f)[3], py::handle v) {
+  const auto o = py::cast<std::vector<double>>(v);
+  if (o.size() != 3) throw py::value_error("origin must be 3 numbers (x, y, z)");
+  for (int a = 0; a < 3; ++a) (*f)[a] = o[static_cast<size_t>(a)];
   return true;
 }
 
+// The stream's own settings (the frame, swath, order and buffer), by keyword.
+bool take_stream_setting(StreamConfig* c, const std::string& key, py::handle v) {
+#define SPINHASH_PY_STREAM_FIELD(kind, name, lo, hi, flag, help) \
+  if (key == #name) return take_##kind(&c->name, v);
+  SPINHASH_STREAM_CONFIG_FIELDS(SPINHASH_PY_STREAM_FIELD)
+#undef SPINHASH_PY_STREAM_FIELD
+  return false;
+}
+
+// One value per kind of SPINHASH_STREAM_STATS_FIELDS.
+py::object stat_SCENE(const SceneStats& st) { return scene_stats_dict(st); }
+py::object stat_U64(uint64_t v) { return py::int_(v); }
+py::object stat_F64(double v) { return py::float_(v); }
+
 py::dict stream_stats(const StreamStats& st) {
   py::dict d;
-  d["scene"] = scene_stats_dict(st.scene);
-  d["points_pushed"] = st.points_pushed;
-  d["points_outside"] = st.points_outside;
-  d["points_late"] = st.points_late;
-  d["points_glitch"] = st.points_glitch;
-  d["points_overflow"] = st.points_overflow;
-  d["points_after_flush"] = st.points_after_flush;
-  d["windows"] = st.windows;
-  d["windows_overflowed"] = st.windows_overflowed;
-  d["points_in_overflowed"] = st.points_in_overflowed;
-  d["objects_reported"] = st.objects_reported;
-  d["objects_not_owned"] = st.objects_not_owned;
-  d["furthest_along"] = st.furthest_along;
-  d["done_until"] = st.done_until;
+#define SPINHASH_PY_STREAM_STAT(kind, name, key) d[key] = stat_##kind(st.name);
+  SPINHASH_STREAM_STATS_FIELDS(SPINHASH_PY_STREAM_STAT)
+#undef SPINHASH_PY_STREAM_STAT
   return d;
 }
 
@@ -142,8 +133,11 @@ std::unique_ptr<PySceneStream> make_stream(const std::shared_ptr<PyDatabase>& db
   StreamConfig c;
   py::kwargs rest;
   for (auto item : kwargs)
-    if (!take_stream_setting(&c, py::cast<std::string>(item.first), item.second))
+    if (take_stream_setting(&c, py::cast<std::string>(item.first), item.second)) {
+      if (py::cast<std::string>(item.first) == "origin") c.origin_given = true;
+    } else {
       rest[item.first] = item.second;
+    }
   c.scene = scene_config_from(config, rest);
   if (!stream_config_valid(c))
     throw py::value_error("SceneStream: invalid settings (see stream_config_valid)");

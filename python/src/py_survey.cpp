@@ -13,6 +13,7 @@
 #include "cloud/point_source.hpp"
 #include "pipeline/exit_codes.hpp"
 #include "py_database.hpp"
+#include "spinhash/limits.hpp"
 #include "survey/survey_runner.hpp"
 #include "survey/tile_run.hpp"
 
@@ -21,12 +22,12 @@ namespace py = pybind11;
 namespace spinhash::python {
 namespace {
 
-constexpr uint32_t kMaxTopN = 64, kMaxObjects = 1u << 16;  // as `spinhash survey`'s --top and --max-objects
-
+// As `spinhash survey`'s --top and --max-objects (limits.hpp, scene_fields.h).
 SceneConfig survey_scene(uint32_t top_n, uint32_t max_objects) {
-  if (top_n < 1 || top_n > kMaxTopN) throw py::value_error("top_n must be in [1, 64]");
-  if (max_objects < 1 || max_objects > kMaxObjects)
-    throw py::value_error("max_objects must be in [1, 65536]");
+  if (top_n < 1 || top_n > kMaxSceneTopN)
+    throw py::value_error("top_n must be in [1, " + std::to_string(kMaxSceneTopN) + "]");
+  if (max_objects < 1 || max_objects > kMaxSceneObjects)
+    throw py::value_error("max_objects must be in [1, " + std::to_string(kMaxSceneObjects) + "]");
   SceneConfig c = survey::default_survey_scene();
   c.top_n = top_n, c.max_objects = max_objects;
   return c;

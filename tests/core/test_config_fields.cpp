@@ -1,16 +1,22 @@
-// The field lists of spinhash/config_fields.h against the C++ structs they
-// mirror: same fields, same types (at compile time), and every field through
-// the C struct and back with a value that is not its default.
+// The field lists of spinhash/config_fields.h and spinhash/scene_fields.h
+// against the C++ structs they mirror: same fields, same types (at compile
+// time), every recognizer field through the C struct and back with a value
+// that is not its default, and every scene field's range checked.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <limits>
 #include <type_traits>
 #include <utility>
 
 #include "c_api/config_bridge.hpp"
 #include "spinhash/config_fields.h"
+#include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"
+#include "spinhash/scene_fields.h"
+#include "spinhash/scene_stream.hpp"
 
 using namespace spinhash;
 
@@ -179,4 +185,130 @@ TEST_CASE("config fields: every statistic reaches the C struct") {
   }
   SPINHASH_STATS_FIELDS(SPINHASH_CHECK_STAT)
 #undef SPINHASH_CHECK_STAT
+}
+
+// --- The scene's lists (scene_fields.h) against SceneConfig, StreamConfig,
+// SceneStats and StreamStats: same fields, same types.
+namespace {
+
+constexpr size_t width_SIZE = 1, width_F64 = 1, width_KINDS = kObjectKinds, width_SCENE = 1;
+using CppType_SIZE = size_t;
+using CppType_F64 = double;
+using CppType_KINDS = uint32_t[kObjectKinds];
+using CppType_SCENE = SceneStats;
+
+constexpr size_t listed_scene_config() {
+  size_t n = 0;
+#define SPINHASH_COUNT(kind, name, lo, hi, flag, help) n += width_##kind;
+  SPINHASH_SCENE_CONFIG_FIELDS(SPINHASH_COUNT)
+#undef SPINHASH_COUNT
+  return n;
+}
+constexpr size_t listed_stream_config() {
+  size_t n = 0;
+#define SPINHASH_COUNT(kind, name, lo, hi, flag, help) n += width_##kind;
+  SPINHASH_STREAM_CONFIG_FIELDS(SPINHASH_COUNT)
+#undef SPINHASH_COUNT
+  return n;
+}
+constexpr size_t listed_scene_stats() {
+  size_t n = 0;
+#define SPINHASH_COUNT(kind, name, key) n += width_##kind;
+  SPINHASH_SCENE_STATS_FIELDS(SPINHASH_COUNT)
+#undef SPINHASH_COUNT
+  return n;
+}
+constexpr size_t listed_stream_stats() {
+  size_t n = 0;
+#define SPINHASH_COUNT(kind, name, key) n += width_##kind;
+  SPINHASH_STREAM_STATS_FIELDS(SPINHASH_COUNT)
+#undef SPINHASH_COUNT
+  return n;
+}
+
+// The nested configs (SceneConfig::recognizer, StreamConfig::scene) are one
+// initializer each and no entry.
+static_assert(member_count<SceneConfig>() == listed_scene_config() + 1u,
+              "SceneConfig and SPINHASH_SCENE_CONFIG_FIELDS (scene_fields.h) list different fields");
+static_assert(member_count<StreamConfig>() == listed_stream_config() + 1u,
+              "StreamConfig and SPINHASH_STREAM_CONFIG_FIELDS (scene_fields.h) list different fields");
+static_assert(member_count<SceneStats>() == listed_scene_stats(),
+              "SceneStats and SPINHASH_SCENE_STATS_FIELDS (scene_fields.h) list different fields");
+static_assert(member_count<StreamStats>() == listed_stream_stats(),
+              "StreamStats and SPINHASH_STREAM_STATS_FIELDS (scene_fields.h) list different fields");
+
+#define SPINHASH_SAME_TYPE(kind, name, lo, hi, flag, help)                        \
+  static_assert(std::is_same<decltype(SceneConfig::name), CppType_##kind>::value, \
+                #name ": another type in SceneConfig than in scene_fields.h");
+SPINHASH_SCENE_CONFIG_FIELDS(SPINHASH_SAME_TYPE)
+#undef SPINHASH_SAME_TYPE
+#define SPINHASH_SAME_TYPE(kind, name, lo, hi, flag, help)                         \
+  static_assert(std::is_same<decltype(StreamConfig::name), CppType_##kind>::value, \
+                #name ": another type in StreamConfig than in scene_fields.h");
+SPINHASH_STREAM_CONFIG_FIELDS(SPINHASH_SAME_TYPE)
+#undef SPINHASH_SAME_TYPE
+#define SPINHASH_SAME_TYPE(kind, name, key)                                      \
+  static_assert(std::is_same<decltype(SceneStats::name), CppType_##kind>::value, \
+                #name ": another type in SceneStats than in scene_fields.h");
+SPINHASH_SCENE_STATS_FIELDS(SPINHASH_SAME_TYPE)
+#undef SPINHASH_SAME_TYPE
+#define SPINHASH_SAME_TYPE(kind, name, key)                                       \
+  static_assert(std::is_same<decltype(StreamStats::name), CppType_##kind>::value, \
+                #name ": another type in StreamStats than in scene_fields.h");
+SPINHASH_STREAM_STATS_FIELDS(SPINHASH_SAME_TYPE)
+#undef SPINHASH_SAME_TYPE
+
+// Just outside [lo, hi] (false when the range is the type's whole range).
+bool below(uint32_t lo, uint32_t* v) {
+  if (lo == 0u) return false;
+  *v = lo - 1u;
+  return true;
+}
+bool above(uint32_t hi, uint32_t* v) {
+  if (hi == 0xFFFFFFFFu) return false;
+  *v = hi + 1u;
+  return true;
+}
+bool below(float lo, float* v) {
+  *v = std::nextafter(lo, -std::numeric_limits<float>::infinity());
+  return std::isfinite(lo);
+}
+bool above(float hi, float* v) {
+  *v = std::nextafter(hi, std::numeric_limits<float>::infinity());
+  return std::isfinite(hi);
+}
+bool below(int, bool*) { return false; }
+bool above(int, bool*) { return false; }
+bool below(int, double (*)[3]) { return false; }
+bool above(int, double (*)[3]) { return false; }
+
+}  // namespace
+
+TEST_CASE("scene fields: the defaults are valid and a field just outside its range is refused") {
+  REQUIRE(scene_config_valid(SceneConfig{}));
+  REQUIRE(stream_config_valid(StreamConfig{}));
+  int refused = 0;
+#define SPINHASH_OUTSIDE(kind, name, lo, hi, flag, help)        \
+  {                                                             \
+    INFO("scene field " #name);                                 \
+    SceneConfig c;                                              \
+    if (below(lo, &c.name)) CHECK_FALSE(scene_config_valid(c)); \
+    SceneConfig d;                                              \
+    if (above(hi, &d.name)) CHECK_FALSE(scene_config_valid(d)); \
+    ++refused;                                                  \
+  }
+  SPINHASH_SCENE_CONFIG_FIELDS(SPINHASH_OUTSIDE)
+#undef SPINHASH_OUTSIDE
+#define SPINHASH_OUTSIDE(kind, name, lo, hi, flag, help)         \
+  {                                                              \
+    INFO("stream field " #name);                                 \
+    StreamConfig c;                                              \
+    if (below(lo, &c.name)) CHECK_FALSE(stream_config_valid(c)); \
+    StreamConfig d;                                              \
+    if (above(hi, &d.name)) CHECK_FALSE(stream_config_valid(d)); \
+    ++refused;                                                   \
+  }
+  SPINHASH_STREAM_CONFIG_FIELDS(SPINHASH_OUTSIDE)
+#undef SPINHASH_OUTSIDE
+  CHECK(refused > 30);
 }

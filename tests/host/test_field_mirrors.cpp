@@ -1,14 +1,28 @@
-// The command line and its documentation against the field lists of
-// spinhash/config_fields.h: every configuration field has its flag in
-// `recognize --help` and in docs/cli.md, every statistic its JSON key there.
+// The command line and the documentation against the lists they mirror:
+// spinhash/config_fields.h (every recognizer field has its flag in
+// `recognize --help` and in docs/cli.md, every statistic its JSON key
+// there), spinhash/scene_fields.h (the scene's flags in `scene --help`,
+// `survey --help` and docs/cli.md; the settings tables of docs/api.md; the
+// keys of `scene`'s lines), spinhash/status_list.h (the status table of
+// docs/api.md), and the folders of the tree (README's folder table).
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "cli/report_keys.hpp"
 #include "cli_runner.hpp"
 #include "spinhash/config_fields.h"
+#include "spinhash/limits.hpp"
+#include "spinhash/scene_fields.h"
+#include "spinhash/scene_stream.hpp"
+#include "spinhash/status.hpp"
 #include "spinhash/vehicle_classes.h"
+
+using namespace spinhash;
 
 namespace {
 
@@ -19,6 +33,88 @@ using spinhash::host::test::write_bytes;
 std::string long_flag(const std::string& spec) {
   const size_t at = spec.find("--");
   return at == std::string::npos ? spec : spec.substr(at);
+}
+
+// The rows of the markdown table whose header's first cell is `first`, as
+// trimmed cells (none when there is no such table).
+std::vector<std::vector<std::string>> table_rows(const std::string& doc, const std::string& first) {
+  std::vector<std::vector<std::string>> rows;
+  size_t at = doc.find("\n| " + first + " |");
+  if (at == std::string::npos) return rows;
+  at = doc.find('\n', at + 1);      // the header
+  at = doc.find('\n', at + 1) + 1;  // the rule
+  for (size_t end; at < doc.size() && doc[at] == '|' && (end = doc.find('\n', at)) != std::string::npos;
+       at = end + 1) {
+    std::vector<std::string> cells;
+    const std::string line = doc.substr(at + 1, end - at - 1);
+    size_t from = 0;
+    for (size_t bar; (bar = line.find('|', from)) != std::string::npos; from = bar + 1) {
+      std::string cell = line.substr(from, bar - from);
+      const size_t a = cell.find_first_not_of(' '), b = cell.find_last_not_of(' ');
+      cells.push_back(a == std::string::npos ? "" : cell.substr(a, b - a + 1));
+    }
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+bool near(double doc, double value) {
+  return std::fabs(doc - value) <= 1e-6 * std::fmax(1.0, std::fabs(value));
+}
+double number(const std::string& s) { return s == "inf" ? INFINITY : std::strtod(s.c_str(), nullptr); }
+
+// A default as the table writes it.
+bool same_default(const std::string& doc, uint32_t v) { return doc == std::to_string(v); }
+bool same_default(const std::string& doc, float v) { return near(number(doc), static_cast<double>(v)); }
+bool same_default(const std::string& doc, bool v) { return doc == (v ? "true" : "false"); }
+bool same_default(const std::string& doc, const double (&v)[3]) {
+  return doc == "0 0 0" && v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0;
+}
+
+// A range as the table writes it: [lo, hi], ( for a range open at 0
+// (kSmallestPositive), ) for one open above (kNoUpperBound); "-" for none.
+template <typename L, typename H>
+bool same_range(const std::string& doc, L lo, H hi, bool has_range) {
+  if (!has_range) return doc == "-";
+  const size_t comma = doc.find(", ");
+  if (doc.size() < 6 || comma == std::string::npos) return false;
+  const double dlo = number(doc.substr(1, comma - 1)),
+               dhi = number(doc.substr(comma + 2, doc.size() - comma - 3));
+  const bool lo_ok = doc.front() == '(' ? dlo == 0.0 && static_cast<float>(lo) == kSmallestPositive
+                                        : doc.front() == '[' && static_cast<float>(lo) != kSmallestPositive &&
+                                              near(dlo, static_cast<double>(lo));
+  const bool hi_ok = doc.back() == ')' ? std::isinf(dhi) && static_cast<float>(hi) == kNoUpperBound
+                                       : doc.back() == ']' && near(dhi, static_cast<double>(hi));
+  return lo_ok && hi_ok;
+}
+
+constexpr bool ranged_U32 = true, ranged_F32 = true, ranged_BOOL = false, ranged_VEC3D = false;
+
+// The members of a JSON object's outer level, in order.
+std::vector<std::string> top_keys(const std::string& json) {
+  std::vector<std::string> keys;
+  int depth = 0;
+  for (size_t i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (c == '"') {
+      size_t end = i + 1;
+      while (end < json.size() && json[end] != '"') end += json[end] == '\\' ? 2 : 1;
+      if (depth == 1 && end + 1 < json.size() && json[end + 1] == ':')
+        keys.push_back(json.substr(i + 1, end - i - 1));
+      i = end;
+    } else if (c == '{' || c == '[') {
+      ++depth;
+    } else if (c == '}' || c == ']') {
+      --depth;
+    }
+  }
+  return keys;
+}
+
+// The table names `name/...` (a top-level folder may be named with its sub-folder: `include/spinhash/`).
+bool t_contains_folder(const std::string& table, const std::string& parent, const std::string& name) {
+  return table.find("`" + name + "/") != std::string::npos ||
+         (!parent.empty() && table.find("`" + parent + "/" + name + "/") != std::string::npos);
 }
 
 }  // namespace
@@ -115,4 +211,131 @@ TEST_CASE(
   }
   SPINHASH_VEHICLE_CLASSES(SPINHASH_CLASS_DOCUMENTED)
 #undef SPINHASH_CLASS_DOCUMENTED
+}
+
+TEST_CASE(
+    "every scene flag of scene_fields.h is in scene --help, survey's in survey --help, both in docs/cli.md") {
+  const spinhash::host::test::TempDir dir("field-mirrors-scene-flags");
+  const auto scene = spinhash::host::test::run_spinhash(dir, "scene --help");
+  const auto survey = spinhash::host::test::run_spinhash(dir, "survey --help");
+  REQUIRE(scene.exit_code == 0);
+  REQUIRE(survey.exit_code == 0);
+  const std::string docs = read_bytes(SPINHASH_SOURCE_DIR "/docs/cli.md");
+  int flags = 0;
+#define SPINHASH_SCENE_FLAG(kind, name, lo, hi, flag, help) \
+  if (*(flag) != '\0') {                                    \
+    INFO("field " #name ", flag " flag);                    \
+    CHECK(scene.out.find(flag) != std::string::npos);       \
+    CHECK(docs.find("`" flag) != std::string::npos);        \
+    ++flags;                                                \
+  }
+  SPINHASH_SCENE_CONFIG_FIELDS(SPINHASH_SCENE_FLAG)
+#undef SPINHASH_SCENE_FLAG
+  CHECK(flags == 5);
+  for (const char* flag : {"--top", "--max-objects"}) {
+    INFO("survey flag ", std::string(flag));
+    CHECK(survey.out.find(flag) != std::string::npos);
+  }
+}
+
+TEST_CASE(
+    "the SceneConfig and StreamConfig tables of docs/api.md are scene_fields.h: names, defaults, ranges") {
+  const std::string docs = read_bytes(SPINHASH_SOURCE_DIR "/docs/api.md");
+  const SceneConfig scene;
+  const StreamConfig stream;
+  const auto scene_rows = table_rows(docs, "SceneConfig field");
+  const auto stream_rows = table_rows(docs, "StreamConfig field");
+  size_t k = 0;
+#define SPINHASH_ROW(config, rows, kind, name, lo, hi, flag)                              \
+  {                                                                                       \
+    INFO(#config " field " #name);                                                        \
+    REQUIRE(k < rows.size());                                                             \
+    const auto& row = rows[k++];                                                          \
+    REQUIRE(row.size() == 5u);                                                            \
+    CHECK(row[0] == "`" #name "`");                                                       \
+    CHECK(same_default(row[1], config.name));                                             \
+    CHECK(same_range(row[2], lo, hi, ranged_##kind));                                     \
+    CHECK(row[3] == (*(flag) != '\0' ? std::string("`") + (flag) + "`" : std::string())); \
+  }
+#define SPINHASH_SCENE_ROW(kind, name, lo, hi, flag, help) \
+  SPINHASH_ROW(scene, scene_rows, kind, name, lo, hi, flag)
+  SPINHASH_SCENE_CONFIG_FIELDS(SPINHASH_SCENE_ROW)
+  CHECK(k == scene_rows.size());
+  k = 0;
+#define SPINHASH_STREAM_ROW(kind, name, lo, hi, flag, help) \
+  SPINHASH_ROW(stream, stream_rows, kind, name, lo, hi, flag)
+  SPINHASH_STREAM_CONFIG_FIELDS(SPINHASH_STREAM_ROW)
+  CHECK(k == stream_rows.size());
+#undef SPINHASH_STREAM_ROW
+#undef SPINHASH_SCENE_ROW
+#undef SPINHASH_ROW
+}
+
+TEST_CASE("the status table of docs/api.md is status_list.h, row by row") {
+  const std::string docs = read_bytes(SPINHASH_SOURCE_DIR "/docs/api.md");
+  const auto rows = table_rows(docs, "value");
+  size_t k = 0;
+#define SPINHASH_STATUS_ROW(cxx, value, c, word, message)                        \
+  {                                                                              \
+    INFO("status " #cxx);                                                        \
+    REQUIRE(k < rows.size());                                                    \
+    const auto& row = rows[k++];                                                 \
+    REQUIRE(row.size() == 5u);                                                   \
+    CHECK(row[0] == #value);                                                     \
+    CHECK(row[1] == "`" #cxx "`");                                               \
+    CHECK(row[2] == "`" #c "`");                                                 \
+    CHECK(row[3] == "`" word "`");                                               \
+    CHECK(row[4] == message);                                                    \
+    CHECK(std::string(spinhash::status_name(spinhash::Status::cxx)) == message); \
+  }
+  SPINHASH_STATUS_LIST(SPINHASH_STATUS_ROW)
+#undef SPINHASH_STATUS_ROW
+  CHECK(k == rows.size());
+}
+
+TEST_CASE("scene's lines carry the object keys of scene_fields.h in order, then crs, time_ms and version") {
+  namespace t = spinhash::host::test;
+  const t::TempDir dir("field-mirrors-object-keys");
+  const std::string meshes = dir.file("meshes"), db = dir.file("two.shdb"), tile = dir.file("tile.las");
+  REQUIRE(t::run_spinhash(dir, "generate --count 2 -o " + t::shell_quoted(meshes)).exit_code == 0);
+  REQUIRE(t::run_spinhash(dir, "build --quiet -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
+              .exit_code == 0);
+  REQUIRE(t::run_spinhash(dir, "scan " + t::shell_quoted(meshes + "/van-00.obj") + " --ground 12 -o " +
+                                   t::shell_quoted(tile))
+              .exit_code == 0);
+  const t::CliRun scene =
+      t::run_spinhash(dir, "scene --db " + t::shell_quoted(db) + " " + t::shell_quoted(tile));
+  REQUIRE(scene.exit_code == 0);
+  std::vector<std::string> expected;
+#define SPINHASH_KEY(key, attribute) expected.push_back(key);
+  SPINHASH_SCENE_OBJECT_KEYS(SPINHASH_KEY)
+#undef SPINHASH_KEY
+  const std::string docs = read_bytes(SPINHASH_SOURCE_DIR "/docs/cli.md");
+  for (const std::string& key : expected) {
+    INFO("key ", key);
+    CHECK(t::contains(docs, "\"" + key + "\":"));  // the sample line of docs/cli.md's scene
+  }
+  for (const char* key : {"crs", "time_ms", "version"}) expected.push_back(key);
+  const auto lines = scene.lines();
+  REQUIRE_FALSE(lines.empty());
+  for (const std::string& line : lines) CHECK(top_keys(line) == expected);
+}
+
+TEST_CASE("README's folder table names every folder of the tree and of firmware-lib/ and host-tools/") {
+  namespace fs = std::filesystem;
+  const std::string readme = read_bytes(SPINHASH_SOURCE_DIR "/README.md");
+  const auto rows = table_rows(readme, "folder");
+  std::string table;
+  for (const auto& row : rows)
+    for (const std::string& cell : row) table += cell + "\n";
+  REQUIRE_FALSE(table.empty());
+  const fs::path root(SPINHASH_SOURCE_DIR);
+  for (const char* parent : {"", "firmware-lib", "host-tools", "tests"})
+    for (const auto& entry : fs::directory_iterator(root / parent)) {
+      const std::string name = entry.path().filename().string();
+      if (!entry.is_directory() || name[0] == '.' || name == "build" || name.rfind("build-", 0) == 0)
+        continue;
+      INFO("folder ", (fs::path(parent) / name).string());
+      CHECK(t_contains_folder(table, std::string(parent), name));
+    }
 }

@@ -1,0 +1,51 @@
+// The validity of a SceneConfig and a StreamConfig: every field within its
+// range of scene_fields.h (the one place the ranges are checked), plus the
+// rules that join two fields.
+#include <cmath>
+
+#include "scene/scene_window.hpp"
+#include "scene/window_lattice.hpp"
+#include "spinhash/limits.hpp"
+#include "spinhash/scene_fields.h"
+#include "spinhash/scene_stream.hpp"
+
+namespace spinhash {
+namespace {
+
+// One range check per kind of the lists; functions, so that a field whose
+// range is its type's whole range compiles without "comparison is always
+// true".
+bool in_range_U32(uint32_t v, uint32_t lo, uint32_t hi) { return v >= lo && v <= hi; }
+bool in_range_F32(float v, float lo, float hi) { return v >= lo && v <= hi; }  // false for NaN
+bool in_range_BOOL(bool, int, int) { return true; }
+bool in_range_VEC3D(const double (&)[3], int, int) { return true; }  // checked with origin_given below
+
+bool multiple_of(float v, float cell) {
+  const float k = v / cell;
+  return std::fabs(k - std::round(k)) < 1e-4f;
+}
+
+}  // namespace
+
+bool scene_config_valid(const SceneConfig& c) noexcept {
+  bool ok = true;
+#define SPINHASH_CHECK_RANGE(kind, name, lo, hi, flag, help) ok = ok && in_range_##kind(c.name, lo, hi);
+  SPINHASH_SCENE_CONFIG_FIELDS(SPINHASH_CHECK_RANGE)
+#undef SPINHASH_CHECK_RANGE
+  return ok && required_workspace_bytes(scene_object_config(c)) > 0 &&
+         multiple_of(c.window_core, c.terrain_cell) && multiple_of(c.window_core, c.segment_cell) &&
+         c.terrain_window >= c.terrain_cell && c.terrain_dh_max >= c.terrain_dh0 &&
+         c.max_length >= c.min_length && c.max_width >= c.min_width && c.max_height >= c.min_height;
+}
+
+bool stream_config_valid(const StreamConfig& c) noexcept {
+  bool ok = true;
+#define SPINHASH_CHECK_RANGE(kind, name, lo, hi, flag, help) ok = ok && in_range_##kind(c.name, lo, hi);
+  SPINHASH_STREAM_CONFIG_FIELDS(SPINHASH_CHECK_RANGE)
+#undef SPINHASH_CHECK_RANGE
+  return ok && scene_config_valid(c.scene) && (!c.origin_given || finite_xyz(c.origin)) &&
+         c.swath_min < c.swath_max && c.own_min < c.own_max && c.own_min >= c.swath_min &&
+         c.own_max <= c.swath_max;
+}
+
+}  // namespace spinhash
