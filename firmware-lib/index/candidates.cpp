@@ -107,29 +107,36 @@ uint32_t LshSearcher::search(const Database& db, const uint8_t* spin, uint32_t w
   }
   const blob::Params& p = db.params();
   const uint32_t dims = db.spin_dims();
+  const uint8_t* spins = db.spin(0);
   // Every table gets an equal share of the scan bound; a bucket larger than
   // its share (a very common descriptor, e.g. a flat patch) is sampled with
   // a fixed stride, so one crowded table cannot starve the others.
   const uint32_t share = max_scan_ / p.lsh_tables > 0 ? max_scan_ / p.lsh_tables : 1u;
   uint32_t count = 0;
+  // One bucket entry: its distance stops at the first block past the
+  // farthest kept candidate (l1_distance_within), and most entries are
+  // dropped there, before the seen-set (the list only gets nearer, so a
+  // repeat is dropped again; a repeat that would enter is already in it).
+  auto consider = [&](uint32_t f) {
+    const uint32_t bound = count == w ? out[0].distance : kNoBound;
+    const Candidate c{f, kernels::l1_distance_within(spin, spins + static_cast<size_t>(f) * dims, dims, bound)};
+    if (!enters_heap(out, count, w, c) || !mark_seen(f)) return;
+    keep_in_heap(out, &count, w, c);
+  };
   for (uint32_t t = 0; t < p.lsh_tables; ++t) {
     uint32_t bucket = blob::bucket_of(lsh_key(db.lsh_bits(t), p.lsh_bits, spin), t, p.lsh_buckets);
     const uint32_t* offsets = db.lsh_offsets(t);
-    const uint32_t* entries = db.lsh_entries() + static_cast<size_t>(t) * p.feature_count;
     const uint32_t first = offsets[bucket], size = offsets[bucket + 1u] - first;
+    const uint32_t* entries = db.lsh_entries() + static_cast<size_t>(t) * p.feature_count + first;
     const uint32_t take = size < share ? size : share;
     stats->truncated = stats->truncated || take < size;
     stats->entries_scanned += take;
-    for (uint32_t e = 0; e < take; ++e) {
-      uint32_t f = entries[first + static_cast<uint32_t>(static_cast<uint64_t>(e) * size / take)];
-      // A candidate farther than the farthest kept cannot enter a full list.
-      const uint32_t bound = w > 0 && count == w ? out[0].distance : kNoBound;
-      const Candidate c{f, kernels::l1_distance_within(spin, db.spin(f), dims, bound)};
-      // Most entries are too far to enter the list: they are dropped before
-      // the seen-set (the list only gets nearer, so a repeat is dropped
-      // again). A repeat that would enter is already in the list.
-      if (w == 0 || !enters_heap(out, count, w, c) || !mark_seen(f)) continue;
-      keep_in_heap(out, &count, w, c);
+    if (w == 0) continue;  // nothing can enter: no distance is needed
+    if (take == size) {    // the whole bucket, in order (no stride to work out)
+      for (uint32_t e = 0; e < take; ++e) consider(entries[e]);
+    } else {
+      for (uint32_t e = 0; e < take; ++e)
+        consider(entries[static_cast<uint32_t>(static_cast<uint64_t>(e) * size / take)]);
     }
   }
   heap_sort(out, count, before);
