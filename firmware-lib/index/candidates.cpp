@@ -117,17 +117,38 @@ uint32_t LshSearcher::search(const Database& db, const uint8_t* spin, uint32_t w
   // farthest kept candidate (l1_distance_within), and most entries are
   // dropped there, before the seen-set (the list only gets nearer, so a
   // repeat is dropped again; a repeat that would enter is already in it).
+  uint32_t bound = kNoBound;  // the farthest kept distance once the list is full
   auto consider = [&](uint32_t f) {
-    const uint32_t bound = count == w ? out[0].distance : kNoBound;
-    const Candidate c{f, kernels::l1_distance_within(spin, spins + static_cast<size_t>(f) * dims, dims, bound)};
+    const uint32_t d = kernels::l1_distance_within(spin, spins + static_cast<size_t>(f) * dims, dims, bound);
+    if (d > bound) return;  // farther than the farthest of a full list (a filling one takes any)
+    const Candidate c{f, d};
     if (!enters_heap(out, count, w, c) || !mark_seen(f)) return;
     keep_in_heap(out, &count, w, c);
+    if (count == w) bound = out[0].distance;
   };
+  // The L buckets, smallest first: the top-W list holds the W nearest
+  // distinct features whatever the order they come in (a total order,
+  // distance then index), and a small bucket's specific features fill it
+  // with near ones early, so that more of the large buckets' entries stop
+  // at the bound.
+  uint32_t firsts[kMaxLshTables], sizes[kMaxLshTables], tables[kMaxLshTables];
   for (uint32_t t = 0; t < p.lsh_tables; ++t) {
-    uint32_t bucket = blob::bucket_of(lsh_key(db.lsh_bits(t), p.lsh_bits, spin), t, p.lsh_buckets);
+    const uint32_t bucket = blob::bucket_of(lsh_key(db.lsh_bits(t), p.lsh_bits, spin), t, p.lsh_buckets);
     const uint32_t* offsets = db.lsh_offsets(t);
     const uint32_t first = offsets[bucket], size = offsets[bucket + 1u] - first;
-    const uint32_t* entries = db.lsh_entries() + static_cast<size_t>(t) * p.feature_count + first;
+    uint32_t i = t;
+    for (; i > 0 && sizes[i - 1u] > size; --i) {
+      firsts[i] = firsts[i - 1u];
+      sizes[i] = sizes[i - 1u];
+      tables[i] = tables[i - 1u];
+    }
+    firsts[i] = first;
+    sizes[i] = size;
+    tables[i] = t;
+  }
+  for (uint32_t k = 0; k < p.lsh_tables; ++k) {
+    const uint32_t first = firsts[k], size = sizes[k];
+    const uint32_t* entries = db.lsh_entries() + static_cast<size_t>(tables[k]) * p.feature_count + first;
     const uint32_t take = size < share ? size : share;
     stats->truncated = stats->truncated || take < size;
     stats->entries_scanned += take;
