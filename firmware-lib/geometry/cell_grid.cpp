@@ -6,11 +6,12 @@ namespace spinhash {
 
 bool CellGrid::carve(Arena& arena, uint32_t max_points) {
   max_points_ = max_points;
-  capacity_ = next_pow2(2u * (max_points > 0 ? max_points : 1u));
+  max_capacity_ = next_pow2(2u * (max_points > 0 ? max_points : 1u));
+  capacity_ = max_capacity_;
   slot_shift_ = slot_shift(capacity_);
-  keys_ = arena.alloc<uint64_t>(capacity_);
-  first_ = arena.alloc<uint32_t>(capacity_);
-  count_ = arena.alloc<uint32_t>(capacity_);
+  keys_ = arena.alloc<uint64_t>(max_capacity_);
+  first_ = arena.alloc<uint32_t>(max_capacity_);
+  count_ = arena.alloc<uint32_t>(max_capacity_);
   slots_in_order_ = arena.alloc<uint32_t>(max_points);
   order_ = arena.alloc<uint32_t>(max_points);
   point_slot_ = arena.alloc<uint32_t>(max_points);
@@ -38,6 +39,12 @@ void CellGrid::build(const float* points, uint32_t n, float cell) {
   cell_ = cell;
   cell_count_ = 0;
   if (n > max_points_) n = max_points_;
+  // A table sized for these n points (load <= 1/2), not for max_points: only
+  // its slots are cleared. The cells keep the order they were first seen in
+  // whatever the table's size, so every pass over them is the same.
+  capacity_ = next_pow2(2u * (n > 0 ? n : 1u));
+  if (capacity_ > max_capacity_) capacity_ = max_capacity_;
+  slot_shift_ = slot_shift(capacity_);
   for (uint32_t s = 0; s < capacity_; ++s) keys_[s] = kEmptyCellKey;
   for (uint32_t i = 0; i < n; ++i) {
     const float* p = points + 3u * i;

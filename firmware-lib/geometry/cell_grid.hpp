@@ -110,7 +110,8 @@ class CellGrid {
   uint32_t* slots_in_order_ = nullptr;
   uint32_t* order_ = nullptr;       // point indices grouped by cell
   uint32_t* point_slot_ = nullptr;  // slot of each point
-  uint32_t capacity_ = 0;           // power of two
+  uint32_t capacity_ = 0;           // power of two: the table of the last build
+  uint32_t max_capacity_ = 0;       // power of two: the table carved for max_points
   uint32_t slot_shift_ = 32;        // 32 - log2(capacity_)
   uint32_t max_points_ = 0;
   uint32_t cell_count_ = 0;
