@@ -100,7 +100,7 @@ for size in "${size_list[@]}"; do
 done
 
 # Median (lower middle of an even count) and worst per size and stage, in millions.
-summary=$(awk -F, 'NR > 1 {n[$1]++; for (c = 4; c <= 8; c++) v[$1, c, n[$1]] = $c; if (!($1 in seen)) {seen[$1] = 1; order[++m] = $1}}
+summary=$(awk -F, 'NR > 1 {n[$1]++; for (c = 4; c <= 8; c++) v[$1, c, n[$1]] = $c + 0; if (!($1 in seen)) {seen[$1] = 1; order[++m] = $1}}
   END {
     split("total features lsh verification rest", name, " ")
     for (i = 1; i <= m; i++) { s = order[i]
@@ -112,7 +112,7 @@ echo "| models | stage | median (M) | worst (M) | worst / median |"
 echo "|---|---|---:|---:|---:|"
 while read -r size stage median worst; do
   awk -v s="$size" -v g="$stage" -v m="$median" -v w="$worst" \
-    'BEGIN {printf "| %s | %s | %.1f | %.1f | %.2fx |\n", s, g, m / 1e6, w / 1e6, m > 0 ? w / m : 0}'
+    'BEGIN {printf "| %s | %s | %.1f | %.1f | %.2fx |\n", s, g, m / 1e6, w / 1e6, (m > 0 ? w / m : 0)}'
 done <<< "$summary"
 
 if (( check )); then
