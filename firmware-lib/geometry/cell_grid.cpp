@@ -65,4 +65,31 @@ void CellGrid::build(const float* points, uint32_t n, float cell) {
   }
 }
 
+uint32_t CellGrid::gather_neighbourhood(uint32_t i, int32_t reach, float* x, float* y, float* z,
+                                        uint32_t* index, uint32_t capacity) const {
+  const uint64_t key = keys_[slots_in_order_[i]];
+  const uint64_t mask = (1ull << 21) - 1ull;
+  // The cell's coordinates back from its key (coord keeps them within 21 bits).
+  const int32_t cx = static_cast<int32_t>(key & mask) - kCoordBias;
+  const int32_t cy = static_cast<int32_t>((key >> 21) & mask) - kCoordBias;
+  const int32_t cz = static_cast<int32_t>((key >> 42) & mask) - kCoordBias;
+  uint32_t count = 0;
+  for (int32_t dz = -reach; dz <= reach; ++dz)
+    for (int32_t dy = -reach; dy <= reach; ++dy)
+      for (int32_t dx = -reach; dx <= reach; ++dx) {
+        const int32_t slot = find(pack(cx + dx, cy + dy, cz + dz));
+        if (slot < 0) continue;
+        if (count_[slot] > capacity - count) return kGatherOverflow;
+        const uint32_t* it = order_ + first_[slot];
+        for (uint32_t k = 0; k < count_[slot]; ++k, ++count) {
+          const float* p = points_ + 3u * it[k];
+          x[count] = p[0];
+          y[count] = p[1];
+          z[count] = p[2];
+          index[count] = it[k];
+        }
+      }
+  return count;
+}
+
 }  // namespace spinhash

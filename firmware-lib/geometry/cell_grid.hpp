@@ -63,6 +63,18 @@ class CellGrid {
     }
   }
 
+  // The points of cell i (first-seen order) and of every cell within
+  // `reach` cells of it each way, cell by cell in z, y, x order as
+  // for_each_within visits them from a point of cell i: their coordinates
+  // into x[k], y[k], z[k] and their indices into index[k], k < capacity.
+  // Returns how many, or kGatherOverflow when more than capacity (nothing
+  // usable).
+  static constexpr uint32_t kGatherOverflow = 0xFFFFFFFFu;
+  uint32_t gather_neighbourhood(uint32_t i, int32_t reach, float* x, float* y, float* z, uint32_t* index,
+                                uint32_t capacity) const;
+  // The reach of a search of `radius` (for_each_within's).
+  int32_t reach_of(float radius) const { return static_cast<int32_t>(std::ceil(radius / cell_)); }
+
   // true when some point lies within `radius` of q (the same exact test as
   // for_each_within, over the cells the box [q - radius, q + radius] meets;
   // stops at the first).
