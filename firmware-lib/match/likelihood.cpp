@@ -196,7 +196,10 @@ Verification verify_pose(const Database& db, uint32_t model, const RigidPose& po
       v.log_likelihood += lp.floor;
       continue;
     }
-    float r2 = residual2(db, static_cast<uint32_t>(near.feature), x, near.dist2, lp);
+    // The hypothesis loop's r is the paper's (no call for it).
+    float r2 = lp.surface_patch_radius < 0.0f
+                   ? near.dist2
+                   : residual2(db, static_cast<uint32_t>(near.feature), x, near.dist2, lp);
     r2 = r2 < lp.delta2 ? r2 : lp.delta2;
     uint32_t l1 = kernels::l1_distance(query.spins + static_cast<size_t>(l) * query.dims,
                                        db.spin(static_cast<uint32_t>(near.feature)), query.dims);
