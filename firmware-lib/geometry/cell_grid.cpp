@@ -65,6 +65,27 @@ void CellGrid::build(const float* points, uint32_t n, float cell) {
   }
 }
 
+bool CellGrid::slab_gaps(const float* q, float radius, int32_t reach,
+                         float (*gap)[2 * kMaxCulledReach + 1]) const {
+  if (reach > kMaxCulledReach) return false;
+  const int32_t rim = kCoordBias - 2;
+  for (int a = 0; a < 3; ++a) {
+    const float v = q[a];
+    const int32_t centre = coord(v);
+    // Each slab [c, c + 1) * cell_ widened by the slack; 0 inside, and 0 at
+    // the clamped rim (coord), whose cells also hold the points beyond it.
+    const float slack = kCullSlack * (std::fabs(v) + radius);
+    for (int32_t d = -reach; d <= reach; ++d) {
+      const int32_t c = centre + d;
+      const float lo = static_cast<float>(c) * cell_ - slack;
+      const float hi = static_cast<float>(c + 1) * cell_ + slack;
+      const float g = c <= -rim || c >= rim ? 0.0f : (v < lo ? lo - v : (v > hi ? v - hi : 0.0f));
+      gap[a][d + reach] = g * g;
+    }
+  }
+  return true;
+}
+
 uint32_t CellGrid::gather_neighbourhood(uint32_t i, int32_t reach, float* x, float* y, float* z,
                                         uint32_t* index, uint32_t capacity) const {
   const uint64_t key = keys_[slots_in_order_[i]];

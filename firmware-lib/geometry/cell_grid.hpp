@@ -25,23 +25,18 @@ class CellGrid {
   const uint32_t* order() const { return order_; }
 
   // Calls f(point_index) for every point within `radius` of q (exact test),
-  // cell by cell in z, y, x order. Cells whose box lies wholly beyond the
-  // radius are skipped unvisited (a spin image's 5 x 5 x 5 cells around a
-  // 1 m support: about a third of them): none of their points would pass
-  // the test, so the points visited and their order are the same.
-  template <typename F>
+  // cell by cell in z, y, x order. With kCull, cells whose box lies wholly
+  // beyond the radius are skipped unvisited (a spin image's 5 x 5 x 5 cells
+  // around a 1 m support: about a third of them): none of their points
+  // would pass the test, so the points visited and their order are the same.
+  template <bool kCull = true, typename F>
   void for_each_within(const float* q, float radius, F&& f) const {
     const int32_t reach = static_cast<int32_t>(std::ceil(radius / cell_));
     const int32_t cx = coord(q[0]), cy = coord(q[1]), cz = coord(q[2]);
     const float r2 = radius * radius;
     // Squared gap from q to each slab of cells, per axis (0 when q is in it).
     float gap[3][2 * kMaxCulledReach + 1];
-    const bool cull = reach <= kMaxCulledReach;
-    if (cull) {
-      const int32_t centre[3] = {cx, cy, cz};
-      for (int a = 0; a < 3; ++a)
-        for (int32_t d = -reach; d <= reach; ++d) gap[a][d + reach] = slab_gap2(q[a], centre[a] + d, radius);
-    }
+    const bool cull = kCull && slab_gaps(q, radius, reach, gap);
     for (int32_t dz = -reach; dz <= reach; ++dz) {
       const float gz = cull ? gap[2][dz + reach] : 0.0f;
       if (gz > r2) continue;
@@ -107,7 +102,10 @@ class CellGrid {
   // floor(v / cell) and of the points' squared distances, so a skipped cell
   // never holds a point that the exact test would pass.
   static constexpr float kCullSlack = 1.0e-4f;
-  inline float slab_gap2(float v, int32_t c, float radius) const;
+  // The squared gaps from q to the slabs of cells within `reach` of its own,
+  // per axis (gap[a][d + reach]); false when reach > kMaxCulledReach (no
+  // culling).
+  bool slab_gaps(const float* q, float radius, int32_t reach, float (*gap)[2 * kMaxCulledReach + 1]) const;
   static constexpr uint64_t kEmptyCellKey = ~0ull;
   // Inline: every radius search calls these for each of its 27 cells.
   inline int32_t coord(float v) const;
@@ -138,19 +136,6 @@ inline int32_t CellGrid::coord(float v) const {
   if (!(c > -lim)) c = -lim;  // also NaN: never convert a non-finite float to int
   if (!(c < lim)) c = lim;
   return static_cast<int32_t>(c);
-}
-
-// Squared distance from coordinate v to cell slab c, [c, c + 1) * cell_
-// widened by the slack; 0 inside, and 0 at the clamped rim (coord), whose
-// cells also hold the points beyond it.
-inline float CellGrid::slab_gap2(float v, int32_t c, float radius) const {
-  const int32_t rim = kCoordBias - 2;
-  if (c <= -rim || c >= rim) return 0.0f;
-  const float slack = kCullSlack * (std::fabs(v) + radius);
-  const float lo = static_cast<float>(c) * cell_ - slack;
-  const float hi = static_cast<float>(c + 1) * cell_ + slack;
-  const float g = v < lo ? lo - v : (v > hi ? v - hi : 0.0f);
-  return g * g;
 }
 
 inline uint64_t CellGrid::pack(int32_t x, int32_t y, int32_t z) {

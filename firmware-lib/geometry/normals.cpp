@@ -52,7 +52,8 @@ bool normal_of(const Moments& m, float* out) {
 
 bool normal_at(const CellGrid& grid, const float* points, const float* q, float radius, float* out) {
   Moments m;
-  grid.for_each_within(q, radius, [&](uint32_t j) {
+  // Only where a gathered neighbourhood has no room: no culling (its code).
+  grid.for_each_within<false>(q, radius, [&](uint32_t j) {
     const float* p = points + 3u * j;
     m.add(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
   });

@@ -152,13 +152,10 @@ uint32_t LshSearcher::search(const Database& db, const uint8_t* spin, uint32_t w
     const uint32_t take = size < share ? size : share;
     stats->truncated = stats->truncated || take < size;
     stats->entries_scanned += take;
-    if (w == 0) continue;  // nothing can enter: no distance is needed
-    if (take == size) {    // the whole bucket, in order (no stride to work out)
-      for (uint32_t e = 0; e < take; ++e) consider(entries[e]);
-    } else {
-      for (uint32_t e = 0; e < take; ++e)
-        consider(entries[static_cast<uint32_t>(static_cast<uint64_t>(e) * size / take)]);
-    }
+    if (w == 0) continue;             // nothing can enter: no distance is needed
+    const bool whole = take == size;  // the whole bucket, in order: no stride to work out
+    for (uint32_t e = 0; e < take; ++e)
+      consider(entries[whole ? e : static_cast<uint32_t>(static_cast<uint64_t>(e) * size / take)]);
   }
   heap_sort(out, count, before);
   return count;
