@@ -54,11 +54,11 @@ constexpr uint32_t kMaxSparseRadiusSteps = 2;
 // grown kSparseRadiusGrowth-fold up to kMaxSparseRadiusSteps times) that
 // orients kMinOrientedShare of them; returns the radius, *oriented the count.
 float sparse_aware_normals(CellGrid& grid, const float* points, uint32_t n, float radius, float* normals,
-                           uint8_t* has_normal, uint32_t* oriented) {
+                           uint8_t* has_normal, const NeighbourScratch& scratch, uint32_t* oriented) {
   for (uint32_t step = 0;; ++step, radius *= kSparseRadiusGrowth) {
     // The voxel grid at the radius makes the PCA searches visit 27 cells.
     grid.build(points, n, radius);
-    *oriented = estimate_normals(grid, points, n, radius, normals, has_normal);
+    *oriented = estimate_normals(grid, points, n, radius, normals, has_normal, scratch);
     if (step == kMaxSparseRadiusSteps ||
         static_cast<float>(*oriented) >= kMinOrientedShare * static_cast<float>(n))
       return radius;
@@ -128,9 +128,19 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   uint32_t ne = equalise_density(m.voxel_grid, m.points, m.equalised);
   stats->points_equalised = ne;
 
-  // The voxel grid is free until basis selection.
+  // The voxel grid is free until basis selection; the basis indices and
+  // the spin images' output hold the normals' gathered neighbourhoods.
+  NeighbourScratch scratch;
+  const size_t spin_floats = static_cast<size_t>(cap_.max_features) * cap_.max_spin_dims;
+  scratch.capacity =
+      static_cast<uint32_t>(spin_floats / 4u < cap_.max_points ? spin_floats / 4u : cap_.max_points);
+  scratch.x = m.out_spins;
+  scratch.y = scratch.x + scratch.capacity;
+  scratch.z = scratch.y + scratch.capacity;
+  scratch.d2 = scratch.z + scratch.capacity;
+  scratch.index = m.basis;
   const float radius = sparse_aware_normals(m.voxel_grid, m.equalised, ne, params_.normal_radius, m.normals,
-                                            m.has_normal, &stats->points_oriented);
+                                            m.has_normal, scratch, &stats->points_oriented);
   float cell = params_.support_radius * 0.5f;  // spin support R = two cells each way
   if (cell < radius) cell = radius;
   m.neighbour_grid.build(m.equalised, ne, cell);

@@ -6,11 +6,12 @@ namespace spinhash {
 
 bool CellGrid::carve(Arena& arena, uint32_t max_points) {
   max_points_ = max_points;
-  capacity_ = next_pow2(2u * (max_points > 0 ? max_points : 1u));
+  max_capacity_ = next_pow2(2u * (max_points > 0 ? max_points : 1u));
+  capacity_ = max_capacity_;
   slot_shift_ = slot_shift(capacity_);
-  keys_ = arena.alloc<uint64_t>(capacity_);
-  first_ = arena.alloc<uint32_t>(capacity_);
-  count_ = arena.alloc<uint32_t>(capacity_);
+  keys_ = arena.alloc<uint64_t>(max_capacity_);
+  first_ = arena.alloc<uint32_t>(max_capacity_);
+  count_ = arena.alloc<uint32_t>(max_capacity_);
   slots_in_order_ = arena.alloc<uint32_t>(max_points);
   order_ = arena.alloc<uint32_t>(max_points);
   point_slot_ = arena.alloc<uint32_t>(max_points);
@@ -38,6 +39,12 @@ void CellGrid::build(const float* points, uint32_t n, float cell) {
   cell_ = cell;
   cell_count_ = 0;
   if (n > max_points_) n = max_points_;
+  // A table sized for these n points (load <= 1/2), not for max_points: only
+  // its slots are cleared. The cells keep the order they were first seen in
+  // whatever the table's size, so every pass over them is the same.
+  capacity_ = next_pow2(2u * (n > 0 ? n : 1u));
+  if (capacity_ > max_capacity_) capacity_ = max_capacity_;
+  slot_shift_ = slot_shift(capacity_);
   for (uint32_t s = 0; s < capacity_; ++s) keys_[s] = kEmptyCellKey;
   for (uint32_t i = 0; i < n; ++i) {
     const float* p = points + 3u * i;
@@ -56,6 +63,54 @@ void CellGrid::build(const float* points, uint32_t n, float cell) {
     uint32_t slot = point_slot_[i];
     order_[first_[slot] + count_[slot]++] = i;
   }
+}
+
+bool CellGrid::slab_gaps(const float* q, float radius, int32_t reach,
+                         float (*gap)[2 * kMaxCulledReach + 1]) const {
+  if (reach > kMaxCulledReach) return false;
+  const int32_t rim = kCoordBias - 2;
+  for (int a = 0; a < 3; ++a) {
+    const float v = q[a];
+    const int32_t centre = coord(v);
+    // Each slab [c, c + 1) * cell_ widened by the slack; 0 inside, and 0 at
+    // the clamped rim (coord), whose cells also hold the points beyond it.
+    const float slack = kCullSlack * (std::fabs(v) + radius);
+    for (int32_t d = -reach; d <= reach; ++d) {
+      const int32_t c = centre + d;
+      const float lo = static_cast<float>(c) * cell_ - slack;
+      const float hi = static_cast<float>(c + 1) * cell_ + slack;
+      const float g = c <= -rim || c >= rim ? 0.0f : (v < lo ? lo - v : (v > hi ? v - hi : 0.0f));
+      gap[a][d + reach] = g * g;
+    }
+  }
+  return true;
+}
+
+uint32_t CellGrid::gather_neighbourhood(uint32_t i, int32_t reach, float* x, float* y, float* z,
+                                        uint32_t* index, uint32_t capacity) const {
+  const uint64_t key = keys_[slots_in_order_[i]];
+  const uint64_t mask = (1ull << 21) - 1ull;
+  // The cell's coordinates back from its key (coord keeps them within 21 bits).
+  const int32_t cx = static_cast<int32_t>(key & mask) - kCoordBias;
+  const int32_t cy = static_cast<int32_t>((key >> 21) & mask) - kCoordBias;
+  const int32_t cz = static_cast<int32_t>((key >> 42) & mask) - kCoordBias;
+  uint32_t count = 0;
+  for (int32_t dz = -reach; dz <= reach; ++dz)
+    for (int32_t dy = -reach; dy <= reach; ++dy)
+      for (int32_t dx = -reach; dx <= reach; ++dx) {
+        const int32_t slot = find(pack(cx + dx, cy + dy, cz + dz));
+        if (slot < 0) continue;
+        if (count_[slot] > capacity - count) return kGatherOverflow;
+        const uint32_t* it = order_ + first_[slot];
+        for (uint32_t k = 0; k < count_[slot]; ++k, ++count) {
+          const float* p = points_ + 3u * it[k];
+          x[count] = p[0];
+          y[count] = p[1];
+          z[count] = p[2];
+          index[count] = it[k];
+        }
+      }
+  return count;
 }
 
 }  // namespace spinhash

@@ -24,15 +24,27 @@ class CellGrid {
   uint32_t cell_size_of(uint32_t i) const { return count_[slots_in_order_[i]]; }
   const uint32_t* order() const { return order_; }
 
-  // Calls f(point_index) for every point within `radius` of q (exact test).
-  template <typename F>
+  // Calls f(point_index) for every point within `radius` of q (exact test),
+  // cell by cell in z, y, x order. With kCull, cells whose box lies wholly
+  // beyond the radius are skipped unvisited (a spin image's 5 x 5 x 5 cells
+  // around a 1 m support: about a third of them): none of their points
+  // would pass the test, so the points visited and their order are the same.
+  template <bool kCull = true, typename F>
   void for_each_within(const float* q, float radius, F&& f) const {
     const int32_t reach = static_cast<int32_t>(std::ceil(radius / cell_));
     const int32_t cx = coord(q[0]), cy = coord(q[1]), cz = coord(q[2]);
     const float r2 = radius * radius;
-    for (int32_t dz = -reach; dz <= reach; ++dz)
-      for (int32_t dy = -reach; dy <= reach; ++dy)
+    // Squared gap from q to each slab of cells, per axis (0 when q is in it).
+    float gap[3][2 * kMaxCulledReach + 1];
+    const bool cull = kCull && slab_gaps(q, radius, reach, gap);
+    for (int32_t dz = -reach; dz <= reach; ++dz) {
+      const float gz = cull ? gap[2][dz + reach] : 0.0f;
+      if (gz > r2) continue;
+      for (int32_t dy = -reach; dy <= reach; ++dy) {
+        const float gyz = cull ? gz + gap[1][dy + reach] : 0.0f;
+        if (gyz > r2) continue;
         for (int32_t dx = -reach; dx <= reach; ++dx) {
+          if (cull && gyz + gap[0][dx + reach] > r2) continue;  // the whole cell is beyond the radius
           int32_t slot = find(pack(cx + dx, cy + dy, cz + dz));
           if (slot < 0) continue;
           const uint32_t* it = order_ + first_[slot];
@@ -42,7 +54,21 @@ class CellGrid {
             if (ex * ex + ey * ey + ez * ez <= r2) f(it[k]);
           }
         }
+      }
+    }
   }
+
+  // The points of cell i (first-seen order) and of every cell within
+  // `reach` cells of it each way, cell by cell in z, y, x order as
+  // for_each_within visits them from a point of cell i: their coordinates
+  // into x[k], y[k], z[k] and their indices into index[k], k < capacity.
+  // Returns how many, or kGatherOverflow when more than capacity (nothing
+  // usable).
+  static constexpr uint32_t kGatherOverflow = 0xFFFFFFFFu;
+  uint32_t gather_neighbourhood(uint32_t i, int32_t reach, float* x, float* y, float* z, uint32_t* index,
+                                uint32_t capacity) const;
+  // The reach of a search of `radius` (for_each_within's).
+  int32_t reach_of(float radius) const { return static_cast<int32_t>(std::ceil(radius / cell_)); }
 
   // true when some point lies within `radius` of q (the same exact test as
   // for_each_within, over the cells the box [q - radius, q + radius] meets;
@@ -68,6 +94,18 @@ class CellGrid {
 
  private:
   static constexpr int32_t kCoordBias = 1 << 20;  // 21-bit cell coordinates per axis
+  // Radius searches reaching at most this many cells each way skip the
+  // cells beyond the radius (the core's reach 1 or 2; wider ones visit all).
+  static constexpr int32_t kMaxCulledReach = 4;
+  // A cell's box is widened by this share of (|v| + radius) before its gap
+  // is taken: far more than float rounding of the cell bounds, of
+  // floor(v / cell) and of the points' squared distances, so a skipped cell
+  // never holds a point that the exact test would pass.
+  static constexpr float kCullSlack = 1.0e-4f;
+  // The squared gaps from q to the slabs of cells within `reach` of its own,
+  // per axis (gap[a][d + reach]); false when reach > kMaxCulledReach (no
+  // culling).
+  bool slab_gaps(const float* q, float radius, int32_t reach, float (*gap)[2 * kMaxCulledReach + 1]) const;
   static constexpr uint64_t kEmptyCellKey = ~0ull;
   // Inline: every radius search calls these for each of its 27 cells.
   inline int32_t coord(float v) const;
@@ -82,7 +120,8 @@ class CellGrid {
   uint32_t* slots_in_order_ = nullptr;
   uint32_t* order_ = nullptr;       // point indices grouped by cell
   uint32_t* point_slot_ = nullptr;  // slot of each point
-  uint32_t capacity_ = 0;           // power of two
+  uint32_t capacity_ = 0;           // power of two: the table of the last build
+  uint32_t max_capacity_ = 0;       // power of two: the table carved for max_points
   uint32_t slot_shift_ = 32;        // 32 - log2(capacity_)
   uint32_t max_points_ = 0;
   uint32_t cell_count_ = 0;

@@ -7,16 +7,15 @@
 namespace spinhash {
 namespace {
 
-bool normal_at(const CellGrid& grid, const float* points, const float* q, float radius, float* out) {
-  // One pass: sums of offsets from q and of their outer products (offsets
-  // from q, not from the origin, keep the float sums well conditioned). The
-  // outer product is symmetric, so its six distinct sums are kept.
+// Sums of the offsets from q of the points within the radius, and of their
+// outer products (offsets from q, not from the origin, keep the float sums
+// well conditioned; the outer product is symmetric, so its six distinct
+// sums are kept). Added point by point in the order of the search.
+struct Moments {
   float s[3] = {0.0f, 0.0f, 0.0f};
   float xx = 0.0f, xy = 0.0f, xz = 0.0f, yy = 0.0f, yz = 0.0f, zz = 0.0f;
   uint32_t count = 0;
-  grid.for_each_within(q, radius, [&](uint32_t j) {
-    const float* p = points + 3u * j;
-    const float dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+  void add(float dx, float dy, float dz) {
     s[0] += dx;
     s[1] += dy;
     s[2] += dz;
@@ -27,12 +26,16 @@ bool normal_at(const CellGrid& grid, const float* points, const float* q, float 
     yz += dy * dz;
     zz += dz * dz;
     ++count;
-  });
-  if (count < kMinNormalNeighbours) return false;
+  }
+};
+
+// The normal of the moments' neighbourhood, if it is a surface.
+bool normal_of(const Moments& m, float* out) {
+  if (m.count < kMinNormalNeighbours) return false;
   Eigen::Matrix3f outer;
-  outer << xx, xy, xz, xy, yy, yz, xz, yz, zz;
-  const Eigen::Vector3f mean = Eigen::Map<const Eigen::Vector3f>(s) / static_cast<float>(count);
-  const Eigen::Matrix3f cov = outer / static_cast<float>(count) - mean * mean.transpose();
+  outer << m.xx, m.xy, m.xz, m.xy, m.yy, m.yz, m.xz, m.yz, m.zz;
+  const Eigen::Vector3f mean = Eigen::Map<const Eigen::Vector3f>(m.s) / static_cast<float>(m.count);
+  const Eigen::Matrix3f cov = outer / static_cast<float>(m.count) - mean * mean.transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> solver;
   solver.computeDirect(cov);                         // closed form: fixed cost, no iteration, no heap
   const Eigen::Vector3f& ev = solver.eigenvalues();  // ascending
@@ -47,15 +50,66 @@ bool normal_at(const CellGrid& grid, const float* points, const float* q, float 
   return true;
 }
 
+bool normal_at(const CellGrid& grid, const float* points, const float* q, float radius, float* out) {
+  Moments m;
+  // Only where a gathered neighbourhood has no room: no culling (its code).
+  grid.for_each_within<false>(q, radius, [&](uint32_t j) {
+    const float* p = points + 3u * j;
+    m.add(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+  });
+  return normal_of(m, out);
+}
+
+// The same test and sums over a neighbourhood gathered once for every
+// point of a cell (CellGrid::gather_neighbourhood: the points for_each_within
+// visits, in its order, plus those of the cells it skips as beyond the
+// radius, which the test rejects). The squared distances are taken first in
+// a loop of its own over the coordinate arrays, which the compiler runs on
+// vector registers (SSE2, NEON): each lane does the scalar code's
+// operations in its order (no fused multiply-add: -ffp-contract=off), so
+// the test decides as the scalar one does.
+bool normal_in(const NeighbourScratch& g, uint32_t count, const float* q, float r2, float* out) {
+  const float qx = q[0], qy = q[1], qz = q[2];
+  for (uint32_t k = 0; k < count; ++k) {
+    const float ex = g.x[k] - qx, ey = g.y[k] - qy, ez = g.z[k] - qz;
+    g.d2[k] = ex * ex + ey * ey + ez * ez;
+  }
+  Moments m;
+  for (uint32_t k = 0; k < count; ++k)
+    if (g.d2[k] <= r2) m.add(g.x[k] - qx, g.y[k] - qy, g.z[k] - qz);
+  return normal_of(m, out);
+}
+
 }  // namespace
 
 uint32_t estimate_normals(const CellGrid& grid, const float* points, uint32_t n, float radius, float* normals,
-                          uint8_t* has_normal) {
+                          uint8_t* has_normal, const NeighbourScratch& scratch) {
   uint32_t good = 0;
-  for (uint32_t i = 0; i < n; ++i) {
-    bool ok = normal_at(grid, points, points + 3u * i, radius, normals + 3u * i);
+  auto set = [&](uint32_t i, bool ok) {
     has_normal[i] = ok ? 1u : 0u;
     good += ok ? 1u : 0u;
+  };
+  if (scratch.capacity == 0u || grid.cell_count() == 0u) {
+    for (uint32_t i = 0; i < n; ++i)
+      set(i, normal_at(grid, points, points + 3u * i, radius, normals + 3u * i));
+    return good;
+  }
+  // Cell by cell (every point lies in one): the neighbourhood is gathered
+  // once for all the cell's points; a neighbourhood beyond the scratch's
+  // capacity is searched point by point as above.
+  const float r2 = radius * radius;
+  const int32_t reach = grid.reach_of(radius);
+  const uint32_t* order = grid.order();
+  for (uint32_t c = 0; c < grid.cell_count(); ++c) {
+    const uint32_t first = grid.cell_first(c), size = grid.cell_size_of(c);
+    const uint32_t gathered =
+        grid.gather_neighbourhood(c, reach, scratch.x, scratch.y, scratch.z, scratch.index, scratch.capacity);
+    for (uint32_t k = first; k < first + size; ++k) {
+      const uint32_t i = order[k];
+      const float* q = points + 3u * i;
+      set(i, gathered == CellGrid::kGatherOverflow ? normal_at(grid, points, q, radius, normals + 3u * i)
+                                                   : normal_in(scratch, gathered, q, r2, normals + 3u * i));
+    }
   }
   return good;
 }

@@ -10,10 +10,25 @@ namespace spinhash {
 // surface: below it the points are (nearly) collinear and have no normal.
 constexpr float kMinPlanarRatio = 1e-3f;
 
+// Room for a gathered neighbourhood (CellGrid::gather_neighbourhood):
+// capacity points' coordinates, indices and squared distances. None: every
+// point searches the grid.
+struct NeighbourScratch {
+  float* x = nullptr;  // capacity each
+  float* y = nullptr;
+  float* z = nullptr;
+  float* d2 = nullptr;
+  uint32_t* index = nullptr;
+  uint32_t capacity = 0;
+};
+
 // normals[3i..] of every points[i] with >= kMinNormalNeighbours neighbours within
-// `radius` (grid built over `points`); has_normal[i] says which. Returns the count.
+// `radius` (grid built over `points`, all n of them); has_normal[i] says
+// which. Returns the count. With scratch, the neighbourhood of each grid
+// cell is gathered once for all its points: the same normals, bit for bit
+// (the same points in the same order), without a cell lookup per point.
 uint32_t estimate_normals(const CellGrid& grid, const float* points, uint32_t n, float radius, float* normals,
-                          uint8_t* has_normal);
+                          uint8_t* has_normal, const NeighbourScratch& scratch = NeighbourScratch{});
 
 // Without a viewpoint, z is up and the sensor above: an airborne scan, or
 // the database's model scans from 45 degrees elevation. A surface within 45

@@ -107,30 +107,55 @@ uint32_t LshSearcher::search(const Database& db, const uint8_t* spin, uint32_t w
   }
   const blob::Params& p = db.params();
   const uint32_t dims = db.spin_dims();
+  const uint8_t* spins = db.spin(0);
   // Every table gets an equal share of the scan bound; a bucket larger than
   // its share (a very common descriptor, e.g. a flat patch) is sampled with
   // a fixed stride, so one crowded table cannot starve the others.
   const uint32_t share = max_scan_ / p.lsh_tables > 0 ? max_scan_ / p.lsh_tables : 1u;
   uint32_t count = 0;
+  // One bucket entry: its distance stops at the first block past the
+  // farthest kept candidate (l1_distance_within), and most entries are
+  // dropped there, before the seen-set (the list only gets nearer, so a
+  // repeat is dropped again; a repeat that would enter is already in it).
+  uint32_t bound = kNoBound;  // the farthest kept distance once the list is full
+  auto consider = [&](uint32_t f) {
+    const uint32_t d = kernels::l1_distance_within(spin, spins + static_cast<size_t>(f) * dims, dims, bound);
+    if (d > bound) return;  // farther than the farthest of a full list (a filling one takes any)
+    const Candidate c{f, d};
+    if (!enters_heap(out, count, w, c) || !mark_seen(f)) return;
+    keep_in_heap(out, &count, w, c);
+    if (count == w) bound = out[0].distance;
+  };
+  // The L buckets, smallest first: the top-W list holds the W nearest
+  // distinct features whatever the order they come in (a total order,
+  // distance then index), and a small bucket's specific features fill it
+  // with near ones early, so that more of the large buckets' entries stop
+  // at the bound.
+  uint32_t firsts[kMaxLshTables], sizes[kMaxLshTables], tables[kMaxLshTables];
   for (uint32_t t = 0; t < p.lsh_tables; ++t) {
-    uint32_t bucket = blob::bucket_of(lsh_key(db.lsh_bits(t), p.lsh_bits, spin), t, p.lsh_buckets);
+    const uint32_t bucket = blob::bucket_of(lsh_key(db.lsh_bits(t), p.lsh_bits, spin), t, p.lsh_buckets);
     const uint32_t* offsets = db.lsh_offsets(t);
-    const uint32_t* entries = db.lsh_entries() + static_cast<size_t>(t) * p.feature_count;
     const uint32_t first = offsets[bucket], size = offsets[bucket + 1u] - first;
+    uint32_t i = t;
+    for (; i > 0 && sizes[i - 1u] > size; --i) {
+      firsts[i] = firsts[i - 1u];
+      sizes[i] = sizes[i - 1u];
+      tables[i] = tables[i - 1u];
+    }
+    firsts[i] = first;
+    sizes[i] = size;
+    tables[i] = t;
+  }
+  for (uint32_t k = 0; k < p.lsh_tables; ++k) {
+    const uint32_t first = firsts[k], size = sizes[k];
+    const uint32_t* entries = db.lsh_entries() + static_cast<size_t>(tables[k]) * p.feature_count + first;
     const uint32_t take = size < share ? size : share;
     stats->truncated = stats->truncated || take < size;
     stats->entries_scanned += take;
-    for (uint32_t e = 0; e < take; ++e) {
-      uint32_t f = entries[first + static_cast<uint32_t>(static_cast<uint64_t>(e) * size / take)];
-      // A candidate farther than the farthest kept cannot enter a full list.
-      const uint32_t bound = w > 0 && count == w ? out[0].distance : kNoBound;
-      const Candidate c{f, kernels::l1_distance_within(spin, db.spin(f), dims, bound)};
-      // Most entries are too far to enter the list: they are dropped before
-      // the seen-set (the list only gets nearer, so a repeat is dropped
-      // again). A repeat that would enter is already in the list.
-      if (w == 0 || !enters_heap(out, count, w, c) || !mark_seen(f)) continue;
-      keep_in_heap(out, &count, w, c);
-    }
+    if (w == 0) continue;             // nothing can enter: no distance is needed
+    const bool whole = take == size;  // the whole bucket, in order: no stride to work out
+    for (uint32_t e = 0; e < take; ++e)
+      consider(entries[whole ? e : static_cast<uint32_t>(static_cast<uint64_t>(e) * size / take)]);
   }
   heap_sort(out, count, before);
   return count;

@@ -46,18 +46,23 @@ void scan_cell(const Database& db, const blob::ModelRecord& rec, uint32_t cell_i
     consider_feature(db, f, x, n, cos_eta_max, best);
 }
 
+}  // namespace
+
 // The slots of the field voxel holding x (blob_format.hpp): O(field_slots).
-NearestFeature field_lookup(const Database& db, const blob::ModelRecord& rec, const Eigen::Vector3f& x,
-                            const Eigen::Vector3f& n, const LikelihoodParams& lp) {
+NearestFeature nearest_in_field(const Database& db, const blob::ModelRecord& rec, const Eigen::Vector3f& x,
+                                const Eigen::Vector3f& n, const LikelihoodParams& lp) {
   NearestFeature best;
   best.dist2 = lp.delta_max2;
   const blob::Params& p = db.params();
   uint32_t v[3];
   for (int a = 0; a < 3; ++a) {
-    const float f = std::floor((x[a] - (rec.grid_origin[a] - p.field_reach)) / p.field_cell);
+    // The voxel index floor(t), taken without floor: floor(t) >= 0 exactly
+    // when t >= 0, floor(t) < dims exactly when t < dims (an integer), and
+    // for t >= 0 the conversion truncates to floor(t).
+    const float t = (x[a] - (rec.grid_origin[a] - p.field_reach)) / p.field_cell;
     // Outside the field (also inf/NaN from an extreme pose): farther than field_reach from every feature.
-    if (!(f >= 0.0f && f < static_cast<float>(rec.field_dims[a]))) return best;
-    v[a] = static_cast<uint32_t>(f);
+    if (!(t >= 0.0f && t < static_cast<float>(rec.field_dims[a]))) return best;
+    v[a] = static_cast<uint32_t>(t);
   }
   const uint16_t* slot =
       db.nearest_field() + rec.field_base +
@@ -67,12 +72,8 @@ NearestFeature field_lookup(const Database& db, const blob::ModelRecord& rec, co
   return best;
 }
 
-}  // namespace
-
-NearestFeature find_nearest_model_feature(const Database& db, const blob::ModelRecord& rec,
-                                          const Eigen::Vector3f& x, const Eigen::Vector3f& n,
-                                          const LikelihoodParams& lp) {
-  if (lp.use_field) return field_lookup(db, rec, x, n, lp);
+NearestFeature nearest_in_grid(const Database& db, const blob::ModelRecord& rec, const Eigen::Vector3f& x,
+                               const Eigen::Vector3f& n, const LikelihoodParams& lp) {
   NearestFeature best;
   best.dist2 = lp.delta_max2;
   const float cell = db.params().grid_cell;
@@ -179,7 +180,8 @@ Verification verify_pose(const Database& db, uint32_t model, const RigidPose& po
   const bool preemptive = reference > kNoScoreToBeat;
   const float best_mean = reference / static_cast<float>(used > 0u ? used : 1u);
   uint32_t l = 0;
-  for (uint32_t i = 0; i < used; ++i, l = (l + stride) % n) {
+  // l + stride < 2n: one subtraction is the modulo (stride < n).
+  for (uint32_t i = 0; i < used; ++i, l = l + stride >= n ? l + stride - n : l + stride) {
     if (v.log_likelihood < to_beat) return v;  // remaining terms are <= 0
     if (preemptive && ((i == kPreemptiveFirst &&
                         v.log_likelihood / static_cast<float>(i) < best_mean - kPreemptiveSlackFirst) ||
@@ -194,7 +196,10 @@ Verification verify_pose(const Database& db, uint32_t model, const RigidPose& po
       v.log_likelihood += lp.floor;
       continue;
     }
-    float r2 = residual2(db, static_cast<uint32_t>(near.feature), x, near.dist2, lp);
+    // The hypothesis loop's r is the paper's (no call for it).
+    float r2 = lp.surface_patch_radius < 0.0f
+                   ? near.dist2
+                   : residual2(db, static_cast<uint32_t>(near.feature), x, near.dist2, lp);
     r2 = r2 < lp.delta2 ? r2 : lp.delta2;
     uint32_t l1 = kernels::l1_distance(query.spins + static_cast<size_t>(l) * query.dims,
                                        db.spin(static_cast<uint32_t>(near.feature)), query.dims);

@@ -108,9 +108,17 @@ struct NearestFeature {
   int64_t feature = -1;
   float dist2 = 0.0f;
 };
-NearestFeature find_nearest_model_feature(const Database& db, const blob::ModelRecord& rec,
-                                          const Eigen::Vector3f& x, const Eigen::Vector3f& n,
-                                          const LikelihoodParams& lp);
+// The two searches, each out of line with only its own frame (the field's
+// lookup runs once per verified feature).
+NearestFeature nearest_in_field(const Database& db, const blob::ModelRecord& rec, const Eigen::Vector3f& x,
+                                const Eigen::Vector3f& n, const LikelihoodParams& lp);
+NearestFeature nearest_in_grid(const Database& db, const blob::ModelRecord& rec, const Eigen::Vector3f& x,
+                               const Eigen::Vector3f& n, const LikelihoodParams& lp);
+inline NearestFeature find_nearest_model_feature(const Database& db, const blob::ModelRecord& rec,
+                                                 const Eigen::Vector3f& x, const Eigen::Vector3f& n,
+                                                 const LikelihoodParams& lp) {
+  return lp.use_field ? nearest_in_field(db, rec, x, n, lp) : nearest_in_grid(db, rec, x, n, lp);
+}
 
 // Query feature l in the model frame of `pose` (rt: its rotation transposed):
 // position and normal. One expression for verification and refinement, so

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "recognize/box_distance.hpp"
+#include "recognize/model_groups.hpp"
 #include "recognize/search_context.hpp"
 #include "spinhash/limits.hpp"
 
@@ -91,6 +92,18 @@ bool enumerate_pairs(SearchContext& ctx, uint32_t k, uint32_t l, const DoubletSh
   const Candidate* cl = ctx.candidates_of(l);
   const uint16_t* models = ctx.db.feature_models();
   const bool lookalikes = ctx.stats.candidates_spread && ctx.cfg.lookalike_box_l1 > 0.0f;
+  if (!lookalikes) {  // the paper's loop: same-model pairs only, through l's groups (model_groups.hpp)
+    ModelGroups groups;
+    group_by_model(cl, ctx.buf.candidate_count[l], models, &groups);
+    for (uint32_t u = 0; u < ctx.buf.candidate_count[k]; ++u) {
+      const uint16_t mu = models[ck[u].feature];
+      for (uint32_t j = first_of_model(groups, mu); j < groups.count && groups.model[j] == mu; ++j)
+        if (evaluate_pair(ctx, mu, k, l, shape, ck[u].feature, cl[groups.index[j]].feature, caps) ==
+            PairOutcome::kBudgetSpent)
+          return false;
+    }
+    return true;
+  }
   uint32_t draw_pairs = 0;  // look-alike pairs of this draw through the cascade
   for (uint32_t u = 0; u < ctx.buf.candidate_count[k]; ++u) {
     const uint16_t mu = models[ck[u].feature];
@@ -98,8 +111,7 @@ bool enumerate_pairs(SearchContext& ctx, uint32_t k, uint32_t l, const DoubletSh
     for (uint32_t v = 0; v < ctx.buf.candidate_count[l]; ++v) {
       const uint16_t mv = models[cl[v].feature];
       const bool lookalike = mv != mu;
-      // Without spread candidates the loop is the paper's: same-model pairs only.
-      if (lookalike && (!lookalikes || !lookalike_pair_allowed(ctx, mu, mv, pairs, draw_pairs))) continue;
+      if (lookalike && !lookalike_pair_allowed(ctx, mu, mv, pairs, draw_pairs)) continue;
       const PairOutcome o = evaluate_pair(ctx, mu, k, l, shape, ck[u].feature, cl[v].feature, caps);
       if (o == PairOutcome::kBudgetSpent) return false;
       if (lookalike && o == PairOutcome::kPassed) ++pairs, ++draw_pairs;

@@ -49,10 +49,12 @@ bool turn_worth_refining(SearchContext& ctx, uint32_t model, const RigidPose& po
   const float as_found =
       verify_pose(ctx.db, model, pose, ctx.query, ctx.likelihood, kNoScoreToBeat, kNoScoreToBeat)
           .log_likelihood;
+  const float threshold = as_found - kTurnScreenSlack * static_cast<float>(ctx.query.verify_count);
+  // Stopped once even perfect remaining features could not reach the
+  // threshold: its partial sum is then below it, the same decision.
   const float turned_score =
-      verify_pose(ctx.db, model, turned, ctx.query, ctx.likelihood, kNoScoreToBeat, kNoScoreToBeat)
-          .log_likelihood;
-  return turned_score >= as_found - kTurnScreenSlack * static_cast<float>(ctx.query.verify_count);
+      verify_pose(ctx.db, model, turned, ctx.query, ctx.likelihood, threshold, kNoScoreToBeat).log_likelihood;
+  return turned_score >= threshold;
 }
 
 // Refines the model's pose, and its turn end to end when the turn is close
