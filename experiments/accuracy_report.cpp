@@ -104,7 +104,8 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
                       "object_points",
                       "class_true",
                       "class_first",
-                      "class_confident"});
+                      "class_confident",
+                      "class_lead"});
   for (const AccuracyRecord& r : run.records) {
     const QueryCondition& c = run.conditions[r.condition];
     const Outcome& o = r.outcome;
@@ -136,7 +137,8 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
                    std::to_string(r.object_points),
                    vehicle_class_name(run.model_classes[r.model]),
                    vehicle_class_name(o.class_first),
-                   o.class_confident ? "1" : "0"});
+                   o.class_confident ? "1" : "0",
+                   num(o.class_lead)});
   }
   CsvTable curves({"mode", "noise", "occlusion", "ground", "spacing", "k", "p_correct_within_k", "queries"});
   CsvTable timing({"mode", "noise", "occlusion", "ground", "spacing", "queries", "not_ok", "budget_exhausted",

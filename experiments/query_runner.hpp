@@ -29,6 +29,7 @@ struct Outcome {
   double translation_error_m = NAN;
   // The class level (Result::class_ranking): the first class's id, 0 when none.
   uint32_t class_first = 0;
+  float class_lead = NAN;  // the first class's score above the second's (NaN with fewer than two)
   bool class_confident = false;
 };
 
