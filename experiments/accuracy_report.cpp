@@ -391,7 +391,8 @@ std::string summary(const AccuracyRun& run, const std::vector<std::string>& plot
         << num(ms.rotation_error_deg, 3) << " / " << num(ms.translation_error_m, 3) << " | " << ms.not_ok
         << " |\n";
     }
-  s << target_section(run) << ground_section(run) << confidence_section(run) << class_section(run) << "\n## Files\n\n"
+  s << target_section(run) << ground_section(run) << confidence_section(run) << class_section(run)
+    << "\n## Files\n\n"
     << "- `accuracy.csv`: P(correct within top k) per mode, condition and k; `curves/*.csv`: the same, one "
        "file "
        "per condition\n- `timing.csv`: time and hypotheses per mode and condition\n"

@@ -45,8 +45,8 @@ std::string pct(uint32_t a, uint32_t b) { return b ? num(100.0 * a / b, 3) + "%"
 std::string row(const std::string& label, const std::string& mode, const ClassTally& t) {
   std::ostringstream s;
   s << "| " << label << " | " << mode << " | " << t.queries << " | " << median(t.object_points) << " | "
-    << pct(t.right, t.queries) << " | " << t.confident << " | " << pct(t.confident_right, t.confident) << " | "
-    << pct(t.confident_right, t.right) << " | " << t.model_confident << " |\n";
+    << pct(t.right, t.queries) << " | " << t.confident << " | " << pct(t.confident_right, t.confident)
+    << " | " << pct(t.confident_right, t.right) << " | " << t.model_confident << " |\n";
   return s.str();
 }
 

@@ -35,10 +35,10 @@ struct CarEntry {
 // TORCS 1.3.7: touring, stock and GT cars are sedans (saloon or coupe
 // bodies); the buggies and the open-wheel racer are "other".
 constexpr CarEntry kTorcsCars[] = {
-    {"155-DTM", "sedan"},     {"acura-nsx-sz", "sedan"}, {"baja-bug", "other"},    {"buggy", "other"},
-    {"car1-ow1", "other"},    {"car1-stock1", "sedan"},  {"car1-stock2", "sedan"}, {"car1-trb1", "sedan"},
-    {"car1-trb3", "sedan"},   {"car2-trb1", "sedan"},    {"car3-trb1", "sedan"},   {"car4-trb1", "sedan"},
-    {"car5-trb1", "sedan"},   {"car6-trb1", "sedan"},    {"car7-trb1", "sedan"},   {"car8-trb1", "sedan"},
+    {"155-DTM", "sedan"},   {"acura-nsx-sz", "sedan"}, {"baja-bug", "other"},    {"buggy", "other"},
+    {"car1-ow1", "other"},  {"car1-stock1", "sedan"},  {"car1-stock2", "sedan"}, {"car1-trb1", "sedan"},
+    {"car1-trb3", "sedan"}, {"car2-trb1", "sedan"},    {"car3-trb1", "sedan"},   {"car4-trb1", "sedan"},
+    {"car5-trb1", "sedan"}, {"car6-trb1", "sedan"},    {"car7-trb1", "sedan"},   {"car8-trb1", "sedan"},
     {"p406", "sedan"},
 };
 // Trigger Rally 0.6.6: rally hatchbacks; kitcar and super500 share the wrc's geometry.
@@ -78,7 +78,8 @@ struct WheelSpec {
 };
 
 // The body part's scale and its wheels from a Trigger .vehicle (XML).
-bool read_vehicle(const std::string& path, double* scale, std::vector<WheelSpec>* wheels, std::string* error) {
+bool read_vehicle(const std::string& path, double* scale, std::vector<WheelSpec>* wheels,
+                  std::string* error) {
   std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();
@@ -90,10 +91,11 @@ bool read_vehicle(const std::string& path, double* scale, std::vector<WheelSpec>
     return false;
   }
   *scale = std::stod(m[1]);
-  const std::regex wheel(R"re(<wheel[^>]*?pos="([-0-9.eE]+),\s*([-0-9.eE]+),\s*([-0-9.eE]+)"[^>]*?radius="([-0-9.eE]+)")re");
+  const std::regex wheel(
+      R"re(<wheel[^>]*?pos="([-0-9.eE]+),\s*([-0-9.eE]+),\s*([-0-9.eE]+)"[^>]*?radius="([-0-9.eE]+)")re");
   for (auto it = std::sregex_iterator(s.begin(), s.end(), wheel); it != std::sregex_iterator(); ++it)
-    wheels->push_back(WheelSpec{{std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3])},
-                                std::stod((*it)[4])});
+    wheels->push_back(
+        WheelSpec{{std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3])}, std::stod((*it)[4])});
   if (wheels->empty()) {
     *error = path + ": no <wheel pos=... radius=...>";
     return false;
@@ -168,9 +170,13 @@ int run_prepare(const PrepareArgs& a) {
 void add_prepare_cars(CLI::App* parent, int* exit_code) {
   auto a = std::make_shared<PrepareArgs>();
   CLI::App* cmd = parent->add_subcommand(
-      "prepare-cars", "TORCS and Trigger Rally car bodies to OBJ meshes in class folders (the independent set)");
-  cmd->add_option("--torcs", a->torcs, "TORCS' cars/ folder (torcs-data)")->required()->check(CLI::ExistingDirectory);
-  cmd->add_option("--trigger", a->trigger, "Trigger Rally's vehicles/ folder (data.zip of trigger-rally-data)")
+      "prepare-cars",
+      "TORCS and Trigger Rally car bodies to OBJ meshes in class folders (the independent set)");
+  cmd->add_option("--torcs", a->torcs, "TORCS' cars/ folder (torcs-data)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--trigger", a->trigger,
+                  "Trigger Rally's vehicles/ folder (data.zip of trigger-rally-data)")
       ->check(CLI::ExistingDirectory);
   cmd->add_option("-o,--output", a->out, "output folder")->required();
   cmd->callback([a, exit_code]() { *exit_code = run_prepare(*a); });

@@ -182,7 +182,8 @@ TEST_CASE("an object seen from the air without ground is left whole") {
   CHECK(remove_object_ground(pts.data(), n, 0.0f, scratch.data()) == 0);  // clearance 0: off
 }
 
-TEST_CASE("a low, flat racer seen from the air without ground keeps its points; with a ground square it loses it") {
+TEST_CASE(
+    "a low, flat racer seen from the air without ground keeps its points; with a ground square it loses it") {
   // The top of a 4.5 x 1.4 m body rising from 0.10 to 0.22 m, with a 0.45 m
   // cockpit hump: noise-free, its smooth slopes fill every 0.5 m cell with a
   // few centimetres of spread, which read as the ground's roughness (TORCS'
