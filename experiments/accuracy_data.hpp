@@ -15,7 +15,8 @@ struct AccuracyRecord {
   uint32_t mode = 0;       // index into AccuracyRun::modes
   uint32_t model = 0;
   uint32_t query = 0;
-  uint32_t points = 0;  // query cloud size (object and ground)
+  uint32_t points = 0;         // query cloud size (object and ground)
+  uint32_t object_points = 0;  // of them on the vehicle
   Outcome outcome;
 };
 
@@ -26,6 +27,7 @@ struct AccuracyRun {
   std::string database;  // config_text descriptions
   std::string recognizer;
   std::vector<std::string> model_names;  // every database model (originals first)
+  std::vector<uint32_t> model_classes;   // their vehicle classes (VehicleClass ids)
   uint32_t query_models = 0;             // the originals, which the queries scan
   std::vector<QueryCondition> conditions;
   std::vector<Mode> modes;
@@ -42,6 +44,10 @@ std::vector<double> topk_curve(const AccuracyRun& run, uint32_t condition, uint3
 // mode. calibration.csv and a summary section.
 std::string confidence_section(const AccuracyRun& run);
 bool write_calibration_csv(const AccuracyRun& run, std::string* error);
+
+// The class level: the first class against the scanned model's, and
+// whether class_confident is right; per condition and mode. A summary section.
+std::string class_section(const AccuracyRun& run);
 
 // CSVs, plots and summary.md into run.out_dir; false with *error on a write failure.
 bool write_accuracy_report(const AccuracyRun& run, std::string* error);

@@ -82,7 +82,7 @@ bool run_queries(const AccuracyArgs& a, const std::vector<pipeline::ModelMesh>& 
         if (!simulate_query(meshes[m].mesh, m, q, cond, a.seed, a.ground_margin, &query, error)) return false;
         for (uint32_t k = 0; k < sessions.size(); ++k)
           run->records.push_back(AccuracyRecord{c, k, m, q, static_cast<uint32_t>(query.xyz.size() / 3),
-                                                recognise(*sessions[k], query)});
+                                                query.object_points, recognise(*sessions[k], query)});
         progress.tick(++done);
       }
   }
@@ -122,7 +122,10 @@ int run_accuracy(const AccuracyArgs& a) {
         ", each with " + std::to_string(a.lookalikes) +
         " look-alike copies (stretched, shortened, widened, narrowed, mirrored; queries from the originals)";
   }
-  for (const pipeline::ModelMesh& m : meshes) run.model_names.push_back(m.name);
+  for (const pipeline::ModelMesh& m : meshes) {
+    run.model_names.push_back(m.name);
+    run.model_classes.push_back(static_cast<uint32_t>(m.vehicle_class));
+  }
   std::unique_ptr<MemoryDatabase> mdb;
   Sessions sessions[2];  // [0] library defaults, [1] ground removal off (--ground-kept)
   if (!model_clouds(meshes, &clouds, &error) ||

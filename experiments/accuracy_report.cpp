@@ -9,6 +9,7 @@
 #include "output_dir.hpp"
 #include "pipeline/recognizer_flags.hpp"
 #include "plot_styles.hpp"
+#include "spinhash/vehicle_class.hpp"
 #include "stats.hpp"
 
 namespace spinhash::experiment {
@@ -99,7 +100,12 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
                       "score_second",
                       "inliers",
                       "rotation_error_deg",
-                      "translation_error_m"});
+                      "translation_error_m",
+                      "object_points",
+                      "class_true",
+                      "class_first",
+                      "class_confident",
+                      "class_lead"});
   for (const AccuracyRecord& r : run.records) {
     const QueryCondition& c = run.conditions[r.condition];
     const Outcome& o = r.outcome;
@@ -127,7 +133,12 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
                    num(o.score_second),
                    std::to_string(o.inliers),
                    num(o.rotation_error_deg),
-                   num(o.translation_error_m)});
+                   num(o.translation_error_m),
+                   std::to_string(r.object_points),
+                   vehicle_class_name(run.model_classes[r.model]),
+                   vehicle_class_name(o.class_first),
+                   o.class_confident ? "1" : "0",
+                   num(o.class_lead)});
   }
   CsvTable curves({"mode", "noise", "occlusion", "ground", "spacing", "k", "p_correct_within_k", "queries"});
   CsvTable timing({"mode", "noise", "occlusion", "ground", "spacing", "queries", "not_ok", "budget_exhausted",
@@ -380,7 +391,8 @@ std::string summary(const AccuracyRun& run, const std::vector<std::string>& plot
         << num(ms.rotation_error_deg, 3) << " / " << num(ms.translation_error_m, 3) << " | " << ms.not_ok
         << " |\n";
     }
-  s << target_section(run) << ground_section(run) << confidence_section(run) << "\n## Files\n\n"
+  s << target_section(run) << ground_section(run) << confidence_section(run) << class_section(run)
+    << "\n## Files\n\n"
     << "- `accuracy.csv`: P(correct within top k) per mode, condition and k; `curves/*.csv`: the same, one "
        "file "
        "per condition\n- `timing.csv`: time and hypotheses per mode and condition\n"

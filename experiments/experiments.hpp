@@ -19,6 +19,8 @@ void add_scene_experiment(CLI::App* parent, int* exit_code);
 void add_stream_experiment(CLI::App* parent, int* exit_code);
 // Warzone 2100's PIE models (vehicles, structures) to OBJ meshes.
 void add_prepare_warzone(CLI::App* parent, int* exit_code);
+// TORCS and Trigger Rally car bodies to OBJ meshes in class folders.
+void add_prepare_cars(CLI::App* parent, int* exit_code);
 
 // laz-speed: LAS/LAZ decoding speed and peak memory (laz_speed.cpp).
 void add_laz_speed(CLI::App* parent, int* exit_code);

@@ -38,6 +38,9 @@ Outcome recognise(pipeline::RecognitionSession& session, const Query& q) {
     o.inliers = r.ranking[0].inliers;
     if (r.ranking[0].has_pose) pose_errors(r.ranking[0].pose, q.true_pose, &o);
   }
+  if (r.class_ranking_count > 0) o.class_first = r.class_ranking[0].vehicle_class;
+  if (r.class_ranking_count > 1) o.class_lead = r.class_ranking[0].score - r.class_ranking[1].score;
+  o.class_confident = r.class_confident;
   if (r.ranking_count > 1) o.score_second = r.ranking[1].score;
   for (uint32_t i = 0; i < r.ranking_count; ++i)
     if (r.ranking[i].model == q.model) {

@@ -27,6 +27,10 @@ struct Outcome {
   // the rotation's angle (degrees) and the translation's distance (m).
   double rotation_error_deg = NAN;
   double translation_error_m = NAN;
+  // The class level (Result::class_ranking): the first class's id, 0 when none.
+  uint32_t class_first = 0;
+  float class_lead = NAN;  // the first class's score above the second's (NaN with fewer than two)
+  bool class_confident = false;
 };
 
 Outcome recognise(pipeline::RecognitionSession& session, const Query& q);

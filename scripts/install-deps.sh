@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Installs what spinhash needs on Debian 12, idempotently: only the packages
 # that are missing are installed. Pass --cross to add the cross toolchains
-# and QEMU (needed by scripts/test.sh for the onboard checks).
+# and QEMU (needed by scripts/test.sh for the onboard checks), --cars to add
+# the independent car meshes of scripts/prepare-cars.sh (torcs-data and
+# trigger-rally-data: 450 MB to download, 650 MB installed; not in CI's
+# default path: only the experiments of docs/results.md 11b read them).
 set -euo pipefail
 
 packages=(build-essential cmake doctest-dev libeigen3-dev libassimp-dev libembree-dev
@@ -11,7 +14,10 @@ packages=(build-essential cmake doctest-dev libeigen3-dev libassimp-dev libembre
           python3-dask python3-distributed python3-geopandas  # spinhash.survey on Dask (python/spinhash/survey.py)
           clang-format  # the layout check (scripts/check_layout.sh)
           clang libclang-rt-14-dev)  # libFuzzer and the sanitizer runtimes (scripts/stages/40-fuzz.sh)
-if [[ "${1:-}" == "--cross" ]]; then
+for arg in "$@"; do
+  if [[ "$arg" == "--cars" ]]; then packages+=(torcs-data trigger-rally-data unzip); fi
+done
+if [[ " $* " == *" --cross "* ]]; then
   packages+=(g++-aarch64-linux-gnu g++-arm-linux-gnueabihf g++-powerpc-linux-gnu
              gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-user
              valgrind python3)  # callgrind for the work budget, python3 for the stack report

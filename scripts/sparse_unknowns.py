@@ -12,8 +12,12 @@ The fleet: `spinhash generate` members 0..per_family-1 of each family go into
 the database; members per_family..2*per_family-1 are unknown vehicles of a
 known class; stretched and shortened copies of database members (x 1.12,
 x 0.90 along the length, x 1.08 across) are unknown vehicles close to known
-ones. Density is the scan's points per m^2 of the scanned mesh's footprint
-(the measure of the recognizer's evidence gate, sides included).
+ones. --extra-unknown adds folders of other meshes as unknown vehicles, each
+folder named after the class of its meshes (the real cars of
+scripts/prepare-cars.sh: out/cars/meshes/sedan,out/cars/meshes/other);
+--only-extra scans only those. Density is the scan's points per m^2 of the
+scanned mesh's footprint (the measure of the recognizer's evidence gate,
+sides included).
 """
 import argparse, json, os, subprocess, sys
 from collections import defaultdict
@@ -75,6 +79,8 @@ def main():
     ap.add_argument("--noise", type=float, default=0.05)
     ap.add_argument("--ground", type=float, default=6.0, help="ground square half size with the noisy scans")
     ap.add_argument("--conds", default="clean,noisy", help="of CONDITIONS: clean, noisy, survey, survey_ground")
+    ap.add_argument("--extra-unknown", default="", help="comma-separated mesh folders of unknown vehicles, each named after its class")
+    ap.add_argument("--only-extra", action="store_true", help="scan only the --extra-unknown vehicles")
     a = ap.parse_args()
     S, out = a.spinhash, a.out
     os.makedirs(out, exist_ok=True)
@@ -94,8 +100,10 @@ def main():
     queries = []  # (path of scan, truth model or None, truth class, area, condition)
     qdir = os.path.join(out, "scans")
     os.makedirs(qdir, exist_ok=True)
-    for known, d in ((True, db_dir), (False, unk_dir)):
-        for f in sorted(os.listdir(d)):
+    sources = [] if a.only_extra else [(True, db_dir, None), (False, unk_dir, None)]
+    sources += [(False, d, os.path.basename(d.rstrip("/"))) for d in a.extra_unknown.split(",") if d]
+    for known, d, cls in sources:
+        for f in sorted(x for x in os.listdir(d) if x.endswith(".obj")):
             mesh = os.path.join(d, f)
             area = footprint(mesh)
             for sp in a.spacings.split(","):
@@ -105,7 +113,7 @@ def main():
                         if not os.path.exists(q):
                             extra = CONDITIONS[cond](a)
                             run([S, "scan", mesh, "--spacing", sp, "--random-pose", "--seed", seed, "-o", q] + extra)
-                        queries.append((q, f[:-4] if known else None, family(f), area, cond, sp))
+                        queries.append((q, f[:-4] if known else None, cls or family(f), area, cond, sp))
     rows = []
     chunk = 64
     for i in range(0, len(queries), chunk):

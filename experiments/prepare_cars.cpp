@@ -1,0 +1,185 @@
+// spinhash-experiment prepare-cars --torcs DIR --trigger DIR -o OUT: an
+// independent test world of real car meshes (issue 28), never tuned on:
+// TORCS' 17 car bodies (Debian's torcs-data, AC3D .acc, loaded y up by
+// Assimp) and Trigger Rally's 3 distinct bodies (trigger-rally-data, OBJ in
+// centimetres, wheels placed from the .vehicle file; its 9 vehicles are 3
+// bodies in 3 liveries of the same geometry, so one of each), written as
+// OBJ in the generator's frame (metres, x forward, z up, ground at z = 0,
+// centred) under OUT/<class>/ so that `build` and `--meshes` read the class
+// from the folder, plus OUT/catalog.csv. Game content: never commit it.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <regex>
+#include <sstream>
+
+#include "csv_table.hpp"
+#include "experiments.hpp"
+#include "mesh/mesh_loader.hpp"
+#include "mesh/mesh_writer.hpp"
+#include "output_dir.hpp"
+#include "pipeline/exit_codes.hpp"
+
+namespace spinhash::experiment {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CarEntry {
+  const char* name;   // the source's folder and stem
+  const char* klass;  // vehicle class folder (include/spinhash/vehicle_classes.h)
+};
+
+// TORCS 1.3.7: touring, stock and GT cars are sedans (saloon or coupe
+// bodies); the buggies and the open-wheel racer are "other".
+constexpr CarEntry kTorcsCars[] = {
+    {"155-DTM", "sedan"},   {"acura-nsx-sz", "sedan"}, {"baja-bug", "other"},    {"buggy", "other"},
+    {"car1-ow1", "other"},  {"car1-stock1", "sedan"},  {"car1-stock2", "sedan"}, {"car1-trb1", "sedan"},
+    {"car1-trb3", "sedan"}, {"car2-trb1", "sedan"},    {"car3-trb1", "sedan"},   {"car4-trb1", "sedan"},
+    {"car5-trb1", "sedan"}, {"car6-trb1", "sedan"},    {"car7-trb1", "sedan"},   {"car8-trb1", "sedan"},
+    {"p406", "sedan"},
+};
+// Trigger Rally 0.6.6: rally hatchbacks; kitcar and super500 share the wrc's geometry.
+constexpr CarEntry kTriggerCars[] = {{"cordo_wrc", "sedan"}, {"evo_wrc", "sedan"}, {"fox_wrc", "sedan"}};
+
+struct PrepareArgs {
+  std::string torcs;    // .../games/torcs/cars
+  std::string trigger;  // data.zip's vehicles/ unpacked
+  std::string out;
+};
+
+// Ground at z = 0, footprint centred on the origin.
+void settle(host::Mesh* m) {
+  const host::Box3 b = m->bounding_box();
+  Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+  t.topRightCorner<3, 1>() = Eigen::Vector3d(-b.center().x(), -b.center().y(), -b.lo.z());
+  m->apply_transform(t);
+}
+
+Eigen::Matrix4d rotation(const Eigen::Matrix3d& r) {
+  Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+  t.topLeftCorner<3, 3>() = r;
+  return t;
+}
+
+// Assimp reads AC3D y up: a quarter turn about x puts its y on z.
+bool load_torcs(const std::string& dir, const CarEntry& c, host::Mesh* m, std::string* error) {
+  if (!host::load_mesh((fs::path(dir) / c.name / (std::string(c.name) + ".acc")).string(), m, error))
+    return false;
+  m->apply_transform(rotation(Eigen::AngleAxisd(0.5 * M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix()));
+  return true;
+}
+
+struct WheelSpec {
+  Eigen::Vector3d pos;
+  double radius = 0.0;
+};
+
+// The body part's scale and its wheels from a Trigger .vehicle (XML).
+bool read_vehicle(const std::string& path, double* scale, std::vector<WheelSpec>* wheels,
+                  std::string* error) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  std::smatch m;
+  const std::regex part_scale(R"re(<part[^>]*?scale="([-0-9.eE]+)")re");
+  if (!std::regex_search(s, m, part_scale)) {
+    *error = path + ": no <part scale=...>";
+    return false;
+  }
+  *scale = std::stod(m[1]);
+  const std::regex wheel(
+      R"re(<wheel[^>]*?pos="([-0-9.eE]+),\s*([-0-9.eE]+),\s*([-0-9.eE]+)"[^>]*?radius="([-0-9.eE]+)")re");
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), wheel); it != std::sregex_iterator(); ++it)
+    wheels->push_back(
+        WheelSpec{{std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3])}, std::stod((*it)[4])});
+  if (wheels->empty()) {
+    *error = path + ": no <wheel pos=... radius=...>";
+    return false;
+  }
+  return true;
+}
+
+// Body scaled to metres, each wheel mesh scaled to its radius and centred on
+// its position, then y forward turned to x forward.
+bool load_trigger(const std::string& dir, const CarEntry& c, host::Mesh* m, std::string* error) {
+  const fs::path base = fs::path(dir) / c.name;
+  double scale = 0.0;
+  std::vector<WheelSpec> wheels;
+  host::Mesh wheel;
+  if (!read_vehicle((base / (std::string(c.name) + ".vehicle")).string(), &scale, &wheels, error) ||
+      !host::load_mesh((base / (std::string(c.name) + ".obj")).string(), m, error) ||
+      !host::load_mesh((base / (std::string(c.name) + "_wheel.obj")).string(), &wheel, error))
+    return false;
+  m->apply_transform(rotation(Eigen::Matrix3d::Identity() * scale));
+  const host::Box3 wb = wheel.bounding_box();
+  const double wheel_radius = 0.5 * std::max(wb.size().y(), wb.size().z());
+  for (const WheelSpec& w : wheels) {
+    host::Mesh one = wheel;
+    Eigen::Matrix4d t = rotation(Eigen::Matrix3d::Identity() * (w.radius / wheel_radius));
+    t.topRightCorner<3, 1>() = w.pos - wb.center() * (w.radius / wheel_radius);
+    one.apply_transform(t);
+    m->append(one);
+  }
+  m->apply_transform(rotation(Eigen::AngleAxisd(-0.5 * M_PI, Eigen::Vector3d::UnitZ()).toRotationMatrix()));
+  return true;
+}
+
+bool write_one(const std::string& out, const CarEntry& c, const std::string& source, host::Mesh* m,
+               CsvTable* catalog, std::string* error) {
+  settle(m);
+  m->name = c.name;
+  const std::string dir = out + "/" + c.klass;
+  if (!make_output_dir(dir, error) || !host::write_obj(dir + "/" + c.name + ".obj", *m, error)) return false;
+  const Eigen::Vector3d size = m->bounding_box().size();
+  catalog->add({c.name, c.klass, source, std::to_string(m->triangle_count()), num(size.x(), 3),
+                num(size.y(), 3), num(size.z(), 3)});
+  return true;
+}
+
+int run_prepare(const PrepareArgs& a) {
+  std::string error;
+  CsvTable catalog({"name", "class", "source", "triangles", "length_m", "width_m", "height_m"});
+  uint32_t written = 0;
+  bool ok = make_output_dir(a.out, &error);
+  for (const CarEntry& c : kTorcsCars) {
+    host::Mesh m;
+    ok = ok && load_torcs(a.torcs, c, &m, &error) && write_one(a.out, c, "torcs", &m, &catalog, &error);
+    written += ok ? 1u : 0u;
+  }
+  for (const CarEntry& c : kTriggerCars) {
+    if (a.trigger.empty()) break;
+    host::Mesh m;
+    ok = ok && load_trigger(a.trigger, c, &m, &error) && write_one(a.out, c, "trigger", &m, &catalog, &error);
+    written += ok ? 1u : 0u;
+  }
+  ok = ok && catalog.write(a.out + "/catalog.csv", &error);
+  if (!ok) {
+    std::fprintf(stderr, "spinhash-experiment prepare-cars: %s\n", error.c_str());
+    return pipeline::kExitError;
+  }
+  std::fprintf(stderr, "spinhash-experiment prepare-cars: %u car meshes in %s\n", written, a.out.c_str());
+  return pipeline::kExitOk;
+}
+
+}  // namespace
+
+void add_prepare_cars(CLI::App* parent, int* exit_code) {
+  auto a = std::make_shared<PrepareArgs>();
+  CLI::App* cmd = parent->add_subcommand(
+      "prepare-cars",
+      "TORCS and Trigger Rally car bodies to OBJ meshes in class folders (the independent set)");
+  cmd->add_option("--torcs", a->torcs, "TORCS' cars/ folder (torcs-data)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--trigger", a->trigger,
+                  "Trigger Rally's vehicles/ folder (data.zip of trigger-rally-data)")
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("-o,--output", a->out, "output folder")->required();
+  cmd->callback([a, exit_code]() { *exit_code = run_prepare(*a); });
+}
+
+}  // namespace spinhash::experiment
