@@ -40,6 +40,18 @@ struct AccuracyRun {
 // P(true model within the top k) for k = 1..max_k, of one condition and mode.
 std::vector<double> topk_curve(const AccuracyRun& run, uint32_t condition, uint32_t mode);
 
+// A report's table body: `row(label, mode, condition)` for each mode pooled
+// over all conditions (condition -1), then for each condition and mode.
+template <class Row>
+std::string rows_by_condition(const AccuracyRun& run, Row&& row) {
+  std::string out;
+  for (uint32_t m = 0; m < run.modes.size(); ++m) out += row("**all conditions**", m, -1);
+  for (uint32_t c = 0; c < run.conditions.size(); ++c)
+    for (uint32_t m = 0; m < run.modes.size(); ++m)
+      out += row(run.conditions[c].label(), m, static_cast<int>(c));
+  return out;
+}
+
 // Whether `confident` means right: per condition and mode, and pooled per
 // mode. calibration.csv and a summary section.
 std::string confidence_section(const AccuracyRun& run);

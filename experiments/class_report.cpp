@@ -60,11 +60,9 @@ std::string class_section(const AccuracyRun& run) {
     << "`confident` for comparison. Points: median points on the vehicle.\n\n"
     << "| condition | mode | queries | points | class right first | class confident | precision | recall | "
     << "model confident |\n|---|---|---|---|---|---|---|---|---|\n";
-  for (uint32_t m = 0; m < run.modes.size(); ++m)
-    s << row("**all conditions**", mode_title(run.modes[m]), tally(run, -1, m));
-  for (uint32_t c = 0; c < run.conditions.size(); ++c)
-    for (uint32_t m = 0; m < run.modes.size(); ++m)
-      s << row(run.conditions[c].label(), mode_title(run.modes[m]), tally(run, static_cast<int>(c), m));
+  s << rows_by_condition(run, [&run](const std::string& label, uint32_t m, int c) {
+    return row(label, mode_title(run.modes[m]), tally(run, c, m));
+  });
   return s.str();
 }
 

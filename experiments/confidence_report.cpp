@@ -84,11 +84,9 @@ std::string confidence_section(const AccuracyRun& run) {
     << "\n\n| condition | mode | queries | right first | confident | precision | recall | "
     << "confident and wrong | look-alike errors | in group | mean group |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (uint32_t m = 0; m < run.modes.size(); ++m)
-    s << row("**all conditions**", mode_title(run.modes[m]), tally(run, -1, m));
-  for (uint32_t c = 0; c < run.conditions.size(); ++c)
-    for (uint32_t m = 0; m < run.modes.size(); ++m)
-      s << row(run.conditions[c].label(), mode_title(run.modes[m]), tally(run, static_cast<int>(c), m));
+  s << rows_by_condition(run, [&run](const std::string& label, uint32_t m, int c) {
+    return row(label, mode_title(run.modes[m]), tally(run, c, m));
+  });
   return s.str();
 }
 
