@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "scene/scene_window.hpp"
 #include "spinhash/database.hpp"
 #include "spinhash/scene.hpp"
 #include "spinhash/scene_stream.hpp"
@@ -170,6 +171,39 @@ TEST_CASE("stream: every vehicle of a strip is reported once, named as the whole
     // The margins see the vehicle whole; its lowest points may fall on the
     // ground side in one lattice of grid cells and not in the other.
     CHECK(std::abs(static_cast<int>(s->points) - static_cast<int>(t->points)) <= 0.03 * t->points);
+  }
+}
+
+TEST_CASE("stream: windows that share a row's terrain grid name every vehicle as windows with a grid each") {
+  ToyDatabase toy;
+  REQUIRE(make_toy_database(&toy));
+  const std::vector<double> xyz = strip_points();
+  StreamConfig own_grid = strip_config();
+  own_grid.scene.max_terrain_cells = 100000;  // one 144 m window's 290 x 290 cells, not two side by side
+  REQUIRE(strip_columns(strip_config().scene) == 2u);
+  REQUIRE(strip_columns(own_grid.scene) == 1u);
+  StreamRun shared(&toy.db, strip_config()), separate(&toy.db, own_grid);
+  REQUIRE(shared.init == Status::kOk);
+  REQUIRE(separate.init == Status::kOk);
+  CHECK(shared.feed(xyz, 4096 / 24) == Status::kOk);
+  CHECK(separate.feed(xyz, 4096 / 24) == Status::kOk);
+  CHECK(shared.stream.stats().windows == separate.stream.stats().windows);
+  // One grid per row instead of one per window: fewer cells filled in all.
+  CHECK(shared.stream.stats().scene.terrain_cells < separate.stream.stats().scene.terrain_cells);
+  for (const Placed& c : kCars) {
+    CAPTURE(c.model);
+    CAPTURE(c.y);
+    int in_shared = 0, in_separate = 0;
+    const Reported* a = vehicle_at(shared.objects, c, &in_shared);
+    const Reported* b = vehicle_at(separate.objects, c, &in_separate);
+    CHECK(in_shared == 1);
+    CHECK(in_separate == 1);
+    REQUIRE(a != nullptr);
+    REQUIRE(b != nullptr);
+    CHECK(a->model == static_cast<int64_t>(c.model));
+    CHECK(a->model == b->model);
+    CHECK(a->confident == b->confident);
+    CHECK(std::abs(static_cast<int>(a->points) - static_cast<int>(b->points)) <= 0.03 * b->points);
   }
 }
 
