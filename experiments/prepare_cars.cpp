@@ -7,12 +7,12 @@
 // OBJ in the generator's frame (metres, x forward, z up, ground at z = 0,
 // centred) under OUT/<class>/ so that `build` and `--meshes` read the class
 // from the folder, plus OUT/catalog.csv. Game content: never commit it.
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <regex>
 #include <sstream>
 
 #include "csv_table.hpp"
@@ -77,6 +77,30 @@ struct WheelSpec {
   double radius = 0.0;
 };
 
+// The value of attribute `name` in the XML tag that starts at `at` (up to
+// its '>'); false when the tag has none. (No std::regex: GCC 12 warns
+// inside <regex> under the sanitizers' -Werror build.)
+bool tag_attribute(const std::string& s, size_t at, const std::string& name, std::string* value) {
+  const size_t end = s.find('>', at);
+  const std::string key = name + "=\"";
+  for (size_t k = s.find(key, at); k != std::string::npos && k < end; k = s.find(key, k + 1)) {
+    if (!std::isspace(static_cast<unsigned char>(s[k - 1]))) continue;  // another attribute's tail
+    const size_t from = k + key.size(), to = s.find('"', from);
+    if (to == std::string::npos || to > end) return false;
+    *value = s.substr(from, to - from);
+    return true;
+  }
+  return false;
+}
+
+// Numbers separated by commas (and spaces): "1.2, -0.5, 3".
+std::vector<double> numbers(const std::string& text) {
+  std::vector<double> v;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) v.push_back(std::stod(item));
+  return v;
+}
+
 // The body part's scale and its wheels from a Trigger .vehicle (XML).
 bool read_vehicle(const std::string& path, double* scale, std::vector<WheelSpec>* wheels,
                   std::string* error) {
@@ -84,18 +108,21 @@ bool read_vehicle(const std::string& path, double* scale, std::vector<WheelSpec>
   std::stringstream text;
   text << in.rdbuf();
   const std::string s = text.str();
-  std::smatch m;
-  const std::regex part_scale(R"re(<part[^>]*?scale="([-0-9.eE]+)")re");
-  if (!std::regex_search(s, m, part_scale)) {
+  std::string value;
+  bool found = false;
+  for (size_t at = s.find("<part"); at != std::string::npos && !found; at = s.find("<part", at + 1))
+    found = tag_attribute(s, at, "scale", &value);
+  if (!found) {
     *error = path + ": no <part scale=...>";
     return false;
   }
-  *scale = std::stod(m[1]);
-  const std::regex wheel(
-      R"re(<wheel[^>]*?pos="([-0-9.eE]+),\s*([-0-9.eE]+),\s*([-0-9.eE]+)"[^>]*?radius="([-0-9.eE]+)")re");
-  for (auto it = std::sregex_iterator(s.begin(), s.end(), wheel); it != std::sregex_iterator(); ++it)
-    wheels->push_back(
-        WheelSpec{{std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3])}, std::stod((*it)[4])});
+  *scale = std::stod(value);
+  for (size_t at = s.find("<wheel"); at != std::string::npos; at = s.find("<wheel", at + 1)) {
+    std::string pos, radius;
+    if (!tag_attribute(s, at, "pos", &pos) || !tag_attribute(s, at, "radius", &radius)) continue;
+    const std::vector<double> p = numbers(pos);
+    if (p.size() == 3) wheels->push_back(WheelSpec{{p[0], p[1], p[2]}, std::stod(radius)});
+  }
   if (wheels->empty()) {
     *error = path + ": no <wheel pos=... radius=...>";
     return false;
