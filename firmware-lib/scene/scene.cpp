@@ -86,7 +86,7 @@ struct TileWindows {
   const Database* db;
   const SceneConfig* c;
   const StreamFrame* frame;
-  const double* xyz;
+  WindowSource src;
   uint32_t n;
   const WindowLattice* lattice;
   bool one_window;
@@ -99,22 +99,16 @@ Status run_tile_window(const TileWindows& t, Status terrain, int64_t k, uint32_t
   job.col = j;
   job.core =
       t.one_window ? FrameRect{-kUnbounded, kUnbounded, -kUnbounded, kUnbounded} : t.lattice->core_rect(k, j);
-  const FrameRect seen = t.one_window ? job.core : t.lattice->seen_rect(k, j);
   job.s0 = s0;
   job.t0 = t0;
-  uint32_t got = 0;
-  bool full = false;
-  for (uint32_t i = 0; i < t.n && !full; ++i) {
-    if (!finite_xyz(t.xyz + 3u * i)) continue;
-    double stz[3];
-    t.frame->to_frame(t.xyz + 3u * i, stz);
-    if (seen.holds(stz[0], stz[1])) full = !append_window_point(w, &got, job, stz, i);
-  }
+  uint32_t missed = 0;
+  const uint32_t got =
+      gather_window(t.src, t.n, t.one_window ? job.core : t.lattice->seen_rect(k, j), job, w, &missed);
   if (got == 0) return Status::kOk;
   ++out.scene->windows;
-  const WindowSource src{t.xyz, true, t.frame};
-  const Status s = full || terrain != Status::kOk ? Status::kWindowOverflow
-                                                  : run_window(*t.db, *t.c, *t.frame, src, job, got, w, out);
+  const Status s = missed > 0 || terrain != Status::kOk
+                       ? Status::kWindowOverflow
+                       : run_window(*t.db, *t.c, *t.frame, t.src, job, got, w, out);
   if (s != Status::kWindowOverflow && s != Status::kTileTooLarge) return s;
   ++out.scene->windows_overflowed;
   return Status::kWindowOverflow;
@@ -207,7 +201,7 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
   uint64_t reported = 0, not_owned = 0;
   const WindowOutput out{collect, &b, &res.stats, &reported, &not_owned};
   res.status = Status::kOk;
-  const TileWindows tile{db_, &c, &frame, xyz, n, &lattice, one_window};
+  const TileWindows tile{db_, &c, &frame, src, n, &lattice, one_window};
   const uint32_t per_strip = one_window ? 1u : strip_columns(c);
   for (int64_t k = 0; k < rows; ++k) {
     for (uint32_t j0 = 0; j0 < cols; j0 += per_strip) {

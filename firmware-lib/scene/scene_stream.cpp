@@ -77,13 +77,8 @@ Status run_strip(StreamBuffers& b, int64_t k, uint32_t j0, uint32_t j1) {
     job.core = b.lattice.core_rect(k, j);
     job.s0 = strip.s0;  // the strip's local frame, in which its terrain lies
     job.t0 = strip.t0;
-    const FrameRect seen = b.lattice.seen_rect(k, j);
-    uint32_t got = 0, missed = 0;
-    for (uint32_t i = 0; i < b.ring.count; ++i) {
-      const double* p = b.ring.stz + 3u * static_cast<size_t>(i);
-      if (!seen.holds(p[0], p[1])) continue;
-      if (!append_window_point(b.window, &got, job, p, i)) ++missed;
-    }
+    uint32_t missed = 0;
+    const uint32_t got = gather_window(src, b.ring.count, b.lattice.seen_rect(k, j), job, b.window, &missed);
     if (got == 0) continue;
     ++b.stats.windows;
     Status s = missed > 0 || terrain != Status::kOk

@@ -273,36 +273,43 @@ FrameRect strip_rect(const WindowLattice& lattice, int64_t k, uint32_t j0, uint3
 
 namespace {
 
-// Calls f(p) with the local float point p of each of src's n points that
-// lies in `seen`, in index order. The stream's buffer holds finite frame
-// points already; a tile's world points may be anything.
+// Calls f(p) with the local float point p (frame minus (s0, t0)) of each
+// of src's n points that lies in `seen`.
 template <class F>
-void for_strip_points(const WindowSource& src, uint32_t n, const FrameRect& seen, double s0, double t0,
+void for_local_points(const WindowSource& src, uint32_t n, const FrameRect& seen, double s0, double t0,
                       F&& f) {
-  float p[3];
-  for (uint32_t i = 0; i < n; ++i) {
-    double world[3];
-    const double* stz = src.data + 3u * static_cast<size_t>(i);
-    if (src.world) {
-      if (!finite_xyz(stz)) continue;
-      src.frame->to_frame(stz, world);
-      stz = world;
-    }
-    if (!seen.holds(stz[0], stz[1])) continue;
-    p[0] = static_cast<float>(stz[0] - s0);
-    p[1] = static_cast<float>(stz[1] - t0);
-    p[2] = static_cast<float>(stz[2]);
+  for_points_in(src, n, seen, [&](const double* stz, uint32_t) {
+    const float p[3] = {static_cast<float>(stz[0] - s0), static_cast<float>(stz[1] - t0),
+                        static_cast<float>(stz[2])};
     f(p);
-  }
+  });
 }
 
 }  // namespace
+
+uint32_t gather_window(const WindowSource& src, uint32_t n, const FrameRect& seen, const WindowJob& job,
+                       WindowBuffers& b, uint32_t* missed) {
+  uint32_t got = 0;
+  *missed = 0;
+  for_points_in(src, n, seen, [&](const double* stz, uint32_t i) {
+    if (got >= b.capacity) {
+      ++*missed;
+      return;
+    }
+    float* p = b.local + 3u * static_cast<size_t>(got);
+    p[0] = static_cast<float>(stz[0] - job.s0);
+    p[1] = static_cast<float>(stz[1] - job.t0);
+    p[2] = static_cast<float>(stz[2]);
+    b.source[got++] = i;
+  });
+  return got;
+}
 
 Status build_strip_terrain(const SceneConfig& c, const WindowSource& src, uint32_t n, const FrameRect& seen,
                            double s0, double t0, WindowBuffers& b, SceneStats* st) {
   float lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   uint32_t inside = 0;
-  for_strip_points(src, n, seen, s0, t0, [&](const float* p) {
+  for_local_points(src, n, seen, s0, t0, [&](const float* p) {
     ++inside;
     for (int a = 0; a < 2; ++a) {
       lo[a] = p[a] < lo[a] ? p[a] : lo[a];
@@ -311,8 +318,8 @@ Status build_strip_terrain(const SceneConfig& c, const WindowSource& src, uint32
   });
   if (inside == 0) return Status::kEmptyCloud;
   if (!terrain_begin(b.terrain, c.terrain_cell, lo, hi)) return Status::kTileTooLarge;
-  for_strip_points(src, n, seen, s0, t0, [&](const float* p) { terrain_add_lowest(b.terrain, p); });
-  for_strip_points(src, n, seen, s0, t0, [&](const float* p) { terrain_add_low_band(b.terrain, p); });
+  for_local_points(src, n, seen, s0, t0, [&](const float* p) { terrain_add_lowest(b.terrain, p); });
+  for_local_points(src, n, seen, s0, t0, [&](const float* p) { terrain_add_low_band(b.terrain, p); });
   const uint32_t windows = terrain_finish(b.terrain, scene_terrain_params(c), nullptr);
   st->terrain_cells = add_saturated(st->terrain_cells, b.terrain.nx * b.terrain.ny);
   st->terrain_windows = add_saturated(st->terrain_windows, windows);

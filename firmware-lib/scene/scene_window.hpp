@@ -1,8 +1,8 @@
 // One window of a scene: the stages every scene path shares (the tile API
 // and the stream): terrain, objects, size gates, the ownership rule, then
 // recognition of each owned vehicle candidate, reported to a sink. The
-// window's points come in through append_window_point from wherever the
-// caller keeps them (the stream's buffer, a caller's tile).
+// window's points are gathered (gather_window) from wherever the caller
+// keeps them (the stream's buffer, a caller's tile), through a WindowSource.
 #pragma once
 #include <cstdint>
 
@@ -91,19 +91,29 @@ FrameRect strip_rect(const WindowLattice& lattice, int64_t k, uint32_t j0, uint3
 Status build_strip_terrain(const SceneConfig& c, const WindowSource& src, uint32_t n, const FrameRect& seen,
                            double s0, double t0, WindowBuffers& b, SceneStats* st);
 
-// Appends one point (stream frame stz, source index) to the window's
-// local buffer; false when the window is full.
-inline bool append_window_point(WindowBuffers& b, uint32_t* n, const WindowJob& job, const double* stz,
-                                uint32_t source) {
-  if (*n >= b.capacity) return false;
-  float* p = b.local + 3u * static_cast<size_t>(*n);
-  p[0] = static_cast<float>(stz[0] - job.s0);
-  p[1] = static_cast<float>(stz[1] - job.t0);
-  p[2] = static_cast<float>(stz[2]);
-  b.source[*n] = source;
-  ++*n;
-  return true;
+// Calls f(stz, i) with the stream-frame point of each of src's n points
+// that lies in `seen`, in index order. The stream's buffer holds finite
+// frame points already; a tile's world points may be anything (non-finite
+// ones are skipped).
+template <class F>
+void for_points_in(const WindowSource& src, uint32_t n, const FrameRect& seen, F&& f) {
+  for (uint32_t i = 0; i < n; ++i) {
+    double world[3];
+    const double* stz = src.data + 3u * static_cast<size_t>(i);
+    if (src.world) {
+      if (!finite_xyz(stz)) continue;
+      src.frame->to_frame(stz, world);
+      stz = world;
+    }
+    if (seen.holds(stz[0], stz[1])) f(stz, i);
+  }
 }
+
+// Gathers the points of src within `seen` into the window's local buffer,
+// in the job's local frame; returns how many it holds, *missed how many did
+// not fit (the window is then lost: kWindowOverflow).
+uint32_t gather_window(const WindowSource& src, uint32_t n, const FrameRect& seen, const WindowJob& job,
+                       WindowBuffers& b, uint32_t* missed);
 
 // Runs the stages on the window's n points, over the terrain its strip
 // built (b.terrain, in the job's local frame), and reports the objects it
