@@ -10,6 +10,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "spinhash/scene_fields.h"
+
 #include "spinhash/limits.hpp"
 
 namespace spinhash::pipeline {
@@ -212,38 +214,26 @@ uint32_t add32(uint32_t a, uint32_t b) {
   return s > 0xFFFFFFFFull ? 0xFFFFFFFFu : static_cast<uint32_t>(s);
 }
 
-// Sums one band's counts into the tile's.
+// Sums one band's counts into the tile's, field by field from the one list
+// (scene_fields.h): counts add (32-bit ones saturate), positions along the
+// line take the furthest, the workspace is the tile's own (not a sum).
+void add_field_U32(uint32_t& into, uint32_t b) { into = add32(into, b); }
+void add_field_U64(uint64_t& into, uint64_t b) { into += b; }
+void add_field_F64(double& into, double b) { into = std::max(into, b); }
+void add_field_SIZE(size_t&, size_t) {}
+void add_field_KINDS(uint32_t (&into)[kObjectKinds], const uint32_t (&b)[kObjectKinds]) {
+  for (uint32_t k = 0; k < kObjectKinds; ++k) into[k] = add32(into[k], b[k]);
+}
+void add_field_SCENE(SceneStats& into, const SceneStats& b) {
+#define SPINHASH_ADD(kind, name, json) add_field_##kind(into.name, b.name);
+  SPINHASH_SCENE_STATS_FIELDS(SPINHASH_ADD)
+#undef SPINHASH_ADD
+}
+
 void accumulate(StreamStats& into, const StreamStats& b) {
-  SceneStats& s = into.scene;
-  const SceneStats& t = b.scene;
-  s.points_in = add32(s.points_in, t.points_in);
-  s.points_nonfinite = add32(s.points_nonfinite, t.points_nonfinite);
-  s.points_ground = add32(s.points_ground, t.points_ground);
-  s.points_in_objects = add32(s.points_in_objects, t.points_in_objects);
-  s.points_fragments = add32(s.points_fragments, t.points_fragments);
-  s.terrain_cells = add32(s.terrain_cells, t.terrain_cells);
-  s.terrain_windows = add32(s.terrain_windows, t.terrain_windows);
-  s.segment_cells = add32(s.segment_cells, t.segment_cells);
-  s.components = add32(s.components, t.components);
-  s.objects_dropped = add32(s.objects_dropped, t.objects_dropped);
-  s.windows = add32(s.windows, t.windows);
-  s.windows_overflowed = add32(s.windows_overflowed, t.windows_overflowed);
-  for (uint32_t k = 0; k < kObjectKinds; ++k)
-    s.objects_by_kind[k] = add32(s.objects_by_kind[k], t.objects_by_kind[k]);
-  s.recognition_hypotheses += t.recognition_hypotheses;
-  s.recognition_candidates += t.recognition_candidates;
-  into.points_pushed += b.points_pushed;
-  into.points_outside += b.points_outside;
-  into.points_late += b.points_late;
-  into.points_glitch += b.points_glitch;
-  into.points_overflow += b.points_overflow;
-  into.windows += b.windows;
-  into.windows_overflowed += b.windows_overflowed;
-  into.points_in_overflowed += b.points_in_overflowed;
-  into.objects_reported += b.objects_reported;
-  into.objects_not_owned += b.objects_not_owned;
-  into.furthest_along = std::max(into.furthest_along, b.furthest_along);
-  into.done_until = std::max(into.done_until, b.done_until);
+#define SPINHASH_ADD(kind, name, json) add_field_##kind(into.name, b.name);
+  SPINHASH_STREAM_STATS_FIELDS(SPINHASH_ADD)
+#undef SPINHASH_ADD
 }
 
 struct FreeDelete {
