@@ -228,27 +228,48 @@ float terrain_height_at(const TerrainGrid& g, float x, float y) {
   return g.surface[cell_coord(y, g.y0, g.cell, g.ny) * g.nx + cell_coord(x, g.x0, g.cell, g.nx)];
 }
 
-bool terrain_begin(TerrainGrid& g, float cell, const float* lo, const float* hi) {
-  if (!fit_xy_bounds(lo, hi, cell, g)) return false;
+namespace {
+
+void clear_sums(TerrainGrid& g) {
   const uint32_t cells = g.nx * g.ny;
   for (uint32_t c = 0; c < cells; ++c) {
     g.value[c] = NAN;     // lowest z
     g.scratch[c] = 0.0f;  // low band: sum
     g.opened[c] = 0.0f;   // low band: count
   }
+}
+
+}  // namespace
+
+bool terrain_begin(TerrainGrid& g, float cell, const float* lo, const float* hi) {
+  if (!fit_xy_bounds(lo, hi, cell, g)) return false;
+  clear_sums(g);
   return true;
 }
 
-void terrain_add_lowest(TerrainGrid& g, const float* p) {
-  const uint32_t c = terrain_cell_index(g, p);
-  if (no_data(g.value[c]) || p[2] < g.value[c]) g.value[c] = p[2];
+bool terrain_begin_cells(TerrainGrid& g, float cell, float x0, float y0, uint32_t nx, uint32_t ny) {
+  if (nx == 0 || ny == 0 || static_cast<uint64_t>(nx) * ny > g.max_cells) return false;
+  g.cell = cell;
+  g.x0 = x0;
+  g.y0 = y0;
+  g.nx = nx;
+  g.ny = ny;
+  clear_sums(g);
+  return true;
 }
+
+void terrain_put_cell(TerrainGrid& g, uint32_t ix, uint32_t iy, float lowest, float band_sum, float band_count) {
+  const uint32_t c = iy * g.nx + ix;
+  g.value[c] = lowest;
+  g.scratch[c] = band_sum;
+  g.opened[c] = band_count;
+}
+
+void terrain_add_lowest(TerrainGrid& g, const float* p) { terrain_lowest(g.value[terrain_cell_index(g, p)], p[2]); }
 
 void terrain_add_low_band(TerrainGrid& g, const float* p) {
   const uint32_t c = terrain_cell_index(g, p);
-  if (p[2] > g.value[c] + kTerrainLowBand) return;
-  g.scratch[c] += p[2] - g.value[c];  // relative to the minimum: small sums, no float drift
-  g.opened[c] += 1.0f;
+  terrain_low_band(g.value[c], p[2], g.scratch[c], g.opened[c]);
 }
 
 uint32_t terrain_finish(TerrainGrid& g, const TerrainParams& params, uint32_t* cells_ground) {

@@ -6,6 +6,7 @@
 // off the ground when the opening lowers it by more than the slope allowance
 // of that window. Memory: a few floats per grid cell, carved by the caller.
 #pragma once
+#include <cmath>
 #include <cstdint>
 
 #include "spinhash/arena.hpp"
@@ -64,6 +65,12 @@ Status classify_terrain(const float* xyz, uint32_t n, const TerrainParams& param
 // add_low_band, finish (returns the PMF windows run), then the heights of
 // any points within the footprint (returns how many are ground).
 bool terrain_begin(TerrainGrid& grid, float cell, const float* lo, const float* hi);
+// Or begin over nx x ny cells from (x0, y0), a multiple of `cell`, and put
+// each cell's sums (terrain_lowest, then terrain_low_band, over its points)
+// with terrain_put_cell: the stream keeps its cells' sums, not the points.
+bool terrain_begin_cells(TerrainGrid& grid, float cell, float x0, float y0, uint32_t nx, uint32_t ny);
+void terrain_put_cell(TerrainGrid& grid, uint32_t ix, uint32_t iy, float lowest, float band_sum,
+                      float band_count);
 void terrain_add_lowest(TerrainGrid& grid, const float* p);
 void terrain_add_low_band(TerrainGrid& grid, const float* p);
 uint32_t terrain_finish(TerrainGrid& grid, const TerrainParams& params, uint32_t* cells_ground);
@@ -75,6 +82,18 @@ uint32_t terrain_heights(const TerrainGrid& grid, const float* xyz, uint32_t n, 
 float terrain_height_at(const TerrainGrid& grid, float x, float y);
 
 bool terrain_params_valid(const TerrainParams& p);
+
+// A cell's sums, point by point: its lowest z (NaN: none yet), then, once
+// that is final, the points within kTerrainLowBand of it (relative to it:
+// small sums, no float drift). The cell's value is lowest + sum / count.
+inline void terrain_lowest(float& lowest, float z) {
+  if (std::isnan(lowest) || z < lowest) lowest = z;
+}
+inline void terrain_low_band(float lowest, float z, float& sum, float& count) {
+  if (z > lowest + kTerrainLowBand) return;
+  sum += z - lowest;
+  count += 1.0f;
+}
 
 // out = min (erode) or max (dilate) of `in` over 2r + 1 cells along each
 // row (along_x) or column of an nx x ny grid, cells without data (NaN)

@@ -1,6 +1,7 @@
 // The stream's buffer: points in stream-frame doubles (s, t, z), in arrival
-// order, awaiting the windows that need them. Compacted after each row of
-// windows, so it holds only what later windows still see; capacity fixed.
+// order, awaiting the windows and terrain cells that need them. Compacted
+// after each row of windows, so it holds only what later rows still need;
+// capacity fixed.
 #pragma once
 #include <cstdint>
 
@@ -23,12 +24,13 @@ struct PointRing {
     ++count;
     return true;
   }
-  // Keeps the points at or past s_keep, in order.
-  void drop_before(double s_keep) {
+  // Keeps the points keep(p) accepts, in order.
+  template <class Keep>
+  void keep_if(Keep&& keep) {
     uint32_t kept = 0;
     for (uint32_t i = 0; i < count; ++i) {
       const double* p = stz + 3u * static_cast<size_t>(i);
-      if (p[0] < s_keep) continue;
+      if (!keep(p)) continue;
       if (kept != i)
         for (int a = 0; a < 3; ++a) stz[3u * static_cast<size_t>(kept) + a] = p[a];
       ++kept;

@@ -103,7 +103,7 @@ Status run_tile_window(const TileWindows& t, Status terrain, int64_t k, uint32_t
   job.t0 = t0;
   uint32_t missed = 0;
   const uint32_t got =
-      gather_window(t.src, t.n, t.one_window ? job.core : t.lattice->seen_rect(k, j), job, w, &missed);
+      gather_window(t.src, t.n, t.one_window ? job.core : t.lattice->gather_rect(k, j), job, w, &missed);
   if (got == 0) return Status::kOk;
   ++out.scene->windows;
   const Status s = missed > 0 || terrain != Status::kOk
@@ -193,6 +193,7 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
   WindowLattice lattice;
   lattice.core = one_window ? kUnbounded : static_cast<double>(c.window_core);
   lattice.margin = static_cast<double>(c.window_margin);
+  lattice.object_margin = static_cast<double>(c.object_margin);
   lattice.own_min = 0.0;
   lattice.own_max = one_window ? kUnbounded : (std::floor(extent[1] / core) + 1.0) * core;
   const int64_t rows = one_window ? 1 : lattice.row_of(extent[0]) + 1;

@@ -25,6 +25,14 @@ bool multiple_of(float v, float cell) {
   return std::fabs(k - std::round(k)) < 1e-4f;
 }
 
+// A window's objects come whole and a cut one never passes the size gates:
+// a cut object owned by the core spans twice the object margin, which no
+// footprint within max_length x max_width reaches (its diagonal). The
+// terrain sees at least as far.
+bool objects_whole(const SceneConfig& c) {
+  return 2.0f * c.object_margin >= std::hypot(c.max_length, c.max_width) && c.object_margin <= c.window_margin;
+}
+
 }  // namespace
 
 bool scene_config_valid(const SceneConfig& c) noexcept {
@@ -34,6 +42,7 @@ bool scene_config_valid(const SceneConfig& c) noexcept {
 #undef SPINHASH_CHECK_RANGE
   return ok && required_workspace_bytes(scene_object_config(c)) > 0 &&
          multiple_of(c.window_core, c.terrain_cell) && multiple_of(c.window_core, c.segment_cell) &&
+         multiple_of(c.window_margin, c.terrain_cell) && objects_whole(c) &&
          c.terrain_window >= c.terrain_cell && c.terrain_dh_max >= c.terrain_dh0 &&
          c.max_length >= c.min_length && c.max_width >= c.min_width && c.max_height >= c.min_height;
 }

@@ -1,7 +1,9 @@
 // SceneStream: points pushed in along-track order (lag bounded by max_lag)
 // into a fixed buffer; each row of windows runs once no point can still
-// arrive in its seen rectangles, through the window stages the tile API
-// shares (scene_window.hpp), and the buffer forgets what later rows do not see.
+// arrive in its seen rectangles: the row's terrain cells are summed
+// (terrain_cells.hpp), then its windows run through the stages the tile API
+// shares (scene_window.hpp), and the buffer forgets the points later rows
+// do not gather (their terrain is in the cells).
 #include "spinhash/scene_stream.hpp"
 
 #include <cmath>
@@ -9,6 +11,7 @@
 
 #include "scene/point_ring.hpp"
 #include "scene/scene_window.hpp"
+#include "scene/terrain_cells.hpp"
 #include "spinhash/limits.hpp"
 
 namespace spinhash {
@@ -22,6 +25,7 @@ struct StreamBuffers {
   WindowLattice lattice;
   WindowBuffers window;
   PointRing ring;
+  TerrainCells cells;
   double pending[3u * kJumpConfirmPoints] = {};  // a jump awaiting confirmation (frame coordinates)
   uint32_t pending_count = 0;
   bool origin_set = false;
@@ -39,12 +43,31 @@ const StreamStats kNoStreamStats{};  // stats() before init
 Status carve(Arena& arena, const StreamConfig& c, StreamBuffers& b) {
   b.window.carve(arena, c.scene);
   b.ring.carve(arena, c.max_buffered_points);
+  const double margin = static_cast<double>(c.scene.window_margin);
+  b.cells.carve(arena, static_cast<double>(c.scene.terrain_cell),
+                static_cast<double>(c.scene.window_core) + 2.0 * margin,
+                static_cast<double>(c.own_max) - static_cast<double>(c.own_min) + 2.0 * margin);
   return arena.overflowed() ? Status::kWorkspaceTooSmall : Status::kOk;
 }
 
-// The along-track start of what rows from `row` on still see.
+// The along-track start of the points rows from `row` on still gather.
 double needed_from(const StreamBuffers& b, int64_t row) {
-  return static_cast<double>(row) * b.lattice.core - b.lattice.margin;
+  return static_cast<double>(row) * b.lattice.core - b.lattice.object_margin;
+}
+
+// Before this along track a point comes too late: its terrain cell is
+// summed (or no window gathers it).
+double late_before(const StreamBuffers& b) {
+  const double gathered = needed_from(b, b.next_row);
+  return b.cells.started && b.cells.summed_edge() > gathered ? b.cells.summed_edge() : gathered;
+}
+
+// Keeps the points a later row gathers, and those whose terrain cell is
+// not summed yet (points across beyond the gathered band count only there).
+void forget_done(StreamBuffers& b) {
+  const double s_keep = needed_from(b, b.next_row), summed = b.cells.summed_edge();
+  const double t_lo = b.lattice.own_min - b.lattice.object_margin, t_hi = b.lattice.own_max + b.lattice.object_margin;
+  b.ring.keep_if([&](const double* p) { return p[0] >= s_keep && ((p[1] >= t_lo && p[1] < t_hi) || p[0] >= summed); });
 }
 
 // Keeps the worse of two outcomes: a lost window outranks a full list.
@@ -66,8 +89,8 @@ Status run_strip(StreamBuffers& b, int64_t k, uint32_t j0, uint32_t j1) {
   const WindowOutput out{b.sink, b.sink_context, &b.stats.scene, &b.stats.objects_reported,
                          &b.stats.objects_not_owned};
   const FrameRect strip = strip_rect(b.lattice, k, j0, j1);
-  const Status terrain = build_strip_terrain(b.config.scene, src, b.ring.count, strip, strip.s0, strip.t0,
-                                             b.window, &b.stats.scene);
+  const Status terrain = build_strip_terrain(b.config.scene, b.cells, strip, strip.s0, strip.t0, b.window,
+                                             &b.stats.scene);
   if (terrain == Status::kEmptyCloud) return Status::kOk;  // nothing to see here
   Status status = Status::kOk;
   for (uint32_t j = j0; j < j1; ++j) {
@@ -78,7 +101,7 @@ Status run_strip(StreamBuffers& b, int64_t k, uint32_t j0, uint32_t j1) {
     job.s0 = strip.s0;  // the strip's local frame, in which its terrain lies
     job.t0 = strip.t0;
     uint32_t missed = 0;
-    const uint32_t got = gather_window(src, b.ring.count, b.lattice.seen_rect(k, j), job, b.window, &missed);
+    const uint32_t got = gather_window(src, b.ring.count, b.lattice.gather_rect(k, j), job, b.window, &missed);
     if (got == 0) continue;
     ++b.stats.windows;
     Status s = missed > 0 || terrain != Status::kOk
@@ -90,8 +113,11 @@ Status run_strip(StreamBuffers& b, int64_t k, uint32_t j0, uint32_t j1) {
   return status;
 }
 
-// Runs the windows of row k over the buffer, strip by strip.
+// Sums row k's terrain cells, then runs its windows over the buffer, strip
+// by strip.
 Status run_row(StreamBuffers& b, int64_t k) {
+  const double core = b.lattice.core, margin = b.lattice.margin;
+  b.cells.sum(b.ring, static_cast<double>(k) * core - margin, static_cast<double>(k + 1) * core + margin);
   Status status = Status::kOk;
   const uint32_t cols = b.lattice.columns(), per_strip = strip_columns(b.config.scene);
   for (uint32_t j0 = 0; j0 < cols; j0 += per_strip)
@@ -111,7 +137,7 @@ Status run_complete_rows(StreamBuffers& b) {
     }
     status = worse(status, run_row(b, b.next_row));
     ++b.next_row;
-    b.ring.drop_before(needed_from(b, b.next_row));
+    forget_done(b);
     b.stats.done_until = static_cast<double>(b.next_row) * b.lattice.core;
   }
   return status;
@@ -169,8 +195,8 @@ Status push_one(StreamBuffers& b, const double* xyz) {
     ++b.stats.points_outside;
     return Status::kOk;
   }
-  if (stz[0] < needed_from(b, b.next_row)) {
-    ++b.stats.points_late;  // every window that sees it has run
+  if (stz[0] < late_before(b)) {
+    ++b.stats.points_late;  // beyond the declared lag: its terrain is made, or its windows have run
     return Status::kOk;
   }
   if (stz[0] > b.stats.furthest_along + b.max_jump) return hold_jump(b, stz);
@@ -216,8 +242,10 @@ Status SceneStream::init(const Database* db, const StreamConfig& config, void* w
   b->frame.set_heading(static_cast<double>(config.heading_deg));
   b->lattice.core = static_cast<double>(config.scene.window_core);
   b->lattice.margin = static_cast<double>(config.scene.window_margin);
+  b->lattice.object_margin = static_cast<double>(config.scene.object_margin);
   b->lattice.own_min = static_cast<double>(config.own_min);
   b->lattice.own_max = static_cast<double>(config.own_max);
+  b->cells.start(b->lattice.own_min - b->lattice.margin);
   b->sink = sink;
   b->sink_context = sink_context;
   b->stats.scene.workspace_used = arena.used();
@@ -260,6 +288,7 @@ void SceneStream::reset() noexcept {
   if (buffers_ == nullptr) return;
   StreamBuffers& b = *buffers_;
   b.ring.count = 0;
+  b.cells.start(b.lattice.own_min - b.lattice.margin);
   b.pending_count = 0;
   b.origin_set = false;
   b.flushed = false;

@@ -285,6 +285,14 @@ void for_local_points(const WindowSource& src, uint32_t n, const FrameRect& seen
   });
 }
 
+// The filter over the strip's summed cells, counted.
+Status finish_strip_terrain(const SceneConfig& c, WindowBuffers& b, SceneStats* st) {
+  const uint32_t windows = terrain_finish(b.terrain, scene_terrain_params(c), nullptr);
+  st->terrain_cells = add_saturated(st->terrain_cells, b.terrain.nx * b.terrain.ny);
+  st->terrain_windows = add_saturated(st->terrain_windows, windows);
+  return Status::kOk;
+}
+
 }  // namespace
 
 uint32_t gather_window(const WindowSource& src, uint32_t n, const FrameRect& seen, const WindowJob& job,
@@ -320,10 +328,13 @@ Status build_strip_terrain(const SceneConfig& c, const WindowSource& src, uint32
   if (!terrain_begin(b.terrain, c.terrain_cell, lo, hi)) return Status::kTileTooLarge;
   for_local_points(src, n, seen, s0, t0, [&](const float* p) { terrain_add_lowest(b.terrain, p); });
   for_local_points(src, n, seen, s0, t0, [&](const float* p) { terrain_add_low_band(b.terrain, p); });
-  const uint32_t windows = terrain_finish(b.terrain, scene_terrain_params(c), nullptr);
-  st->terrain_cells = add_saturated(st->terrain_cells, b.terrain.nx * b.terrain.ny);
-  st->terrain_windows = add_saturated(st->terrain_windows, windows);
-  return Status::kOk;
+  return finish_strip_terrain(c, b, st);
+}
+
+Status build_strip_terrain(const SceneConfig& c, const TerrainCells& cells, const FrameRect& seen, double s0,
+                           double t0, WindowBuffers& b, SceneStats* st) {
+  const Status s = cells.fill(seen, s0, t0, c.terrain_cell, b.terrain);
+  return s != Status::kOk ? s : finish_strip_terrain(c, b, st);
 }
 
 Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& frame, const WindowSource& src,

@@ -8,6 +8,7 @@
 
 #include "geometry/terrain.hpp"
 #include "scene/segment.hpp"
+#include "scene/terrain_cells.hpp"
 #include "scene/window_lattice.hpp"
 #include "spinhash/scene_stream.hpp"
 
@@ -90,6 +91,9 @@ FrameRect strip_rect(const WindowLattice& lattice, int64_t k, uint32_t j0, uint3
 // grid's cells and PMF windows into *st.
 Status build_strip_terrain(const SceneConfig& c, const WindowSource& src, uint32_t n, const FrameRect& seen,
                            double s0, double t0, WindowBuffers& b, SceneStats* st);
+// The same from the stream's summed cells (the strip's cells must be summed).
+Status build_strip_terrain(const SceneConfig& c, const TerrainCells& cells, const FrameRect& seen, double s0,
+                           double t0, WindowBuffers& b, SceneStats* st);
 
 // Calls f(stz, i) with the stream-frame point of each of src's n points
 // that lies in `seen`, in index order. The stream's buffer holds finite

@@ -1,7 +1,8 @@
 // The stream frame and the window lattice with its ownership rule: square
-// cores of edge `core` tile the (s, t) plane, each window sees its core plus
-// `margin` on every side, and an object belongs to the window whose
-// half-open core holds its centre. Shared by the stream and the tile API.
+// cores of edge `core` tile the (s, t) plane, each window's terrain sees its
+// core plus `margin` on every side and its objects the core plus
+// `object_margin`, and an object belongs to the window whose half-open core
+// holds its centre. Shared by the stream and the tile API.
 #pragma once
 #include <cmath>
 #include <cstdint>
@@ -45,7 +46,8 @@ struct FrameRect {
 
 struct WindowLattice {
   double core = 32.0;                   // m
-  double margin = 40.0;                 // m
+  double margin = 40.0;                 // m: the terrain's
+  double object_margin = 10.0;          // m: the objects' (at most margin)
   double own_min = 0.0, own_max = 0.0;  // across track, owned
 
   int64_t row_of(double s) const { return static_cast<int64_t>(std::floor(s / core)); }
@@ -61,12 +63,15 @@ struct WindowLattice {
     r.t1 = r.t0 + core < own_max ? r.t0 + core : own_max;
     return r;
   }
-  FrameRect seen_rect(int64_t k, uint32_t j) const {
-    FrameRect r = core_rect(k, j);
-    r.s0 -= margin;
-    r.s1 += margin;
-    r.t0 -= margin;
-    r.t1 += margin;
+  FrameRect seen_rect(int64_t k, uint32_t j) const { return grown(core_rect(k, j), margin); }
+  FrameRect gather_rect(int64_t k, uint32_t j) const { return grown(core_rect(k, j), object_margin); }
+
+ private:
+  static FrameRect grown(FrameRect r, double by) {
+    r.s0 -= by;
+    r.s1 += by;
+    r.t0 -= by;
+    r.t1 += by;
     return r;
   }
 };

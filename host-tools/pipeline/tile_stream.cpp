@@ -34,6 +34,11 @@ constexpr uint64_t kMinSwathCellPoints = 2;
 // margins. Wider tiles are cut into bands, each owning its columns, so the
 // buffer never holds a row across the whole tile.
 constexpr int64_t kBandColumns = 2;
+// The spill's rows along the track: the stream's declared lag, since a row's
+// points are pushed in any order. Shallow rows let the stream run a row of
+// windows soon after its lookahead arrives, so its buffer holds little more
+// than what its windows gather.
+constexpr double kSpillRowDepth = 8.0;  // m
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -41,12 +46,13 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 
 bool finite3(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
-// One temporary file per 32 m cell of the lattice (row along x, column
-// across, y), written through small buffers so that a tile of a thousand
-// cells keeps neither a thousand files open nor its points in memory.
+// One temporary file per cell of the lattice (rows of kSpillRowDepth along
+// x, columns of a window core across, y), written through small buffers so
+// that a tile of thousands of cells keeps neither its files open nor its
+// points in memory.
 class CellSpill {
  public:
-  explicit CellSpill(double core) : core_(core) {
+  CellSpill(double row_depth, double column_width) : row_depth_(row_depth), core_(column_width) {
     std::string pattern = (fs::temp_directory_path() / "spinhash-scene-XXXXXX").string();
     if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a temporary folder");
     dir_ = pattern;
@@ -58,11 +64,13 @@ class CellSpill {
   CellSpill(const CellSpill&) = delete;
   CellSpill& operator=(const CellSpill&) = delete;
 
-  int64_t cell_of(double v) const { return static_cast<int64_t>(std::floor(v / core_)); }
+  int64_t row_of(double x) const { return static_cast<int64_t>(std::floor(x / row_depth_)); }
+  int64_t cell_of(double y) const { return static_cast<int64_t>(std::floor(y / core_)); }
   void append(const double* p) {
-    std::vector<double>& buf = cells_[{cell_of(p[0]), cell_of(p[1])}];
+    const Cell c{row_of(p[0]), cell_of(p[1])};
+    std::vector<double>& buf = cells_[c];
     buf.insert(buf.end(), p, p + 3);
-    if (buf.size() >= 3 * kCellBufferPoints) write_out({cell_of(p[0]), cell_of(p[1])}, buf);
+    if (buf.size() >= 3 * kCellBufferPoints) write_out(c, buf);
   }
   void finish() {
     for (auto& kv : cells_) write_out(kv.first, kv.second);
@@ -88,7 +96,7 @@ class CellSpill {
 
  private:
   using Cell = std::pair<int64_t, int64_t>;
-  static constexpr size_t kCellBufferPoints = 1024;  // 24 KB per cell in memory
+  static constexpr size_t kCellBufferPoints = 256;  // 6 KB per cell in memory
 
   fs::path path(const Cell& c) const {
     return dir_ / ("r" + std::to_string(c.first) + "c" + std::to_string(c.second) + ".xyz");
@@ -103,7 +111,7 @@ class CellSpill {
     buf.shrink_to_fit();
   }
 
-  double core_;
+  double row_depth_, core_;
   fs::path dir_;
   std::map<Cell, std::vector<double>> cells_;  // ordered: rows, then columns
 };
@@ -183,21 +191,26 @@ StreamConfig band_config(const TileStreamOptions& o, const TileExtent& e, const 
   c.own_max = static_cast<float>(static_cast<double>(band_hi + 1 - sw.lo) * core);
   c.swath_min = c.own_min - static_cast<float>(margin);
   c.swath_max = c.own_max + static_cast<float>(margin);
-  c.max_lag = static_cast<float>(core);                           // a row's points come in any order
+  c.max_lag = static_cast<float>(kSpillRowDepth);                // a spill row's points come in any order
   c.max_jump = static_cast<float>(e.xmax - e.xmin + 2.0 * core);  // the tile's extent is known
   const double width = static_cast<double>(sw.hi - sw.lo + 1) * core,
                length = std::max(core, e.xmax - e.xmin);
   const double density = static_cast<double>(e.finite) / (width * length) * kDensitySafety;
-  const double window_area = (core + 2.0 * margin) * (core + 2.0 * margin);
+  // A window gathers its core and object margin; the buffer holds a row's
+  // gathered points, its terrain lookahead and the lag, across the band and
+  // its margins (points across beyond the gathered band are forgotten once
+  // their terrain cells are summed: reserved here, seldom touched).
+  const double gathered = core + 2.0 * o.scene.object_margin;
+  const double window_area = gathered * gathered;
   const double band_width = std::min(width, static_cast<double>(kBandColumns) * core) + 2.0 * margin;
-  const double buffer_area = (2.0 * core + 2.0 * margin) * band_width;
+  const double buffer_area = (core + o.scene.object_margin + margin + kSpillRowDepth) * band_width;
   // The segmentation grid holds a whole window, the terrain grid the band's
   // windows side by side (one strip per row), whatever their size.
   const double seen = core + 2.0 * margin;
   c.scene.max_terrain_cells =
       std::max<uint32_t>(c.scene.max_terrain_cells, grid_cells(band_width, seen, o.scene.terrain_cell));
   c.scene.max_segment_cells =
-      std::max<uint32_t>(c.scene.max_segment_cells, grid_cells(seen, seen, o.scene.segment_cell));
+      std::max<uint32_t>(c.scene.max_segment_cells, grid_cells(gathered, gathered, o.scene.segment_cell));
   if (c.scene.max_tile_points == 0)
     c.scene.max_tile_points =
         static_cast<uint32_t>(std::clamp<double>(density * window_area, kMinWindowPoints, kMaxWindowPoints));
@@ -288,7 +301,7 @@ TileStreamResult stream_tile(const Database& db, host::PointSource& source, cons
                              const ObjectCallback& on_object) {
   TileStreamResult res;
   const auto t0 = std::chrono::steady_clock::now();
-  CellSpill cells(options.scene.window_core);
+  CellSpill cells(kSpillRowDepth, options.scene.window_core);
   TileExtent extent;
   spill(source, options.chunk_points, options.picture_points, cells, extent, res);
   res.read_ms = ms_since(t0);

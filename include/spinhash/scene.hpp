@@ -30,16 +30,21 @@ struct SceneConfig {
   uint32_t top_n = 5;  // ranking entries kept per object
 
   // Windows (scene_stream.hpp): square cores of window_core m tile the
-  // ground; each window sees window_margin m more on every side. The core
-  // is a multiple of terrain_cell and segment_cell, so overlapping windows
-  // share their grid cells. The margin covers half the longest vehicle
-  // (max_length / 2 = 6.5 m) plus the terrain filter's reach (its openings
-  // add up to 31 m at a 24 m window): 40 m. A window sees (64 + 80)^2 m,
-  // 5x its core: 64 m cores halve the work of 32 m ones (12x) on a 1 km
-  // line for the same answers. A tile that fits one window (points and
-  // grids) is one window.
-  float window_core = 64.0f;    // m
+  // ground. A window's terrain sees window_margin m more on every side: half
+  // the longest vehicle (max_length / 2 = 6.5 m) plus the terrain filter's
+  // reach (its openings add up to 31 m at a 24 m window): 40 m. Its objects
+  // are segmented from object_margin m around the core: an object whose
+  // centre is in the core and that the margin cuts spans at least twice the
+  // margin, so at least hypot(max_length, max_width) (13.6 m) gates it out
+  // as too large; a vehicle is always whole. The core and both margins are
+  // multiples of terrain_cell (and the core of segment_cell), so overlapping
+  // windows share their grid cells. A window gathers (32 + 20)^2 m, 2.6x
+  // its core: 32 m cores keep the stream's buffer a third smaller than 64 m
+  // ones for the same answers and less work. A tile that fits one window
+  // (points and grids) is one window.
+  float window_core = 32.0f;    // m
   float window_margin = 40.0f;  // m
+  float object_margin = 10.0f;  // m
 
   // Capacities of one window.
   uint32_t max_tile_points = 1u << 21;  // points a window holds (more: kWindowOverflow, counted)

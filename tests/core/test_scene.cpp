@@ -177,6 +177,7 @@ TEST_CASE(
   const uint32_t n = static_cast<uint32_t>(tile.ground.size());
   SceneConfig cfg;
   cfg.recognizer.max_points = 4096;
+  cfg.object_margin = cfg.window_margin;  // every window gathers the whole 20 m tile
   cfg.max_tile_points = n - 1;
   {
     SceneRun run(&db, cfg);

@@ -83,6 +83,7 @@ StreamConfig strip_config() {
   c.swath_min = c.own_min = -64.0f;
   c.swath_max = c.own_max = 64.0f;
   c.max_lag = 4.0f;
+  c.scene.window_core = 64.0f;  // the strip's vehicles sit on this lattice's core edges
   c.scene.max_tile_points = 400000;
   c.max_buffered_points = 400000;
   return c;

@@ -231,7 +231,7 @@ TEST_CASE(
   }
   SPINHASH_SCENE_CONFIG_FIELDS(SPINHASH_SCENE_FLAG)
 #undef SPINHASH_SCENE_FLAG
-  CHECK(flags == 5);
+  CHECK(flags == 6);
   for (const char* flag : {"--top", "--max-objects"}) {
     INFO("survey flag ", std::string(flag));
     CHECK(survey.out.find(flag) != std::string::npos);

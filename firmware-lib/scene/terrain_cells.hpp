@@ -1,0 +1,50 @@
+// The stream's terrain cells: each buffered point's terrain sums (lowest,
+// then the low band: geometry/terrain.hpp) on the frame's fixed lattice of
+// terrain_cell m, kept as long as a strip of windows still needs them.
+// Summed once, when no point can still arrive in the cell (the row's
+// lookahead), so the buffer keeps points only while a window gathers them
+// (object_margin), not for the terrain filter's reach (window_margin).
+// Along track the slots are a ring over the cell index; across they cover
+// the owned band and its margins.
+#pragma once
+#include <cstdint>
+
+#include "geometry/terrain.hpp"
+#include "scene/point_ring.hpp"
+#include "scene/window_lattice.hpp"
+#include "spinhash/arena.hpp"
+
+namespace spinhash {
+
+struct TerrainCells {
+  float* lowest = nullptr;  // per slot, NaN: no point
+  float* band_sum = nullptr;
+  float* band_count = nullptr;
+  uint32_t along = 0, across = 0;  // slots
+  double cell = 0.5;
+  double t_min = 0.0;       // across: where cell 0 starts
+  int64_t summed_to = 0;    // cells along below this index are summed (the last `along` of them kept)
+  bool started = false;
+
+  // Slots for strips `depth` m deep over `width` m across.
+  void carve(Arena& arena, double cell_m, double depth, double width);
+  void start(double t_lo) {
+    t_min = t_lo;
+    started = false;
+  }
+  int64_t index_along(double s) const;
+  // The along-track edge (m) below which every cell is summed.
+  double summed_edge() const { return static_cast<double>(summed_to) * cell; }
+  // Sums the ring's points in the cells from `from_s` (or where the last
+  // sum ended, if later) up to `to_s` along (both on the lattice).
+  void sum(const PointRing& ring, double from_s, double to_s);
+  // Puts the cells of `rect` (on the lattice) that hold points into grid, in
+  // the local frame at (s0, t0). kOk, kEmptyCloud (none), kTileTooLarge (the
+  // grid has fewer cells than their footprint needs).
+  Status fill(const FrameRect& rect, double s0, double t0, float cell_m, TerrainGrid& grid) const;
+
+ private:
+  uint32_t slot(int64_t i, uint32_t it) const;
+};
+
+}  // namespace spinhash
