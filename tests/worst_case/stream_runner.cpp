@@ -203,16 +203,18 @@ int prepare(const std::string& dir, double side) {
 }
 
 // The stream over the strip: rows along x on absolute multiples of the core
-// (as tile_stream.cpp puts them), two columns across, the default window
-// stages: a 100 m strip is 2 x 2 windows, each seeing all of it.
+// (as tile_stream.cpp puts them), an owned band across that holds the whole
+// strip, the default window stages.
+constexpr float kOwnHalfWidth = 64.0f;  // m across either side of the origin: the 100 m strip
+
 StreamConfig bench_config(const double* first) {
   StreamConfig c;
   const double core = c.scene.window_core;
   c.origin_given = true;
   c.origin[0] = std::floor(first[0] / core) * core;
   c.heading_deg = 0.0f;
-  c.swath_min = c.own_min = -c.scene.window_core;
-  c.swath_max = c.own_max = c.scene.window_core;
+  c.swath_min = c.own_min = -kOwnHalfWidth;
+  c.swath_max = c.own_max = kOwnHalfWidth;
   c.max_lag = 4.0f;
   c.max_buffered_points = kBufferedPoints;
   return c;
