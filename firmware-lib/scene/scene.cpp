@@ -198,7 +198,7 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
   lattice.own_max = one_window ? kUnbounded : (std::floor(extent[1] / core) + 1.0) * core;
   const int64_t rows = one_window ? 1 : lattice.row_of(extent[0]) + 1;
   const uint32_t cols = one_window ? 1u : lattice.columns();
-  WindowSource src{xyz, true, &frame};
+  WindowSource src{xyz, nullptr, &frame};
   uint64_t reported = 0, not_owned = 0;
   const WindowOutput out{collect, &b, &res.stats, &reported, &not_owned};
   res.status = Status::kOk;

@@ -66,8 +66,10 @@ double late_before(const StreamBuffers& b) {
 // not summed yet (points across beyond the gathered band count only there).
 void forget_done(StreamBuffers& b) {
   const double s_keep = needed_from(b, b.next_row), summed = b.cells.summed_edge();
-  const double t_lo = b.lattice.own_min - b.lattice.object_margin, t_hi = b.lattice.own_max + b.lattice.object_margin;
-  b.ring.keep_if([&](const double* p) { return p[0] >= s_keep && ((p[1] >= t_lo && p[1] < t_hi) || p[0] >= summed); });
+  const double t_lo = b.lattice.own_min - b.lattice.object_margin,
+               t_hi = b.lattice.own_max + b.lattice.object_margin;
+  b.ring.keep_if(
+      [&](const double* p) { return p[0] >= s_keep && ((p[1] >= t_lo && p[1] < t_hi) || p[0] >= summed); });
 }
 
 // Keeps the worse of two outcomes: a lost window outranks a full list.
@@ -85,12 +87,12 @@ Status overflowed(StreamBuffers& b, uint32_t points) {
 
 // Runs the windows [j0, j1) of row k, a strip sharing one terrain grid.
 Status run_strip(StreamBuffers& b, int64_t k, uint32_t j0, uint32_t j1) {
-  const WindowSource src{b.ring.stz, false, &b.frame};
+  const WindowSource src{nullptr, &b.ring, &b.frame};
   const WindowOutput out{b.sink, b.sink_context, &b.stats.scene, &b.stats.objects_reported,
                          &b.stats.objects_not_owned};
   const FrameRect strip = strip_rect(b.lattice, k, j0, j1);
-  const Status terrain = build_strip_terrain(b.config.scene, b.cells, strip, strip.s0, strip.t0, b.window,
-                                             &b.stats.scene);
+  const Status terrain =
+      build_strip_terrain(b.config.scene, b.cells, strip, strip.s0, strip.t0, b.window, &b.stats.scene);
   if (terrain == Status::kEmptyCloud) return Status::kOk;  // nothing to see here
   Status status = Status::kOk;
   for (uint32_t j = j0; j < j1; ++j) {
@@ -101,7 +103,8 @@ Status run_strip(StreamBuffers& b, int64_t k, uint32_t j0, uint32_t j1) {
     job.s0 = strip.s0;  // the strip's local frame, in which its terrain lies
     job.t0 = strip.t0;
     uint32_t missed = 0;
-    const uint32_t got = gather_window(src, b.ring.count, b.lattice.gather_rect(k, j), job, b.window, &missed);
+    const uint32_t got =
+        gather_window(src, b.ring.count, b.lattice.gather_rect(k, j), job, b.window, &missed);
     if (got == 0) continue;
     ++b.stats.windows;
     Status s = missed > 0 || terrain != Status::kOk
@@ -191,7 +194,7 @@ Status push_one(StreamBuffers& b, const double* xyz) {
   if (!b.origin_set) start_line(b, xyz);
   double stz[3];
   b.frame.to_frame(xyz, stz);
-  if (std::fabs(stz[2]) > b.max_z || stz[1] < b.swath_min || stz[1] >= b.swath_max) {
+  if (std::fabs(stz[2]) > b.max_z || stz[1] < b.swath_min || stz[1] >= b.swath_max || !within_lattice(stz)) {
     ++b.stats.points_outside;
     return Status::kOk;
   }

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "geometry/terrain.hpp"
+#include "scene/point_ring.hpp"
 #include "scene/segment.hpp"
 #include "scene/terrain_cells.hpp"
 #include "scene/window_lattice.hpp"
@@ -14,18 +15,18 @@
 
 namespace spinhash {
 
-// Exact stream-frame coordinates of a window point's source, by index:
-// world xyz through the frame (a tile) or (s, t, z) already (the stream).
+// The stream-frame coordinates (on the 1 mm lattice) of a window point's
+// source, by index: world xyz through the frame (a tile) or the stream's
+// buffer.
 struct WindowSource {
-  const double* data = nullptr;  // 3 per point
-  bool world = false;
+  const double* world = nullptr;  // 3 per point (a tile), or
+  const PointRing* ring = nullptr;
   const StreamFrame* frame = nullptr;
   void stz(uint32_t i, double* out) const {
-    if (world) {
-      frame->to_frame(data + 3u * i, out);
-    } else {
-      for (int a = 0; a < 3; ++a) out[a] = data[3u * i + a];
-    }
+    if (world)
+      frame->to_lattice(world + 3u * static_cast<size_t>(i), out);
+    else
+      ring->get(i, out);
   }
 };
 
@@ -102,13 +103,9 @@ Status build_strip_terrain(const SceneConfig& c, const TerrainCells& cells, cons
 template <class F>
 void for_points_in(const WindowSource& src, uint32_t n, const FrameRect& seen, F&& f) {
   for (uint32_t i = 0; i < n; ++i) {
-    double world[3];
-    const double* stz = src.data + 3u * static_cast<size_t>(i);
-    if (src.world) {
-      if (!finite_xyz(stz)) continue;
-      src.frame->to_frame(stz, world);
-      stz = world;
-    }
+    double stz[3];
+    if (src.world && !finite_xyz(src.world + 3u * static_cast<size_t>(i))) continue;
+    src.stz(i, stz);
     if (seen.holds(stz[0], stz[1])) f(stz, i);
   }
 }

@@ -30,7 +30,8 @@ template <class F>
 void for_cell_points(const TerrainCells& tc, const PointRing& ring, int64_t i0, int64_t i1, F&& f) {
   const double s0 = static_cast<double>(i0) * tc.cell, s1 = static_cast<double>(i1) * tc.cell;
   for (uint32_t k = 0; k < ring.count; ++k) {
-    const double* p = ring.stz + 3u * static_cast<size_t>(k);
+    double p[3];
+    ring.get(k, p);
     if (p[0] < s0 || p[0] >= s1) continue;
     const double t = std::floor((p[1] - tc.t_min) / tc.cell);
     if (t < 0.0 || t >= static_cast<double>(tc.across)) continue;
@@ -52,7 +53,8 @@ void TerrainCells::sum(const PointRing& ring, double from_s, double to_s) {
       band_sum[c] = 0.0f;
       band_count[c] = 0.0f;
     }
-  for_cell_points(*this, ring, i0, i1, [&](int64_t i, uint32_t it, float z) { terrain_lowest(lowest[slot(i, it)], z); });
+  for_cell_points(*this, ring, i0, i1,
+                  [&](int64_t i, uint32_t it, float z) { terrain_lowest(lowest[slot(i, it)], z); });
   for_cell_points(*this, ring, i0, i1, [&](int64_t i, uint32_t it, float z) {
     const uint32_t c = slot(i, it);
     terrain_low_band(lowest[c], z, band_sum[c], band_count[c]);
@@ -61,7 +63,8 @@ void TerrainCells::sum(const PointRing& ring, double from_s, double to_s) {
   started = true;
 }
 
-Status TerrainCells::fill(const FrameRect& rect, double s0, double t0, float cell_m, TerrainGrid& grid) const {
+Status TerrainCells::fill(const FrameRect& rect, double s0, double t0, float cell_m,
+                          TerrainGrid& grid) const {
   const int64_t i0 = index_along(rect.s0), i1 = index_along(rect.s1);
   const double t_lo = std::floor((rect.t0 - t_min) / cell), t_hi = std::ceil((rect.t1 - t_min) / cell);
   const uint32_t j0 = t_lo < 0.0 ? 0u : static_cast<uint32_t>(t_lo);
@@ -87,7 +90,8 @@ Status TerrainCells::fill(const FrameRect& rect, double s0, double t0, float cel
     for (uint32_t j = lo_j; j <= hi_j; ++j) {
       const uint32_t c = slot(i, j);
       if (!std::isnan(lowest[c]))
-        terrain_put_cell(grid, static_cast<uint32_t>(i - lo_i), j - lo_j, lowest[c], band_sum[c], band_count[c]);
+        terrain_put_cell(grid, static_cast<uint32_t>(i - lo_i), j - lo_j, lowest[c], band_sum[c],
+                         band_count[c]);
     }
   return Status::kOk;
 }

@@ -14,6 +14,21 @@ inline bool finite_xyz(const double* p) {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
+// Every scene path takes the frame's coordinates to a 1 mm lattice: the
+// stream buffers them as 32-bit steps (12 B a point, half the doubles), and
+// the tile API snaps the same way, so both see the same coordinates. Lidar
+// carries millimetres at best (LAS stores 1 mm or 1 cm steps); within
+// kLatticeReach of the origin (int32 millimetres).
+constexpr double kLatticeUnit = 1e-3;        // m
+constexpr double kLatticeReach = 2000000.0;  // m
+inline bool within_lattice(const double* stz) {
+  return std::fabs(stz[0]) < kLatticeReach && std::fabs(stz[1]) < kLatticeReach &&
+         std::fabs(stz[2]) < kLatticeReach;
+}
+inline int32_t lattice_steps(double v) { return static_cast<int32_t>(std::llround(v / kLatticeUnit)); }
+inline double from_steps(int32_t k) { return static_cast<double>(k) * kLatticeUnit; }
+inline double on_lattice(double v) { return from_steps(lattice_steps(v)); }
+
 // s along track, t across (counter-clockwise from s), z up, from an origin.
 struct StreamFrame {
   double origin[3] = {0, 0, 0};
@@ -30,6 +45,11 @@ struct StreamFrame {
     stz[0] = dx * ax + dy * ay;
     stz[1] = -dx * ay + dy * ax;
     stz[2] = xyz[2] - origin[2];
+  }
+  // The same on the 1 mm lattice (the points every window sees).
+  void to_lattice(const double* xyz, double* stz) const {
+    to_frame(xyz, stz);
+    for (int a = 0; a < 3; ++a) stz[a] = on_lattice(stz[a]);
   }
   // A frame offset (ds, dt) -> the world xy offset it spans.
   void offset_to_world(double ds, double dt, double* dx, double* dy) const {

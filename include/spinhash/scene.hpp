@@ -36,15 +36,15 @@ struct SceneConfig {
   // are segmented from object_margin m around the core: an object whose
   // centre is in the core and that the margin cuts spans at least twice the
   // margin, so at least hypot(max_length, max_width) (13.6 m) gates it out
-  // as too large; a vehicle is always whole. The core and both margins are
+  // as too large; a vehicle is always whole (7 m: 2 x 7 > 13.6). The core and both margins are
   // multiples of terrain_cell (and the core of segment_cell), so overlapping
-  // windows share their grid cells. A window gathers (32 + 20)^2 m, 2.6x
+  // windows share their grid cells. A window gathers (32 + 14)^2 m, 2.1x
   // its core: 32 m cores keep the stream's buffer a third smaller than 64 m
   // ones for the same answers and less work. A tile that fits one window
   // (points and grids) is one window.
   float window_core = 32.0f;    // m
   float window_margin = 40.0f;  // m
-  float object_margin = 10.0f;  // m
+  float object_margin = 7.0f;   // m
 
   // Capacities of one window.
   uint32_t max_tile_points = 1u << 21;  // points a window holds (more: kWindowOverflow, counted)

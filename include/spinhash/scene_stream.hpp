@@ -14,7 +14,7 @@
 // decides is the object's footprint box centre taken from its points' exact
 // stream coordinates, so overlapping windows agree on it bit for bit.
 //
-// Memory: a buffer of max_buffered_points points (24 B each) awaiting their
+// Memory: a buffer of max_buffered_points points (12 B each: 1 mm steps) awaiting their
 // windows, plus one window's working set (scene.max_tile_points points):
 // required_stream_workspace_bytes(config), whatever the line's length.
 #pragma once
@@ -46,7 +46,7 @@ struct StreamConfig {
   float max_jump = 500.0f;       // m
   float max_z_offset = 3000.0f;  // m: |z - origin z| beyond this is an outlier (counted)
 
-  uint32_t max_buffered_points = 1u << 23;  // points held awaiting their windows (24 B each)
+  uint32_t max_buffered_points = 1u << 23;  // points held awaiting their windows (12 B each)
 };
 
 // Points that must agree before an along-track jump past max_jump is taken
