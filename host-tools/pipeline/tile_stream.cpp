@@ -70,7 +70,9 @@ class CellSpill {
     const Cell c{row_of(p[0]), cell_of(p[1])};
     std::vector<double>& buf = cells_[c];
     buf.insert(buf.end(), p, p + 3);
+    ++buffered_;
     if (buf.size() >= 3 * kCellBufferPoints) write_out(c, buf);
+    if (buffered_ >= kSpillBufferPoints) finish();  // a wide tile's many cells: all out at once
   }
   void finish() {
     for (auto& kv : cells_) write_out(kv.first, kv.second);
@@ -96,7 +98,8 @@ class CellSpill {
 
  private:
   using Cell = std::pair<int64_t, int64_t>;
-  static constexpr size_t kCellBufferPoints = 256;  // 6 KB per cell in memory
+  static constexpr size_t kCellBufferPoints = 256;     // 6 KB per cell in memory
+  static constexpr size_t kSpillBufferPoints = 1u << 18;  // 6 MB over all cells, whatever the tile's size
 
   fs::path path(const Cell& c) const {
     return dir_ / ("r" + std::to_string(c.first) + "c" + std::to_string(c.second) + ".xyz");
@@ -107,11 +110,13 @@ class CellSpill {
     f.write(reinterpret_cast<const char*>(buf.data()),
             static_cast<std::streamsize>(buf.size() * sizeof(double)));
     if (!f) throw std::runtime_error("cannot write " + path(c).string());
+    buffered_ -= buf.size() / 3;
     buf.clear();
     buf.shrink_to_fit();
   }
 
   double row_depth_, core_;
+  size_t buffered_ = 0;  // points held in the cells' buffers
   fs::path dir_;
   std::map<Cell, std::vector<double>> cells_;  // ordered: rows, then columns
 };
