@@ -3,6 +3,7 @@
 #include <new>
 
 #include "descriptor/spin_image.hpp"
+#include "recognize/class_envelope.hpp"
 #include "recognize/confidence.hpp"
 #include "recognize/search_context.hpp"
 #include "spinhash/config_fields.h"
@@ -112,13 +113,19 @@ bool first_is_confident(const SearchContext& ctx, const Result& result) {
   return is_confident(result, ctx.cfg, ctx.query.count, fit, residual_structure(ctx, first, pose));
 }
 
-// The class tests of the first class's best model under its pose.
-bool first_class_is_confident(const SearchContext& ctx, const Result& result) {
+// The class tests of the first class's best model under its pose, then the
+// scan's shape against the range of the class's members (class_envelope.hpp).
+bool first_class_is_confident(const SearchContext& ctx, const Result& result, const FeatureSet& fs) {
   if (result.class_ranking_count == 0) return false;
-  const uint32_t model = result.ranking[result.class_ranking[0].best_rank].model;
-  const blob::ModelRecord& record = ctx.db.model(model);
-  const ExtentFit fit = extent_fit(ctx.query, record, ctx.buf.best[model].pose);
-  return is_class_confident(result, ctx.cfg, ctx.query.count, fit, scan_density(result.stats.extract, fit));
+  const RankedClass& first = result.class_ranking[0];
+  const uint32_t model = result.ranking[first.best_rank].model;
+  const RigidPose& pose = ctx.buf.best[model].pose;
+  const ExtentFit fit = extent_fit(ctx.query, ctx.db.model(model), pose);
+  const float density = scan_density(result.stats.extract, fit);
+  if (!is_class_confident(result, ctx.cfg, ctx.query.count, fit, density)) return false;
+  const ScanShape shape = measure_scan(ctx.query, ctx.db.model(model), pose, fs.top_above_terrain,
+                                       fs.terrain_sigma, ctx.cfg.sigma_surface, density);
+  return within_envelope(shape, class_envelope(ctx.db, first.vehicle_class), ctx.cfg.max_extent_overhang);
 }
 
 uint32_t rank_models(const Database& db, RecognizerBuffers& b, const double origin[3]) {
@@ -243,7 +250,7 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
   result.confident = first_is_confident(ctx, result);
   result.class_ranking = b.classes;
   result.class_ranking_count = rank_classes(*db_, result, b.classes);
-  result.class_confident = first_class_is_confident(ctx, result);
+  result.class_confident = first_class_is_confident(ctx, result, fs);
   return result;
 }
 
