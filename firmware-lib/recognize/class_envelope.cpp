@@ -67,15 +67,18 @@ ScanShape measure_scan(const QueryFeatures& query, const blob::ModelRecord& lead
   s.on_terrain = top_above_terrain >= 0.0f;
   s.noise = s.on_terrain ? terrain_sigma : sigma_surface;
   if (query.count < 2u) return s;
-  // The two outermost features each side along the model's axes.
-  float lo[2][3], hi[2][3];
+  // The two outermost features each side along the model's axes, and along
+  // the query's vertical (z up, georeferenced): a pose that fits a lower
+  // vehicle may tilt, and the model's z then takes in some of its length.
+  float lo[2][4], hi[2][4];
   for (int k = 0; k < 2; ++k)
-    for (int a = 0; a < 3; ++a) lo[k][a] = kFar, hi[k][a] = -kFar;
+    for (int a = 0; a < 4; ++a) lo[k][a] = kFar, hi[k][a] = -kFar;
   const Eigen::Matrix3f to_model = pose.rotation.transpose();
   for (uint32_t f = 0; f < query.count; ++f) {
-    const Eigen::Vector3f x =
-        to_model * (Eigen::Map<const Eigen::Vector3f>(query.positions + 3u * f) - pose.translation);
-    for (int a = 0; a < 3; ++a) {
+    const Eigen::Map<const Eigen::Vector3f> p(query.positions + 3u * f);
+    const Eigen::Vector3f m = to_model * (p - pose.translation);
+    const float x[4] = {m[0], m[1], m[2], p[2]};
+    for (int a = 0; a < 4; ++a) {
       if (x[a] < lo[1][a]) lo[1][a] = x[a] < lo[0][a] ? lo[0][a] : x[a];
       if (x[a] < lo[0][a]) lo[0][a] = x[a];
       if (x[a] > hi[1][a]) hi[1][a] = x[a] > hi[0][a] ? hi[0][a] : x[a];
@@ -88,8 +91,10 @@ ScanShape measure_scan(const QueryFeatures& query, const blob::ModelRecord& lead
   if (s.on_terrain) {
     s.height = top_above_terrain;
   } else {
-    s.height = hi[1][2] - leader.bbox_min[2];
+    // The scan's vertical span, lifted by how far its lowest features stop
+    // above the leader's bottom face: the top above that bottom.
     s.bottom_gap = lo[1][2] - leader.bbox_min[2];
+    s.height = span(lo[1][3], hi[1][3]) + (s.bottom_gap > 0.0f ? s.bottom_gap : 0.0f);
   }
   return s;
 }

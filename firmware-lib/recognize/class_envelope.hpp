@@ -35,11 +35,12 @@ ClassEnvelope class_envelope(const Database& db, uint32_t vehicle_class);
 // longer and shorter horizontal axis of the pose (the second outermost
 // feature each side: one stray is noise), lower bounds where an occluder
 // hides an end. The height is the top above the terrain when the extractor
-// found terrain: well measured both ways. Without terrain it is the top
-// above the leader's box bottom under the pose, which says the vehicle's
-// height only when the scan shows its lower part: `bottom_gap` says how far
-// above that bottom the scan's lowest features stop (a van's pose sunk
-// under a saloon's scan leaves the van's lower half without points).
+// found terrain: well measured both ways. Without terrain it is the scan's
+// vertical span lifted by `bottom_gap`, how far above the leader's box
+// bottom (under the pose) the scan's lowest features stop: the top above
+// that bottom, which says the vehicle's height only when the scan shows its
+// lower part (a van's pose sunk under a saloon's scan leaves the van's
+// lower half without points).
 struct ScanShape {
   float length = 0.0f;
   float width = 0.0f;

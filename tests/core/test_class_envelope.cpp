@@ -29,6 +29,12 @@ Eigen::Matrix3f yaw_matrix(float yaw) {
   return r;
 }
 
+Eigen::Matrix3f pitch_matrix(float a) {  // about the model's y (its width)
+  Eigen::Matrix3f r;
+  r << std::cos(a), 0.0f, std::sin(a), 0.0f, 1.0f, 0.0f, -std::sin(a), 0.0f, std::cos(a);
+  return r;
+}
+
 RigidPose yawed(float yaw) {
   RigidPose p;
   p.rotation = yaw_matrix(yaw);
@@ -141,6 +147,14 @@ TEST_CASE("a 1.25 m saloon is no van: on terrain, and without terrain under a va
   const ScanShape level = measure_scan(features_of(dense), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 150.0f);
   CHECK(level.height == doctest::Approx(1.25f).epsilon(0.01));
   CHECK_FALSE(within_envelope(level, vans, kEndTolerance));
+  // Posed as that van tilted 7 degrees to follow the saloon's slopes: in the
+  // model's frame the scan spans 1.65 m of z (its length leans), in the
+  // air's vertical still 1.05 m above its lowest row.
+  RigidPose tilted = pose;
+  tilted.rotation = pose.rotation * pitch_matrix(0.12f);
+  const ScanShape leaning = measure_scan(features_of(dense), van_on_ground, tilted, -1.0f, 0.0f, kSigmaSurface, 150.0f);
+  CHECK(leaning.height < 1.3f);
+  CHECK_FALSE(within_envelope(leaning, vans, kEndTolerance));
   // Posed as a van sunk 0.45 m so that the roofs meet: van-high, but the
   // van's lower 0.66 m holds no point, where the side's rows lie 0.1 m apart
   // (the allowance: 3 / sqrt(150) = 0.24 m).
