@@ -184,20 +184,24 @@ Status Recognizer::init(const Database* db, const RecognizerConfig& config, void
 }
 
 Result Recognizer::recognize(const float* xyz, uint32_t count) noexcept {
+  return recognize(xyz, count, ObjectTerrain{});
+}
+
+Result Recognizer::recognize(const float* xyz, uint32_t count, const ObjectTerrain& terrain) noexcept {
   CloudView cloud;
   cloud.xyz_f = xyz;
   cloud.count = count;
-  return run(cloud);
+  return run(cloud, terrain);
 }
 
 Result Recognizer::recognize(const double* xyz, uint32_t count) noexcept {
   CloudView cloud;
   cloud.xyz_d = xyz;
   cloud.count = count;
-  return run(cloud);
+  return run(cloud, ObjectTerrain{});
 }
 
-Result Recognizer::run(const CloudView& cloud) noexcept {
+Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noexcept {
   Result result;
   if (buffers_ == nullptr) return result;  // kNotOpen
   if (cloud.count > 0 && cloud.xyz_f == nullptr && cloud.xyz_d == nullptr) {
@@ -212,6 +216,10 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
   FeatureSet fs;
   result.status = b.extractor.extract(cloud, hint, &fs, &result.stats.extract);
   if (result.status != Status::kOk) return result;
+  if (terrain.top >= 0.0f) {  // the caller's terrain stands for the object ground removal's
+    fs.top_above_terrain = terrain.top;
+    fs.terrain_sigma = terrain.sigma;
+  }
   result.stats.features = fs.count;
   if (fs.count < 2u) {
     result.status = Status::kNotEnoughFeatures;

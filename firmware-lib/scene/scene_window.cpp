@@ -6,7 +6,6 @@
 #include <limits>
 #include <new>
 
-#include "recognize/class_envelope.hpp"
 #include "spinhash/limits.hpp"
 #include "util/heap_sort.hpp"
 
@@ -38,20 +37,6 @@ bool size_agrees(const ObjectShape& o, const blob::ModelRecord& m, float toleran
 // A confident class may differ more from its leader's box: members of a
 // class differ by tens of centimetres, classes by metres.
 constexpr float kClassSizeFactor = 2.0f;
-
-// The object's shape as the tile measures it (its top above the tile's
-// terrain, its footprint) within the range of the class's members
-// (recognize/class_envelope.hpp). The noise is the recognizer's
-// sigma_surface: the scene does not measure it per object.
-bool fits_class(const ObjectShape& o, const Database& db, uint32_t vehicle_class, const RecognizerConfig& rc) {
-  ScanShape s;
-  s.length = o.length();
-  s.width = o.width();
-  s.height = o.hmax;
-  s.on_terrain = true;
-  s.noise = rc.sigma_surface;
-  return within_envelope(s, class_envelope(db, vehicle_class), rc.max_extent_overhang);
-}
 
 // The model's box bottom above the terrain under `pose` (world-aligned,
 // from the object's origin, which lies at (ds, dt) in the window's grid
@@ -184,7 +169,9 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
   const ObjectShape& o = b.shapes[k];
   float* points = b.gathered + 3u * static_cast<size_t>(b.offsets[k]);
   canonical_order(points, o.points);
-  const Result r = b.recognizer.recognize(points, o.points);
+  // The tile's terrain measures the object's top (the class envelope's
+  // height; its noise: the recognizer's sigma_surface, not measured per object).
+  const Result r = b.recognizer.recognize(points, o.points, ObjectTerrain{o.hmax, c.recognizer.sigma_surface});
   out.status = r.status;
   out.stats = r.stats;
   stats->recognition_hypotheses += r.stats.hypotheses;
@@ -216,8 +203,7 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
     out.classes[j] = r.class_ranking[j];
   out.class_confident =
       r.class_confident && out.class_count > 0 &&
-      size_agrees(o, db.model(out.classes[0].model), kClassSizeFactor * c.max_size_mismatch) &&
-      fits_class(o, db, out.classes[0].vehicle_class, c.recognizer);
+      size_agrees(o, db.model(out.classes[0].model), kClassSizeFactor * c.max_size_mismatch);
 }
 
 }  // namespace

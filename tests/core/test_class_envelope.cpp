@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "recognize/class_envelope.hpp"
+#include "spinhash/recognizer.hpp"
 #include "support/geometry_fixtures.hpp"
 #include "support/toy_database.hpp"
 
@@ -197,4 +198,31 @@ TEST_CASE("longer, wider or taller than every member is out; shorter (an occlude
   CHECK_FALSE(within_envelope(s, vans, kEndTolerance));
   s.height = vans.height_max + 0.3f;  // within the top's noise (3 x 0.05) and the boxes' unseen bottom (0.2)
   CHECK(within_envelope(s, vans, kEndTolerance));
+}
+
+TEST_CASE("a caller's terrain decides the class flag by the object's top above it") {
+  const std::vector<double> model = test::toy_vehicle_points(1, 0.05f);  // toy-1, the pickup: 0.3-2.2 m
+  const double t[3] = {-300.0, 80.0, 5.0};
+  RecognizerConfig cfg;
+  host::AlignedBytes ws(required_workspace_bytes(cfg));
+  Recognizer rec;
+  REQUIRE(rec.init(&toy().db, cfg, ws.data(), ws.size()) == Status::kOk);
+  const std::vector<double> view = test::toy_airborne_query(model, 0.4, t, 0.02, 7);
+  std::vector<float> xyz(view.size());
+  for (size_t i = 0; i < view.size(); i += 3)  // relative to the toy's ground, as a scene's objects are
+    for (size_t a = 0; a < 3; ++a) xyz[i + a] = static_cast<float>(view[i + a] - t[a]);
+  const uint32_t n = static_cast<uint32_t>(xyz.size() / 3);
+  const Result bare = rec.recognize(xyz.data(), n);
+  REQUIRE(bare.status == Status::kOk);
+  REQUIRE(bare.class_ranking[0].vehicle_class == static_cast<uint32_t>(VehicleClass::kPickup));
+  CHECK(bare.class_confident);
+  // Its top 2.2 m above the terrain: the pickup's own height.
+  const Result measured = rec.recognize(xyz.data(), n, ObjectTerrain{2.2f, 0.05f});
+  CHECK(measured.class_confident);
+  CHECK(measured.ranking[0].model == bare.ranking[0].model);
+  // The same points said to stand 0.8 m high: no pickup of the database is that low.
+  const Result low = rec.recognize(xyz.data(), n, ObjectTerrain{0.8f, 0.05f});
+  CHECK_FALSE(low.class_confident);
+  CHECK(low.ranking[0].model == bare.ranking[0].model);  // the model ranking is untouched
+  CHECK(low.confident == bare.confident);
 }
