@@ -6,6 +6,7 @@
 #include "recognize/class_envelope.hpp"
 #include "recognize/confidence.hpp"
 #include "recognize/search_context.hpp"
+#include "recognize/sparse_search.hpp"
 #include "spinhash/config_fields.h"
 #include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"
@@ -245,6 +246,11 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
       Pcg32(config_.seed),
       nullptr,
       EvidenceState{}};
+  {
+    const ExtractStats& e = result.stats.extract;
+    const uint32_t dropped = e.points_nonfinite + e.points_ground;
+    ctx.trial_scale = trial_scale(footprint_density(ctx.query, e.points_in > dropped ? e.points_in - dropped : 0u));
+  }
   switch (config_.mode) {
     case Mode::kBran: run_bran(ctx); break;
     case Mode::kSran: run_sran(ctx); break;
