@@ -120,7 +120,8 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   if (n == 0) return Status::kEmptyCloud;
   if (cap_.ground_clearance > 0.0f) {
     TerrainUnder terrain;
-    stats->points_ground = remove_object_ground(m.points, n, cap_.ground_clearance, m.terrain_scratch, &terrain);
+    stats->points_ground =
+        remove_object_ground(m.points, n, cap_.ground_clearance, m.terrain_scratch, &terrain);
     n -= stats->points_ground;
     if (n == 0) return Status::kNotEnoughFeatures;  // nothing stands on the ground
     if (terrain.found) {

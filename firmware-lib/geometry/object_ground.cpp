@@ -237,7 +237,8 @@ void fill_levels(const CellStats& cs) {
 
 }  // namespace
 
-uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* scratch, TerrainUnder* terrain) {
+uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* scratch,
+                              TerrainUnder* terrain) {
   if (terrain != nullptr) *terrain = TerrainUnder{};
   if (n == 0 || !(clearance > 0.0f)) return 0;
   float* lowest = scratch;

@@ -249,7 +249,8 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
   {
     const ExtractStats& e = result.stats.extract;
     const uint32_t dropped = e.points_nonfinite + e.points_ground;
-    ctx.trial_scale = trial_scale(footprint_density(ctx.query, e.points_in > dropped ? e.points_in - dropped : 0u));
+    ctx.trial_scale =
+        trial_scale(footprint_density(ctx.query, e.points_in > dropped ? e.points_in - dropped : 0u));
   }
   switch (config_.mode) {
     case Mode::kBran: run_bran(ctx); break;

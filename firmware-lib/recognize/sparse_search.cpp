@@ -10,7 +10,8 @@ float footprint_density(const QueryFeatures& query, uint32_t points) {
   if (query.count == 0) return 0.0f;
   const float n = static_cast<float>(query.count);
   float mx = 0.0f, my = 0.0f;
-  for (uint32_t f = 0; f < query.count; ++f) mx += query.positions[3u * f], my += query.positions[3u * f + 1u];
+  for (uint32_t f = 0; f < query.count; ++f)
+    mx += query.positions[3u * f], my += query.positions[3u * f + 1u];
   mx /= n, my /= n;
   float sxx = 0.0f, sxy = 0.0f, syy = 0.0f;
   for (uint32_t f = 0; f < query.count; ++f) {

@@ -53,7 +53,8 @@ std::vector<float> seen_box(float l, float w, float h, float base, float lowest,
   for (size_t i = 0; i < box.size(); i += 3) {
     const float z = box[i + 2] + 0.5f * h;  // 0 .. h
     if (z < lowest) continue;
-    const Eigen::Vector3f p = pose.rotation * Eigen::Vector3f(box[i], box[i + 1], base + z) + pose.translation;
+    const Eigen::Vector3f p =
+        pose.rotation * Eigen::Vector3f(box[i], box[i + 1], base + z) + pose.translation;
     out.insert(out.end(), p.data(), p.data() + 3);
   }
   return out;
@@ -108,7 +109,8 @@ blob::ModelRecord box_record(float l, float w, float bottom, float top) {
   return r;
 }
 
-TEST_CASE("the scan's shape: spans along the pose's axes and the top above the terrain or the leader's bottom") {
+TEST_CASE(
+    "the scan's shape: spans along the pose's axes and the top above the terrain or the leader's bottom") {
   const RigidPose pose = yawed(0.7f);
   const blob::ModelRecord saloon = box_record(4.8f, 1.9f, 0.0f, 1.25f);
   const std::vector<float> xyz = seen_box(4.8f, 1.9f, 1.25f, 0.0f, 0.2f, 0.1f, pose);
@@ -117,13 +119,12 @@ TEST_CASE("the scan's shape: spans along the pose's axes and the top above the t
   CHECK(bare.length == doctest::Approx(4.8f).epsilon(0.03));
   CHECK(bare.width == doctest::Approx(1.9f).epsilon(0.06));
   CHECK_FALSE(bare.on_terrain);
-  CHECK(bare.height == doctest::Approx(1.25f).epsilon(0.01));     // the top above the box bottom
+  CHECK(bare.height == doctest::Approx(1.25f).epsilon(0.01));      // the top above the box bottom
   CHECK(bare.bottom_gap == doctest::Approx(0.21f).epsilon(0.05));  // the lowest row seen
   CHECK(bare.noise == kSigmaSurface);
   CHECK(bare.spacing == doctest::Approx(0.1f));  // 1 / sqrt(100 points per m^2)
   // Turned a quarter about z, the spans swap axes; length stays the longer.
-  const RigidPose turned{pose.rotation * yaw_matrix(1.5707963f),
-                         pose.translation};
+  const RigidPose turned{pose.rotation * yaw_matrix(1.5707963f), pose.translation};
   CHECK(measure_scan(q, saloon, turned, -1.0f, 0.0f, kSigmaSurface, 100.0f).length ==
         doctest::Approx(bare.length).epsilon(0.01));
   const ScanShape ground = measure_scan(q, saloon, pose, 1.27f, 0.04f, kSigmaSurface, 100.0f);
@@ -138,14 +139,16 @@ TEST_CASE("a 1.25 m saloon is no van: on terrain, and without terrain under a va
   const std::vector<float> dense = seen_box(4.8f, 1.9f, 1.25f, 0.0f, 0.15f, 0.1f, pose);
   // On terrain, 5 cm noise: the top above the terrain is the measure.
   const blob::ModelRecord van_on_ground = box_record(4.9f, 1.95f, 0.0f, 1.75f);
-  const ScanShape on_ground = measure_scan(features_of(dense), van_on_ground, pose, 1.27f, 0.05f, kSigmaSurface, 150.0f);
+  const ScanShape on_ground =
+      measure_scan(features_of(dense), van_on_ground, pose, 1.27f, 0.05f, kSigmaSurface, 150.0f);
   CHECK_FALSE(within_envelope(on_ground, vans, kEndTolerance));
   ScanShape van = on_ground;  // a fleet van of 1.77 m on the same terrain is one
   van.height = 1.77f;
   CHECK(within_envelope(van, vans, kEndTolerance));
   // Without terrain (150 per m^2, about 0.13 m spacing), posed as a van
   // standing where the saloon stands: its top is 1.25 m above the van's bottom.
-  const ScanShape level = measure_scan(features_of(dense), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 150.0f);
+  const ScanShape level =
+      measure_scan(features_of(dense), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 150.0f);
   CHECK(level.height == doctest::Approx(1.25f).epsilon(0.01));
   CHECK_FALSE(within_envelope(level, vans, kEndTolerance));
   // Posed as that van tilted 7 degrees to follow the saloon's slopes: in the
@@ -153,7 +156,8 @@ TEST_CASE("a 1.25 m saloon is no van: on terrain, and without terrain under a va
   // air's vertical still 1.05 m above its lowest row.
   RigidPose tilted = pose;
   tilted.rotation = pose.rotation * pitch_matrix(0.12f);
-  const ScanShape leaning = measure_scan(features_of(dense), van_on_ground, tilted, -1.0f, 0.0f, kSigmaSurface, 150.0f);
+  const ScanShape leaning =
+      measure_scan(features_of(dense), van_on_ground, tilted, -1.0f, 0.0f, kSigmaSurface, 150.0f);
   CHECK(leaning.height < 1.3f);
   CHECK_FALSE(within_envelope(leaning, vans, kEndTolerance));
   // Posed as a van sunk 0.45 m so that the roofs meet: van-high, but the
@@ -174,8 +178,9 @@ TEST_CASE("a 1.25 m saloon is no van: on terrain, and without terrain under a va
   // The same van's roof alone (a steep view that misses the sides): its
   // height is not measured, and the class is not confirmed.
   const std::vector<float> roof = seen_box(4.9f, 1.95f, 1.75f, 0.0f, 1.7f, 0.35f, pose);
-  CHECK_FALSE(within_envelope(measure_scan(features_of(roof), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 20.0f),
-                              vans, kEndTolerance));
+  CHECK_FALSE(
+      within_envelope(measure_scan(features_of(roof), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 20.0f),
+                      vans, kEndTolerance));
 }
 
 TEST_CASE("longer, wider or taller than every member is out; shorter (an occluded end) is not") {

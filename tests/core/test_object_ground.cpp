@@ -368,7 +368,7 @@ TEST_CASE("the terrain found says the object's top above it and the ground's noi
   std::vector<float> scratch(kObjectGroundScratchFloats);
   TerrainUnder terrain;
   terrain.found = true;
-  CHECK(remove_object_ground(box.data(), static_cast<uint32_t>(box.size() / 3), kClearance, scratch.data(), &terrain) ==
-        0u);
+  CHECK(remove_object_ground(box.data(), static_cast<uint32_t>(box.size() / 3), kClearance, scratch.data(),
+                             &terrain) == 0u);
   CHECK_FALSE(terrain.found);
 }
