@@ -119,9 +119,15 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   stats->points_nonfinite = keep - n;
   if (n == 0) return Status::kEmptyCloud;
   if (cap_.ground_clearance > 0.0f) {
-    stats->points_ground = remove_object_ground(m.points, n, cap_.ground_clearance, m.terrain_scratch);
+    TerrainUnder terrain;
+    stats->points_ground =
+        remove_object_ground(m.points, n, cap_.ground_clearance, m.terrain_scratch, &terrain);
     n -= stats->points_ground;
     if (n == 0) return Status::kNotEnoughFeatures;  // nothing stands on the ground
+    if (terrain.found) {
+      out->top_above_terrain = terrain.top;
+      out->terrain_sigma = terrain.sigma;
+    }
   }
 
   m.voxel_grid.build(m.points, n, params_.cloud_voxel);

@@ -237,7 +237,9 @@ void fill_levels(const CellStats& cs) {
 
 }  // namespace
 
-uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* scratch) {
+uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* scratch,
+                              TerrainUnder* terrain) {
+  if (terrain != nullptr) *terrain = TerrainUnder{};
   if (n == 0 || !(clearance > 0.0f)) return 0;
   float* lowest = scratch;
   const CellStats cs{scratch + kTerrainCells, scratch + 2u * kTerrainCells, scratch + 3u * kTerrainCells};
@@ -276,7 +278,6 @@ uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* sc
   float drop = kClearanceSigmas * sigma;
   drop = drop < kMinClearance ? kMinClearance : (drop > clearance ? clearance : drop);
   auto height = [&](const float* p) { return p[2] - plane.at(p[0], p[1]) - cs.mean[g.cell_of(p)]; };
-  auto on_terrain = [&](const float* p) { return height(p) <= drop; };
   // Terrain is the lowest surface: a flat part of an object (a hood, a
   // pickup's bed) has the rest of the object below it.
   const float below =
@@ -291,11 +292,16 @@ uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* sc
       static_cast<float>(under) > kMaxBelowTerrainShare * static_cast<float>(n))
     return 0;
   uint32_t kept = 0;
+  float top[2] = {0.0f, 0.0f};  // the two highest kept points above their terrain
   for (uint32_t i = 0; i < n; ++i) {
-    if (on_terrain(xyz + 3u * i)) continue;
+    const float h = height(xyz + 3u * i);
+    if (h <= drop) continue;
+    if (h > top[1]) top[1] = h > top[0] ? top[0] : h;
+    if (h > top[0]) top[0] = h;
     for (uint32_t a = 0; a < 3u; ++a) xyz[3u * kept + a] = xyz[3u * i + a];
     ++kept;
   }
+  if (terrain != nullptr && kept > 1u) *terrain = TerrainUnder{true, top[1], sigma};
   return n - kept;
 }
 

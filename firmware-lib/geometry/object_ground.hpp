@@ -44,11 +44,23 @@ constexpr float kMinObjectGroundShare = 0.15f;  // points on the terrain that sa
 constexpr float kMinGroundCellShare = 0.3f;     // occupied cells that are ground, likewise
 constexpr uint32_t kObjectGroundScratchFloats = 4u * kTerrainCells;  // lowest point, mean, spread, count
 
+// What the terrain says about the object standing on it (when `found`): the
+// height of its top above the local terrain, the measure a survey takes
+// best (the roof is sampled from above, the terrain around the vehicle by
+// many points), and the terrain's roughness, the scan's noise.
+struct TerrainUnder {
+  bool found = false;
+  float top = 0.0f;    // m: the second highest kept point above its terrain level (one spike is noise)
+  float sigma = 0.0f;  // m: the ground points' spread about their cells' levels
+};
+
 // When the n points stand on terrain, drops those within kClearanceSigmas of the
 // ground's measured roughness above it (at least kMinClearance, at most
 // `clearance` m), compacting xyz in place, and returns how many went;
 // otherwise (no terrain found, clearance 0) keeps every point and returns 0. `scratch`
 // holds kObjectGroundScratchFloats floats. O(n) with a bounded number of passes.
-uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* scratch);
+// `terrain`, when given, says what the terrain tells of the object.
+uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* scratch,
+                              TerrainUnder* terrain = nullptr);
 
 }  // namespace spinhash

@@ -22,10 +22,19 @@ namespace {
 // look-alikes the W candidates of a query feature spread over them and few
 // draws pair up in one model (1000 procedural models: about 100 hypotheses
 // in 800 draws, against 300-400 at 56).
+// A sparse scan's budget is ctx.trial_scale times the configured one
+// (sparse_search.hpp), at most kMaxTrials: the extension's kTrialExtension
+// times it stays within the draws' 32-bit count.
+uint64_t trial_budget(const SearchContext& ctx) {
+  const uint64_t b = static_cast<uint64_t>(ctx.trial_scale) * ctx.cfg.max_trials;
+  return b < kMaxTrials ? b : kMaxTrials;
+}
+
 bool keep_drawing(const SearchContext& ctx) {
-  const uint32_t drawn = ctx.stats.trials;
-  return drawn < ctx.cfg.max_trials ||  // max_trials <= kMaxTrials: no overflow below
-         (drawn < kTrialExtension * ctx.cfg.max_trials && ctx.stats.hypotheses < ctx.cfg.min_hypotheses);
+  const uint64_t drawn = ctx.stats.trials, budget = trial_budget(ctx);
+  return drawn < budget ||
+         (drawn < kTrialExtension * budget &&
+          ctx.stats.hypotheses < static_cast<uint64_t>(ctx.trial_scale) * ctx.cfg.min_hypotheses);
 }
 
 // The candidates are spread over look-alikes when their perplexity (the
@@ -142,7 +151,7 @@ void run_bran(SearchContext& ctx) {
   }
   transfer_poses(ctx);
   // Candidates spread over look-alikes, or so few poses that the draws were extended.
-  if ((ctx.stats.candidates_spread || ctx.stats.trials > ctx.cfg.max_trials) && !ctx.stats.budget_exhausted)
+  if ((ctx.stats.candidates_spread || ctx.stats.trials > trial_budget(ctx)) && !ctx.stats.budget_exhausted)
     focus_on_leaders(ctx);
 }
 

@@ -79,6 +79,8 @@ uint32_t rank_classes(const Database& db, const Result& r, RankedClass* out);
 // class scores at least min_margin x sqrt(features) lower, the database
 // holds a second class to tell it from, the class is not "unclassified",
 // and the scan is dense enough (kMinClassDensity) with kMinClassFeatures.
+// The recognizer then also asks the scan's shape to lie within the class's
+// envelope (class_envelope.hpp).
 bool is_class_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
                         float density);
 

@@ -3,8 +3,10 @@
 #include <new>
 
 #include "descriptor/spin_image.hpp"
+#include "recognize/class_envelope.hpp"
 #include "recognize/confidence.hpp"
 #include "recognize/search_context.hpp"
+#include "recognize/sparse_search.hpp"
 #include "spinhash/config_fields.h"
 #include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"
@@ -112,13 +114,19 @@ bool first_is_confident(const SearchContext& ctx, const Result& result) {
   return is_confident(result, ctx.cfg, ctx.query.count, fit, residual_structure(ctx, first, pose));
 }
 
-// The class tests of the first class's best model under its pose.
-bool first_class_is_confident(const SearchContext& ctx, const Result& result) {
+// The class tests of the first class's best model under its pose, then the
+// scan's shape against the range of the class's members (class_envelope.hpp).
+bool first_class_is_confident(const SearchContext& ctx, const Result& result, const FeatureSet& fs) {
   if (result.class_ranking_count == 0) return false;
-  const uint32_t model = result.ranking[result.class_ranking[0].best_rank].model;
-  const blob::ModelRecord& record = ctx.db.model(model);
-  const ExtentFit fit = extent_fit(ctx.query, record, ctx.buf.best[model].pose);
-  return is_class_confident(result, ctx.cfg, ctx.query.count, fit, scan_density(result.stats.extract, fit));
+  const RankedClass& first = result.class_ranking[0];
+  const uint32_t model = result.ranking[first.best_rank].model;
+  const RigidPose& pose = ctx.buf.best[model].pose;
+  const ExtentFit fit = extent_fit(ctx.query, ctx.db.model(model), pose);
+  const float density = scan_density(result.stats.extract, fit);
+  if (!is_class_confident(result, ctx.cfg, ctx.query.count, fit, density)) return false;
+  const ScanShape shape = measure_scan(ctx.query, ctx.db.model(model), pose, fs.top_above_terrain,
+                                       fs.terrain_sigma, ctx.cfg.sigma_surface, density);
+  return within_envelope(shape, class_envelope(ctx.db, first.vehicle_class), ctx.cfg.max_extent_overhang);
 }
 
 uint32_t rank_models(const Database& db, RecognizerBuffers& b, const double origin[3]) {
@@ -177,20 +185,24 @@ Status Recognizer::init(const Database* db, const RecognizerConfig& config, void
 }
 
 Result Recognizer::recognize(const float* xyz, uint32_t count) noexcept {
+  return recognize(xyz, count, ObjectTerrain{});
+}
+
+Result Recognizer::recognize(const float* xyz, uint32_t count, const ObjectTerrain& terrain) noexcept {
   CloudView cloud;
   cloud.xyz_f = xyz;
   cloud.count = count;
-  return run(cloud);
+  return run(cloud, terrain);
 }
 
 Result Recognizer::recognize(const double* xyz, uint32_t count) noexcept {
   CloudView cloud;
   cloud.xyz_d = xyz;
   cloud.count = count;
-  return run(cloud);
+  return run(cloud, ObjectTerrain{});
 }
 
-Result Recognizer::run(const CloudView& cloud) noexcept {
+Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noexcept {
   Result result;
   if (buffers_ == nullptr) return result;  // kNotOpen
   if (cloud.count > 0 && cloud.xyz_f == nullptr && cloud.xyz_d == nullptr) {
@@ -205,6 +217,10 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
   FeatureSet fs;
   result.status = b.extractor.extract(cloud, hint, &fs, &result.stats.extract);
   if (result.status != Status::kOk) return result;
+  if (terrain.top >= 0.0f) {  // the caller's terrain stands for the object ground removal's
+    fs.top_above_terrain = terrain.top;
+    fs.terrain_sigma = terrain.sigma;
+  }
   result.stats.features = fs.count;
   if (fs.count < 2u) {
     result.status = Status::kNotEnoughFeatures;
@@ -230,6 +246,12 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
       Pcg32(config_.seed),
       nullptr,
       EvidenceState{}};
+  {
+    const ExtractStats& e = result.stats.extract;
+    const uint32_t dropped = e.points_nonfinite + e.points_ground;
+    ctx.trial_scale =
+        trial_scale(footprint_density(ctx.query, e.points_in > dropped ? e.points_in - dropped : 0u));
+  }
   switch (config_.mode) {
     case Mode::kBran: run_bran(ctx); break;
     case Mode::kSran: run_sran(ctx); break;
@@ -243,7 +265,7 @@ Result Recognizer::run(const CloudView& cloud) noexcept {
   result.confident = first_is_confident(ctx, result);
   result.class_ranking = b.classes;
   result.class_ranking_count = rank_classes(*db_, result, b.classes);
-  result.class_confident = first_class_is_confident(ctx, result);
+  result.class_confident = first_class_is_confident(ctx, result, fs);
   return result;
 }
 

@@ -69,6 +69,7 @@ struct SearchContext {
   Pcg32 rng;
   const float* cumulative = nullptr;  // doublet draw weights (running sums); null = uniform
   EvidenceState evidence;
+  uint32_t trial_scale = 1;  // BRAN's draws' budget x this (sparse_search.hpp)
 
   Candidate* candidates_of(uint32_t feature) const {
     return buf.candidates + static_cast<size_t>(feature) * buf.candidate_stride;

@@ -44,6 +44,12 @@ struct FeatureSet {
   float* normals = nullptr;    // 3 per feature, unit length
   float* spins = nullptr;      // dims per feature, normalised to sum 1
   double origin[3] = {0.0, 0.0, 0.0};
+  // The terrain the object stands on, when the extractor found and dropped it
+  // (ExtractorCapacity::ground_clearance): the object's top above it (the
+  // second highest point; m) and the ground's roughness (m, the scan's noise).
+  // top_above_terrain < 0: no terrain found.
+  float top_above_terrain = -1.0f;
+  float terrain_sigma = 0.0f;
 };
 
 struct ExtractStats {

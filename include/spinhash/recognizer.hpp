@@ -86,17 +86,28 @@ struct RecognizerBuffers;  // the workspace layout (firmware-lib/recognize)
 // Workspace bytes init() needs for `config` (aligned to kBufferAlignment).
 size_t required_workspace_bytes(const RecognizerConfig& config) noexcept;
 
+// The terrain under an object that the caller measured (a scene's terrain
+// classifier): the object's top above it and the terrain's noise, m. The
+// class flag tests the top against the class's envelope (docs/api.md,
+// class_confident) as it does the top above terrain that the object ground
+// removal finds in a cut-out with its ground.
+struct ObjectTerrain {
+  float top = -1.0f;  // m above the terrain; < 0: not measured
+  float sigma = 0.0f;
+};
+
 class Recognizer {
  public:
   Status init(const Database* db, const RecognizerConfig& config, void* workspace,
               size_t workspace_bytes) noexcept;
   Result recognize(const float* xyz, uint32_t count) noexcept;
   Result recognize(const double* xyz, uint32_t count) noexcept;
+  Result recognize(const float* xyz, uint32_t count, const ObjectTerrain& terrain) noexcept;
   size_t used_bytes() const noexcept { return used_bytes_; }
   const RecognizerConfig& config() const noexcept { return config_; }
 
  private:
-  Result run(const CloudView& cloud) noexcept;
+  Result run(const CloudView& cloud, const ObjectTerrain& terrain) noexcept;
 
   const Database* db_ = nullptr;
   RecognizerConfig config_{};

@@ -349,3 +349,26 @@ TEST_CASE(
                                scratch.data()) == 0u);
   }
 }
+
+TEST_CASE("the terrain found says the object's top above it and the ground's noise") {
+  for (float sigma : {0.02f, 0.05f, 0.10f}) {
+    CAPTURE(sigma);
+    uint32_t ground = 0;
+    std::vector<float> pts = box_on_noisy_ground(sigma, &ground);  // a 1.5 m box on level ground
+    const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
+    std::vector<float> scratch(kObjectGroundScratchFloats);
+    TerrainUnder terrain;
+    REQUIRE(remove_object_ground(pts.data(), n, kClearance, scratch.data(), &terrain) > 0u);
+    CHECK(terrain.found);
+    CHECK(terrain.top == doctest::Approx(1.5f).epsilon(0.02));  // the ground's level from thousands of points
+    CHECK(terrain.sigma == doctest::Approx(sigma).epsilon(0.3));
+  }
+  // A bare box: no terrain, nothing said.
+  std::vector<float> box = test::box_surface(4.0f, 2.0f, 1.5f, 0.1f);
+  std::vector<float> scratch(kObjectGroundScratchFloats);
+  TerrainUnder terrain;
+  terrain.found = true;
+  CHECK(remove_object_ground(box.data(), static_cast<uint32_t>(box.size() / 3), kClearance, scratch.data(),
+                             &terrain) == 0u);
+  CHECK_FALSE(terrain.found);
+}
