@@ -38,7 +38,8 @@ mkdir -p "$out"
 out=$(cd "$out" && pwd)
 stages=(terrain segmentation recognition)
 # The stages' functions as callgrind names them (demangled).
-declare -A functions=([strip_terrain]='spinhash::build_strip_terrain(' [heights]='spinhash::terrain_heights('
+declare -A functions=([cells]='spinhash::TerrainCells::sum(' [strip_terrain]='spinhash::build_strip_terrain('
+                      [heights]='spinhash::terrain_heights('
                       [segmentation]='spinhash::segment_objects('
                       [recognition]='spinhash::Recognizer::recognize(float const*')
 
@@ -55,8 +56,8 @@ annotated=$(callgrind_annotate --inclusive=yes --threshold=100 "$cg")
 inclusive() {  # "  1,234 (12.3%)  file:function [object]": the first line naming the function
   grep -F "$1" <<< "$annotated" | grep -v '__wrap_' | head -1 | awk '{gsub(",", "", $1); print $1}'
 }
-for s in strip_terrain heights segmentation recognition; do host[$s]=$(inclusive "${functions[$s]}"); done
-host[terrain]=$(( host[strip_terrain] + host[heights] ))  # each strip's grid + each window's heights
+for s in cells strip_terrain heights segmentation recognition; do host[$s]=$(inclusive "${functions[$s]}"); done
+host[terrain]=$(( host[cells] + host[strip_terrain] + host[heights] ))  # cell sums, strip grids, window heights
 # The rest, split on the host only: into the frame and the buffer (push and
 # flush less run_row), each window's points gathered from the buffer
 # (run_row less run_window), and per window the object boxes, gathering and
@@ -64,7 +65,7 @@ host[terrain]=$(( host[strip_terrain] + host[heights] ))  # each strip's grid + 
 run_row=$(inclusive '::run_row(spinhash::StreamBuffers&')
 run_window=$(inclusive 'spinhash::run_window(')
 host[rest_buffer]=$(( host[total] - run_row ))
-host[rest_gather]=$(( run_row - run_window - host[strip_terrain] ))
+host[rest_gather]=$(( run_row - run_window - host[strip_terrain] - host[cells] ))
 host[rest_objects]=$(( run_window - host[heights] - host[segmentation] - host[recognition] ))
 
 # Target: qemu-user with the marker-counting plugin.

@@ -50,33 +50,41 @@ SPINHASH_MARKER(spinhash_bench_recognition_end, 8)
 // The wrapped stages (ld --wrap=SYMBOL sends the core's calls of SYMBOL to
 // __wrap_SYMBOL; __real_SYMBOL is the original). Itanium-mangled names: the
 // same on every Linux target.
-// Terrain is two calls: each strip's grid, then each window's heights on it.
+// Terrain is three calls: each row's cell sums, each strip's grid from
+// them, then each window's heights on it.
+#define SPINHASH_CELLS _ZN8spinhash12TerrainCells3sumERKNS_9PointRingEdd
 #define SPINHASH_TERRAIN \
-  _ZN8spinhash19build_strip_terrainERKNS_11SceneConfigERKNS_12WindowSourceEjRKNS_9FrameRectEddRNS_13WindowBuffersEPNS_10SceneStatsE
+  _ZN8spinhash19build_strip_terrainERKNS_11SceneConfigERKNS_12TerrainCellsERKNS_9FrameRectEddRNS_13WindowBuffersEPNS_10SceneStatsE
 #define SPINHASH_HEIGHTS _ZN8spinhash15terrain_heightsERKNS_11TerrainGridEPKfjfPfPh
 #define SPINHASH_SEGMENT \
   _ZN8spinhash15segment_objectsEPKfS1_PKhjRKNS_13SegmentParamsERNS_11SegmentGridEPNS_11ObjectShapeEPjPNS_12SegmentStatsE
-#define SPINHASH_RECOGNIZE _ZN8spinhash10Recognizer9recognizeEPKfj
+#define SPINHASH_RECOGNIZE _ZN8spinhash10Recognizer9recognizeEPKfjRKNS_13ObjectTerrainE
 #define SPINHASH_JOIN(a, b) a##b
 #define SPINHASH_WRAP(sym) SPINHASH_JOIN(__wrap_, sym)
 #define SPINHASH_REAL(sym) SPINHASH_JOIN(__real_, sym)
 
 extern "C" {
-Status SPINHASH_REAL(SPINHASH_TERRAIN)(const SceneConfig& c, const WindowSource& src, uint32_t n,
-                                       const FrameRect& seen, double s0, double t0, WindowBuffers& b,
-                                       SceneStats* st);
+void SPINHASH_REAL(SPINHASH_CELLS)(TerrainCells* self, const PointRing& ring, double from_s, double to_s);
+Status SPINHASH_REAL(SPINHASH_TERRAIN)(const SceneConfig& c, const TerrainCells& cells, const FrameRect& seen,
+                                       double s0, double t0, WindowBuffers& b, SceneStats* st);
 uint32_t SPINHASH_REAL(SPINHASH_HEIGHTS)(const TerrainGrid& grid, const float* xyz, uint32_t n,
                                          float ground_height, float* height, uint8_t* ground);
 Status SPINHASH_REAL(SPINHASH_SEGMENT)(const float* xyz, const float* height, const uint8_t* ground,
                                        uint32_t n, const SegmentParams& params, SegmentGrid& grid,
                                        ObjectShape* objects, uint32_t* label, SegmentStats* stats);
-Result SPINHASH_REAL(SPINHASH_RECOGNIZE)(Recognizer* self, const float* xyz, uint32_t count);
+Result SPINHASH_REAL(SPINHASH_RECOGNIZE)(Recognizer* self, const float* xyz, uint32_t count,
+                                         const ObjectTerrain& terrain);
 
-Status SPINHASH_WRAP(SPINHASH_TERRAIN)(const SceneConfig& c, const WindowSource& src, uint32_t n,
-                                       const FrameRect& seen, double s0, double t0, WindowBuffers& b,
-                                       SceneStats* st) {
+void SPINHASH_WRAP(SPINHASH_CELLS)(TerrainCells* self, const PointRing& ring, double from_s, double to_s) {
   spinhash_bench_terrain_begin();
-  const Status s = SPINHASH_REAL(SPINHASH_TERRAIN)(c, src, n, seen, s0, t0, b, st);
+  SPINHASH_REAL(SPINHASH_CELLS)(self, ring, from_s, to_s);
+  spinhash_bench_terrain_end();
+}
+
+Status SPINHASH_WRAP(SPINHASH_TERRAIN)(const SceneConfig& c, const TerrainCells& cells, const FrameRect& seen,
+                                       double s0, double t0, WindowBuffers& b, SceneStats* st) {
+  spinhash_bench_terrain_begin();
+  const Status s = SPINHASH_REAL(SPINHASH_TERRAIN)(c, cells, seen, s0, t0, b, st);
   spinhash_bench_terrain_end();
   return s;
 }
@@ -99,9 +107,10 @@ Status SPINHASH_WRAP(SPINHASH_SEGMENT)(const float* xyz, const float* height, co
   return s;
 }
 
-Result SPINHASH_WRAP(SPINHASH_RECOGNIZE)(Recognizer* self, const float* xyz, uint32_t count) {
+Result SPINHASH_WRAP(SPINHASH_RECOGNIZE)(Recognizer* self, const float* xyz, uint32_t count,
+                                         const ObjectTerrain& terrain) {
   spinhash_bench_recognition_begin();
-  const Result r = SPINHASH_REAL(SPINHASH_RECOGNIZE)(self, xyz, count);
+  const Result r = SPINHASH_REAL(SPINHASH_RECOGNIZE)(self, xyz, count, terrain);
   spinhash_bench_recognition_end();
   return r;
 }
