@@ -20,6 +20,8 @@
 #             without 5-degree ground (as section 11b's fleet rows)
 #   families  the look-alike families: 3 queries per model, 5 cm noise, no
 #             occlusion, 0.05 and 0.10 m, one run per --family-seeds seed
+#   procedural1000  the first 1 000 fleet members, 100 queries from the
+#             first 25 (`scaling --sizes 1000`), 0.05 and 0.10 m
 #   lookalikes1000  17 models with 58 look-alike copies each (986 models),
 #             2 queries per model, 5 cm noise, 0.05 and 0.10 m
 # Results are kept per configuration (DIR/LABEL/...), so a second run only
@@ -27,7 +29,9 @@
 # and size) and prints it as a Markdown table: instructions in millions
 # (median of the 3 queries at each spacing, the lower middle of all 6, the
 # worst), right first per set (the fleet's clean and noisy rows over both
-# spacings, the families per spacing), confident answers that are wrong.
+# spacings, the families per spacing), confident answers that are wrong,
+# and right-first answers gained and lost against `default` on the same
+# queries (every set both ran).
 set -euo pipefail
 
 usage() { sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
@@ -95,7 +99,7 @@ tally() {  # KEYCOLS FILES...: prints "key right total confident_wrong" per key
 }
 
 csv="$out/levers.csv"
-echo "config,models,median_005,median_010,middle6,worst,fleet_clean,fleet_noisy,fleet_ground,families_005,families_010,lookalikes1000_005,lookalikes1000_010,confident_wrong,settings" > "$csv"
+echo "config,models,median_005,median_010,middle6,worst,fleet_clean,fleet_noisy,fleet_ground,families_005,families_010,lookalikes1000_005,lookalikes1000_010,procedural1000_005,procedural1000_010,confident_wrong,paired,settings" > "$csv"
 while read -r label rest; do
   [[ -z "$label" || "$label" == \#* ]] && continue
   [[ -n "$only" && ",$only," != *",$label,"* ]] && continue
@@ -123,6 +127,15 @@ while read -r label rest; do
       run_accuracy "families-seed$seed" --seed "$seed" --models 56 --queries-per-model 3 --noise 0.05 --occlusion 0 --spacing 0.05 0.1
     done
   fi
+  if [[ ",$sets," == *",procedural1000,"* ]]; then
+    for sp in 0.05 0.10; do
+      [[ -s "$dir/procedural1000-$sp/per_query.csv" ]] && continue
+      echo "flight-levers: $label: scaling 1000 models, $sp m" >&2
+      "$experiment" scaling --out "$dir/procedural1000-$sp" --sizes 1000 --queries 100 --modes bran --spacing "$sp" \
+        "${set_flags[@]}" >"$dir/procedural1000-$sp.log" 2>&1 ||
+        { echo "flight-levers: $label: scaling failed ($dir/procedural1000-$sp.log)" >&2; exit 1; }
+    done
+  fi
   if [[ ",$sets," == *",lookalikes1000,"* ]]; then
     run_accuracy lookalikes1000 --models 17 --lookalikes 58 --queries-per-model 2 --noise 0.05 --occlusion 0 --spacing 0.05 0.1
   fi
@@ -138,8 +151,25 @@ while read -r label rest; do
   fam010=$(acc "families-seed*" spacing 0.1)
   la005=$(acc lookalikes1000 spacing 0.05)
   la010=$(acc lookalikes1000 spacing 0.1)
-  wrong=$( (cat "$dir"/*/per_query.csv 2>/dev/null || true) | awk -F, '$1 == "mode" {for (i = 1; i <= NF; i++) c[$i] = i; next}
+  p005=$(acc procedural1000-0.05 mode bran)
+  p010=$(acc procedural1000-0.10 mode bran)
+  wrong=$( (cat "$dir"/*/per_query.csv 2>/dev/null || true) | awk -F, '$0 ~ /(^|,)rank,/ {for (i = 1; i <= NF; i++) c[$i] = i; next}
     c["confident"] && $(c["confident"]) == 1 && $(c["rank"]) != 1 {w++} END {print w + 0}')
+
+  # Paired with the default's answers on the same queries: right first gained and lost.
+  paired=$(for f in "$dir"/*/per_query.csv; do
+      [[ -f "$f" ]] || continue
+      set_name=$(basename "$(dirname "$f")")
+      base="$out/default/$set_name/per_query.csv"
+      [[ -f "$base" ]] || continue
+      awk -F, 'FNR == 1 {for (i = 1; i <= NF; i++) c[$i] = i; next}
+        {key = ""; n = split("noise occlusion ground spacing model query", k, " ")
+         for (i = 1; i <= n; i++) if (k[i] in c) key = key "," $(c[k[i]])
+         right = $(c["rank"]) == 1}
+        FILENAME == ARGV[1] {base[key] = right; next}
+        key in base {if (right && !base[key]) g++; if (!right && base[key]) l++}
+        END {print g + 0, l + 0}' "$base" "$f"
+    done | awk '{g += $1; l += $2} END {print "+" g + 0 " -" l + 0}')
 
   # aarch64 instructions per size.
   for size in "${size_list[@]}"; do
@@ -162,10 +192,10 @@ while read -r label rest; do
       END {for (i = 1; i <= 3; i++) {a5[i] = v["0.05", i]; a10[i] = v["0.10", i]}
            w = 0; for (i = 1; i <= k; i++) if (all[i] > w) w = all[i]
            printf "%.1f %.1f %.1f %.1f\n", med(a5, 3) / 1e6, med(a10, 3) / 1e6, med(all, k) / 1e6, w / 1e6}' "$counts")
-    echo "$label,$size,$m005,$m010,$mid,$worst,$clean,$noisy,$ground,$fam005,$fam010,$la005,$la010,$wrong,${settings[*]:-}" >> "$csv"
+    echo "$label,$size,$m005,$m010,$mid,$worst,$clean,$noisy,$ground,$fam005,$fam010,$la005,$la010,$p005,$p010,$wrong,$paired,${settings[*]:-}" >> "$csv"
   done
 done < "$configs"
 
-echo "| config | models | M 0.05 | M 0.10 | M middle of 6 | M worst | fleet clean | fleet noisy | fleet noisy + ground | families 0.05 | families 0.10 | look-alikes 1000 0.05 | 0.10 | confident wrong | settings |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+echo "| config | models | M 0.05 | M 0.10 | M middle of 6 | M worst | fleet clean | fleet noisy | fleet noisy + ground | families 0.05 | families 0.10 | look-alikes 1000 0.05 | 0.10 | procedural 1000 0.05 | 0.10 | confident wrong | right first gained / lost against default | settings |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
 tail -n +2 "$csv" | awk -F, '{printf "|"; for (i = 1; i <= NF; i++) printf " %s |", $i; printf "\n"}'

@@ -6,6 +6,7 @@
 
 #include "spinhash/config_fields.h"
 #include "spinhash/limits.hpp"
+#include "spinhash/presets.hpp"
 
 namespace spinhash::host {
 namespace {
@@ -35,11 +36,17 @@ bool set_number(const std::string& text, T* v, L lo, H hi) {
   return true;
 }
 template <typename L, typename H>
-bool set_U32(const std::string& t, uint32_t* v, L lo, H hi) { return set_number(t, v, lo, hi); }
+bool set_U32(const std::string& t, uint32_t* v, L lo, H hi) {
+  return set_number(t, v, lo, hi);
+}
 template <typename L, typename H>
-bool set_U64(const std::string& t, uint64_t* v, L lo, H hi) { return set_number(t, v, lo, hi); }
+bool set_U64(const std::string& t, uint64_t* v, L lo, H hi) {
+  return set_number(t, v, lo, hi);
+}
 template <typename L, typename H>
-bool set_F32(const std::string& t, float* v, L lo, H hi) { return set_number(t, v, lo, hi); }
+bool set_F32(const std::string& t, float* v, L lo, H hi) {
+  return set_number(t, v, lo, hi);
+}
 bool set_BOOL(const std::string& t, bool* v, int, int) {
   if (t != "0" && t != "1") return false;
   *v = t == "1";
@@ -52,12 +59,22 @@ bool set_VEC3D(const std::string&, double (*)[3], int, int) { return false; }
 
 bool assign_config_field(const std::string& assignment, RecognizerConfig* cfg, std::string* error) {
   const size_t eq = assignment.find('=');
-  const std::string name = assignment.substr(0, eq), value = eq == std::string::npos ? "" : assignment.substr(eq + 1);
-#define SPINHASH_ASSIGN_FIELD(kind, field, lo, hi, flag, help)                             \
-  if (name == #field) {                                                                    \
-    if (set_##kind(value, &cfg->field, lo, hi)) return true;                               \
+  const std::string name = assignment.substr(0, eq),
+                    value = eq == std::string::npos ? "" : assignment.substr(eq + 1);
+  if (name == "preset") {  // a named configuration's fields (spinhash/presets.hpp)
+    Preset preset;
+    if (preset_from_name(value.c_str(), &preset)) {
+      apply_preset(preset, cfg);
+      return true;
+    }
+    *error = "no preset " + value + " (default, flight)";
+    return false;
+  }
+#define SPINHASH_ASSIGN_FIELD(kind, field, lo, hi, flag, help)                            \
+  if (name == #field) {                                                                   \
+    if (set_##kind(value, &cfg->field, lo, hi)) return true;                              \
     *error = "bad value for " + name + " (" #kind ", range " #lo " - " #hi "): " + value; \
-    return false;                                                                          \
+    return false;                                                                         \
   }
   SPINHASH_CONFIG_FIELDS(SPINHASH_ASSIGN_FIELD)
 #undef SPINHASH_ASSIGN_FIELD

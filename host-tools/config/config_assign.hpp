@@ -13,6 +13,7 @@ namespace spinhash::host {
 
 // "name=value": sets cfg->name; false with *error naming the problem when the
 // name is unknown, the value does not parse or lies outside the field's range.
+// "preset=NAME" sets the fields of a named configuration (spinhash/presets.hpp).
 bool assign_config_field(const std::string& assignment, RecognizerConfig* cfg, std::string* error);
 
 }  // namespace spinhash::host

@@ -1,0 +1,57 @@
+// Named recognizer configurations: the one place their values live. The
+// command line (`--preset`), the experiments (`--preset`), the instruction
+// benchmark's target runner (`preset=flight`) and firmware all take them from
+// here. Values and their measured costs: docs/results.md section 9q.
+#pragma once
+#include <cstdint>
+#include <cstring>
+
+#include "spinhash/config.hpp"
+
+namespace spinhash {
+
+enum class Preset : uint8_t {
+  kDefault = 0,  // RecognizerConfig{}: the accuracy of docs/results.md
+  kFlight = 1,   // issue 29's flight budget: about 50 M instructions per query on aarch64 at 56 models
+};
+
+// kFlight: every lever that cuts the work per query, at the accuracy cost
+// measured in docs/results.md section 9q (scripts/flight-levers.sh).
+// The query's density voxel (FeatureParams::cloud_voxel for the query
+// only), m: a 0.05 m scan is equalised to about the points of a 0.10 m one.
+constexpr float kFlightQueryVoxel = 0.14f;
+constexpr uint32_t kFlightMaxFeatures = 256;     // s: query features kept (evenly thinned)
+constexpr uint32_t kFlightMaxBucketScan = 512;   // LSH entries scanned per query feature
+constexpr uint32_t kFlightTopW = 30;             // W: candidates per query feature
+constexpr uint32_t kFlightVerifyFeatures = 128;  // query features scored per hypothesis
+
+// Sets the fields a preset names; every other field keeps its value.
+inline void apply_preset(Preset preset, RecognizerConfig* c) {
+  if (preset != Preset::kFlight) return;
+  c->query_cloud_voxel = kFlightQueryVoxel;
+  c->max_features = kFlightMaxFeatures;
+  c->max_bucket_scan = kFlightMaxBucketScan;
+  c->top_w = kFlightTopW;
+  c->verify_features = kFlightVerifyFeatures;
+}
+
+inline RecognizerConfig preset_config(Preset preset) {
+  RecognizerConfig c;
+  apply_preset(preset, &c);
+  return c;
+}
+
+inline const char* preset_name(Preset preset) { return preset == Preset::kFlight ? "flight" : "default"; }
+
+// "default" or "flight"; false for any other name.
+inline bool preset_from_name(const char* name, Preset* preset) {
+  if (std::strcmp(name, "default") == 0)
+    *preset = Preset::kDefault;
+  else if (std::strcmp(name, "flight") == 0)
+    *preset = Preset::kFlight;
+  else
+    return false;
+  return true;
+}
+
+}  // namespace spinhash
