@@ -29,7 +29,8 @@
 # and size) and prints it as a Markdown table: instructions in millions
 # (median of the 3 queries at each spacing, the lower middle of all 6, the
 # worst), right first per set (the fleet's clean and noisy rows over both
-# spacings, the families per spacing), confident answers that are wrong,
+# spacings, the families per spacing), confident answers that are right
+# (fleet and families) and that are wrong (every set),
 # and right-first answers gained and lost against `default` on the same
 # queries (every set both ran).
 set -euo pipefail
@@ -99,7 +100,7 @@ tally() {  # KEYCOLS FILES...: prints "key right total confident_wrong" per key
 }
 
 csv="$out/levers.csv"
-echo "config,models,median_005,median_010,middle6,worst,fleet_clean,fleet_noisy,fleet_ground,families_005,families_010,lookalikes1000_005,lookalikes1000_010,procedural1000_005,procedural1000_010,confident_wrong,paired,settings" > "$csv"
+echo "config,models,median_005,median_010,middle6,worst,fleet_clean,fleet_noisy,fleet_ground,families_005,families_010,lookalikes1000_005,lookalikes1000_010,procedural1000_005,procedural1000_010,confident_right,confident_wrong,paired,settings" > "$csv"
 while read -r label rest; do
   [[ -z "$label" || "$label" == \#* ]] && continue
   [[ -n "$only" && ",$only," != *",$label,"* ]] && continue
@@ -156,6 +157,11 @@ while read -r label rest; do
   wrong=$( (cat "$dir"/*/per_query.csv 2>/dev/null || true) | awk -F, '$0 ~ /(^|,)rank,/ {for (i = 1; i <= NF; i++) c[$i] = i; next}
     c["confident"] && $(c["confident"]) == 1 && $(c["rank"]) != 1 {w++} END {print w + 0}')
 
+  # Confident and right over the fleet and families sets, and its share of the right answers.
+  flagged=$( (cat "$dir"/fleet-*/per_query.csv "$dir"/families-*/per_query.csv 2>/dev/null || true) |
+    awk -F, '$0 ~ /(^|,)rank,/ {for (i = 1; i <= NF; i++) c[$i] = i; next}
+      $(c["rank"]) == 1 {r++; if ($(c["confident"]) == 1) f++} END {if (r) printf "%d (%.1f %%)", f, 100 * f / r; else print "-"}')
+
   # Paired with the default's answers on the same queries: right first gained and lost.
   paired=$(for f in "$dir"/*/per_query.csv; do
       [[ -f "$f" ]] || continue
@@ -192,10 +198,10 @@ while read -r label rest; do
       END {for (i = 1; i <= 3; i++) {a5[i] = v["0.05", i]; a10[i] = v["0.10", i]}
            w = 0; for (i = 1; i <= k; i++) if (all[i] > w) w = all[i]
            printf "%.1f %.1f %.1f %.1f\n", med(a5, 3) / 1e6, med(a10, 3) / 1e6, med(all, k) / 1e6, w / 1e6}' "$counts")
-    echo "$label,$size,$m005,$m010,$mid,$worst,$clean,$noisy,$ground,$fam005,$fam010,$la005,$la010,$p005,$p010,$wrong,$paired,${settings[*]:-}" >> "$csv"
+    echo "$label,$size,$m005,$m010,$mid,$worst,$clean,$noisy,$ground,$fam005,$fam010,$la005,$la010,$p005,$p010,$flagged,$wrong,$paired,${settings[*]:-}" >> "$csv"
   done
 done < "$configs"
 
-echo "| config | models | M 0.05 | M 0.10 | M middle of 6 | M worst | fleet clean | fleet noisy | fleet noisy + ground | families 0.05 | families 0.10 | look-alikes 1000 0.05 | 0.10 | procedural 1000 0.05 | 0.10 | confident wrong | right first gained / lost against default | settings |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+echo "| config | models | M 0.05 | M 0.10 | M middle of 6 | M worst | fleet clean | fleet noisy | fleet noisy + ground | families 0.05 | families 0.10 | look-alikes 1000 0.05 | 0.10 | procedural 1000 0.05 | 0.10 | confident and right (of the right), fleet and families | confident wrong | right first gained / lost against default | settings |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
 tail -n +2 "$csv" | awk -F, '{printf "|"; for (i = 1; i <= NF; i++) printf " %s |", $i; printf "\n"}'

@@ -40,9 +40,12 @@ struct RecognizerConfig {
   uint32_t max_models = 2048;        // m: database models supported by this workspace
   uint32_t max_spin_dims = 256;      // d: largest spin image (bins_alpha * bins_beta) supported
   float query_basis_spacing = 0.0f;  // m between query basis points; 0: the database's spacing
-  // m: the query's density-equalising voxel (FeatureParams::cloud_voxel); 0:
-  // the database's. A coarser voxel makes a dense scan (0.05 m spacing) as
-  // cheap to describe as a 0.10 m one (docs/results.md section 9q).
+  // m: the query's density-equalising voxel (FeatureParams::cloud_voxel for
+  // the query only); 0: the database's (0.08 m by default). A coarser voxel
+  // averages a dense scan (0.05 m spacing) down to the points of a sparser
+  // one: fewer instructions per query, answers that move (issue 29;
+  // docs/results.md section 9q measures it; the flight preset of
+  // spinhash/presets.hpp uses it).
   float query_cloud_voxel = 0.0f;
 
   // Airborne scans hold the ground around the vehicle, which no model has.

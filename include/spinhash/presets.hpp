@@ -15,11 +15,17 @@ enum class Preset : uint8_t {
   kFlight = 1,   // issue 29's flight budget: about 50 M instructions per query on aarch64 at 56 models
 };
 
-// kFlight: every lever that cuts the work per query, at the accuracy cost
-// measured in docs/results.md section 9q (scripts/flight-levers.sh).
+// kFlight: issue 29's flight budget, measured by scripts/flight-levers.sh
+// (docs/results.md section 9q) on aarch64 at 56 models: 43.8 M instructions
+// per query (the benchmark's middle of 6; worst 54.9 M, 1.25x) against
+// 153.6 M (worst 312.4 M) for the default. It costs accuracy: right first
+// 1 621 of 1 680 fleet and family queries against 1 649 (the fleet's noisy
+// scans lose 12-7 of 224, the families 4 of 504 per spacing), confident
+// and right 82 % of the right against 96 %, and at 1 000 models 67 / 64 %
+// right first against 84 / 75 % (0.05 / 0.10 m).
 // The query's density voxel (FeatureParams::cloud_voxel for the query
-// only), m: a 0.05 m scan is equalised to about the points of a 0.10 m one.
-constexpr float kFlightQueryVoxel = 0.14f;
+// only), m: 2.25 times the database's 0.08 m.
+constexpr float kFlightQueryVoxel = 0.18f;
 constexpr uint32_t kFlightMaxFeatures = 256;     // s: query features kept (evenly thinned)
 constexpr uint32_t kFlightMaxBucketScan = 512;   // LSH entries scanned per query feature
 constexpr uint32_t kFlightTopW = 30;             // W: candidates per query feature
