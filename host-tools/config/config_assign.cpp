@@ -31,7 +31,7 @@ template <typename T, typename L, typename H>
 bool set_number(const std::string& text, T* v, L lo, H hi) {
   using P = typename std::conditional<std::is_floating_point<T>::value, double, unsigned long long>::type;
   P p = 0;
-  if (!parse(text, &p) || p < static_cast<P>(lo) || p > static_cast<P>(hi)) return false;
+  if (!parse(text, &p) || !(p >= static_cast<P>(lo) && p <= static_cast<P>(hi))) return false;  // NaN too
   *v = static_cast<T>(p);
   return true;
 }

@@ -22,8 +22,9 @@ TEST_CASE("config_assign: numbers and booleans by name, within the field's range
   CHECK(assign_config_field("refine_poses=0", &c, &error));
   CHECK_FALSE(c.refine_poses);
   const RecognizerConfig before = c;
-  for (const char* bad : {"max_bucket_scan=0", "max_bucket_scan=-1", "max_bucket_scan=12x", "top_w=", "top_w",
-                          "sigma=1e9", "no_such_field=1", "refine_poses=2", "mode=1", "viewpoint=1"}) {
+  for (const char* bad :
+       {"max_bucket_scan=0", "max_bucket_scan=-1", "max_bucket_scan=12x", "top_w=", "top_w", "sigma=1e9",
+        "sigma=nan", "no_such_field=1", "refine_poses=2", "mode=1", "viewpoint=1"}) {
     CAPTURE(bad);
     error.clear();
     CHECK_FALSE(assign_config_field(bad, &c, &error));
