@@ -31,7 +31,8 @@
 # worst), right first per set (the fleet's clean and noisy rows over both
 # spacings, the families per spacing), confident answers that are right
 # (fleet and families) and that are wrong (every set),
-# and right-first answers gained and lost against `default` on the same
+# and right-first answers gained and lost against `before` (the default
+# before section 9q) on the same
 # queries (every set both ran).
 set -euo pipefail
 
@@ -166,7 +167,7 @@ while read -r label rest; do
   paired=$(for f in "$dir"/*/per_query.csv; do
       [[ -f "$f" ]] || continue
       set_name=$(basename "$(dirname "$f")")
-      base="$out/default/$set_name/per_query.csv"
+      base="$out/before/$set_name/per_query.csv"
       [[ -f "$base" ]] || continue
       awk -F, 'FNR == 1 {for (i = 1; i <= NF; i++) c[$i] = i; next}
         {key = ""; n = split("noise occlusion ground spacing model query", k, " ")
@@ -202,6 +203,6 @@ while read -r label rest; do
   done
 done < "$configs"
 
-echo "| config | models | M 0.05 | M 0.10 | M middle of 6 | M worst | fleet clean | fleet noisy | fleet noisy + ground | families 0.05 | families 0.10 | look-alikes 1000 0.05 | 0.10 | procedural 1000 0.05 | 0.10 | confident and right (of the right), fleet and families | confident wrong | right first gained / lost against default | settings |"
+echo "| config | models | M 0.05 | M 0.10 | M middle of 6 | M worst | fleet clean | fleet noisy | fleet noisy + ground | families 0.05 | families 0.10 | look-alikes 1000 0.05 | 0.10 | procedural 1000 0.05 | 0.10 | confident and right (of the right), fleet and families | confident wrong | right first gained / lost against before | settings |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
 tail -n +2 "$csv" | awk -F, '{printf "|"; for (i = 1; i <= NF; i++) printf " %s |", $i; printf "\n"}'

@@ -18,18 +18,19 @@ enum class Preset : uint8_t {
 // kFlight: issue 29's flight budget, measured by scripts/flight-levers.sh
 // (docs/results.md section 9q) on aarch64 at 56 models: 43.8 M instructions
 // per query (the benchmark's middle of 6; worst 54.9 M, 1.25x) against
-// 153.6 M (worst 312.4 M) for the default. It costs accuracy: right first
-// 1 621 of 1 680 fleet and family queries against 1 649 (the fleet's noisy
-// scans lose 12-7 of 224, the families 4 of 504 per spacing), confident
-// and right 82 % of the right against 96 %, and at 1 000 models 67 / 64 %
-// right first against 84 / 75 % (0.05 / 0.10 m).
+// 145.4 M (worst 296.8 M) for the default, whose verify_features (128) it
+// keeps. It costs accuracy: right first 1 621 of 1 680 fleet and family
+// queries against 1 652 (the fleet's noisy scans 199 and 202 of 224 without
+// and with ground against 213 and 211, the families 499 and 498 of 504 at
+// 0.05 and 0.10 m against 503 and 502), confident and right 82 % of the
+// right against 96 %, and at 1 000 models 67 / 64 % right first against
+// 82 / 78 % (0.05 / 0.10 m).
 // The query's density voxel (FeatureParams::cloud_voxel for the query
 // only), m: 2.25 times the database's 0.08 m.
 constexpr float kFlightQueryVoxel = 0.18f;
-constexpr uint32_t kFlightMaxFeatures = 256;     // s: query features kept (evenly thinned)
-constexpr uint32_t kFlightMaxBucketScan = 512;   // LSH entries scanned per query feature
-constexpr uint32_t kFlightTopW = 30;             // W: candidates per query feature
-constexpr uint32_t kFlightVerifyFeatures = 128;  // query features scored per hypothesis
+constexpr uint32_t kFlightMaxFeatures = 256;    // s: query features kept (evenly thinned)
+constexpr uint32_t kFlightMaxBucketScan = 512;  // LSH entries scanned per query feature
+constexpr uint32_t kFlightTopW = 30;            // W: candidates per query feature
 
 // Sets the fields a preset names; every other field keeps its value.
 inline void apply_preset(Preset preset, RecognizerConfig* c) {
@@ -38,7 +39,6 @@ inline void apply_preset(Preset preset, RecognizerConfig* c) {
   c->max_features = kFlightMaxFeatures;
   c->max_bucket_scan = kFlightMaxBucketScan;
   c->top_w = kFlightTopW;
-  c->verify_features = kFlightVerifyFeatures;
 }
 
 inline RecognizerConfig preset_config(Preset preset) {
