@@ -36,7 +36,7 @@
 # queries (every set both ran).
 set -euo pipefail
 
-usage() { sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { sed -n '2,36p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 configs="" sizes="56" sets="fleet,families" seeds="1,2,3" out="flight-levers" only=""
