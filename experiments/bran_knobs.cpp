@@ -1,8 +1,22 @@
 #include "bran_knobs.hpp"
 
+#include "config/config_assign.hpp"
 #include "spinhash/limits.hpp"
 
 namespace spinhash::experiment {
+
+void BranKnobs::apply(RecognizerConfig* cfg) const {
+  cfg->max_bucket_scan = max_bucket_scan;
+  cfg->max_features = max_features;
+  cfg->transfer_models = transfer_models;
+  cfg->stop_miss_probability = stop_miss_probability;
+  cfg->min_hypotheses = min_hypotheses;
+  cfg->focus_models = focus_models;
+  cfg->lookalike_box_l1 = lookalike_box_l1;
+  std::string error;
+  for (const std::string& s : settings)
+    if (!host::assign_config_field(s, cfg, &error)) throw CLI::ValidationError("--set", error);
+}
 
 void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs) {
   cmd->add_option("--transfer-models", knobs->transfer_models,
@@ -34,6 +48,14 @@ void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs) {
                   "query features kept, evenly thinned above (all modes)")
       ->check(CLI::Range(2u, kMaxQueryFeaturesLimit))
       ->capture_default_str();
+  cmd->add_option("--set", knobs->settings,
+                  "FIELD=VALUE: any recognizer field by its name in include/spinhash/config.hpp, after the "
+                  "flags above (repeatable)")
+      ->check([](const std::string& s) {
+        RecognizerConfig probe;
+        std::string error;
+        return host::assign_config_field(s, &probe, &error) ? std::string() : error;
+      });
 }
 
 }  // namespace spinhash::experiment

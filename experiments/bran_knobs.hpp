@@ -2,9 +2,12 @@
 // --stop-miss-probability, --min-hypotheses, --focus-models, --lookalike-box), so one run can compare them
 // with the paper's BRAN; the LSH scan bound (--max-bucket-scan) that sets
 // the index's cost; the query features kept (--max-features) that set a
-// large vehicle's.
+// large vehicle's; any other field by name (--set FIELD=VALUE: levers swept
+// without a flag of their own, scripts/flight-levers.sh).
 #pragma once
 #include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
 
 #include "spinhash/config.hpp"
 
@@ -18,15 +21,8 @@ struct BranKnobs {
   float lookalike_box_l1 = RecognizerConfig{}.lookalike_box_l1;
   uint32_t max_bucket_scan = RecognizerConfig{}.max_bucket_scan;
   uint32_t max_features = RecognizerConfig{}.max_features;
-  void apply(RecognizerConfig* cfg) const {
-    cfg->max_bucket_scan = max_bucket_scan;
-    cfg->max_features = max_features;
-    cfg->transfer_models = transfer_models;
-    cfg->stop_miss_probability = stop_miss_probability;
-    cfg->min_hypotheses = min_hypotheses;
-    cfg->focus_models = focus_models;
-    cfg->lookalike_box_l1 = lookalike_box_l1;
-  }
+  std::vector<std::string> settings;  // --set FIELD=VALUE, any field, applied last
+  void apply(RecognizerConfig* cfg) const;
 };
 
 void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs);

@@ -175,6 +175,7 @@ Status Recognizer::init(const Database* db, const RecognizerConfig& config, void
   new (b) RecognizerBuffers();
   FeatureParams fp = db->feature_params();
   if (config.query_basis_spacing > 0.0f) fp.basis_spacing = config.query_basis_spacing;
+  if (config.query_cloud_voxel > 0.0f) fp.cloud_voxel = config.query_cloud_voxel;
   Status s = carve(arena, config, fp, *b);
   if (s != Status::kOk) return s;
   db_ = db;

@@ -5,6 +5,7 @@
 
 #include "spinhash/config_fields.h"
 #include "spinhash/limits.hpp"
+#include "spinhash/presets.hpp"
 
 namespace spinhash::pipeline {
 namespace {
@@ -57,6 +58,17 @@ const char* mode_name(Mode m) {
 }
 
 void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
+  // First, so that its callback runs before the fields' flags, which override it.
+  cmd->add_option_function<std::string>(
+         "--preset",
+         [c](const std::string& name) {
+           Preset preset = Preset::kDefault;
+           preset_from_name(name.c_str(), &preset);
+           apply_preset(preset, c);
+         },
+         "a named configuration (include/spinhash/presets.hpp): default, or flight (issue 29's flight "
+         "budget, docs/results.md 9q); the flags below override its fields")
+      ->check(CLI::IsMember({"default", "flight"}));
 #define SPINHASH_ADD_FLAG(kind, name, lo, hi, flag, help) \
   if (*(flag) != '\0') add_##kind(cmd, &c->name, lo, hi, flag, help);
   SPINHASH_CONFIG_FIELDS(SPINHASH_ADD_FLAG)

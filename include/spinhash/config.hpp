@@ -40,6 +40,13 @@ struct RecognizerConfig {
   uint32_t max_models = 2048;        // m: database models supported by this workspace
   uint32_t max_spin_dims = 256;      // d: largest spin image (bins_alpha * bins_beta) supported
   float query_basis_spacing = 0.0f;  // m between query basis points; 0: the database's spacing
+  // m: the query's density-equalising voxel (FeatureParams::cloud_voxel for
+  // the query only); 0: the database's (0.08 m by default). A coarser voxel
+  // averages a dense scan (0.05 m spacing) down to the points of a sparser
+  // one: fewer instructions per query, answers that move (issue 29;
+  // docs/results.md section 9q measures it; the flight preset of
+  // spinhash/presets.hpp uses it).
+  float query_cloud_voxel = 0.0f;
 
   // Airborne scans hold the ground around the vehicle, which no model has.
   // When the cloud stands on terrain (z up; level or sloped to 18 degrees,
@@ -75,8 +82,10 @@ struct RecognizerConfig {
 
   // Hypotheses are scored on at most this many query features (evenly
   // spread; the paper's "all or a percentage of all query features"); the
-  // leading models are then rescored on all of them.
-  uint32_t verify_features = 256;
+  // leading models are then rescored on all of them. 128 (256 until issue
+  // 29): the same accuracy on the fleet, its families and 1 000 models, 5 %
+  // fewer instructions per query at 56 models (docs/results.md section 9q).
+  uint32_t verify_features = 128;
 
   // Look-alike pose transfer (not in the paper; BRAN): the poses of the
   // leading models are also verified on the models whose bounding boxes are

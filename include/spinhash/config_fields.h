@@ -40,6 +40,8 @@
     "largest spin image (bins) the workspace supports")                                                      \
   X(F32, query_basis_spacing, 0.0f, 100.0f, "--query-spacing",                                               \
     "query basis point spacing, m (0: the database's)")                                                      \
+  X(F32, query_cloud_voxel, 0.0f, 100.0f, "--query-voxel",                                                   \
+    "query density-equalising voxel, m (0: the database's)")                                                 \
   X(F32, ground_clearance, 0.0f, kMaxGroundClearance, "--ground-clearance",                                  \
     "m above the terrain (level or sloped, z up) dropped with it (0: keep the ground)")                      \
   X(U32, top_w, 1u, kMaxCandidates, "-W,--top-w", "W: candidates per query feature (BRAN)")                  \

@@ -7,7 +7,9 @@
 //                 benchmark (scripts/instructions-per-query.sh --target): raw
 //                 little-endian float64 xyz, the default config in MODE (bran,
 //                 sran, sind), recognition between spinhash_bench_begin() and
-//                 spinhash_bench_end(), where scripts/qemu/insn_count.c counts
+//                 spinhash_bench_end(), where scripts/qemu/insn_count.c counts;
+//                 further arguments name=value change the config's fields
+//                 (host/config/config_assign.hpp), as the host's flags do
 // Cases:
 //   max_points    toy database, a query of exactly config.max_points points
 //   symmetric     toy models plus a sphere, a sphere query: every doublet on a
@@ -24,6 +26,7 @@
 #include "blob/aligned_bytes.hpp"
 #include "blob/blob_writer.hpp"
 #include "blob/file_io.hpp"
+#include "config/config_assign.hpp"
 #include "db/database_builder.hpp"
 #include "golden/golden_expected.hpp"
 #include "spinhash/recognizer.hpp"
@@ -167,11 +170,14 @@ bool parse_mode(const std::string& name, Mode* mode) {
   return name == "bran" || name == "sran" || name == "sind";
 }
 
-int query(const std::string& db_path, const std::string& cloud_path, const std::string& mode_name) {
+int query(const std::string& db_path, const std::string& cloud_path, const std::string& mode_name,
+          const std::vector<std::string>& settings) {
   host::AlignedBytes blob, cloud;
   std::string error;
   RecognizerConfig cfg;
   if (!parse_mode(mode_name, &cfg.mode)) return fail("unknown mode " + mode_name);
+  for (const std::string& s : settings)
+    if (!host::assign_config_field(s, &cfg, &error)) return fail(error);
   if (!host::read_file(db_path, &blob, &error) || !host::read_file(cloud_path, &cloud, &error))
     return fail(error);
   Database db;
@@ -217,11 +223,12 @@ int golden_queries(const std::string& dir, int only) {
 int main(int argc, char** argv) {
   if (argc == 3 && std::strcmp(argv[1], "prepare") == 0) return prepare(argv[2]);
   if (argc == 4 && std::strcmp(argv[1], "run") == 0) return run(argv[2], argv[3]);
-  if (argc == 5 && std::strcmp(argv[1], "query") == 0) return query(argv[2], argv[3], argv[4]);
+  if (argc >= 5 && std::strcmp(argv[1], "query") == 0)
+    return query(argv[2], argv[3], argv[4], std::vector<std::string>(argv + 5, argv + argc));
   if ((argc == 3 || argc == 4) && std::strcmp(argv[1], "golden") == 0)
     return golden_queries(argv[2], argc == 4 ? std::atoi(argv[3]) : -1);
   std::fprintf(stderr,
                "usage: worst_case_runner prepare DIR | run DIR CASE | golden GOLDEN_DIR [INDEX] | "
-               "query DB.shdb CLOUD.f64 MODE\n");
+               "query DB.shdb CLOUD.f64 MODE [FIELD=VALUE...]\n");
   return 2;
 }

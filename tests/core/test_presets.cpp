@@ -1,0 +1,79 @@
+// The named configurations of spinhash/presets.hpp: valid, the fields they
+// name and no other, and a recognition under the flight preset.
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <vector>
+
+#include "blob/aligned_bytes.hpp"
+#include "spinhash/config_fields.h"
+#include "spinhash/presets.hpp"
+#include "spinhash/recognizer.hpp"
+#include "support/toy_database.hpp"
+
+using namespace spinhash;
+
+namespace {
+
+// The fields two configurations differ in, by name.
+std::vector<std::string> changed_fields(const RecognizerConfig& a, const RecognizerConfig& b) {
+  std::vector<std::string> names;
+#define SPINHASH_FIELD_CHANGED(kind, name, lo, hi, flag, help) \
+  if (std::memcmp(&a.name, &b.name, sizeof a.name) != 0) names.push_back(#name);
+  SPINHASH_CONFIG_FIELDS(SPINHASH_FIELD_CHANGED)
+#undef SPINHASH_FIELD_CHANGED
+  return names;
+}
+
+}  // namespace
+
+TEST_CASE("presets: default is RecognizerConfig{} and flight changes only its named fields") {
+  CHECK(changed_fields(preset_config(Preset::kDefault), RecognizerConfig{}).empty());
+  const RecognizerConfig flight = preset_config(Preset::kFlight);
+  const std::vector<std::string> expected = {"max_features", "query_cloud_voxel", "top_w", "max_bucket_scan"};
+  CHECK(changed_fields(flight, RecognizerConfig{}) == expected);
+  CHECK(flight.query_cloud_voxel == kFlightQueryVoxel);
+  CHECK(flight.max_features == kFlightMaxFeatures);
+  CHECK(flight.max_bucket_scan == kFlightMaxBucketScan);
+  CHECK(flight.top_w == kFlightTopW);
+  CHECK(flight.verify_features == 128u);  // the default's since section 9q
+  // Valid, and a smaller workspace than the default (fewer features).
+  CHECK(required_workspace_bytes(flight) > 0);
+  CHECK(required_workspace_bytes(flight) < required_workspace_bytes(RecognizerConfig{}));
+  // Applied over other settings, it keeps the fields it does not name.
+  RecognizerConfig c;
+  c.seed = 7;
+  c.mode = Mode::kSran;
+  apply_preset(Preset::kFlight, &c);
+  CHECK(c.seed == 7);
+  CHECK(c.mode == Mode::kSran);
+  CHECK(c.max_features == kFlightMaxFeatures);
+}
+
+TEST_CASE("presets: names") {
+  for (Preset p : {Preset::kDefault, Preset::kFlight}) {
+    Preset back = Preset::kDefault;
+    CHECK(preset_from_name(preset_name(p), &back));
+    CHECK(back == p);
+  }
+  Preset untouched = Preset::kFlight;
+  CHECK_FALSE(preset_from_name("fast", &untouched));
+  CHECK(untouched == Preset::kFlight);
+}
+
+TEST_CASE("presets: the flight preset recognises a toy model from its view") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  const RecognizerConfig cfg = preset_config(Preset::kFlight);
+  host::AlignedBytes workspace(required_workspace_bytes(cfg));
+  Recognizer recognizer;
+  REQUIRE(recognizer.init(&toy.db, cfg, workspace.data(), workspace.size()) == Status::kOk);
+  const uint32_t m = 1;
+  const double t[3] = {431000.5, 4020000.25, 87.0};
+  const std::vector<double> q = test::toy_query(test::toy_vehicle_points(m, 0.05f), 0.4 + m, t, 0.03, m + 1);
+  const Result r = recognizer.recognize(q.data(), static_cast<uint32_t>(q.size() / 3));
+  REQUIRE(r.status == Status::kOk);
+  REQUIRE(r.ranking_count >= 1);
+  CHECK(r.ranking[0].model == m);
+  CHECK(r.stats.features <= kFlightMaxFeatures);
+}
