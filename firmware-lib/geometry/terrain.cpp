@@ -258,14 +258,17 @@ bool terrain_begin_cells(TerrainGrid& g, float cell, float x0, float y0, uint32_
   return true;
 }
 
-void terrain_put_cell(TerrainGrid& g, uint32_t ix, uint32_t iy, float lowest, float band_sum, float band_count) {
+void terrain_put_cell(TerrainGrid& g, uint32_t ix, uint32_t iy, float lowest, float band_sum,
+                      float band_count) {
   const uint32_t c = iy * g.nx + ix;
   g.value[c] = lowest;
   g.scratch[c] = band_sum;
   g.opened[c] = band_count;
 }
 
-void terrain_add_lowest(TerrainGrid& g, const float* p) { terrain_lowest(g.value[terrain_cell_index(g, p)], p[2]); }
+void terrain_add_lowest(TerrainGrid& g, const float* p) {
+  terrain_lowest(g.value[terrain_cell_index(g, p)], p[2]);
+}
 
 void terrain_add_low_band(TerrainGrid& g, const float* p) {
   const uint32_t c = terrain_cell_index(g, p);

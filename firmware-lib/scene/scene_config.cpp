@@ -30,7 +30,8 @@ bool multiple_of(float v, float cell) {
 // footprint within max_length x max_width reaches (its diagonal). The
 // terrain sees at least as far.
 bool objects_whole(const SceneConfig& c) {
-  return 2.0f * c.object_margin >= std::hypot(c.max_length, c.max_width) && c.object_margin <= c.window_margin;
+  return 2.0f * c.object_margin >= std::hypot(c.max_length, c.max_width) &&
+         c.object_margin <= c.window_margin;
 }
 
 }  // namespace

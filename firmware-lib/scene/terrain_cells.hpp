@@ -22,8 +22,8 @@ struct TerrainCells {
   float* band_count = nullptr;
   uint32_t along = 0, across = 0;  // slots
   double cell = 0.5;
-  double t_min = 0.0;       // across: where cell 0 starts
-  int64_t summed_to = 0;    // cells along below this index are summed (the last `along` of them kept)
+  double t_min = 0.0;     // across: where cell 0 starts
+  int64_t summed_to = 0;  // cells along below this index are summed (the last `along` of them kept)
   bool started = false;
 
   // Slots for strips `depth` m deep over `width` m across.

@@ -98,7 +98,7 @@ class CellSpill {
 
  private:
   using Cell = std::pair<int64_t, int64_t>;
-  static constexpr size_t kCellBufferPoints = 256;     // 6 KB per cell in memory
+  static constexpr size_t kCellBufferPoints = 256;        // 6 KB per cell in memory
   static constexpr size_t kSpillBufferPoints = 1u << 18;  // 6 MB over all cells, whatever the tile's size
 
   fs::path path(const Cell& c) const {
@@ -196,7 +196,7 @@ StreamConfig band_config(const TileStreamOptions& o, const TileExtent& e, const 
   c.own_max = static_cast<float>(static_cast<double>(band_hi + 1 - sw.lo) * core);
   c.swath_min = c.own_min - static_cast<float>(margin);
   c.swath_max = c.own_max + static_cast<float>(margin);
-  c.max_lag = static_cast<float>(kSpillRowDepth);                // a spill row's points come in any order
+  c.max_lag = static_cast<float>(kSpillRowDepth);                 // a spill row's points come in any order
   c.max_jump = static_cast<float>(e.xmax - e.xmin + 2.0 * core);  // the tile's extent is known
   const double width = static_cast<double>(sw.hi - sw.lo + 1) * core,
                length = std::max(core, e.xmax - e.xmin);

@@ -45,7 +45,8 @@
   X(F32, window_margin, 0.0f, kMaxWindowEdge, "--window-margin",                                            \
     "m of terrain seen beyond a window's core: half the longest vehicle plus the terrain filter's reach")   \
   X(F32, object_margin, 0.0f, kMaxWindowEdge, "--object-margin",                                            \
-    "m of points a window segments beyond its core: half the largest vehicle's diagonal, at most the margin") \
+    "m of points a window segments beyond its core: half the largest vehicle's diagonal, at most the "      \
+    "margin")                                                                                               \
   X(U32, max_tile_points, 1u, kMaxSceneTilePoints, "--max-window-points",                                   \
     "points a scene window holds (default: sized from the tile's density; more: counted, not answered)")    \
   X(U32, max_objects, 1u, kMaxSceneObjects, "--max-objects",                                                \
