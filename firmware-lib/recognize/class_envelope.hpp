@@ -49,6 +49,7 @@ struct ScanShape {
   float bottom_gap = 0.0f;  // m, without terrain: the second lowest feature above the leader's box bottom
   float noise = 0.0f;       // m, sigma along the ray: the terrain's roughness, else sigma_surface
   float spacing = 0.0f;     // m, 1 / sqrt(density): the scan's point spacing on the vehicle, about
+  float density = 0.0f;     // points per m^2 of the model top the scan spans (scan_density())
 };
 
 // top_above_terrain < 0: no terrain (FeatureSet::top_above_terrain);
@@ -65,7 +66,9 @@ ScanShape measure_scan(const QueryFeatures& query, const blob::ModelRecord& lead
 // sampling. Without terrain the scan must also show the vehicle's lower
 // part (bottom_gap within a side's sample spacing): a scan that shows
 // neither terrain nor the lower sides does not measure the height, and a
-// van's roof explains a saloon's. False for a class without members.
+// van's roof explains a saloon's; and below kMinModelDensity a scan without
+// terrain never measures the height (that allowance is coarser than the
+// step between classes). False for a class without members.
 bool within_envelope(const ScanShape& scan, const ClassEnvelope& env, float end_tolerance);
 
 }  // namespace spinhash

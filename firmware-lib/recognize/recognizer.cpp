@@ -237,8 +237,7 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
       *db_,
       config_,
       b,
-      QueryFeatures{fs.positions, fs.normals, b.query_spins, fs.count, fs.dims,
-                    config_.verify_features < fs.count ? config_.verify_features : fs.count},
+      QueryFeatures{fs.positions, fs.normals, b.query_spins, fs.count, fs.dims, 0u},  // verify_count below
       make_likelihood_params(config_, *db_),
       DoubletTolerance{config_.tol_distance, deg_to_rad(config_.tol_angle_deg), config_.tol_handedness},
       config_.d_min,
@@ -250,8 +249,9 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
   {
     const ExtractStats& e = result.stats.extract;
     const uint32_t dropped = e.points_nonfinite + e.points_ground;
-    ctx.trial_scale =
-        trial_scale(footprint_density(ctx.query, e.points_in > dropped ? e.points_in - dropped : 0u));
+    const float density = footprint_density(ctx.query, e.points_in > dropped ? e.points_in - dropped : 0u);
+    ctx.trial_scale = trial_scale(density);
+    ctx.query.verify_count = verified_features(config_.verify_features, fs.count, density);
   }
   switch (config_.mode) {
     case Mode::kBran: run_bran(ctx); break;

@@ -168,18 +168,26 @@ TEST_CASE("a 1.25 m saloon is no van: on terrain, and without terrain under a va
   CHECK(sunk.height == doctest::Approx(1.70f).epsilon(0.01));
   CHECK(sunk.bottom_gap == doctest::Approx(0.66f).epsilon(0.03));
   CHECK_FALSE(within_envelope(sunk, vans, kEndTolerance));
-  // A fleet van itself, sparse (20 per m^2: about 0.35 m at 45 degrees) and
-  // without terrain: its lowest row 0.35 m up the side is within the
-  // allowance (3 / sqrt(20) = 0.67 m).
+  // A fleet van itself at 60 per m^2 without terrain: its lowest row 0.3 m
+  // up the side is within the allowance (3 / sqrt(60) = 0.39 m).
   const std::vector<float> sparse_van = seen_box(4.9f, 1.95f, 1.75f, 0.0f, 0.3f, 0.35f, pose);
   const ScanShape real_van =
-      measure_scan(features_of(sparse_van), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 20.0f);
+      measure_scan(features_of(sparse_van), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 60.0f);
   CHECK(within_envelope(real_van, vans, kEndTolerance));
+  // The same scan at 20 per m^2 (below kMinModelDensity): the allowance
+  // (0.67 m) would let a van sunk under a saloon pass, so without terrain
+  // the height counts as unmeasured; with its terrain the class holds.
+  const ScanShape bare_sparse =
+      measure_scan(features_of(sparse_van), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 20.0f);
+  CHECK(bare_sparse.bottom_gap < 3.0f / std::sqrt(20.0f));
+  CHECK_FALSE(within_envelope(bare_sparse, vans, kEndTolerance));
+  CHECK(within_envelope(measure_scan(features_of(sparse_van), van_on_ground, pose, 1.75f, 0.05f, kSigmaSurface, 20.0f),
+                        vans, kEndTolerance));
   // The same van's roof alone (a steep view that misses the sides): its
   // height is not measured, and the class is not confirmed.
   const std::vector<float> roof = seen_box(4.9f, 1.95f, 1.75f, 0.0f, 1.7f, 0.35f, pose);
   CHECK_FALSE(
-      within_envelope(measure_scan(features_of(roof), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 20.0f),
+      within_envelope(measure_scan(features_of(roof), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 60.0f),
                       vans, kEndTolerance));
 }
 
