@@ -45,7 +45,9 @@ constexpr float kBottomGapSpacings = 3.0f;
 // real cars were confidently of a wrong class (docs/results.md 11d, 11e).
 // A sparse scan then confirms a class only with its terrain, the model flag's
 // floor (dense_enough_for_model).
-bool height_measured(const ScanShape& scan) { return scan.on_terrain || dense_enough_for_model(scan.density); }
+bool height_measured(const ScanShape& scan) {
+  return scan.on_terrain || dense_enough_for_model(scan.density);
+}
 
 float span(float lo, float hi) { return hi > lo ? hi - lo : 0.0f; }
 

@@ -181,8 +181,9 @@ TEST_CASE("a 1.25 m saloon is no van: on terrain, and without terrain under a va
       measure_scan(features_of(sparse_van), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 20.0f);
   CHECK(bare_sparse.bottom_gap < 3.0f / std::sqrt(20.0f));
   CHECK_FALSE(within_envelope(bare_sparse, vans, kEndTolerance));
-  CHECK(within_envelope(measure_scan(features_of(sparse_van), van_on_ground, pose, 1.75f, 0.05f, kSigmaSurface, 20.0f),
-                        vans, kEndTolerance));
+  CHECK(within_envelope(
+      measure_scan(features_of(sparse_van), van_on_ground, pose, 1.75f, 0.05f, kSigmaSurface, 20.0f), vans,
+      kEndTolerance));
   // The same van's roof alone (a steep view that misses the sides): its
   // height is not measured, and the class is not confirmed.
   const std::vector<float> roof = seen_box(4.9f, 1.95f, 1.75f, 0.0f, 1.7f, 0.35f, pose);

@@ -48,7 +48,8 @@ TEST_CASE("footprint density: points per m^2 of the features' extent along their
   CHECK(footprint_density(none, 100u) == 0.0f);
 }
 
-TEST_CASE("verified features: the configured count on dense scans, twice it on sparse ones, never past the query") {
+TEST_CASE(
+    "verified features: the configured count on dense scans, twice it on sparse ones, never past the query") {
   constexpr uint32_t kVerify = 128;
   CHECK(verified_features(kVerify, 400u, kMinModelDensity) == kVerify);
   CHECK(verified_features(kVerify, 400u, kMinModelDensity - 0.5f) == kSparseVerifyScale * kVerify);
