@@ -4,7 +4,7 @@
 # with scripts/qemu/insn_count.c, counting between markers).
 #
 #   scripts/instructions-per-point.sh [--side 100] [--out DIR] [--host-build DIR]
-#       [--target aarch64|arm --target-build DIR]
+#       [--target aarch64|arm --target-build DIR] [--preset default|flight]
 #
 # tests/worst_case/stream_runner.cpp writes a SIDE x SIDE m strip (0.1 m
 # spacing, toy vehicles at one per 300 m2, scan order) and the toy database,
@@ -13,14 +13,15 @@
 # (build_strip_terrain + terrain_heights), segmentation (segment_objects), recognition
 # (Recognizer::recognize); "rest" is the stream's buffer, window gathering,
 # object boxes, ownership and size gates (split on the host: rest_buffer,
-# rest_gather, rest_objects). Writes DIR/instructions-per-point.csv and
-# prints a Markdown table.
+# rest_gather, rest_objects). --preset: the recognizer's preset
+# (include/spinhash/presets.hpp; the strip and every other field as
+# default). Writes DIR/instructions-per-point.csv and prints a Markdown table.
 set -euo pipefail
 
-usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
 root=$(cd "$(dirname "$0")/.." && pwd)
-side=100 out="instructions-per-point-out" host_build="$root/build" target="" target_build=""
+side=100 out="instructions-per-point-out" host_build="$root/build" target="" target_build="" preset=default
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --side) side="$2"; shift 2 ;;
@@ -28,6 +29,7 @@ while [[ $# -gt 0 ]]; do
     --host-build) host_build="$2"; shift 2 ;;
     --target) target="$2"; shift 2 ;;
     --target-build) target_build="$2"; shift 2 ;;
+    --preset) preset="$2"; shift 2 ;;
     *) usage ;;
   esac
 done
@@ -49,7 +51,7 @@ declare -A functions=([cells]='spinhash::TerrainCells::sum(' [strip_terrain]='sp
 echo "instructions-per-point: x86-64 (callgrind)" >&2
 cg="$out/callgrind.out"
 host_line=$(valgrind --tool=callgrind --toggle-collect='spinhash::SceneStream::push*' \
-  --toggle-collect='spinhash::SceneStream::flush*' --callgrind-out-file="$cg" "$runner" run "$out" 2>"$cg.log")
+  --toggle-collect='spinhash::SceneStream::flush*' --callgrind-out-file="$cg" "$runner" run "$out" "$preset" 2>"$cg.log")
 declare -A host
 host[total]=$(awk '/^(summary|totals):/ {print $2; exit}' "$cg")
 annotated=$(callgrind_annotate --inclusive=yes --threshold=100 "$cg")
@@ -80,7 +82,7 @@ if [[ -n "$target" ]]; then
   gcc -shared -fPIC -O2 -o "$out/insn_count.so" "$root/scripts/qemu/insn_count.c"
   echo "instructions-per-point: $target (qemu-$target, insn_count.so)" >&2
   plugin="$out/insn_count.so$(printf ',stage=%s' "${stages[@]}")"
-  raw=$("qemu-$target" -plugin "$plugin" -d plugin -L "/usr/$triple" "$target_runner" run "$out" 2>&1)
+  raw=$("qemu-$target" -plugin "$plugin" -d plugin -L "/usr/$triple" "$target_runner" run "$out" "$preset" 2>&1)
   target_line=$(grep -o 'points=.*status=[a-z_]*' <<< "$raw")
   tgt[total]=$(sed -n 's/.*insns \([0-9]*\).*/\1/p' <<< "$raw")
   for s in "${stages[@]}"; do tgt[$s]=$(sed -n "s/.*insns\.$s \([0-9]*\).*/\1/p" <<< "$raw"); done

@@ -26,6 +26,7 @@
 #include "geometry/terrain.hpp"
 #include "scene/scene_window.hpp"
 #include "scene/segment.hpp"
+#include "spinhash/presets.hpp"
 #include "spinhash/scene_stream.hpp"
 #include "support/scene_fixtures.hpp"
 #include "support/toy_database.hpp"
@@ -216,8 +217,9 @@ int prepare(const std::string& dir, double side) {
 // strip, the default window stages.
 constexpr float kOwnHalfWidth = 64.0f;  // m across either side of the origin: the 100 m strip
 
-StreamConfig bench_config(const double* first) {
+StreamConfig bench_config(const double* first, Preset preset) {
   StreamConfig c;
+  apply_preset(preset, &c.scene.recognizer);
   const double core = c.scene.window_core;
   c.origin_given = true;
   c.origin[0] = std::floor(first[0] / core) * core;
@@ -272,7 +274,7 @@ Score score(const Tally& t, const host::AlignedBytes& truth) {
   return s;
 }
 
-int run(const std::string& dir) {
+int run(const std::string& dir, Preset preset) {
   host::AlignedBytes blob, cloud, truth;
   std::string error;
   if (!host::read_file(dir + "/toy.shdb", &blob, &error) ||
@@ -284,7 +286,7 @@ int run(const std::string& dir) {
   const auto* xyz = reinterpret_cast<const double*>(cloud.data());  // 64-byte aligned buffer
   const auto n = static_cast<uint32_t>(cloud.size() / (3 * sizeof(double)));
   if (n == 0) return fail("empty strip");
-  const StreamConfig config = bench_config(xyz);
+  const StreamConfig config = bench_config(xyz, preset);
   host::AlignedBytes workspace(required_stream_workspace_bytes(config));
   SceneStream stream;
   static Tally t;  // large: not on the stack
@@ -322,7 +324,9 @@ int run(const std::string& dir) {
 int main(int argc, char** argv) {
   if ((argc == 3 || argc == 4) && std::strcmp(argv[1], "prepare") == 0)
     return prepare(argv[2], argc == 4 ? std::atof(argv[3]) : kDefaultSide);
-  if (argc == 3 && std::strcmp(argv[1], "run") == 0) return run(argv[2]);
-  std::fprintf(stderr, "usage: stream_runner prepare DIR [SIDE_M] | run DIR\n");
+  Preset preset = Preset::kDefault;
+  if ((argc == 3 || (argc == 4 && preset_from_name(argv[3], &preset))) && std::strcmp(argv[1], "run") == 0)
+    return run(argv[2], preset);
+  std::fprintf(stderr, "usage: stream_runner prepare DIR [SIDE_M] | run DIR [default|flight]\n");
   return 2;
 }
