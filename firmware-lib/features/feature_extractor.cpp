@@ -127,6 +127,7 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
     if (terrain.found) {
       out->top_above_terrain = terrain.top;
       out->terrain_sigma = terrain.sigma;
+      out->ground_band = terrain.band;
     }
   }
 

@@ -301,7 +301,7 @@ uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* sc
     for (uint32_t a = 0; a < 3u; ++a) xyz[3u * kept + a] = xyz[3u * i + a];
     ++kept;
   }
-  if (terrain != nullptr && kept > 1u) *terrain = TerrainUnder{true, top[1], sigma};
+  if (terrain != nullptr && kept > 1u) *terrain = TerrainUnder{true, top[1], sigma, drop};
   return n - kept;
 }
 

@@ -52,6 +52,7 @@ struct TerrainUnder {
   bool found = false;
   float top = 0.0f;    // m: the second highest kept point above its terrain level (one spike is noise)
   float sigma = 0.0f;  // m: the ground points' spread about their cells' levels
+  float band = 0.0f;   // m above the terrain level up to which points were dropped as ground
 };
 
 // When the n points stand on terrain, drops those within kClearanceSigmas of the

@@ -76,7 +76,28 @@ struct Outermost {
 
 }  // namespace
 
-ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model, const RigidPose& pose) {
+HiddenEnds hidden_ends(const Database& db, uint32_t model, float band) {
+  HiddenEnds h;
+  const blob::ModelRecord& r = db.model(model);
+  if (!(band > 0.0f) || r.feature_count == 0u) return h;
+  const float* p = db.positions() + 3u * static_cast<size_t>(r.first_feature);
+  const float cut = r.bbox_min[2] + band;
+  Outermost all, above;
+  for (uint32_t f = 0; f < r.feature_count; ++f) {
+    const Eigen::Map<const Eigen::Vector3f> x(p + 3u * f);
+    all.add(x);
+    if (x[2] > cut) above.add(x);
+  }
+  if (above.lo[0][0] > above.hi[0][0]) return h;  // nothing above the band
+  h.face[0] = above.lo[0][0] - all.lo[0][0];
+  h.face[1] = all.hi[0][0] - above.hi[0][0];
+  h.face[2] = above.lo[0][1] - all.lo[0][1];
+  h.face[3] = all.hi[0][1] - above.hi[0][1];
+  return h;
+}
+
+ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model, const RigidPose& pose,
+                     const HiddenEnds& hidden) {
   ExtentFit fit;
   if (query.count == 0) return fit;
   Outermost out;
@@ -86,6 +107,7 @@ ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model,
   float reach[kTestedFaces], second[kTestedFaces];
   out.gaps(model, 0, reach);
   out.gaps(model, 1, second);
+  for (int i = 0; i < 4; ++i) reach[i] -= hidden.face[i];
   fit.seen_area = out.seen_area(model);
   for (int i = 0; i < kTestedFaces; ++i) {
     fit.shortfall = reach[i] > fit.shortfall ? reach[i] : fit.shortfall;

@@ -18,6 +18,20 @@ namespace spinhash {
 // query's second outermost feature reaches beyond one of them (a single
 // stray feature is noise or a ground remnant). The bottom is left out:
 // terrain removal cuts it. 0 / 0 for a query without features.
+//
+// Terrain removal also cuts what of the ends lies low: a sports car's nose
+// or a bumper under the removed band reaches past everything above it, and
+// a scan with its ground stopped 0.22-0.29 m short of such an end where the
+// same scan without ground reached it (docs/results.md 11f). HiddenEnds says
+// per side face (-x, +x, -y, +y) how far the model's outermost feature lies
+// beyond its outermost feature above the band; the shortfall at that face
+// counts only beyond it. All zero when nothing was removed.
+struct HiddenEnds {
+  float face[4] = {0.0f, 0.0f, 0.0f, 0.0f};  // m
+};
+// Of model `model`'s features (model frame), those within `band` m of the
+// box's bottom against the rest. O(model features).
+HiddenEnds hidden_ends(const Database& db, uint32_t model, float band);
 struct ExtentFit {
   float shortfall = 0.0f;
   float overhang = 0.0f;
@@ -25,7 +39,8 @@ struct ExtentFit {
   // part of the vehicle the scan shows (an occluder hides the rest).
   float seen_area = 0.0f;
 };
-ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model, const RigidPose& pose);
+ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model, const RigidPose& pose,
+                     const HiddenEnds& hidden = HiddenEnds{});
 
 // The leading models within min_margin x sqrt(features) log-likelihood of
 // the first, twice that when the candidates spread over many look-alikes

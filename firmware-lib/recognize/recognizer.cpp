@@ -104,11 +104,12 @@ Pose identity_pose() {
 
 // The confidence tests of the first model under its pose (confidence.hpp);
 // the residuals' structure is measured only for an answer that passes the others.
-bool first_is_confident(const SearchContext& ctx, const Result& result) {
+// band: m above the terrain removed with the ground (FeatureSet::ground_band).
+bool first_is_confident(const SearchContext& ctx, const Result& result, float band) {
   if (result.ranking_count == 0 || !result.ranking[0].has_pose) return false;
   const uint32_t first = result.ranking[0].model;
   const RigidPose& pose = ctx.buf.best[first].pose;
-  const ExtentFit fit = extent_fit(ctx.query, ctx.db.model(first), pose);
+  const ExtentFit fit = extent_fit(ctx.query, ctx.db.model(first), pose, hidden_ends(ctx.db, first, band));
   if (!dense_enough_for_model(scan_density(result.stats.extract, fit))) return false;
   if (!is_confident(result, ctx.cfg, ctx.query.count, fit, 0.0f)) return false;
   return is_confident(result, ctx.cfg, ctx.query.count, fit, residual_structure(ctx, first, pose));
@@ -121,7 +122,8 @@ bool first_class_is_confident(const SearchContext& ctx, const Result& result, co
   const RankedClass& first = result.class_ranking[0];
   const uint32_t model = result.ranking[first.best_rank].model;
   const RigidPose& pose = ctx.buf.best[model].pose;
-  const ExtentFit fit = extent_fit(ctx.query, ctx.db.model(model), pose);
+  const ExtentFit fit =
+      extent_fit(ctx.query, ctx.db.model(model), pose, hidden_ends(ctx.db, model, fs.ground_band));
   const float density = scan_density(result.stats.extract, fit);
   if (!is_class_confident(result, ctx.cfg, ctx.query.count, fit, density)) return false;
   const ScanShape shape = measure_scan(ctx.query, ctx.db.model(model), pose, fs.top_above_terrain,
@@ -221,6 +223,7 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
   if (terrain.top >= 0.0f) {  // the caller's terrain stands for the object ground removal's
     fs.top_above_terrain = terrain.top;
     fs.terrain_sigma = terrain.sigma;
+    fs.ground_band = terrain.band;
   }
   result.stats.features = fs.count;
   if (fs.count < 2u) {
@@ -263,7 +266,7 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
   result.ranking_count = rank_models(*db_, b, fs.origin);
   result.group_size = lookalike_group_size(result, config_, fs.count);
   order_twins_by_residuals(ctx, b.ranking, result.group_size);
-  result.confident = first_is_confident(ctx, result);
+  result.confident = first_is_confident(ctx, result, fs.ground_band);
   result.class_ranking = b.classes;
   result.class_ranking_count = rank_classes(*db_, result, b.classes);
   result.class_confident = first_class_is_confident(ctx, result, fs);

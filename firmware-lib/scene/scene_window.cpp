@@ -170,9 +170,10 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
   float* points = b.gathered + 3u * static_cast<size_t>(b.offsets[k]);
   canonical_order(points, o.points);
   // The tile's terrain measures the object's top (the class envelope's
-  // height; its noise: the recognizer's sigma_surface, not measured per object).
-  const Result r =
-      b.recognizer.recognize(points, o.points, ObjectTerrain{o.hmax, c.recognizer.sigma_surface});
+  // height; its noise: the recognizer's sigma_surface, not measured per
+  // object); the object's points start ground_height above it.
+  const Result r = b.recognizer.recognize(points, o.points,
+                                          ObjectTerrain{o.hmax, c.recognizer.sigma_surface, c.ground_height});
   out.status = r.status;
   out.stats = r.stats;
   stats->recognition_hypotheses += r.stats.hypotheses;

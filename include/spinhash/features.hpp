@@ -46,10 +46,12 @@ struct FeatureSet {
   double origin[3] = {0.0, 0.0, 0.0};
   // The terrain the object stands on, when the extractor found and dropped it
   // (ExtractorCapacity::ground_clearance): the object's top above it (the
-  // second highest point; m) and the ground's roughness (m, the scan's noise).
-  // top_above_terrain < 0: no terrain found.
+  // second highest point; m), the ground's roughness (m, the scan's noise) and
+  // the band above the terrain dropped with it (m: the object's lowest part,
+  // a low nose or bumper, went too). top_above_terrain < 0: no terrain found.
   float top_above_terrain = -1.0f;
   float terrain_sigma = 0.0f;
+  float ground_band = 0.0f;
 };
 
 struct ExtractStats {

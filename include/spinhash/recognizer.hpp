@@ -94,6 +94,7 @@ size_t required_workspace_bytes(const RecognizerConfig& config) noexcept;
 struct ObjectTerrain {
   float top = -1.0f;  // m above the terrain; < 0: not measured
   float sigma = 0.0f;
+  float band = 0.0f;  // m above the terrain below which the caller removed the points (as ground)
 };
 
 class Recognizer {

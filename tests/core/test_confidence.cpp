@@ -303,3 +303,41 @@ TEST_CASE("within a look-alike group the model whose residuals are noise comes f
   CHECK(first(0) == 0u);
   CHECK(first(1) == 1u);
 }
+
+TEST_CASE("hidden ends: the removed ground band hides a low nose, and the shortfall there counts beyond it") {
+  // A 4 x 2 x 1.2 m body on z = 0 with a 0.6 m long, 0.15 m high splitter
+  // ahead of its front (+x): below a 0.25 m ground band, so a scan with its
+  // ground removed never shows it.
+  constexpr float kNose = 0.6f, kNoseHeight = 0.15f, kBand = 0.25f;
+  std::vector<float> body = test::box_surface(kLength, kWidth, 1.2f, kSpacing);
+  for (size_t i = 2; i < body.size(); i += 3) body[i] += 0.6f;
+  std::vector<double> cloud(body.begin(), body.end());
+  for (float x = 0.5f * kLength; x <= 0.5f * kLength + kNose; x += 0.5f * kSpacing)
+    for (float y = -0.5f * kWidth; y <= 0.5f * kWidth; y += 0.5f * kSpacing)
+      for (const float z : {0.0f, kNoseHeight}) cloud.insert(cloud.end(), {x, y, z});
+  test::ToyDatabase t;
+  REQUIRE(test::make_database({host::ModelCloud{"nosed", cloud, VehicleClass::kSedan}}, &t));
+  const blob::ModelRecord& rec = t.db.model(0);
+
+  const HiddenEnds none = hidden_ends(t.db, 0, 0.0f);
+  for (const float f : none.face) CHECK(f == 0.0f);
+  const HiddenEnds cut = hidden_ends(t.db, 0, kBand);
+  CHECK(cut.face[1] > kNose - 2.0f * 0.25f);  // the front, within the features' spacing
+  CHECK(cut.face[1] < kNose + 0.25f);
+  CHECK(cut.face[0] < 0.25f);  // the back, the sides: the body reaches them above the band
+  CHECK(cut.face[2] < 0.25f);
+  CHECK(cut.face[3] < 0.25f);
+
+  // A scan of the model above the band: short of the box's front by the
+  // nose without the allowance, pinned with it.
+  std::vector<float> above;
+  const float* p = t.db.positions() + 3u * rec.first_feature;
+  for (uint32_t f = 0; f < rec.feature_count; ++f)
+    if (p[3u * f + 2u] > rec.bbox_min[2] + kBand) above.insert(above.end(), p + 3u * f, p + 3u * f + 3u);
+  QueryFeatures q;
+  q.positions = above.data();
+  q.count = static_cast<uint32_t>(above.size() / 3);
+  CHECK(extent_fit(q, rec, identity()).shortfall > kNose - 0.25f);
+  CHECK(extent_fit(q, rec, identity(), cut).shortfall < 0.2f);
+  CHECK(extent_fit(q, rec, identity(), cut).overhang == extent_fit(q, rec, identity()).overhang);
+}
