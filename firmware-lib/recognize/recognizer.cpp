@@ -240,7 +240,8 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
       *db_,
       config_,
       b,
-      QueryFeatures{fs.positions, fs.normals, b.query_spins, fs.count, fs.dims, 0u},  // verify_count below
+      QueryFeatures{fs.positions, fs.normals, b.query_spins, fs.count, fs.dims,
+                    config_.verify_features < fs.count ? config_.verify_features : fs.count},
       make_likelihood_params(config_, *db_),
       DoubletTolerance{config_.tol_distance, deg_to_rad(config_.tol_angle_deg), config_.tol_handedness},
       config_.d_min,
@@ -254,7 +255,6 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
     const uint32_t dropped = e.points_nonfinite + e.points_ground;
     const float density = footprint_density(ctx.query, e.points_in > dropped ? e.points_in - dropped : 0u);
     ctx.trial_scale = trial_scale(density);
-    ctx.query.verify_count = verified_features(config_.verify_features, fs.count, density);
   }
   switch (config_.mode) {
     case Mode::kBran: run_bran(ctx); break;

@@ -33,10 +33,4 @@ float footprint_density(const QueryFeatures& query, uint32_t points) {
 
 uint32_t trial_scale(float density) { return dense_enough_for_model(density) ? 1u : kSparseTrialScale; }
 
-uint32_t verified_features(uint32_t verify_features, uint32_t count, float density) {
-  const uint32_t scale = dense_enough_for_model(density) ? 1u : kSparseVerifyScale;
-  const uint64_t wanted = static_cast<uint64_t>(scale) * verify_features;
-  return wanted < count ? static_cast<uint32_t>(wanted) : count;
-}
-
 }  // namespace spinhash

@@ -1,5 +1,4 @@
-// More doublet draws and verified features for a sparse scan (issue 28; not
-// in the paper). At
+// More doublet draws for a sparse scan (issue 28; not in the paper). At
 // 10-30 points per m^2 a car returns 100-250 features whose spin images are
 // sparse and noisy: BRAN's draws often verify no model of the vehicle's
 // class at all (13 of the 17 class misses of section 11's sparse scans,
@@ -21,12 +20,6 @@ namespace spinhash {
 // --min-hypotheses 400) gave 225.
 constexpr uint32_t kSparseTrialScale = 4;
 
-// Twice the verified features (verify_features, capped by the feature count):
-// with verify_features 128 (docs/results.md 9q) section 11's 241 sparse
-// 3-view scans lost 2 class answers against 256 (229 -> 227), and a sparse
-// scan's features are few, so the dense scans' saving is kept whole.
-constexpr uint32_t kSparseVerifyScale = 2;
-
 // Object points per m^2 of the query's footprint before any pose: the
 // features' extent along their principal horizontal axes (at least
 // kMinFootprint), the measure the confidence gate takes under a pose.
@@ -35,9 +28,5 @@ float footprint_density(const QueryFeatures& query, uint32_t points);
 
 // kSparseTrialScale below kMinModelDensity, else 1.
 uint32_t trial_scale(float footprint_density);
-
-// The features verify_pose scores: verify_features, kSparseVerifyScale times
-// that below kMinModelDensity, at most the query's `count`.
-uint32_t verified_features(uint32_t verify_features, uint32_t count, float footprint_density);
 
 }  // namespace spinhash

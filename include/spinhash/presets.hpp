@@ -18,8 +18,8 @@ enum class Preset : uint8_t {
 // kFlight: issue 29's flight budget, measured by scripts/flight-levers.sh
 // (docs/results.md section 9q) on aarch64 at 56 models: 43.8 M instructions
 // per query (the benchmark's middle of 6; worst 54.9 M, 1.25x) against
-// 145.4 M (worst 296.8 M) for the default, whose verify_features (128) it
-// keeps. It costs accuracy: right first 1 621 of 1 680 fleet and family
+// 145.4 M (worst 296.8 M) for verify_features 128 (153.6 M, worst 312.4 M,
+// for the default's 256). It costs accuracy: right first 1 621 of 1 680 fleet and family
 // queries against 1 652 (the fleet's noisy scans 199 and 202 of 224 without
 // and with ground against 213 and 211, the families 499 and 498 of 504 at
 // 0.05 and 0.10 m against 503 and 502), confident and right 82 % of the
@@ -31,6 +31,7 @@ constexpr float kFlightQueryVoxel = 0.18f;
 constexpr uint32_t kFlightMaxFeatures = 256;    // s: query features kept (evenly thinned)
 constexpr uint32_t kFlightMaxBucketScan = 512;  // LSH entries scanned per query feature
 constexpr uint32_t kFlightTopW = 30;            // W: candidates per query feature
+constexpr uint32_t kFlightVerifyFeatures = 128;  // query features scored per hypothesis
 
 // Sets the fields a preset names; every other field keeps its value.
 inline void apply_preset(Preset preset, RecognizerConfig* c) {
@@ -39,6 +40,7 @@ inline void apply_preset(Preset preset, RecognizerConfig* c) {
   c->max_features = kFlightMaxFeatures;
   c->max_bucket_scan = kFlightMaxBucketScan;
   c->top_w = kFlightTopW;
+  c->verify_features = kFlightVerifyFeatures;
 }
 
 inline RecognizerConfig preset_config(Preset preset) {

@@ -30,13 +30,14 @@ std::vector<std::string> changed_fields(const RecognizerConfig& a, const Recogni
 TEST_CASE("presets: default is RecognizerConfig{} and flight changes only its named fields") {
   CHECK(changed_fields(preset_config(Preset::kDefault), RecognizerConfig{}).empty());
   const RecognizerConfig flight = preset_config(Preset::kFlight);
-  const std::vector<std::string> expected = {"max_features", "query_cloud_voxel", "top_w", "max_bucket_scan"};
+  const std::vector<std::string> expected = {"max_features", "query_cloud_voxel", "top_w", "max_bucket_scan",
+                                             "verify_features"};
   CHECK(changed_fields(flight, RecognizerConfig{}) == expected);
   CHECK(flight.query_cloud_voxel == kFlightQueryVoxel);
   CHECK(flight.max_features == kFlightMaxFeatures);
   CHECK(flight.max_bucket_scan == kFlightMaxBucketScan);
   CHECK(flight.top_w == kFlightTopW);
-  CHECK(flight.verify_features == 128u);  // the default's since section 9q
+  CHECK(flight.verify_features == kFlightVerifyFeatures);
   // Valid, and a smaller workspace than the default (fewer features).
   CHECK(required_workspace_bytes(flight) > 0);
   CHECK(required_workspace_bytes(flight) < required_workspace_bytes(RecognizerConfig{}));

@@ -47,14 +47,3 @@ TEST_CASE("footprint density: points per m^2 of the features' extent along their
   QueryFeatures none;
   CHECK(footprint_density(none, 100u) == 0.0f);
 }
-
-TEST_CASE(
-    "verified features: the configured count on dense scans, twice it on sparse ones, never past the query") {
-  constexpr uint32_t kVerify = 128;
-  CHECK(verified_features(kVerify, 400u, kMinModelDensity) == kVerify);
-  CHECK(verified_features(kVerify, 400u, kMinModelDensity - 0.5f) == kSparseVerifyScale * kVerify);
-  CHECK(verified_features(kVerify, 200u, 20.0f) == 200u);  // a sparse scan's few features: all of them
-  CHECK(verified_features(kVerify, 90u, 300.0f) == 90u);
-  CHECK(verified_features(0xFFFFFFFFu, 500u, 20.0f) == 500u);  // no overflow of the scaled count
-  CHECK(verified_features(kVerify, 0u, 0.0f) == 0u);
-}
