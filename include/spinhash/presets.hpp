@@ -28,9 +28,9 @@ enum class Preset : uint8_t {
 // The query's density voxel (FeatureParams::cloud_voxel for the query
 // only), m: 2.25 times the database's 0.08 m.
 constexpr float kFlightQueryVoxel = 0.18f;
-constexpr uint32_t kFlightMaxFeatures = 256;    // s: query features kept (evenly thinned)
-constexpr uint32_t kFlightMaxBucketScan = 512;  // LSH entries scanned per query feature
-constexpr uint32_t kFlightTopW = 30;            // W: candidates per query feature
+constexpr uint32_t kFlightMaxFeatures = 256;     // s: query features kept (evenly thinned)
+constexpr uint32_t kFlightMaxBucketScan = 512;   // LSH entries scanned per query feature
+constexpr uint32_t kFlightTopW = 30;             // W: candidates per query feature
 constexpr uint32_t kFlightVerifyFeatures = 128;  // query features scored per hypothesis
 
 // Sets the fields a preset names; every other field keeps its value.
