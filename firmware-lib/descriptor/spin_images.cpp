@@ -44,7 +44,9 @@ void compute_spin_images(const SpinImageParams& sp, const CellGrid& grid, const 
     compute_spin_image(sp, grid, points, normals, has_normal, points + 3u * i, normals + 3u * i,
                        images + static_cast<size_t>(k) * dims);
   };
-  if (scratch.capacity == 0u || grid.cell_count() == 0u) {
+  // Without a SIMD kernel (kernels::kSpinGathers false) the code below is
+  // dead and compiled out: the bare-metal image keeps only the walk.
+  if (!kernels::kSpinGathers || scratch.capacity == 0u || grid.cell_count() == 0u) {
     for (uint32_t k = 0; k < nb; ++k) walk(k);
     return;
   }

@@ -14,7 +14,8 @@ namespace spinhash {
 
 // Room for gathered neighbourhoods: capacity points' coordinates, normals
 // and indices, and each cloud point's place in the basis. None (capacity
-// 0): every image walks the grid (compute_spin_image).
+// 0), or no SIMD spin kernel built: every image walks the grid
+// (compute_spin_image).
 struct SpinScratch {
   uint32_t* basis_of = nullptr;  // one per cloud point
   float* x = nullptr;            // capacity each

@@ -4,7 +4,8 @@
 // neighbourhoods of every count 0..kMaxCount at unaligned addresses and on
 // edge cases (points exactly on the radius and on the support angle, zero
 // alpha, no normals, the support test off, rim bins); then the cell-by-cell
-// images of compute_spin_images against compute_spin_image's grid walk.
+// images of compute_spin_images against compute_spin_image's grid walk
+// (which reference builds, SPINHASH_KERNELS_REFERENCE, use for both).
 #include <doctest/doctest.h>
 
 #include <cmath>
