@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "geometry/cell_grid.hpp"
+#include "kernels/spin_geometry.hpp"
 #include "spinhash/internal/spin_quantize.hpp"  // quantize_spin
 
 namespace spinhash {
@@ -16,6 +17,9 @@ struct SpinImageParams {
   bool use_support_angle = true;
   float cos_support_angle = 0.5f;  // neighbours with n . n_x below are ignored
 };
+
+// The kernels' view of the parameters (bin widths, the search's r2).
+kernels::SpinGeometry spin_geometry(const SpinImageParams& sp);
 
 // Adds a unit vote for a point at (alpha, beta), split bilinearly between the
 // four nearest bin centres (votes beyond the outer centres go to the rim bins).

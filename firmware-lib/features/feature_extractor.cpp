@@ -1,11 +1,12 @@
 // Orchestrates the feature pipeline over buffers carved once from the arena.
 #include <new>
 
-#include "descriptor/spin_image.hpp"
+#include "descriptor/spin_images.hpp"
 #include "geometry/cell_grid.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/object_ground.hpp"
 #include "geometry/resample.hpp"
+#include "kernels/spin_select.hpp"
 #include "spinhash/features.hpp"
 #include "spinhash/limits.hpp"
 #include "util/angle_math.hpp"
@@ -73,6 +74,29 @@ SpinImageParams spin_params(const FeatureParams& p) {
   sp.use_support_angle = p.support_angle_deg < 180.0f;
   sp.cos_support_angle = std::cos(deg_to_rad(p.support_angle_deg));
   return sp;
+}
+
+// The spin images' gathered neighbourhoods (descriptor/spin_images.hpp) in
+// the re-centred input's 3 * max_points floats, free once the points are
+// equalised: max_points places in the basis, then seven arrays of the
+// rest. Only when a SIMD spin kernel is built: the reference walks the grid.
+constexpr uint32_t kSpinScratchArrays = 7;  // x, y, z, nx, ny, nz, index
+SpinScratch spin_scratch(float* free_floats, uint32_t max_points) {
+  SpinScratch s;
+  if (!kernels::kSpinGathers) return s;
+  // The arena's bytes hold floats or indices (both 4 bytes), as the normals' scratch does.
+  static_assert(sizeof(float) == sizeof(uint32_t), "4-byte floats and indices");
+  s.basis_of = reinterpret_cast<uint32_t*>(free_floats);
+  s.capacity = 2u * max_points / kSpinScratchArrays;
+  float* a = free_floats + max_points;
+  s.x = a;
+  s.y = s.x + s.capacity;
+  s.z = s.y + s.capacity;
+  s.nx = s.z + s.capacity;
+  s.ny = s.nx + s.capacity;
+  s.nz = s.ny + s.capacity;
+  s.index = reinterpret_cast<uint32_t*>(s.nz + s.capacity);
+  return s;
 }
 
 }  // namespace
@@ -171,15 +195,13 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   const SpinImageParams sp = spin_params(params_);
   const uint32_t dims = spin_dims(params_);
   for (uint32_t k = 0; k < nb; ++k) {
-    const float* p = m.equalised + 3u * m.basis[k];
-    const float* nrm = m.normals + 3u * m.basis[k];
     for (int a = 0; a < 3; ++a) {
-      m.out_positions[3u * k + a] = p[a];
-      m.out_normals[3u * k + a] = nrm[a];
+      m.out_positions[3u * k + a] = m.equalised[3u * m.basis[k] + a];
+      m.out_normals[3u * k + a] = m.normals[3u * m.basis[k] + a];
     }
-    compute_spin_image(sp, m.neighbour_grid, m.equalised, m.normals, m.has_normal, p, nrm,
-                       m.out_spins + static_cast<size_t>(k) * dims);
   }
+  compute_spin_images(sp, m.neighbour_grid, m.equalised, ne, m.normals, m.has_normal, m.basis, nb,
+                      spin_scratch(m.points, cap_.max_points), m.out_spins);
   out->count = nb;
   out->dims = dims;
   out->positions = m.out_positions;
