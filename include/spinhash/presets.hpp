@@ -16,10 +16,10 @@ enum class Preset : uint8_t {
 };
 
 // kFlight: issue 29's flight budget, measured by scripts/flight-levers.sh
-// (docs/results.md section 9q) on aarch64 at 56 models: 43.8 M instructions
-// per query (the benchmark's middle of 6; worst 54.9 M, 1.25x) against
-// 145.4 M (worst 296.8 M) for verify_features 128 (153.6 M, worst 312.4 M,
-// for the default's 256). It costs accuracy: right first 1 621 of 1 680 fleet and family
+// (docs/results.md section 9q) on aarch64 at 56 models: 42.9 M instructions
+// per query (the benchmark's middle of 6; worst 52.8 M, 1.23x) against
+// 137.8 M (worst 276.5 M) for the default (stop 30, with the spin-image
+// kernel; 43.8 M against 145.4 M with verify_features 128 before it). It costs accuracy: right first 1 621 of 1 680 fleet and family
 // queries against 1 652 (the fleet's noisy scans 199 and 202 of 224 without
 // and with ground against 213 and 211, the families 499 and 498 of 504 at
 // 0.05 and 0.10 m against 503 and 502), confident and right 82 % of the
