@@ -341,13 +341,34 @@ Status build_strip_terrain(const SceneConfig& c, const TerrainCells& cells, cons
   return s != Status::kOk ? s : finish_strip_terrain(c, b, st);
 }
 
+// The per-point counts of the points in the window's core: the margins
+// overlap, and a point seen by several windows is counted once, by the
+// window that owns it. Not ground and in no object: a fragment (or an
+// object past max_objects). Without labels (segmentation failed) only the
+// points and the ground.
+void count_owned_points(const WindowSource& src, const WindowJob& job, uint32_t n, const WindowBuffers& b,
+                        bool labelled, SceneStats& st) {
+  uint32_t owned = 0, ground = 0, in_objects = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    double stz[3];
+    src.stz(b.source[i], stz);
+    if (!job.core.holds(stz[0], stz[1])) continue;
+    ++owned;
+    ground += b.ground[i] ? 1u : 0u;
+    in_objects += labelled && b.label[i] != kNoObject ? 1u : 0u;
+  }
+  st.points_in = add_saturated(st.points_in, owned);
+  st.points_ground = add_saturated(st.points_ground, ground);
+  if (!labelled) return;
+  st.points_in_objects = add_saturated(st.points_in_objects, in_objects);
+  st.points_fragments = add_saturated(st.points_fragments, owned - ground - in_objects);
+}
+
 Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& frame, const WindowSource& src,
                   const WindowJob& job, uint32_t n, WindowBuffers& b, const WindowOutput& out) {
   SceneStats& st = *out.scene;
-  st.points_in = add_saturated(st.points_in, n);
   if (n == 0) return Status::kOk;
-  st.points_ground = add_saturated(
-      st.points_ground, terrain_heights(b.terrain, b.local, n, c.ground_height, b.height, b.ground));
+  terrain_heights(b.terrain, b.local, n, c.ground_height, b.height, b.ground);
   SegmentParams sp;
   sp.cell = c.segment_cell;
   sp.split_height = c.layer_split_height;
@@ -355,12 +376,12 @@ Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& f
   sp.max_objects = c.max_objects;
   SegmentStats ss;
   const Status seg = segment_objects(b.local, b.height, b.ground, n, sp, b.segments, b.shapes, b.label, &ss);
-  if (seg != Status::kOk && seg != Status::kTooManyObjects) return seg;
+  const bool labelled = seg == Status::kOk || seg == Status::kTooManyObjects;
+  count_owned_points(src, job, n, b, labelled, st);
+  if (!labelled) return seg;
   st.segment_cells = add_saturated(st.segment_cells, ss.cells);
   st.components = add_saturated(st.components, ss.components);
   st.objects_dropped = add_saturated(st.objects_dropped, ss.dropped);
-  st.points_in_objects = add_saturated(st.points_in_objects, ss.points_in_objects);
-  st.points_fragments = add_saturated(st.points_fragments, ss.points_fragments);
   object_boxes(src, n, ss.objects, b);
   gather_objects(src, n, ss.objects, frame, b);
   for (uint32_t k = 0; k < ss.objects; ++k) {

@@ -141,6 +141,12 @@ TEST_CASE("stream: every vehicle of a strip is reported once, named as the whole
   CHECK(st.windows >= 5u);           // rows of 32 m over 160 m
   CHECK(st.objects_not_owned > 0u);  // neighbours saw the vehicles near their edges too
   CHECK(st.points_late + st.points_glitch + st.points_outside + st.points_overflow == 0u);
+  // Each point is counted once, by the window that owns it, though the
+  // windows' margins overlap.
+  CHECK(st.scene.points_in == st.points_pushed);
+  CHECK(st.scene.points_ground + st.scene.points_in_objects + st.scene.points_fragments ==
+        st.scene.points_in);
+  CHECK(st.scene.points_in_objects > 0u);
 
   // The whole strip as one window (the tile API) for reference.
   SceneConfig whole;
@@ -153,6 +159,9 @@ TEST_CASE("stream: every vehicle of a strip is reported once, named as the whole
   const SceneResult tile = scene.recognize(xyz.data(), static_cast<uint32_t>(xyz.size() / 3));
   REQUIRE(tile.status == Status::kOk);
   CHECK(tile.stats.windows == 1u);
+  CHECK(tile.stats.points_in == xyz.size() / 3);
+  CHECK(tile.stats.points_ground + tile.stats.points_in_objects + tile.stats.points_fragments ==
+        xyz.size() / 3);
   std::vector<Reported> tile_objects;
   for (uint32_t k = 0; k < tile.object_count; ++k) collect(&tile_objects, tile.objects[k], 0, 0);
 
