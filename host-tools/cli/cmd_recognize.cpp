@@ -11,9 +11,12 @@
 #include "cli/json_line.hpp"
 #include "cli/result_json.hpp"
 #include "cloud/cloud_reader.hpp"
+#include "cloud/crs_units.hpp"
+#include "cloud/metric_source.hpp"
 #include "cloud/point_source.hpp"
 #include "pipeline/answer_overlay.hpp"
 #include "pipeline/database_file.hpp"
+#include "pipeline/object_units.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/recognizer_flags.hpp"
 
@@ -25,16 +28,24 @@ using pipeline::load_database;
 using pipeline::RecognitionSession;
 namespace {
 
-// The query file's CRS as its header declares it ("" for none, standard
-// input, or a header that cannot be read again).
-std::string query_crs(const std::string& path) {
-  if (path == host::kStdinPath) return "";
+// The query file's CRS as its header declares it (unknown for none,
+// standard input, or a header that cannot be read again).
+host::Crs query_crs(const std::string& path) {
+  if (path == host::kStdinPath) return {};
   try {
-    const host::Crs crs = host::read_cloud_header(path).crs;
-    return crs.known() ? crs.describe() : "";
+    return host::read_cloud_header(path).crs;
   } catch (const std::exception&) {
-    return "";
+    return {};
   }
+}
+
+// The query in metres (cloud/crs_units.hpp); notes on stderr.
+host::AxisUnits to_metres(const std::string& name, const host::Crs& crs, std::vector<double>* xyz) {
+  const host::AxisUnits units = host::axis_units(crs);
+  for (const std::string& w : units.messages())
+    std::fprintf(stderr, "spinhash recognize: %s: units: %s\n", name.c_str(), w.c_str());
+  host::scale_to_metres(units, xyz->data(), xyz->size() / 3);
+  return units;
 }
 
 struct RecognizeArgs {
@@ -100,8 +111,14 @@ int run_recognize(const RecognizeArgs& a) {
       exit_code = kExitCheckFailed;
       continue;
     }
+    const host::Crs crs = query_crs(q);
+    const host::AxisUnits units = to_metres(name, crs, &xyz);
     Result r = session.recognize(xyz);
-    std::printf("%s\n", result_json(name, file.db, r, a.top, session.last_ms(), query_crs(q)).c_str());
+    std::vector<RankedModel> ranking;
+    const Result out = pipeline::in_file_units(r, units, &ranking);
+    std::printf(
+        "%s\n",
+        result_json(name, file.db, out, a.top, session.last_ms(), crs.known() ? crs.describe() : "").c_str());
     std::fflush(stdout);  // a line per query as soon as it is known
     if (r.status != Status::kOk) exit_code = kExitCheckFailed;
     if (!write_answer_views(a, name, file.db, xyz, r, &error)) {

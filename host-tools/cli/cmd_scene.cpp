@@ -70,7 +70,9 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s\n", pipeline::object_json(name, index++, file.db, o, crs, ms).c_str());
-    if (!a.picture_dir.empty()) boxes.push_back(pipeline::object_box(file.db, o));
+    if (!a.picture_dir.empty())
+      boxes.push_back(
+          pipeline::object_box(file.db, o, options.units.geographic ? 1.0 : options.units.horizontal));
     confident += o.confident ? 1u : 0u;
   };
   pipeline::TileStreamResult r;
@@ -79,6 +81,9 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
     if (source->header().crs.known()) crs = source->header().crs.describe();
     for (const std::string& w : source->header().crs.warnings)
       std::fprintf(stderr, "spinhash scene: %s: CRS: %s\n", name.c_str(), w.c_str());
+    options.units = host::axis_units(source->header().crs);
+    for (const std::string& w : options.units.messages())
+      std::fprintf(stderr, "spinhash scene: %s: units: %s\n", name.c_str(), w.c_str());
     r = pipeline::stream_tile(file.db, *source, options, print);
   } catch (const std::exception& e) {
     std::fflush(stdout);

@@ -15,9 +15,11 @@ namespace spinhash::host {
 constexpr uint32_t kGeoKeyUserDefined = 32767;
 
 struct Crs {
-  std::string wkt;                    // OGC WKT as the file holds it (empty: none)
-  uint32_t horizontal_epsg = 0;       // projected or geographic EPSG code (0: none)
-  uint32_t vertical_epsg = 0;         // vertical EPSG code (0: none)
+  std::string wkt;                 // OGC WKT as the file holds it (empty: none)
+  uint32_t horizontal_epsg = 0;    // projected or geographic EPSG code (0: none)
+  uint32_t vertical_epsg = 0;      // vertical EPSG code (0: none)
+  uint32_t linear_units_epsg = 0;  // GeoKeys' horizontal unit (9001 metre, 9002 foot, 9003 US foot; 0: none)
+  uint32_t vertical_units_epsg = 0;   // GeoKeys' vertical unit (0: none)
   std::string source;                 // "wkt", "geokeys" or "" (unknown)
   std::vector<std::string> warnings;  // what was malformed and skipped
 

@@ -14,6 +14,11 @@ uint16_t word(const std::vector<uint8_t>& d, size_t i) {
 
 // The key's value when stored inline (TIFF tag location 0), else 0.
 void take_key(uint16_t id, uint16_t location, uint16_t value, Crs* crs) {
+  const bool units = id == kGeoKeyLinearUnits || id == kGeoKeyVerticalUnits;
+  if (units && location == 0 && value != 0 && value != kGeoKeyUserDefined) {
+    (id == kGeoKeyLinearUnits ? crs->linear_units_epsg : crs->vertical_units_epsg) = value;
+    return;
+  }
   const bool code = id == kGeoKeyProjectedCs || id == kGeoKeyGeographicCs || id == kGeoKeyVerticalCs;
   if (!code) return;
   if (location != 0) {

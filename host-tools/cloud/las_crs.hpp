@@ -2,8 +2,10 @@
 // when the global encoding's WKT bit is set (LAS 1.4), else the GeoTIFF
 // GeoKeyDirectory (LASF_Projection 34735): ProjectedCSTypeGeoKey (3072) or
 // GeographicTypeGeoKey (2048) for the horizontal EPSG code,
-// VerticalCSTypeGeoKey (4096) for the vertical one. 32767 means
-// user-defined: no EPSG code, a warning. A malformed directory gives
+// VerticalCSTypeGeoKey (4096) for the vertical one; ProjLinearUnitsGeoKey
+// (3076) and VerticalUnitsGeoKey (4099) for the units (a user-defined
+// projection in feet still says so). 32767 means user-defined: no EPSG
+// code, a warning. A malformed directory gives
 // warnings and whatever its valid keys say, never an error.
 #pragma once
 
@@ -18,6 +20,8 @@ namespace spinhash::host {
 constexpr uint16_t kGeoKeyProjectedCs = 3072;
 constexpr uint16_t kGeoKeyGeographicCs = 2048;
 constexpr uint16_t kGeoKeyVerticalCs = 4096;
+constexpr uint16_t kGeoKeyLinearUnits = 3076;
+constexpr uint16_t kGeoKeyVerticalUnits = 4099;
 
 Crs las_crs(const LasHeader& h, const std::vector<Vlr>& vlrs);
 

@@ -7,6 +7,8 @@
 
 namespace spinhash::pipeline {
 
-host::PictureBox object_box(const Database& db, const SceneObject& o);
+// o's centre in the tile's units, its extent in metres (metres_per_unit:
+// pipeline/object_units.hpp).
+host::PictureBox object_box(const Database& db, const SceneObject& o, double metres_per_unit = 1.0);
 
 }  // namespace spinhash::pipeline

@@ -10,6 +10,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "cloud/metric_source.hpp"
+#include "pipeline/object_units.hpp"
 #include "spinhash/scene_fields.h"
 
 #include "spinhash/limits.hpp"
@@ -308,7 +310,10 @@ TileStreamResult stream_tile(const Database& db, host::PointSource& source, cons
   const auto t0 = std::chrono::steady_clock::now();
   CellSpill cells(kSpillRowDepth, options.scene.window_core);
   TileExtent extent;
-  spill(source, options.chunk_points, options.picture_points, cells, extent, res);
+  host::MetricSource metric(source, options.units);
+  spill(metric, options.chunk_points, options.picture_points, cells, extent, res);
+  for (size_t i = 0; i + 3 <= res.picture_xyz.size(); i += 3)
+    host::scale_to_file_units(options.units, &res.picture_xyz[i]);
   res.read_ms = ms_since(t0);
   res.stats.scene.points_nonfinite = static_cast<uint32_t>(std::min<uint64_t>(extent.nonfinite, 0xFFFFFFFFu));
   if (extent.finite == 0) {
@@ -326,7 +331,9 @@ TileStreamResult stream_tile(const Database& db, host::PointSource& source, cons
   if (res.workspace_bytes == 0) throw std::runtime_error("invalid scene configuration for this tile");
   auto workspace = lazy_workspace(res.workspace_bytes);
   res.status = Status::kOk;
-  const ObjectCallback owned = [&](const SceneObject& o) {
+  std::vector<RankedModel> ranking;
+  const ObjectCallback owned = [&](const SceneObject& metres) {
+    const SceneObject o = in_file_units(metres, options.units, &ranking);
     const bool mine =
         !options.own_given || (o.center[0] >= options.own_min[0] && o.center[0] < options.own_max[0] &&
                                o.center[1] >= options.own_min[1] && o.center[1] < options.own_max[1]);

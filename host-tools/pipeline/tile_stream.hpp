@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "cloud/crs_units.hpp"
 #include "cloud/point_source.hpp"
 #include "spinhash/scene_stream.hpp"
 
@@ -28,7 +29,11 @@ struct TileStreamOptions {
   // lies in [own_min, own_max) (x, y; half-open) are reported, the others
   // counted in objects_not_owned (a neighbour reports them).
   bool own_given = false;
-  double own_min[2] = {0, 0}, own_max[2] = {0, 0};
+  double own_min[2] = {0, 0}, own_max[2] = {0, 0};  // in the file's units
+  // The file's units (cloud/crs_units.hpp): points are scaled to metres on
+  // reading; objects (pipeline/object_units.hpp), own_* and the picture's
+  // points are in the file's units.
+  host::AxisUnits units;
 };
 
 struct TileStreamResult {

@@ -9,10 +9,11 @@
 
 namespace spinhash::survey {
 
-Ring footprint(const SceneObject& o) {
+Ring footprint(const SceneObject& o, double metres_per_unit) {
   const double h = static_cast<double>(o.heading_deg) * M_PI / 180.0;
   const double ux = std::cos(h), uy = std::sin(h);
-  const double l = 0.5 * static_cast<double>(o.extent[0]), w = 0.5 * static_cast<double>(o.extent[1]);
+  const double l = 0.5 * static_cast<double>(o.extent[0]) / metres_per_unit,
+               w = 0.5 * static_cast<double>(o.extent[1]) / metres_per_unit;
   const double corner[4][2] = {{-l, -w}, {l, -w}, {l, w}, {-l, w}};
   Ring r;
   for (int i = 0; i < 4; ++i) {

@@ -13,7 +13,9 @@ namespace spinhash::survey {
 
 using Ring = std::array<std::array<double, 2>, 5>;
 
-Ring footprint(const SceneObject& o);
+// o's centre is in the tiles' units, its extent in metres: metres_per_unit
+// (cloud/crs_units.hpp) brings the extent to the centre's units.
+Ring footprint(const SceneObject& o, double metres_per_unit = 1.0);
 
 // "[[x,y],...]" with enough digits for millimetres at 10^7 m.
 std::string ring_json(const Ring& ring, int digits);

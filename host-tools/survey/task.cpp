@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cloud/cloud_reader.hpp"
+#include "cloud/crs_units.hpp"
 
 namespace spinhash::survey {
 namespace {
@@ -64,13 +65,15 @@ bool Rect::intersects(const Rect& o) const {
 
 std::vector<SurveyTask> plan_survey(const Catalogue& catalogue, double buffer, const std::string& settings) {
   std::vector<SurveyTask> tasks;
+  const host::AxisUnits units = host::axis_units(catalogue.crs);
+  const double horizontal = units.geographic ? 1.0 : units.horizontal;
   for (size_t i = 0; i < catalogue.tiles.size(); ++i) {
     const CatalogueTile& t = catalogue.tiles[i];
     if (!t.error.empty()) continue;
     SurveyTask task;
     task.index = static_cast<uint32_t>(i);
     task.tile = {t.path, t.name, core_of(t)};
-    task.seen = task.tile.core.grown(std::max(buffer, 2.0 * kGapTolerance));
+    task.seen = task.tile.core.grown(std::max(buffer / horizontal, 2.0 * kGapTolerance));  // buffer: m
     for (size_t j = 0; j < catalogue.tiles.size(); ++j) {
       const CatalogueTile& n = catalogue.tiles[j];
       if (j != i && n.error.empty() && core_of(n).intersects(task.seen))
@@ -78,6 +81,7 @@ std::vector<SurveyTask> plan_survey(const Catalogue& catalogue, double buffer, c
     }
     task.crs = catalogue.crs.proj_definition();
     task.crs_name = catalogue.crs.describe();
+    task.units = units;
     task.key = task_key(task, buffer, settings);
     tasks.push_back(std::move(task));
   }
@@ -135,6 +139,8 @@ std::string task_text(const SurveyTask& t) {
     s += "neighbour " + rect_text(n.core) + " " + escape_line(n.path) + "\n";
   s += "seen " + rect_text(t.seen) + "\n";
   s += "crs " + escape_line(t.crs) + "\ncrs_name " + escape_line(t.crs_name) + "\n";
+  s += "units " + num(t.units.horizontal) + " " + num(t.units.vertical) + " " +
+       (t.units.geographic ? "1" : "0") + "\n";
   return s + "key " + escape_line(t.key) + "\nend\n";
 }
 
@@ -168,6 +174,8 @@ bool parse_task_text(const std::string& text, SurveyTask* task, std::string* err
       t.crs = rest(ls);
     else if (word == "crs_name")
       t.crs_name = rest(ls);
+    else if (word == "units")
+      ls >> t.units.horizontal >> t.units.vertical >> t.units.geographic;
     else if (word == "key")
       t.key = rest(ls);
     else if (word == "end")

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "cloud/crs_units.hpp"
 #include "survey/catalogue.hpp"
 
 namespace spinhash::survey {
@@ -48,6 +49,7 @@ struct SurveyTask {
   Rect seen;                         // core grown by the buffer
   std::string crs;                   // the survey CRS's PROJ definition ("": unknown)
   std::string crs_name;              // "EPSG:25832", "unknown"
+  host::AxisUnits units;             // of the survey CRS (name and notes not carried to workers)
   std::string key;                   // the inputs the result depends on (resume reuses equal keys only)
 };
 

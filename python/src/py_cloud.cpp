@@ -14,6 +14,7 @@
 
 #include "bindings.hpp"
 #include "cloud/cloud_reader.hpp"
+#include "cloud/crs_units.hpp"
 #include "cloud/point_source.hpp"
 #include "points.hpp"
 #include "py_errors.hpp"
@@ -48,6 +49,11 @@ py::dict crs_dict(const host::Crs& crs) {
   d["wkt"] = crs.wkt.empty() ? py::object(py::none()) : py::str(crs.wkt);
   d["source"] = crs.source.empty() ? py::object(py::none()) : py::str(crs.source);
   d["warnings"] = crs.warnings;
+  // Metres per unit (cloud/crs_units.hpp): the recognizers take metres.
+  const host::AxisUnits u = host::axis_units(crs);
+  d["metres_per_unit"] =
+      u.geographic ? py::object(py::none()) : py::object(py::make_tuple(u.horizontal, u.vertical));
+  d["unit_notes"] = u.messages();
   return d;
 }
 
@@ -119,7 +125,8 @@ void bind_cloud(py::module_& m) {
         "an (N, 3) float64 array. FileNotFoundError, or ValueError naming what is wrong with the file.");
   m.def("read_cloud_header", &read_cloud_header, py::arg("path"),
         "A cloud file's header without its points (LAS/LAZ: format, point_count, bounds, las_point_format, "
-        "las_version, crs {name, epsg, vertical_epsg, wkt, source, warnings}). PLY and text are read to "
+        "las_version, crs {name, epsg, vertical_epsg, wkt, source, warnings, metres_per_unit (x y, z; None "
+        "for degrees), unit_notes}). PLY and text are read to "
         "count.");
   py::class_<ChunkIterator>(m, "CloudChunks", "The points of a cloud file in (n, 3) float64 chunks.")
       .def("__iter__", [](ChunkIterator& self) -> ChunkIterator& { return self; })

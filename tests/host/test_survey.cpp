@@ -277,7 +277,11 @@ TEST_CASE("survey plan: ownership by half-open core, thin gaps to the nearest ti
   survey::SurveyTask back;
   t.crs = "PROJCS[\"x\",\n\tUNIT[\"m\",1]]\\";
   t.key = "k";
+  t.units.horizontal = t.units.vertical = 1200.0 / 3937.0;  // US survey feet reach the workers
   REQUIRE(survey::parse_task_text(survey::task_text(t), &back, &error));
+  CHECK(back.units.horizontal == t.units.horizontal);
+  CHECK(back.units.vertical == t.units.vertical);
+  CHECK_FALSE(back.units.geographic);
   CHECK(back.tile.path == "a.las");
   CHECK(back.neighbours.size() == 1);
   CHECK(back.neighbours[0].core.min[0] == 40.01);

@@ -32,6 +32,10 @@ def test_the_header_and_crs_come_without_the_points():
     assert h["crs"]["epsg"] == 6580 and h["crs"]["vertical_epsg"] == 5703
     wkt = spinhash.read_cloud_header(LAZ / "crs" / "file_with_both_wkt_and_geotiff_vlrs.las")["crs"]
     assert wkt["source"] == "wkt" and wkt["name"] == "WKT: NAD83_2011_Nebraska_ft"
+    us_foot = 1200 / 3937  # the WKT's unit: US survey feet, metres per unit for x y and z
+    assert wkt["metres_per_unit"] == pytest.approx((us_foot, us_foot)) and wkt["unit_notes"]
+    assert h["crs"]["metres_per_unit"] == (1.0, 1.0) and h["crs"]["unit_notes"] == []
+    assert spinhash.read_cloud_header(LAZ / "crs" / "epsg_4326.las")["crs"]["metres_per_unit"] is None
     bad = spinhash.read_cloud_header(LAZ / "crs" / "bad-geotiff-keys.las")["crs"]
     assert bad["epsg"] == 32617 and len(bad["warnings"]) == 1
 
