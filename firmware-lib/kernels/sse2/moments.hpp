@@ -23,6 +23,13 @@ inline __m128 lane_offset(const float* e, int l) {
   return _mm_movelh_ps(xy, _mm_load_ss(e + 8 + l));
 }
 
+// v's lanes in kOrder (_MM_SHUFFLE), by pshufd: SSE2's two-operand shufps
+// would first copy v, which every neighbour needs three times.
+template <int kOrder>
+inline __m128 permute(__m128 v) {
+  return _mm_castsi128_ps(_mm_shuffle_epi32(_mm_castps_si128(v), kOrder));
+}
+
 inline void moments_accumulate(const MomentsNeighbours& g, const float* q, float r2, NeighbourMoments* m) {
   const __m128 qx = _mm_set1_ps(q[0]), qy = _mm_set1_ps(q[1]), qz = _mm_set1_ps(q[2]);
   const __m128 r2v = _mm_set1_ps(r2);
@@ -46,9 +53,8 @@ inline void moments_accumulate(const MomentsNeighbours& g, const float* q, float
     for (; lanes != 0; lanes &= lanes - 1) {  // lowest lane first: the neighbours' order
       const __m128 d = lane_offset(e, __builtin_ctz(static_cast<unsigned>(lanes)));
       s = _mm_add_ps(s, d);
-      a = _mm_add_ps(a, _mm_mul_ps(d, _mm_shuffle_ps(d, d, _MM_SHUFFLE(3, 0, 0, 0))));
-      b = _mm_add_ps(b, _mm_mul_ps(_mm_shuffle_ps(d, d, _MM_SHUFFLE(3, 2, 2, 1)),
-                                   _mm_shuffle_ps(d, d, _MM_SHUFFLE(3, 2, 1, 1))));
+      a = _mm_add_ps(a, _mm_mul_ps(d, permute<_MM_SHUFFLE(3, 0, 0, 0)>(d)));
+      b = _mm_add_ps(b, _mm_mul_ps(permute<_MM_SHUFFLE(3, 2, 2, 1)>(d), permute<_MM_SHUFFLE(3, 2, 1, 1)>(d)));
       ++count;
     }
   }
