@@ -163,12 +163,12 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   // the spin images' output hold the normals' gathered neighbourhoods.
   NeighbourScratch scratch;
   const size_t spin_floats = static_cast<size_t>(cap_.max_features) * cap_.max_spin_dims;
-  scratch.capacity =
-      static_cast<uint32_t>(spin_floats / 4u < cap_.max_points ? spin_floats / 4u : cap_.max_points);
+  constexpr size_t kNormalScratchArrays = 3;  // x, y, z
+  const size_t room = spin_floats / kNormalScratchArrays;
+  scratch.capacity = static_cast<uint32_t>(room < cap_.max_points ? room : cap_.max_points);
   scratch.x = m.out_spins;
   scratch.y = scratch.x + scratch.capacity;
   scratch.z = scratch.y + scratch.capacity;
-  scratch.d2 = scratch.z + scratch.capacity;
   scratch.index = m.basis;
   const float radius = sparse_aware_normals(m.voxel_grid, m.equalised, ne, params_.normal_radius, m.normals,
                                             m.has_normal, scratch, &stats->points_oriented);

@@ -2,32 +2,13 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "kernels/moments_select.hpp"
 #include "spinhash/limits.hpp"
 
 namespace spinhash {
 namespace {
 
-// Sums of the offsets from q of the points within the radius, and of their
-// outer products (offsets from q, not from the origin, keep the float sums
-// well conditioned; the outer product is symmetric, so its six distinct
-// sums are kept). Added point by point in the order of the search.
-struct Moments {
-  float s[3] = {0.0f, 0.0f, 0.0f};
-  float xx = 0.0f, xy = 0.0f, xz = 0.0f, yy = 0.0f, yz = 0.0f, zz = 0.0f;
-  uint32_t count = 0;
-  void add(float dx, float dy, float dz) {
-    s[0] += dx;
-    s[1] += dy;
-    s[2] += dz;
-    xx += dx * dx;
-    xy += dx * dy;
-    xz += dx * dz;
-    yy += dy * dy;
-    yz += dy * dz;
-    zz += dz * dz;
-    ++count;
-  }
-};
+using Moments = kernels::NeighbourMoments;
 
 // The normal of the moments' neighbourhood, if it is a surface.
 bool normal_of(const Moments& m, float* out) {
@@ -63,20 +44,11 @@ bool normal_at(const CellGrid& grid, const float* points, const float* q, float 
 // The same test and sums over a neighbourhood gathered once for every
 // point of a cell (CellGrid::gather_neighbourhood: the points for_each_within
 // visits, in its order, plus those of the cells it skips as beyond the
-// radius, which the test rejects). The squared distances are taken first in
-// a loop of its own over the coordinate arrays, which the compiler runs on
-// vector registers (SSE2, NEON): each lane does the scalar code's
-// operations in its order (no fused multiply-add: -ffp-contract=off), so
-// the test decides as the scalar one does.
+// radius, which the test rejects), by the moments kernel
+// (kernels/moments_select.hpp): the sums of the walk above, bit for bit.
 bool normal_in(const NeighbourScratch& g, uint32_t count, const float* q, float r2, float* out) {
-  const float qx = q[0], qy = q[1], qz = q[2];
-  for (uint32_t k = 0; k < count; ++k) {
-    const float ex = g.x[k] - qx, ey = g.y[k] - qy, ez = g.z[k] - qz;
-    g.d2[k] = ex * ex + ey * ey + ez * ez;
-  }
   Moments m;
-  for (uint32_t k = 0; k < count; ++k)
-    if (g.d2[k] <= r2) m.add(g.x[k] - qx, g.y[k] - qy, g.z[k] - qz);
+  kernels::moments_accumulate(kernels::MomentsNeighbours{g.x, g.y, g.z, count}, q, r2, &m);
   return normal_of(m, out);
 }
 

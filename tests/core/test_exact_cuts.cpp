@@ -88,13 +88,12 @@ TEST_CASE("exact cuts: normals over gathered neighbourhoods are the point-by-poi
   CHECK(plain_count > n / 2u);
   // Room for every neighbourhood, and for none of the larger ones (the point-by-point fallback).
   for (uint32_t capacity : {n, 40u}) {
-    std::vector<float> x(capacity), y(capacity), z(capacity), d2(capacity);
+    std::vector<float> x(capacity), y(capacity), z(capacity);
     std::vector<uint32_t> index(capacity);
     NeighbourScratch scratch;
     scratch.x = x.data();
     scratch.y = y.data();
     scratch.z = z.data();
-    scratch.d2 = d2.data();
     scratch.index = index.data();
     scratch.capacity = capacity;
     std::vector<float> gathered(pts.size(), 0.0f);
