@@ -16,15 +16,15 @@ enum class Preset : uint8_t {
 };
 
 // kFlight: issue 29's flight budget, measured by scripts/flight-levers.sh
-// (docs/results.md section 9q) on aarch64 at 56 models: 42.9 M instructions
-// per query (the benchmark's middle of 6; worst 52.8 M, 1.23x) against
-// 137.8 M (worst 276.5 M) for the default (stop 30, with the spin-image
-// kernel; 43.8 M against 145.4 M with verify_features 128 before it). It costs accuracy: right first 1 621 of
-// 1 680 fleet and family queries against 1 652 (the fleet's noisy scans 199 and 202 of 224 without and with
-// ground against 213 and 211, the families 499 and 498 of 504 at 0.05 and 0.10 m against 503 and 502),
-// confident and right 82 % of the right against 96 %, and at 1 000 models 67 / 64 % right first against 82 /
-// 78 % (0.05 / 0.10 m). The query's density voxel (FeatureParams::cloud_voxel for the query only), m: 2.25
-// times the database's 0.08 m.
+// (docs/results.md section 9q) on aarch64 at 56 models: 42.4 M instructions
+// per query (the benchmark's middle of 6; worst 52.5 M, 1.24x) against
+// 127.2 M (worst 256.5 M) for the default (stop 31, with the spin-image and
+// moments kernels; 43.8 M against 145.4 M with verify_features 128 before them). It costs accuracy: right
+// first 1 621 of 1 680 fleet and family queries against 1 652 (the fleet's noisy scans 199 and 202 of 224
+// without and with ground against 213 and 211, the families 499 and 498 of 504 at 0.05 and 0.10 m against 503
+// and 502), confident and right 82 % of the right against 96 %, and at 1 000 models 67 / 64 % right first
+// against 82 / 78 % (0.05 / 0.10 m). The query's density voxel (FeatureParams::cloud_voxel for the query
+// only), m: 2.25 times the database's 0.08 m.
 constexpr float kFlightQueryVoxel = 0.18f;
 constexpr uint32_t kFlightMaxFeatures = 256;     // s: query features kept (evenly thinned)
 constexpr uint32_t kFlightMaxBucketScan = 512;   // LSH entries scanned per query feature
