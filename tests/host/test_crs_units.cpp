@@ -14,6 +14,7 @@
 #include "cloud/metric_source.hpp"
 #include "cloud/point_source.hpp"
 #include "pipeline/database_file.hpp"
+#include "pipeline/object_units.hpp"
 #include "pipeline/tile_stream.hpp"
 
 using namespace spinhash;
@@ -182,4 +183,26 @@ TEST_CASE("crs units: a tile in US survey feet gives the metre tile's vehicles, 
       CHECK(f[k].translation[a] * kUsFoot == doctest::Approx(m[k].translation[a]).epsilon(1e-6));
     }
   }
+}
+
+TEST_CASE("crs units: a recognition's poses go back to the file's units, their rotations untouched") {
+  RankedModel ranked[2] = {};
+  ranked[0].pose.translation[0] = 1000.0 * kUsFoot;
+  ranked[0].pose.translation[2] = 30.0;  // z in metres (a vertical CRS in metres)
+  ranked[0].pose.rotation[0] = 1.0f;
+  ranked[1].pose.translation[1] = 2000.0 * kUsFoot;
+  Result r;
+  r.ranking = ranked;
+  r.ranking_count = 2;
+  AxisUnits u;
+  u.horizontal = kUsFoot;
+  std::vector<RankedModel> copy;
+  const Result f = pipeline::in_file_units(r, u, &copy);
+  REQUIRE(f.ranking_count == 2);
+  CHECK(f.ranking[0].pose.translation[0] == doctest::Approx(1000.0));
+  CHECK(f.ranking[0].pose.translation[2] == 30.0);
+  CHECK(f.ranking[0].pose.rotation[0] == 1.0f);
+  CHECK(f.ranking[1].pose.translation[1] == doctest::Approx(2000.0));
+  CHECK(ranked[0].pose.translation[0] == 1000.0 * kUsFoot);  // the workspace's ranking is left as it was
+  CHECK(pipeline::in_file_units(r, AxisUnits{}, &copy).ranking == ranked);  // metres: nothing copied
 }
