@@ -14,6 +14,7 @@
 #pragma once
 #include <cstdint>
 
+#include "kernels/nearest_geometry.hpp"
 #include "match/oriented_point.hpp"
 #include "spinhash/config.hpp"
 #include "spinhash/database.hpp"
@@ -131,6 +132,11 @@ inline void query_in_model_frame(const QueryFeatures& query, uint32_t l, const E
   *x = rt * (qp - translation);
   *n = rt * qn;
 }
+
+// The change of frame of `pose` for the nearest-feature kernels
+// (kernels/nearest_select.hpp): verification's query_in_model_frame, bit
+// for bit (tests/core/test_nearest_kernels.cpp).
+kernels::FrameChange frame_change(const RigidPose& pose);
 
 // What refine_pose pairs query feature l with: the nearest model feature
 // within Delta, or kNoMatch.
