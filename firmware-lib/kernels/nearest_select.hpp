@@ -1,8 +1,8 @@
 // The nearest-feature kernels verification uses (match/likelihood.cpp: a
 // query feature into the model frame, its field voxel), chosen at compile
 // time as the L1 and moments kernels are (kernels/l1_select.hpp,
-// kernels/moments_select.hpp): SSE2 on x86-64, NEON on aarch64, else the
-// portable reference (bare-metal Cortex-M, armhf).
+// kernels/moments_select.hpp): SSE2 on x86-64 (without -mfma), NEON on
+// aarch64, else the portable reference (bare-metal Cortex-M, armhf).
 // SPINHASH_KERNELS_REFERENCE forces the reference.
 #pragma once
 #include "kernels/nearest_geometry.hpp"

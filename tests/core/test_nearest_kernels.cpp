@@ -6,7 +6,8 @@
 // identity, zero and subnormal coordinates, inf and NaN, coordinates
 // exactly on the field's faces and one float inside or outside them). The
 // frame change must also equal refinement's Eigen expression
-// (query_in_model_frame).
+// (query_in_model_frame), whose rounding differs by target (aarch64's
+// Eigen fuses rows 0-1): the reference is that expression.
 #include <doctest/doctest.h>
 
 #include <cmath>

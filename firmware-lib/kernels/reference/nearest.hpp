@@ -3,6 +3,7 @@
 // (tests/core/test_nearest_kernels.cpp), and the kernel of targets without
 // one (bare-metal Cortex-M, armhf, SPINHASH_KERNELS_REFERENCE).
 #pragma once
+#include <Eigen/Core>
 #include <cstdint>
 
 #include "kernels/nearest_geometry.hpp"
@@ -12,13 +13,13 @@ namespace kernels {
 namespace reference {
 
 // Query feature (position q, normal qn) in the model frame: x[0..2] and
-// n[0..2] (lane 3 of each is the kernel's to use).
+// n[0..2] (lane 3 of each is the kernel's to use). Eigen's product, as
+// query_in_model_frame computes it on this target.
 inline void to_model_frame(const FrameChange& f, const float* q, const float* qn, float* x, float* n) {
-  const float e0 = q[0] - f.t[0], e1 = q[1] - f.t[1], e2 = q[2] - f.t[2];
-  for (int i = 0; i < 3; ++i) {
-    x[i] = frame_row(f, i, e0, e1, e2);
-    n[i] = frame_row(f, i, qn[0], qn[1], qn[2]);
-  }
+  const Eigen::Map<const Eigen::Matrix3f, 0, Eigen::OuterStride<4>> rt(f.col[0]);
+  const Eigen::Vector3f qp(q[0], q[1], q[2]), t(f.t[0], f.t[1], f.t[2]), qv(qn[0], qn[1], qn[2]);
+  const Eigen::Vector3f xv = rt * (qp - t), nv = rt * qv;
+  for (int i = 0; i < 3; ++i) x[i] = xv[i], n[i] = nv[i];
 }
 
 // The field voxel holding x[0..2]: true and v[0..2] set when x lies inside

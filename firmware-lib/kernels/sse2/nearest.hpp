@@ -2,9 +2,11 @@
 // call, its three coordinates in the lanes of one register. Each lane runs
 // the reference's expression for its row or axis (the same products, the
 // same association, the same comparisons), so the answers are the
-// reference's bit for bit.
+// reference's bit for bit. Without FMA, Eigen's 3x3 product is scalar and
+// sums each row r0 e0 + (r1 e1 + r2 e2); with FMA (-mfma) it fuses, and
+// the reference is kept.
 #pragma once
-#if defined(__SSE2__)
+#if defined(__SSE2__) && !defined(__FMA__)
 #include <emmintrin.h>
 
 #include <cstdint>
@@ -34,7 +36,7 @@ inline __m128 broadcast(__m128 v) {
   return _mm_castsi128_ps(_mm_shuffle_epi32(_mm_castps_si128(v), _MM_SHUFFLE(k, k, k, k)));
 }
 
-// R^T e, lane i holding frame_row(f, i, e0, e1, e2).
+// R^T e, lane i holding r0 e0 + (r1 e1 + r2 e2) of row i (Eigen's sum).
 inline __m128 frame_rows(const FrameChange& f, __m128 e) {
   const __m128 a0 = _mm_mul_ps(_mm_load_ps(f.col[0]), broadcast<0>(e));
   const __m128 a1 = _mm_mul_ps(_mm_load_ps(f.col[1]), broadcast<1>(e));
@@ -60,4 +62,4 @@ inline bool field_voxel(const FieldBox& b, const float* x, uint32_t* v) {
 }  // namespace sse2
 }  // namespace kernels
 }  // namespace spinhash
-#endif  // __SSE2__
+#endif  // __SSE2__ && !__FMA__
