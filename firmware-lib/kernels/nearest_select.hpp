@@ -17,8 +17,10 @@ namespace kernels {
 namespace nearest_selected = reference;
 #elif defined(SPINHASH_KERNELS_HAVE_SSE2_NEAREST)
 namespace nearest_selected = sse2;
+#define SPINHASH_KERNELS_NEAREST_SIMD 1
 #elif defined(SPINHASH_KERNELS_HAVE_NEON_NEAREST)
 namespace nearest_selected = neon;
+#define SPINHASH_KERNELS_NEAREST_SIMD 1
 #else
 namespace nearest_selected = reference;
 #endif

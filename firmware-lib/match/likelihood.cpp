@@ -61,11 +61,20 @@ kernels::FieldBox field_box(const Database& db, const blob::ModelRecord& rec) {
   return b;
 }
 
+// With a SIMD kernel the field lookup is short and verify_pose inlines it;
+// with the reference (bare metal, armhf) one out-of-line copy keeps the
+// code small.
+#if defined(SPINHASH_KERNELS_NEAREST_SIMD)
+#define SPINHASH_FIELD_LOOKUP inline
+#else
+#define SPINHASH_FIELD_LOOKUP __attribute__((noinline))
+#endif
+
 // The slots of the field voxel holding x (blob_format.hpp): O(field_slots).
 // x and n: four floats each (kernels/nearest_select.hpp).
-inline NearestFeature nearest_in_box(const Database& db, const blob::ModelRecord& rec,
-                                     const kernels::FieldBox& box, const float* x, const float* n,
-                                     const LikelihoodParams& lp) {
+SPINHASH_FIELD_LOOKUP NearestFeature nearest_in_box(const Database& db, const blob::ModelRecord& rec,
+                                                    const kernels::FieldBox& box, const float* x,
+                                                    const float* n, const LikelihoodParams& lp) {
   NearestFeature best;
   best.dist2 = lp.delta_max2;
   uint32_t v[4];
