@@ -1,4 +1,5 @@
-// The portable scalar reference of the nearest-feature kernels: the
+// The portable reference of the nearest-feature kernels (scalar, and for
+// the frame change Eigen's product, the core's arithmetic before them): the
 // definition every optimised kernel must reproduce bit for bit
 // (tests/core/test_nearest_kernels.cpp), and the kernel of targets without
 // one (bare-metal Cortex-M, armhf, SPINHASH_KERNELS_REFERENCE).
