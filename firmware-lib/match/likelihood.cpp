@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "kernels/l1_select.hpp"
+#include "kernels/nearest_select.hpp"
 #include "util/angle_math.hpp"
 
 namespace spinhash {
@@ -21,9 +22,9 @@ inline float axis_gap2(float v, int32_t c, float cell) {
   return g * g;
 }
 
-// Model feature f against x: becomes best if nearer with an agreeing normal.
-inline void consider_feature(const Database& db, uint32_t f, const Eigen::Vector3f& x,
-                             const Eigen::Vector3f& n, float cos_eta_max, NearestFeature* best) {
+// Model feature f against x (x[0..2], model frame): becomes best if nearer with an agreeing normal.
+inline void consider_feature(const Database& db, uint32_t f, const float* x, const float* n,
+                             float cos_eta_max, NearestFeature* best) {
   const float* p = db.positions() + 3u * f;
   float ex = p[0] - x[0], ey = p[1] - x[1], ez = p[2] - x[2];
   float d2 = ex * ex + ey * ey + ez * ez;
@@ -43,33 +44,58 @@ void scan_cell(const Database& db, const blob::ModelRecord& rec, uint32_t cell_i
   const uint32_t* offsets = db.grid_offsets() + rec.grid_offset_base;
   const uint32_t end = rec.first_feature + offsets[cell_index + 1u];
   for (uint32_t f = rec.first_feature + offsets[cell_index]; f < end; ++f)
-    consider_feature(db, f, x, n, cos_eta_max, best);
+    consider_feature(db, f, x.data(), n.data(), cos_eta_max, best);
+}
+
+// The model's field as the kernels' box; set up once per verified pose.
+kernels::FieldBox field_box(const Database& db, const blob::ModelRecord& rec) {
+  const blob::Params& p = db.params();
+  kernels::FieldBox b;
+  for (int a = 0; a < 3; ++a) {
+    b.lo[a] = rec.grid_origin[a] - p.field_reach;
+    b.dims[a] = static_cast<float>(rec.field_dims[a]);
+  }
+  b.lo[3] = 0.0f;
+  b.dims[3] = 1.0f;
+  b.cell = p.field_cell;
+  return b;
+}
+
+// With a SIMD kernel the field lookup is short and verify_pose inlines it;
+// with the reference (bare metal, armhf) one out-of-line copy keeps the
+// code small.
+#if defined(SPINHASH_KERNELS_NEAREST_SIMD)
+#define SPINHASH_FIELD_LOOKUP inline
+#else
+#define SPINHASH_FIELD_LOOKUP __attribute__((noinline))
+#endif
+
+// The slots of the field voxel holding x (blob_format.hpp): O(field_slots).
+// x and n: four floats each (kernels/nearest_select.hpp).
+SPINHASH_FIELD_LOOKUP NearestFeature nearest_in_box(const Database& db, const blob::ModelRecord& rec,
+                                                    const kernels::FieldBox& box, const float* x,
+                                                    const float* n, const LikelihoodParams& lp) {
+  NearestFeature best;
+  best.dist2 = lp.delta_max2;
+  uint32_t v[4];
+  // Outside the field (also inf/NaN from an extreme pose): farther than field_reach from every feature.
+  if (!kernels::field_voxel(box, x, v)) return best;
+  const uint32_t slots = db.params().field_slots;
+  const uint16_t* slot =
+      db.nearest_field() + rec.field_base +
+      static_cast<size_t>(slots) * (v[0] + rec.field_dims[0] * (v[1] + rec.field_dims[1] * v[2]));
+  for (uint32_t s = 0; s < slots && slot[s] != blob::kNoFieldFeature; ++s)
+    consider_feature(db, rec.first_feature + slot[s], x, n, lp.cos_eta_max, &best);
+  return best;
 }
 
 }  // namespace
 
-// The slots of the field voxel holding x (blob_format.hpp): O(field_slots).
 NearestFeature nearest_in_field(const Database& db, const blob::ModelRecord& rec, const Eigen::Vector3f& x,
                                 const Eigen::Vector3f& n, const LikelihoodParams& lp) {
-  NearestFeature best;
-  best.dist2 = lp.delta_max2;
-  const blob::Params& p = db.params();
-  uint32_t v[3];
-  for (int a = 0; a < 3; ++a) {
-    // The voxel index floor(t), taken without floor: floor(t) >= 0 exactly
-    // when t >= 0, floor(t) < dims exactly when t < dims (an integer), and
-    // for t >= 0 the conversion truncates to floor(t).
-    const float t = (x[a] - (rec.grid_origin[a] - p.field_reach)) / p.field_cell;
-    // Outside the field (also inf/NaN from an extreme pose): farther than field_reach from every feature.
-    if (!(t >= 0.0f && t < static_cast<float>(rec.field_dims[a]))) return best;
-    v[a] = static_cast<uint32_t>(t);
-  }
-  const uint16_t* slot =
-      db.nearest_field() + rec.field_base +
-      static_cast<size_t>(p.field_slots) * (v[0] + rec.field_dims[0] * (v[1] + rec.field_dims[1] * v[2]));
-  for (uint32_t s = 0; s < p.field_slots && slot[s] != blob::kNoFieldFeature; ++s)
-    consider_feature(db, rec.first_feature + slot[s], x, n, lp.cos_eta_max, &best);
-  return best;
+  alignas(16) const float x4[4] = {x[0], x[1], x[2], 0.0f};
+  alignas(16) const float n4[4] = {n[0], n[1], n[2], 0.0f};
+  return nearest_in_box(db, rec, field_box(db, rec), x4, n4, lp);
 }
 
 NearestFeature nearest_in_grid(const Database& db, const blob::ModelRecord& rec, const Eigen::Vector3f& x,
@@ -146,6 +172,17 @@ LikelihoodParams make_surface_params(const RecognizerConfig& cfg, const Database
   return lp;
 }
 
+kernels::FrameChange frame_change(const RigidPose& pose) {
+  kernels::FrameChange f;
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < 3; ++i) f.col[k][i] = pose.rotation(k, i);  // R^T(i, k)
+    f.col[k][3] = 0.0f;
+    f.t[k] = pose.translation[k];
+  }
+  f.t[3] = 0.0f;
+  return f;
+}
+
 float residual2(const Database& db, uint32_t f, const Eigen::Vector3f& x, float point_to_point2,
                 const LikelihoodParams& lp) {
   if (lp.surface_patch_radius < 0.0f) return point_to_point2;
@@ -157,6 +194,12 @@ float residual2(const Database& db, uint32_t f, const Eigen::Vector3f& x, float 
 }
 
 namespace {
+
+// The exact search for x and n given as four floats each.
+NearestFeature nearest_in_grid_of(const Database& db, const blob::ModelRecord& rec, const float* x,
+                                  const float* n, const LikelihoodParams& lp) {
+  return nearest_in_grid(db, rec, Eigen::Vector3f(x[0], x[1], x[2]), Eigen::Vector3f(n[0], n[1], n[2]), lp);
+}
 
 // A stride coprime with n visits 0..n-1 once each, spread over the query.
 uint32_t spread_stride(uint32_t n) {
@@ -173,7 +216,9 @@ Verification verify_pose(const Database& db, uint32_t model, const RigidPose& po
                          float reference, int32_t* matches) {
   Verification v;
   const blob::ModelRecord& rec = db.model(model);
-  const Eigen::Matrix3f rt = pose.rotation.transpose();
+  const kernels::FrameChange frame = frame_change(pose);
+  const kernels::FieldBox box = field_box(db, rec);
+  alignas(16) float x[4] = {}, nm[4] = {};  // lanes 0-2: the feature in the model frame
   const uint32_t n = query.count;
   const uint32_t used = query.verify_count < n ? query.verify_count : n;
   const uint32_t stride = n > 1u ? spread_stride(n) : 1u;
@@ -188,18 +233,18 @@ Verification verify_pose(const Database& db, uint32_t model, const RigidPose& po
                        (i == kPreemptiveSecond &&
                         v.log_likelihood / static_cast<float>(i) < best_mean - kPreemptiveSlackSecond)))
       return v;
-    Eigen::Vector3f x, nm;
-    query_in_model_frame(query, l, rt, pose.translation, &x, &nm);
-    NearestFeature near = find_nearest_model_feature(db, rec, x, nm, lp);
+    kernels::to_model_frame(frame, query.positions + 3u * l, query.normals + 3u * l, x, nm);
+    NearestFeature near =
+        lp.use_field ? nearest_in_box(db, rec, box, x, nm, lp) : nearest_in_grid_of(db, rec, x, nm, lp);
     if (matches != nullptr) matches[l] = match_within_delta(near, lp);
     if (near.feature < 0) {
       v.log_likelihood += lp.floor;
       continue;
     }
     // The hypothesis loop's r is the paper's (no call for it).
-    float r2 = lp.surface_patch_radius < 0.0f
-                   ? near.dist2
-                   : residual2(db, static_cast<uint32_t>(near.feature), x, near.dist2, lp);
+    float r2 = lp.surface_patch_radius < 0.0f ? near.dist2
+                                              : residual2(db, static_cast<uint32_t>(near.feature),
+                                                          Eigen::Vector3f(x[0], x[1], x[2]), near.dist2, lp);
     r2 = r2 < lp.delta2 ? r2 : lp.delta2;
     uint32_t l1 = kernels::l1_distance(query.spins + static_cast<size_t>(l) * query.dims,
                                        db.spin(static_cast<uint32_t>(near.feature)), query.dims);

@@ -14,6 +14,7 @@
 #pragma once
 #include <cstdint>
 
+#include "kernels/nearest_geometry.hpp"
 #include "match/oriented_point.hpp"
 #include "spinhash/config.hpp"
 #include "spinhash/database.hpp"
@@ -122,7 +123,9 @@ inline NearestFeature find_nearest_model_feature(const Database& db, const blob:
 
 // Query feature l in the model frame of `pose` (rt: its rotation transposed):
 // position and normal. One expression for verification and refinement, so
-// that both find the same nearest model feature for it.
+// that both find the same nearest model feature for it: verification runs
+// the frame-change kernel (kernels/nearest_select.hpp), which equals it bit
+// for bit on every target (tests/core/test_nearest_kernels.cpp).
 inline void query_in_model_frame(const QueryFeatures& query, uint32_t l, const Eigen::Matrix3f& rt,
                                  const Eigen::Vector3f& translation, Eigen::Vector3f* x, Eigen::Vector3f* n) {
   const Eigen::Vector3f qp(query.positions[3u * l], query.positions[3u * l + 1u],
@@ -131,6 +134,11 @@ inline void query_in_model_frame(const QueryFeatures& query, uint32_t l, const E
   *x = rt * (qp - translation);
   *n = rt * qn;
 }
+
+// The change of frame of `pose` for the nearest-feature kernels
+// (kernels/nearest_select.hpp): verification's query_in_model_frame, bit
+// for bit (tests/core/test_nearest_kernels.cpp).
+kernels::FrameChange frame_change(const RigidPose& pose);
 
 // What refine_pose pairs query feature l with: the nearest model feature
 // within Delta, or kNoMatch.
