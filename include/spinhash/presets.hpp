@@ -16,10 +16,11 @@ enum class Preset : uint8_t {
 };
 
 // kFlight: issue 29's flight budget, measured by scripts/flight-levers.sh
-// (docs/results.md section 9q) on aarch64 at 56 models: 42.4 M instructions
-// per query (the benchmark's middle of 6; worst 52.5 M, 1.24x) against
-// 127.2 M (worst 256.5 M) for the default (stop 31, with the spin-image and
-// moments kernels; 43.8 M against 145.4 M with verify_features 128 before them). It costs accuracy: right
+// (docs/results.md section 9q) on aarch64 at 56 models: 40.8 M instructions
+// per query (the benchmark's middle of 6; worst 49.9 M, 1.22x) against
+// 124.2 M (worst 251.6 M) for the default (stop 31, with the spin-image,
+// moments and nearest kernels; 43.8 M against 145.4 M with verify_features
+// 128 before them). It costs accuracy: right
 // first 1 621 of 1 680 fleet and family queries against 1 652 (the fleet's noisy scans 199 and 202 of 224
 // without and with ground against 213 and 211, the families 499 and 498 of 504 at 0.05 and 0.10 m against 503
 // and 502), confident and right 82 % of the right against 96 %, and at 1 000 models 67 / 64 % right first
