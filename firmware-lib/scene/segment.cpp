@@ -171,7 +171,6 @@ Status segment_objects(const float* xyz, const float* height, const uint8_t* gro
     ++st.components;
     const uint32_t count = g.object[s];
     if (count < params.min_points) {
-      st.points_fragments += count;
       g.object[s] = kNoObject;
     } else if (st.objects >= params.max_objects) {
       ++st.dropped;
@@ -201,7 +200,6 @@ Status segment_objects(const float* xyz, const float* height, const uint8_t* gro
     o.zmax = p[2] > o.zmax ? p[2] : o.zmax;
     o.hmin = height[i] < o.hmin ? height[i] : o.hmin;
     o.hmax = height[i] > o.hmax ? height[i] : o.hmax;
-    ++st.points_in_objects;
   }
   for (uint32_t k = 0; k < st.objects; ++k) set_axes(objects[k]);
   for (uint32_t i = 0; i < n; ++i) {

@@ -54,8 +54,6 @@ struct SegmentStats {
   uint32_t components = 0;
   uint32_t objects = 0;
   uint32_t dropped = 0;  // objects past max_objects
-  uint32_t points_in_objects = 0;
-  uint32_t points_fragments = 0;
 };
 
 // label[i] = object of point i (kNoObject: ground, fragment or dropped).

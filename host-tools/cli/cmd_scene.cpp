@@ -70,9 +70,7 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s\n", pipeline::object_json(name, index++, file.db, o, crs, ms).c_str());
-    if (!a.picture_dir.empty())
-      boxes.push_back(
-          pipeline::object_box(file.db, o, options.units.geographic ? 1.0 : options.units.horizontal));
+    if (!a.picture_dir.empty()) boxes.push_back(pipeline::object_box(file.db, o, options.units.horizontal));
     confident += o.confident ? 1u : 0u;
   };
   pipeline::TileStreamResult r;

@@ -110,7 +110,8 @@ std::string AxisUnits::describe() const {
 
 std::vector<std::string> AxisUnits::messages() const {
   std::vector<std::string> m = notes;
-  if (!describe().empty()) m.push_back(describe());
+  const std::string units = describe();
+  if (!units.empty()) m.push_back(units);
   return m;
 }
 

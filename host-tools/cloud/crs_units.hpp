@@ -14,11 +14,11 @@
 namespace spinhash::host {
 
 struct AxisUnits {
-  double horizontal = 1.0;  // m per unit of x and y
+  double horizontal = 1.0;  // m per unit of x and y (1 for degrees: not scaled)
   double vertical = 1.0;    // m per unit of z
   std::string horizontal_name = "metre", vertical_name = "metre";
-  // x, y are degrees (a geographic CRS): no linear scale; the tools process
-  // them as they are and say so.
+  // x, y are degrees (a geographic CRS): no linear scale, so horizontal
+  // stays 1; the tools process them as they are and say so.
   bool geographic = false;
   std::vector<std::string> notes;  // what was assumed, and why
 

@@ -3,9 +3,9 @@
 namespace spinhash::host {
 namespace {
 
-// m per unit of x, y and z (degrees are not scaled).
+// m per unit of x, y and z.
 void scales(const AxisUnits& u, double* s) {
-  s[0] = s[1] = u.geographic ? 1.0 : u.horizontal;
+  s[0] = s[1] = u.horizontal;
   s[2] = u.vertical;
 }
 

@@ -66,14 +66,13 @@ bool Rect::intersects(const Rect& o) const {
 std::vector<SurveyTask> plan_survey(const Catalogue& catalogue, double buffer, const std::string& settings) {
   std::vector<SurveyTask> tasks;
   const host::AxisUnits units = host::axis_units(catalogue.crs);
-  const double horizontal = units.geographic ? 1.0 : units.horizontal;
   for (size_t i = 0; i < catalogue.tiles.size(); ++i) {
     const CatalogueTile& t = catalogue.tiles[i];
     if (!t.error.empty()) continue;
     SurveyTask task;
     task.index = static_cast<uint32_t>(i);
     task.tile = {t.path, t.name, core_of(t)};
-    task.seen = task.tile.core.grown(std::max(buffer / horizontal, 2.0 * kGapTolerance));  // buffer: m
+    task.seen = task.tile.core.grown(std::max(buffer / units.horizontal, 2.0 * kGapTolerance));  // buffer: m
     for (size_t j = 0; j < catalogue.tiles.size(); ++j) {
       const CatalogueTile& n = catalogue.tiles[j];
       if (j != i && n.error.empty() && core_of(n).intersects(task.seen))

@@ -18,8 +18,6 @@ namespace {
 
 using pipeline::json_string;
 
-double metres_per_unit(const SurveyTask& task) { return task.units.geographic ? 1.0 : task.units.horizontal; }
-
 // The survey's members: the scene's, then the CRS, the native footprint and
 // the version. The JSON line, the GeoJSON properties and the GeoPackage's
 // columns all come from this one list.
@@ -27,7 +25,7 @@ std::vector<pipeline::JsonMember> survey_members(const SurveyTask& task, uint32_
                                                  const SceneObject& o) {
   std::vector<pipeline::JsonMember> m = pipeline::object_members(task.tile.name, k, db, o);
   m.push_back({"crs", json_string(task.crs_name)});
-  m.push_back({"footprint", "[" + ring_json(footprint(o, metres_per_unit(task)), kNativeDigits) + "]"});
+  m.push_back({"footprint", "[" + ring_json(footprint(o, task.units.horizontal), kNativeDigits) + "]"});
   m.push_back({"version", json_string(pipeline::version())});
   return m;
 }
@@ -59,8 +57,8 @@ TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfi
   BufferedSource source(task);
   pipeline::TileStreamOptions options;
   options.scene = scene;
-  options.own_given = true;
-  options.units = task.units;  // what the tile might own; owner_of decides among its neighbours
+  options.own_given = true;  // what the tile might own; owner_of decides among its neighbours
+  options.units = task.units;
   const Rect own = task.tile.core.grown(kGapTolerance);
   std::copy(own.min, own.min + 2, options.own_min);
   std::copy(own.max, own.max + 2, options.own_max);
@@ -73,9 +71,9 @@ TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfi
     const auto members = survey_members(task, static_cast<uint32_t>(r.lines.size()), db, o);
     r.lines.push_back(pipeline::members_json(members));
     if (o.kind == ObjectKind::kVehicleCandidate)
-      r.features.push_back(feature_json(members, o, metres_per_unit(task), to_wgs84.get()));
+      r.features.push_back(feature_json(members, o, task.units.horizontal, to_wgs84.get()));
     count(r, db, o);
-    r.boxes.push_back(pipeline::object_box(db, o, metres_per_unit(task)));
+    r.boxes.push_back(pipeline::object_box(db, o, task.units.horizontal));
   };
   const pipeline::TileStreamResult s = pipeline::stream_tile(db, source, options, keep);
   r.status = pipeline::status_word(s.status);
