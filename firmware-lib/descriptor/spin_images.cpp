@@ -12,17 +12,36 @@ constexpr uint32_t kNotBasis = 0xFFFFFFFFu;
 constexpr uint32_t kNotGathered = 0xFFFFFFFEu;
 static_assert(CellGrid::kGatherOverflow != kNotGathered, "distinct sentinels");
 
-// The gathered points' normals beside their coordinates; NaN where a point
-// has none (the kernels' support test rejects it, as the grid walk does).
-void gather_normals(const SpinScratch& s, uint32_t count, const float* normals, const uint8_t* has_normal) {
+// The coordinates and normals of the points CellGrid::for_each_cell_near
+// visits around cell c, in its order, into s's arrays (NaN normals where a
+// point has none: the kernels' support test rejects it, as the grid walk
+// does). Returns how many, or kGatherOverflow when more than s.capacity
+// (nothing usable).
+uint32_t gather_oriented(const SpinScratch& s, const CellGrid& grid, uint32_t c, int32_t reach,
+                         const float* points, const float* normals, const uint8_t* has_normal) {
   const float none = std::numeric_limits<float>::quiet_NaN();
-  for (uint32_t k = 0; k < count; ++k) {
-    const uint32_t j = s.index[k];
-    const bool has = has_normal[j] != 0u;
-    s.nx[k] = has ? normals[3u * j] : none;
-    s.ny[k] = has ? normals[3u * j + 1u] : none;
-    s.nz[k] = has ? normals[3u * j + 2u] : none;
-  }
+  const float no_normal[3] = {none, none, none};
+  uint32_t count = 0;
+  grid.for_each_cell_near(c, reach, [&](const uint32_t* it, uint32_t size) {
+    if (size > s.capacity - count) {
+      count = CellGrid::kGatherOverflow;
+      return false;
+    }
+    // Coordinates, then normals: each loop keeps its few pointers in registers.
+    float *x = s.x + count, *y = s.y + count, *z = s.z + count;
+    for (uint32_t k = 0; k < size; ++k) {
+      const float* p = points + 3u * it[k];
+      x[k] = p[0], y[k] = p[1], z[k] = p[2];
+    }
+    float *nx = s.nx + count, *ny = s.ny + count, *nz = s.nz + count;
+    for (uint32_t k = 0; k < size; ++k) {
+      const float* n = has_normal[it[k]] != 0u ? normals + 3u * it[k] : no_normal;
+      nx[k] = n[0], ny[k] = n[1], nz[k] = n[2];
+    }
+    count += size;
+    return true;
+  });
+  return count;
 }
 
 }  // namespace
@@ -71,12 +90,11 @@ void compute_spin_images(const SpinImageParams& sp, const CellGrid& grid, const 
     for (uint32_t t = first; t < first + size; ++t) {
       const uint32_t k = scratch.basis_of[order[t]];
       if (k == kNotBasis) continue;
-      if (gathered == kNotGathered) {
-        gathered = grid.gather_neighbourhood(c, reach, scratch.x, scratch.y, scratch.z, scratch.index,
-                                             scratch.capacity);
-        if (gathered != CellGrid::kGatherOverflow && sp.use_support_angle)
-          gather_normals(scratch, gathered, normals, has_normal);
-      }
+      if (gathered == kNotGathered)
+        gathered =
+            sp.use_support_angle
+                ? gather_oriented(scratch, grid, c, reach, points, normals, has_normal)
+                : grid.gather_neighbourhood(c, reach, scratch.x, scratch.y, scratch.z, scratch.capacity);
       if (gathered == CellGrid::kGatherOverflow) {
         walk(k);
         continue;

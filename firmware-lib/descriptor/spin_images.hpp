@@ -12,8 +12,8 @@
 
 namespace spinhash {
 
-// Room for gathered neighbourhoods: capacity points' coordinates, normals
-// and indices, and each cloud point's place in the basis. None (capacity
+// Room for gathered neighbourhoods: capacity points' coordinates and
+// normals, and each cloud point's place in the basis. None (capacity
 // 0), or no SIMD spin kernel built: every image walks the grid
 // (compute_spin_image).
 struct SpinScratch {
@@ -24,7 +24,6 @@ struct SpinScratch {
   float* nx = nullptr;
   float* ny = nullptr;
   float* nz = nullptr;
-  uint32_t* index = nullptr;
   uint32_t capacity = 0;
 };
 

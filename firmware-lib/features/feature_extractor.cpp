@@ -78,9 +78,9 @@ SpinImageParams spin_params(const FeatureParams& p) {
 
 // The spin images' gathered neighbourhoods (descriptor/spin_images.hpp) in
 // the re-centred input's 3 * max_points floats, free once the points are
-// equalised: max_points places in the basis, then seven arrays of the
+// equalised: max_points places in the basis, then six arrays of the
 // rest. Only when a SIMD spin kernel is built: the reference walks the grid.
-constexpr uint32_t kSpinScratchArrays = 7;  // x, y, z, nx, ny, nz, index
+constexpr uint32_t kSpinScratchArrays = 6;  // x, y, z, nx, ny, nz
 SpinScratch spin_scratch(float* free_floats, uint32_t max_points) {
   SpinScratch s;
   if (!kernels::kSpinGathers) return s;
@@ -88,14 +88,12 @@ SpinScratch spin_scratch(float* free_floats, uint32_t max_points) {
   static_assert(sizeof(float) == sizeof(uint32_t), "4-byte floats and indices");
   s.basis_of = reinterpret_cast<uint32_t*>(free_floats);
   s.capacity = 2u * max_points / kSpinScratchArrays;
-  float* a = free_floats + max_points;
-  s.x = a;
+  s.x = free_floats + max_points;
   s.y = s.x + s.capacity;
   s.z = s.y + s.capacity;
   s.nx = s.z + s.capacity;
   s.ny = s.nx + s.capacity;
   s.nz = s.ny + s.capacity;
-  s.index = reinterpret_cast<uint32_t*>(s.nz + s.capacity);
   return s;
 }
 
@@ -159,8 +157,8 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   uint32_t ne = equalise_density(m.voxel_grid, m.points, m.equalised);
   stats->points_equalised = ne;
 
-  // The voxel grid is free until basis selection; the basis indices and
-  // the spin images' output hold the normals' gathered neighbourhoods.
+  // The voxel grid is free until basis selection; the spin images' output
+  // holds the normals' gathered neighbourhoods.
   NeighbourScratch scratch;
   const size_t spin_floats = static_cast<size_t>(cap_.max_features) * cap_.max_spin_dims;
   constexpr size_t kNormalScratchArrays = 3;  // x, y, z
@@ -169,7 +167,6 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   scratch.x = m.out_spins;
   scratch.y = scratch.x + scratch.capacity;
   scratch.z = scratch.y + scratch.capacity;
-  scratch.index = m.basis;
   const float radius = sparse_aware_normals(m.voxel_grid, m.equalised, ne, params_.normal_radius, m.normals,
                                             m.has_normal, scratch, &stats->points_oriented);
   float cell = params_.support_radius * 0.5f;  // spin support R = two cells each way

@@ -15,7 +15,11 @@ bool CellGrid::carve(Arena& arena, uint32_t max_points) {
   slots_in_order_ = arena.alloc<uint32_t>(max_points);
   order_ = arena.alloc<uint32_t>(max_points);
   point_slot_ = arena.alloc<uint32_t>(max_points);
-  return !arena.overflowed();
+  cell_count_ = 0;
+  if (arena.overflowed()) return false;
+  // Every slot free once; each build then frees only the cells of the last.
+  for (uint32_t s = 0; s < max_capacity_; ++s) keys_[s] = kEmptyCellKey;
+  return true;
 }
 
 uint32_t CellGrid::insert(uint64_t key) {
@@ -37,15 +41,17 @@ uint32_t CellGrid::insert(uint64_t key) {
 void CellGrid::build(const float* points, uint32_t n, float cell) {
   points_ = points;
   cell_ = cell;
+  // The last build's cells are the only slots in use (carve freed them all):
+  // freeing them costs a store per cell, not one per slot of the table.
+  for (uint32_t c = 0; c < cell_count_; ++c) keys_[slots_in_order_[c]] = kEmptyCellKey;
   cell_count_ = 0;
   if (n > max_points_) n = max_points_;
-  // A table sized for these n points (load <= 1/2), not for max_points: only
-  // its slots are cleared. The cells keep the order they were first seen in
-  // whatever the table's size, so every pass over them is the same.
+  // A table sized for these n points (load <= 1/2), not for max_points. The
+  // cells keep the order they were first seen in whatever the table's size,
+  // so every pass over them is the same.
   capacity_ = next_pow2(2u * (n > 0 ? n : 1u));
   if (capacity_ > max_capacity_) capacity_ = max_capacity_;
   slot_shift_ = slot_shift(capacity_);
-  for (uint32_t s = 0; s < capacity_; ++s) keys_[s] = kEmptyCellKey;
   for (uint32_t i = 0; i < n; ++i) {
     const float* p = points + 3u * i;
     uint32_t slot = insert(pack(coord(p[0]), coord(p[1]), coord(p[2])));
@@ -87,29 +93,25 @@ bool CellGrid::slab_gaps(const float* q, float radius, int32_t reach,
 }
 
 uint32_t CellGrid::gather_neighbourhood(uint32_t i, int32_t reach, float* x, float* y, float* z,
-                                        uint32_t* index, uint32_t capacity) const {
-  const uint64_t key = keys_[slots_in_order_[i]];
-  const uint64_t mask = (1ull << 21) - 1ull;
-  // The cell's coordinates back from its key (coord keeps them within 21 bits).
-  const int32_t cx = static_cast<int32_t>(key & mask) - kCoordBias;
-  const int32_t cy = static_cast<int32_t>((key >> 21) & mask) - kCoordBias;
-  const int32_t cz = static_cast<int32_t>((key >> 42) & mask) - kCoordBias;
+                                        uint32_t capacity) const {
   uint32_t count = 0;
-  for (int32_t dz = -reach; dz <= reach; ++dz)
-    for (int32_t dy = -reach; dy <= reach; ++dy)
-      for (int32_t dx = -reach; dx <= reach; ++dx) {
-        const int32_t slot = find(pack(cx + dx, cy + dy, cz + dz));
-        if (slot < 0) continue;
-        if (count_[slot] > capacity - count) return kGatherOverflow;
-        const uint32_t* it = order_ + first_[slot];
-        for (uint32_t k = 0; k < count_[slot]; ++k, ++count) {
-          const float* p = points_ + 3u * it[k];
-          x[count] = p[0];
-          y[count] = p[1];
-          z[count] = p[2];
-          index[count] = it[k];
-        }
-      }
+  const float* points = points_;
+  for_each_cell_near(i, reach, [&](const uint32_t* it, uint32_t size) {
+    if (size > capacity - count) {
+      count = kGatherOverflow;
+      return false;
+    }
+    // Locals, so the stores need not reload the cell's count and start.
+    float *cx = x + count, *cy = y + count, *cz = z + count;
+    for (uint32_t k = 0; k < size; ++k) {
+      const float* p = points + 3u * it[k];
+      cx[k] = p[0];
+      cy[k] = p[1];
+      cz[k] = p[2];
+    }
+    count += size;
+    return true;
+  });
   return count;
 }
 

@@ -7,6 +7,7 @@
 
 #include "spinhash/arena.hpp"
 #include "util/fibonacci_hash.hpp"
+#include "util/floor_int.hpp"
 
 namespace spinhash {
 
@@ -58,14 +59,31 @@ class CellGrid {
     }
   }
 
-  // The points of cell i (first-seen order) and of every cell within
-  // `reach` cells of it each way, cell by cell in z, y, x order as
-  // for_each_within visits them from a point of cell i: their coordinates
-  // into x[k], y[k], z[k] and their indices into index[k], k < capacity.
-  // Returns how many, or kGatherOverflow when more than capacity (nothing
-  // usable).
+  // Calls f(it, count) with the point indices of cell i (first-seen order)
+  // and of every occupied cell within `reach` cells of it each way, cell by
+  // cell in z, y, x order as for_each_within visits them from a point of
+  // cell i; stops early when f returns false.
+  template <typename F>
+  void for_each_cell_near(uint32_t i, int32_t reach, F&& f) const {
+    const uint64_t key = keys_[slots_in_order_[i]];
+    const uint64_t mask = (1ull << 21) - 1ull;
+    // The cell's coordinates back from its key (coord keeps them within 21 bits).
+    const int32_t cx = static_cast<int32_t>(key & mask) - kCoordBias;
+    const int32_t cy = static_cast<int32_t>((key >> 21) & mask) - kCoordBias;
+    const int32_t cz = static_cast<int32_t>((key >> 42) & mask) - kCoordBias;
+    for (int32_t dz = -reach; dz <= reach; ++dz)
+      for (int32_t dy = -reach; dy <= reach; ++dy)
+        for (int32_t dx = -reach; dx <= reach; ++dx) {
+          const int32_t slot = find(pack(cx + dx, cy + dy, cz + dz));
+          if (slot >= 0 && !f(order_ + first_[slot], count_[slot])) return;
+        }
+  }
+
+  // The coordinates of the points for_each_cell_near visits into x[k],
+  // y[k], z[k], k < capacity, in its order. Returns how many, or
+  // kGatherOverflow when more than capacity (nothing usable).
   static constexpr uint32_t kGatherOverflow = 0xFFFFFFFFu;
-  uint32_t gather_neighbourhood(uint32_t i, int32_t reach, float* x, float* y, float* z, uint32_t* index,
+  uint32_t gather_neighbourhood(uint32_t i, int32_t reach, float* x, float* y, float* z,
                                 uint32_t capacity) const;
   // The reach of a search of `radius` (for_each_within's).
   int32_t reach_of(float radius) const { return static_cast<int32_t>(std::ceil(radius / cell_)); }
@@ -130,12 +148,14 @@ class CellGrid {
 };
 
 inline int32_t CellGrid::coord(float v) const {
-  float c = std::floor(v / cell_);
-  // Clouds wider than 2^20 cells are clamped at the rim (recentred input never is).
+  float t = v / cell_;
+  // Clouds wider than 2^20 cells are clamped at the rim (recentred input
+  // never is). lim is whole, so clamping before the floor gives the floor's
+  // clamp.
   const float lim = static_cast<float>(kCoordBias - 2);
-  if (!(c > -lim)) c = -lim;  // also NaN: never convert a non-finite float to int
-  if (!(c < lim)) c = lim;
-  return static_cast<int32_t>(c);
+  if (!(t > -lim)) t = -lim;  // also NaN: never convert a non-finite float to int
+  if (!(t < lim)) t = lim;
+  return floor_to_int(t);
 }
 
 inline uint64_t CellGrid::pack(int32_t x, int32_t y, int32_t z) {

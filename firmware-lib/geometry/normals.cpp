@@ -75,7 +75,7 @@ uint32_t estimate_normals(const CellGrid& grid, const float* points, uint32_t n,
   for (uint32_t c = 0; c < grid.cell_count(); ++c) {
     const uint32_t first = grid.cell_first(c), size = grid.cell_size_of(c);
     const uint32_t gathered =
-        grid.gather_neighbourhood(c, reach, scratch.x, scratch.y, scratch.z, scratch.index, scratch.capacity);
+        grid.gather_neighbourhood(c, reach, scratch.x, scratch.y, scratch.z, scratch.capacity);
     for (uint32_t k = first; k < first + size; ++k) {
       const uint32_t i = order[k];
       const float* q = points + 3u * i;

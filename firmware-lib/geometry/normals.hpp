@@ -11,13 +11,11 @@ namespace spinhash {
 constexpr float kMinPlanarRatio = 1e-3f;
 
 // Room for a gathered neighbourhood (CellGrid::gather_neighbourhood):
-// capacity points' coordinates and indices. None: every point searches the
-// grid.
+// capacity points' coordinates. None: every point searches the grid.
 struct NeighbourScratch {
   float* x = nullptr;  // capacity each
   float* y = nullptr;
   float* z = nullptr;
-  uint32_t* index = nullptr;
   uint32_t capacity = 0;
 };
 

@@ -89,12 +89,10 @@ TEST_CASE("exact cuts: normals over gathered neighbourhoods are the point-by-poi
   // Room for every neighbourhood, and for none of the larger ones (the point-by-point fallback).
   for (uint32_t capacity : {n, 40u}) {
     std::vector<float> x(capacity), y(capacity), z(capacity);
-    std::vector<uint32_t> index(capacity);
     NeighbourScratch scratch;
     scratch.x = x.data();
     scratch.y = y.data();
     scratch.z = z.data();
-    scratch.index = index.data();
     scratch.capacity = capacity;
     std::vector<float> gathered(pts.size(), 0.0f);
     std::vector<uint8_t> gathered_has(n, 0);

@@ -264,7 +264,7 @@ std::vector<float> images_gathered(const SpinImageParams& sp, const test::GridFi
                                    uint32_t capacity) {
   const uint32_t n = static_cast<uint32_t>(c.has.size()), nb = static_cast<uint32_t>(c.basis.size());
   std::vector<float> arrays(6u * capacity + 1u);
-  std::vector<uint32_t> index(capacity + 1u), basis_of(n);
+  std::vector<uint32_t> basis_of(n);
   SpinScratch s;
   s.basis_of = basis_of.data();
   s.capacity = capacity;
@@ -274,7 +274,6 @@ std::vector<float> images_gathered(const SpinImageParams& sp, const test::GridFi
   s.nx = s.z + capacity;
   s.ny = s.nx + capacity;
   s.nz = s.ny + capacity;
-  s.index = index.data();
   std::vector<float> out(static_cast<size_t>(nb) * sp.bins_alpha * sp.bins_beta, -1.0f);
   compute_spin_images(sp, g.grid, c.pts.data(), n, c.normals.data(), c.has.data(), c.basis.data(), nb, s,
                       out.data());
