@@ -22,21 +22,28 @@ bool usable(const T* p) {
   return true;
 }
 
+// The i-th kept point: every point in turn when all are kept (no division).
+template <typename T>
+const T* kept(const T* xyz, uint32_t i, uint32_t n, uint32_t keep) {
+  return xyz + 3u * (keep == n ? i : pick(i, n, keep));
+}
+
 template <typename T>
 uint32_t recentre_typed(const T* xyz, uint32_t n, uint32_t keep, double origin[3], float* out) {
   double sum[3] = {0.0, 0.0, 0.0};
   uint32_t finite = 0;
   for (uint32_t i = 0; i < keep; ++i) {
-    const T* p = xyz + 3u * pick(i, n, keep);
+    const T* p = kept(xyz, i, n, keep);
     if (!usable(p)) continue;
     for (int a = 0; a < 3; ++a) sum[a] += static_cast<double>(p[a]);
     ++finite;
   }
   for (int a = 0; a < 3; ++a) origin[a] = finite > 0 ? sum[a] / finite : 0.0;
+  const bool all_usable = finite == keep;  // the second pass need not test again
   uint32_t k = 0;
   for (uint32_t i = 0; i < keep; ++i) {
-    const T* p = xyz + 3u * pick(i, n, keep);
-    if (!usable(p)) continue;
+    const T* p = kept(xyz, i, n, keep);
+    if (!all_usable && !usable(p)) continue;
     for (int a = 0; a < 3; ++a) out[3u * k + a] = static_cast<float>(static_cast<double>(p[a]) - origin[a]);
     ++k;
   }
