@@ -235,6 +235,54 @@ void fill_levels(const CellStats& cs) {
   }
 }
 
+// The terrain's level under a point: the plane plus its cell's level.
+struct Level {
+  const Grid& g;
+  const Plane& plane;
+  const float* mean;
+  float height(const float* p) const { return p[2] - plane.at(p[0], p[1]) - mean[g.cell_of(p)]; }
+};
+
+uint32_t column_of(const Grid& g, const float* p) {
+  const float cell = g.cell / static_cast<float>(kColumnSplit);
+  const int32_t last = static_cast<int32_t>(kTerrainGridSide * kColumnSplit) - 1;
+  int32_t i = static_cast<int32_t>((p[0] - g.x0) / cell), j = static_cast<int32_t>((p[1] - g.y0) / cell);
+  i = i < 0 ? 0 : (i > last ? last : i);
+  j = j < 0 ? 0 : (j > last ? last : j);
+  return static_cast<uint32_t>(j) * kTerrainGridSide * kColumnSplit + static_cast<uint32_t>(i);
+}
+
+// Per column, the highest point above the terrain.
+void column_tops(const float* xyz, uint32_t n, const Level& level, float* tops) {
+  for (uint32_t c = 0; c < kColumnCells; ++c) tops[c] = -kEmptyCell;
+  for (uint32_t i = 0; i < n; ++i) {
+    const float* p = xyz + 3u * i;
+    const uint32_t c = column_of(level.g, p);
+    const float h = level.height(p);
+    tops[c] = h > tops[c] ? h : tops[c];
+  }
+}
+
+// Compacts xyz to the points above the band (`drop` m over the terrain) and
+// the band's top in a column that holds a body; returns how many stay, and
+// the two highest of them above their terrain in top.
+uint32_t keep_above_band(float* xyz, uint32_t n, const Level& level, float drop, const float* tops,
+                         float top[2]) {
+  const float body = drop + kBodyAbove;           // a column rising this high holds a body
+  const float body_floor = kBandKeptFrom * drop;  // band points below it are ground even there
+  uint32_t kept = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const float* p = xyz + 3u * i;
+    const float h = level.height(p);
+    if (h <= drop && (h <= body_floor || tops[column_of(level.g, p)] < body)) continue;
+    if (h > top[1]) top[1] = h > top[0] ? top[0] : h;
+    if (h > top[0]) top[0] = h;
+    for (uint32_t a = 0; a < 3u; ++a) xyz[3u * kept + a] = p[a];
+    ++kept;
+  }
+  return kept;
+}
+
 }  // namespace
 
 uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* scratch,
@@ -277,30 +325,24 @@ uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* sc
   // kClearanceSigmas of the ground's own roughness, within [kMinClearance, clearance].
   float drop = kClearanceSigmas * sigma;
   drop = drop < kMinClearance ? kMinClearance : (drop > clearance ? clearance : drop);
-  auto height = [&](const float* p) { return p[2] - plane.at(p[0], p[1]) - cs.mean[g.cell_of(p)]; };
+  const Level level{g, plane, cs.mean};
   // Terrain is the lowest surface: a flat part of an object (a hood, a
   // pickup's bed) has the rest of the object below it.
   const float below =
       -(kBelowTerrainSigmas * sigma > kMinBelowTerrain ? kBelowTerrainSigmas * sigma : kMinBelowTerrain);
   uint32_t near = 0, under = 0;
   for (uint32_t i = 0; i < n; ++i) {
-    const float h = height(xyz + 3u * i);
+    const float h = level.height(xyz + 3u * i);
     near += h <= drop ? 1u : 0u;
     under += h < below ? 1u : 0u;
   }
   if (static_cast<float>(near) < kMinObjectGroundShare * static_cast<float>(n) ||
       static_cast<float>(under) > kMaxBelowTerrainShare * static_cast<float>(n))
     return 0;
-  uint32_t kept = 0;
+  float* tops = scratch + 4u * kTerrainCells;
+  column_tops(xyz, n, level, tops);
   float top[2] = {0.0f, 0.0f};  // the two highest kept points above their terrain
-  for (uint32_t i = 0; i < n; ++i) {
-    const float h = height(xyz + 3u * i);
-    if (h <= drop) continue;
-    if (h > top[1]) top[1] = h > top[0] ? top[0] : h;
-    if (h > top[0]) top[0] = h;
-    for (uint32_t a = 0; a < 3u; ++a) xyz[3u * kept + a] = xyz[3u * i + a];
-    ++kept;
-  }
+  const uint32_t kept = keep_above_band(xyz, n, level, drop, tops, top);
   if (terrain != nullptr && kept > 1u) *terrain = TerrainUnder{true, top[1], sigma, drop};
   return n - kept;
 }

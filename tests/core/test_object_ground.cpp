@@ -372,3 +372,36 @@ TEST_CASE("the terrain found says the object's top above it and the ground's noi
                              &terrain) == 0u);
   CHECK_FALSE(terrain.found);
 }
+
+TEST_CASE("under a body the band's top is kept; beside it the whole band goes") {
+  uint32_t ground = 0;
+  std::vector<float> pts = box_on_noisy_ground(0.06f, &ground);
+  const std::vector<float> before = pts;
+  const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
+  std::vector<float> scratch(kObjectGroundScratchFloats);
+  TerrainUnder terrain;
+  const uint32_t kept = n - remove_object_ground(pts.data(), n, kClearance, scratch.data(), &terrain);
+  REQUIRE(terrain.found);
+  // Heights within kSlack of a bound may fall either side (the cells' levels are noisy).
+  constexpr float kSlack = 0.015f;
+  const float floor = kBandKeptFrom * terrain.band;
+  auto in_band_top = [&](const float* p) { return p[2] > floor + kSlack && p[2] < terrain.band - kSlack; };
+  auto under_box = [](const float* p) { return std::fabs(p[0]) <= 2.001f && std::fabs(p[1]) <= 1.001f; };
+  uint32_t box_top = 0;  // the box's sides in the band's top: each column has the roof above it
+  for (uint32_t i = ground; i < n; ++i) box_top += in_band_top(&before[3u * i]) ? 1u : 0u;
+  REQUIRE(box_top > 100u);  // the row at 0.2 m
+  uint32_t kept_top = 0, kept_low = 0, ground_in_band = 0;
+  for (uint32_t i = 0; i < kept; ++i) {
+    const float* p = pts.data() + 3u * i;
+    kept_top += under_box(p) && in_band_top(p) ? 1u : 0u;
+    kept_low += under_box(p) && p[2] < floor - kSlack ? 1u : 0u;
+    const bool beside = std::fabs(p[0]) > 2.5f || std::fabs(p[1]) > 1.5f;  // no body within 0.5 m
+    ground_in_band += beside && p[2] <= terrain.band ? 1u : 0u;
+  }
+  // The cells along the box's edges measure their level a few cm high (the
+  // sides' lowest points count as ground there), so there much of the row
+  // lies below the band's top; dropping the whole band keeps none of it.
+  CHECK(kept_top >= box_top / 4u);
+  CHECK(kept_low == 0u);
+  CHECK(ground_in_band == 0u);
+}

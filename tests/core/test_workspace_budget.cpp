@@ -25,8 +25,8 @@ struct WorkspaceThreshold {
 // Pointer-sized members make 64-bit layouts larger than 32-bit ones.
 // Issue 28: +176 B per recognizer (the class ranking, 11 x 16 B) and +184 B
 // per SceneObject (its class ranking), on either pointer size.
-constexpr WorkspaceThreshold kThreshold64 = {6386400, 5556480, 30952064, 44572224};
-constexpr WorkspaceThreshold kThreshold32 = {6386240, 5556320, 30951808, 44571968};
+constexpr WorkspaceThreshold kThreshold64 = {6402784, 5572864, 30952064, 44572224};
+constexpr WorkspaceThreshold kThreshold32 = {6402624, 5572704, 30951808, 44571968};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
 constexpr size_t kToleranceBytes = 1024;
