@@ -5,10 +5,26 @@
 namespace spinhash {
 namespace {
 
-// i-th of `keep` points spread evenly over n (all of them when keep == n).
-inline uint32_t pick(uint32_t i, uint32_t n, uint32_t keep) {
-  return static_cast<uint32_t>(static_cast<uint64_t>(i) * n / keep);
-}
+// The indices floor(i * n / keep), i = 0, 1, ..., of `keep` points spread
+// evenly over n >= keep (all of them when keep == n), one after the other
+// without a division per point: the quotient and remainder step by n's.
+class EvenPicks {
+ public:
+  EvenPicks(uint32_t n, uint32_t keep) : step_(n / keep), rem_(n % keep), keep_(keep) {}
+  uint32_t next() {
+    const uint32_t at = q_;
+    q_ += step_;
+    r_ += rem_;
+    if (r_ >= keep_) {
+      r_ -= keep_;
+      ++q_;
+    }
+    return at;
+  }
+
+ private:
+  uint32_t step_, rem_, keep_, q_ = 0, r_ = 0;
+};
 
 // Farther than this from the frame origin a coordinate is garbage (Earth-centred
 // coordinates stay below 7e6 m); such points are dropped like NaN so the
@@ -22,18 +38,13 @@ bool usable(const T* p) {
   return true;
 }
 
-// The i-th kept point: every point in turn when all are kept (no division).
-template <typename T>
-const T* kept(const T* xyz, uint32_t i, uint32_t n, uint32_t keep) {
-  return xyz + 3u * (keep == n ? i : pick(i, n, keep));
-}
-
 template <typename T>
 uint32_t recentre_typed(const T* xyz, uint32_t n, uint32_t keep, double origin[3], float* out) {
   double sum[3] = {0.0, 0.0, 0.0};
   uint32_t finite = 0;
+  EvenPicks sum_picks(n, keep);
   for (uint32_t i = 0; i < keep; ++i) {
-    const T* p = kept(xyz, i, n, keep);
+    const T* p = xyz + 3u * sum_picks.next();
     if (!usable(p)) continue;
     for (int a = 0; a < 3; ++a) sum[a] += static_cast<double>(p[a]);
     ++finite;
@@ -41,8 +52,9 @@ uint32_t recentre_typed(const T* xyz, uint32_t n, uint32_t keep, double origin[3
   for (int a = 0; a < 3; ++a) origin[a] = finite > 0 ? sum[a] / finite : 0.0;
   const bool all_usable = finite == keep;  // the second pass need not test again
   uint32_t k = 0;
+  EvenPicks out_picks(n, keep);
   for (uint32_t i = 0; i < keep; ++i) {
-    const T* p = kept(xyz, i, n, keep);
+    const T* p = xyz + 3u * out_picks.next();
     if (!all_usable && !usable(p)) continue;
     for (int a = 0; a < 3; ++a) out[3u * k + a] = static_cast<float>(static_cast<double>(p[a]) - origin[a]);
     ++k;

@@ -49,6 +49,27 @@ TEST_CASE("recentre subtracts the double mean, keeps georeferenced precision and
   CHECK(out[3] == doctest::Approx(-1.0f));
 }
 
+TEST_CASE("recentre's thinning takes the points i * n / keep for every n and keep") {
+  for (uint32_t n = 1; n <= 40; ++n) {
+    std::vector<float> xyz;
+    for (uint32_t i = 0; i < n; ++i) xyz.insert(xyz.end(), {static_cast<float>(i), 0.0f, 0.0f});
+    CloudView cloud;
+    cloud.xyz_f = xyz.data();
+    cloud.count = n;
+    for (uint32_t keep = 1; keep <= n; ++keep) {
+      CAPTURE(n);
+      CAPTURE(keep);
+      double origin[3];
+      std::vector<float> out(3u * keep);
+      REQUIRE(recentre(cloud, keep, origin, out.data()) == keep);
+      for (uint32_t i = 0; i < keep; ++i) {
+        const double picked = static_cast<double>(out[3u * i]) + origin[0];
+        CHECK(picked == doctest::Approx(static_cast<double>(static_cast<uint64_t>(i) * n / keep)));
+      }
+    }
+  }
+}
+
 TEST_CASE("equalise_density leaves one point per occupied cell, at the cell's centroid") {
   const std::vector<float> pts = offset_grid();
   test::GridFixture g(pts, kCell);
