@@ -38,12 +38,16 @@ constexpr float kMinDenseGroundArea = 10.0f;
 
 struct Grid {
   float x0 = 0.0f, y0 = 0.0f, cell = kMinTerrainCell;
-  uint32_t cell_of(const float* p) const {
-    int32_t i = static_cast<int32_t>((p[0] - x0) / cell), j = static_cast<int32_t>((p[1] - y0) / cell);
-    const int32_t last = static_cast<int32_t>(kTerrainGridSide) - 1;
+  uint32_t cell_of(const float* p) const { return index_of(p, 1u); }
+  // The index of p's square in the grid with each cell split in split x split.
+  uint32_t index_of(const float* p, uint32_t split) const {
+    const float size = cell / static_cast<float>(split);
+    const uint32_t side = kTerrainGridSide * split;
+    int32_t i = static_cast<int32_t>((p[0] - x0) / size), j = static_cast<int32_t>((p[1] - y0) / size);
+    const int32_t last = static_cast<int32_t>(side) - 1;
     i = i < 0 ? 0 : (i > last ? last : i);
     j = j < 0 ? 0 : (j > last ? last : j);
-    return static_cast<uint32_t>(j) * kTerrainGridSide + static_cast<uint32_t>(i);
+    return static_cast<uint32_t>(j) * side + static_cast<uint32_t>(i);
   }
   float centre_x(uint32_t c) const { return x0 + (static_cast<float>(c % kTerrainGridSide) + 0.5f) * cell; }
   float centre_y(uint32_t c) const { return y0 + (static_cast<float>(c / kTerrainGridSide) + 0.5f) * cell; }
@@ -243,21 +247,12 @@ struct Level {
   float height(const float* p) const { return p[2] - plane.at(p[0], p[1]) - mean[g.cell_of(p)]; }
 };
 
-uint32_t column_of(const Grid& g, const float* p) {
-  const float cell = g.cell / static_cast<float>(kColumnSplit);
-  const int32_t last = static_cast<int32_t>(kTerrainGridSide * kColumnSplit) - 1;
-  int32_t i = static_cast<int32_t>((p[0] - g.x0) / cell), j = static_cast<int32_t>((p[1] - g.y0) / cell);
-  i = i < 0 ? 0 : (i > last ? last : i);
-  j = j < 0 ? 0 : (j > last ? last : j);
-  return static_cast<uint32_t>(j) * kTerrainGridSide * kColumnSplit + static_cast<uint32_t>(i);
-}
-
 // Per column, the highest point above the terrain.
 void column_tops(const float* xyz, uint32_t n, const Level& level, float* tops) {
   for (uint32_t c = 0; c < kColumnCells; ++c) tops[c] = -kEmptyCell;
   for (uint32_t i = 0; i < n; ++i) {
     const float* p = xyz + 3u * i;
-    const uint32_t c = column_of(level.g, p);
+    const uint32_t c = level.g.index_of(p, kColumnSplit);
     const float h = level.height(p);
     tops[c] = h > tops[c] ? h : tops[c];
   }
@@ -274,7 +269,7 @@ uint32_t keep_above_band(float* xyz, uint32_t n, const Level& level, float drop,
   for (uint32_t i = 0; i < n; ++i) {
     const float* p = xyz + 3u * i;
     const float h = level.height(p);
-    if (h <= drop && (h <= body_floor || tops[column_of(level.g, p)] < body)) continue;
+    if (h <= drop && (h <= body_floor || tops[level.g.index_of(p, kColumnSplit)] < body)) continue;
     if (h > top[1]) top[1] = h > top[0] ? top[0] : h;
     if (h > top[0]) top[0] = h;
     for (uint32_t a = 0; a < 3u; ++a) xyz[3u * kept + a] = p[a];
