@@ -247,15 +247,27 @@ struct Level {
   float height(const float* p) const { return p[2] - plane.at(p[0], p[1]) - mean[g.cell_of(p)]; }
 };
 
-// Per column, the highest point above the terrain.
-void column_tops(const float* xyz, uint32_t n, const Level& level, float* tops) {
+// How many points lie within the band (`near`) and deeper than `below`
+// under the terrain (`under`).
+struct BandCounts {
+  uint32_t near = 0, under = 0;
+};
+
+// Per column, the highest point above the terrain, and the band counts, in
+// one pass (one height per point).
+BandCounts column_tops(const float* xyz, uint32_t n, const Level& level, float drop, float below,
+                       float* tops) {
   for (uint32_t c = 0; c < kColumnCells; ++c) tops[c] = -kEmptyCell;
+  BandCounts counts;
   for (uint32_t i = 0; i < n; ++i) {
     const float* p = xyz + 3u * i;
     const uint32_t c = level.g.index_of(p, kColumnSplit);
     const float h = level.height(p);
     tops[c] = h > tops[c] ? h : tops[c];
+    counts.near += h <= drop ? 1u : 0u;
+    counts.under += h < below ? 1u : 0u;
   }
+  return counts;
 }
 
 // Compacts xyz to the points above the band (`drop` m over the terrain) and
@@ -325,17 +337,11 @@ uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* sc
   // pickup's bed) has the rest of the object below it.
   const float below =
       -(kBelowTerrainSigmas * sigma > kMinBelowTerrain ? kBelowTerrainSigmas * sigma : kMinBelowTerrain);
-  uint32_t near = 0, under = 0;
-  for (uint32_t i = 0; i < n; ++i) {
-    const float h = level.height(xyz + 3u * i);
-    near += h <= drop ? 1u : 0u;
-    under += h < below ? 1u : 0u;
-  }
-  if (static_cast<float>(near) < kMinObjectGroundShare * static_cast<float>(n) ||
-      static_cast<float>(under) > kMaxBelowTerrainShare * static_cast<float>(n))
-    return 0;
   float* tops = scratch + 4u * kTerrainCells;
-  column_tops(xyz, n, level, tops);
+  const BandCounts counts = column_tops(xyz, n, level, drop, below, tops);
+  if (static_cast<float>(counts.near) < kMinObjectGroundShare * static_cast<float>(n) ||
+      static_cast<float>(counts.under) > kMaxBelowTerrainShare * static_cast<float>(n))
+    return 0;
   float top[2] = {0.0f, 0.0f};  // the two highest kept points above their terrain
   const uint32_t kept = keep_above_band(xyz, n, level, drop, tops, top);
   if (terrain != nullptr && kept > 1u) *terrain = TerrainUnder{true, top[1], sigma, drop};
