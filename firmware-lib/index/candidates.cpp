@@ -73,7 +73,7 @@ void insert_top_w(Candidate* list, uint32_t* count, uint32_t w, Candidate c) {
 }
 
 bool LshSearcher::carve(Arena& arena, uint32_t max_scan) {
-  max_scan_ = max_scan;
+  max_scan_ = scan_ = max_scan;
   capacity_ = next_pow2(2u * (max_scan > 0 ? max_scan : 1u));
   slot_shift_ = slot_shift(capacity_);
   seen_ = arena.alloc<uint32_t>(capacity_);
@@ -83,6 +83,8 @@ bool LshSearcher::carve(Arena& arena, uint32_t max_scan) {
   generation_ = 0;
   return !arena.overflowed();
 }
+
+void LshSearcher::set_scan(uint32_t scan) { scan_ = scan < max_scan_ ? scan : max_scan_; }
 
 bool LshSearcher::mark_seen(uint32_t feature) {
   uint32_t slot = slot_of(feature * kFibonacciMultiplier, slot_shift_);
@@ -111,7 +113,7 @@ uint32_t LshSearcher::search(const Database& db, const uint8_t* spin, uint32_t w
   // Every table gets an equal share of the scan bound; a bucket larger than
   // its share (a very common descriptor, e.g. a flat patch) is sampled with
   // a fixed stride, so one crowded table cannot starve the others.
-  const uint32_t share = max_scan_ / p.lsh_tables > 0 ? max_scan_ / p.lsh_tables : 1u;
+  const uint32_t share = scan_ / p.lsh_tables > 0 ? scan_ / p.lsh_tables : 1u;
   uint32_t count = 0;
   // One bucket entry: its distance stops at the first block past the
   // farthest kept candidate (l1_distance_within), and most entries are

@@ -54,7 +54,7 @@ Status carve(Arena& arena, const RecognizerConfig& cfg, const FeatureParams& fp,
   cap.ground_clearance = cfg.ground_clearance;
   Status s = b.extractor.init(fp, cap, arena);
   if (s != Status::kOk && s != Status::kWorkspaceTooSmall) return s;
-  b.searcher.carve(arena, cfg.max_bucket_scan);
+  b.searcher.carve(arena, sparse_bucket_scan(cfg.max_bucket_scan));
   b.candidate_stride = candidate_stride(cfg);
   const size_t nf = cfg.max_features;
   b.query_spins = arena.alloc<uint8_t>(nf * cfg.max_spin_dims);
@@ -255,6 +255,7 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
     const uint32_t dropped = e.points_nonfinite + e.points_ground;
     const float density = footprint_density(ctx.query, e.points_in > dropped ? e.points_in - dropped : 0u);
     ctx.trial_scale = trial_scale(density);
+    b.searcher.set_scan(bucket_scan(config_.max_bucket_scan, config_.max_features, density, fs.count));
   }
   switch (config_.mode) {
     case Mode::kBran: run_bran(ctx); break;

@@ -33,4 +33,18 @@ float footprint_density(const QueryFeatures& query, uint32_t points) {
 
 uint32_t trial_scale(float density) { return dense_enough_for_model(density) ? 1u : kSparseTrialScale; }
 
+uint32_t sparse_bucket_scan(uint32_t max_bucket_scan) {
+  if (max_bucket_scan >= kMaxSparseBucketScan / kSparseScanScale)
+    return max_bucket_scan > kMaxSparseBucketScan ? max_bucket_scan : kMaxSparseBucketScan;
+  return max_bucket_scan * kSparseScanScale;
+}
+
+uint32_t bucket_scan(uint32_t max_bucket_scan, uint32_t max_features, float density, uint32_t features) {
+  if (dense_enough_for_model(density) || features == 0) return max_bucket_scan;
+  const uint64_t share = static_cast<uint64_t>(max_features) * max_bucket_scan / features;
+  const uint32_t scan = sparse_bucket_scan(max_bucket_scan);
+  if (share >= scan) return scan;
+  return share > max_bucket_scan ? static_cast<uint32_t>(share) : max_bucket_scan;
+}
+
 }  // namespace spinhash

@@ -29,4 +29,22 @@ float footprint_density(const QueryFeatures& query, uint32_t points);
 // kSparseTrialScale below kMinModelDensity, else 1.
 uint32_t trial_scale(float footprint_density);
 
+// A sparse scan's LSH lookups look at kSparseScanScale times
+// max_bucket_scan bucket entries, up to kMaxSparseBucketScan (and never
+// fewer than max_bucket_scan). With 5 cm of noise its spin images fall in
+// crowded buckets (a roof's, which every bus fills), whose sampled share
+// held no feature of the APC scanned: 24 APCs of 448 survey views were
+// named buses (docs/results.md 11j). Its features share the dense query's
+// total, max_features x max_bucket_scan, so the query's bound stays.
+constexpr uint32_t kSparseScanScale = 4;
+constexpr uint32_t kMaxSparseBucketScan = 4096;
+
+// The most bucket entries a lookup scans under max_bucket_scan: the seen
+// set's bound (LshSearcher::carve).
+uint32_t sparse_bucket_scan(uint32_t max_bucket_scan);
+
+// The bucket entries each lookup of a query with `features` features scans.
+uint32_t bucket_scan(uint32_t max_bucket_scan, uint32_t max_features, float footprint_density,
+                     uint32_t features);
+
 }  // namespace spinhash

@@ -117,6 +117,16 @@ TEST_CASE("LSH search: the scan bound truncates, and says so") {
   narrow.lsh.search(toy.db, toy.db.spin(f), 50, out, &cut);
   CHECK(cut.truncated);
   CHECK(cut.entries_scanned <= 8u);
+  // set_scan lowers the bound of a wide searcher, and cannot raise it past its carve.
+  SearchStats lowered;
+  wide.lsh.set_scan(8);
+  wide.lsh.search(toy.db, toy.db.spin(f), 50, out, &lowered);
+  CHECK(lowered.truncated);
+  CHECK(lowered.entries_scanned == cut.entries_scanned);
+  SearchStats raised;
+  narrow.lsh.set_scan(1u << 20);
+  narrow.lsh.search(toy.db, toy.db.spin(f), 50, out, &raised);
+  CHECK(raised.entries_scanned == cut.entries_scanned);
 }
 
 TEST_CASE("exhaustive per-model search equals a brute-force sort by (distance, feature)") {

@@ -1,5 +1,5 @@
-// More draws for a sparse scan (recognize/sparse_search.hpp): the density of
-// the query's footprint before any pose, and the draws' scale it sets.
+// More draws and a wider LSH scan for a sparse scan (recognize/sparse_search.hpp):
+// the density of the query's footprint before any pose, and the scales it sets.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -46,4 +46,30 @@ TEST_CASE("footprint density: points per m^2 of the features' extent along their
   CHECK(trial_scale(kMinModelDensity - 0.5f) == kSparseTrialScale);
   QueryFeatures none;
   CHECK(footprint_density(none, 100u) == 0.0f);
+}
+
+TEST_CASE("a sparse scan's lookups scan four times the entries, within the dense query's total") {
+  constexpr uint32_t kScan = 1024, kFeatures = 1024;
+  const float sparse = kMinModelDensity - 0.5f;
+  // Dense scans keep the configured bound, whatever their feature count.
+  CHECK(bucket_scan(kScan, kFeatures, kMinModelDensity, 200u) == kScan);
+  // A sparse car's 100-300 features: four times it, the seen set's bound.
+  CHECK(sparse_bucket_scan(kScan) == kSparseScanScale * kScan);
+  CHECK(bucket_scan(kScan, kFeatures, sparse, 200u) == kSparseScanScale * kScan);
+  // Many features share max_features x max_bucket_scan, never below the configured bound.
+  CHECK(bucket_scan(kScan, kFeatures, sparse, 512u) == kFeatures * kScan / 512u);
+  CHECK(bucket_scan(kScan, kFeatures, sparse, kFeatures) == kScan);
+  CHECK(bucket_scan(kScan, kFeatures, sparse, 0u) == kScan);
+  // Up to kMaxSparseBucketScan: a small bound is scaled, a large one kept.
+  CHECK(sparse_bucket_scan(256u) == 1024u);
+  CHECK(sparse_bucket_scan(2048u) == kMaxSparseBucketScan);
+  CHECK(sparse_bucket_scan(1u << 24) == 1u << 24);
+  for (uint32_t scan : {1u, 100u, 512u, 1024u, 3000u, 4096u, 70000u})
+    for (uint32_t n : {1u, 50u, 300u, 700u, 1024u}) {
+      CAPTURE(scan);
+      CAPTURE(n);
+      const uint32_t b = bucket_scan(scan, kFeatures, sparse, n);
+      CHECK(b >= scan);
+      CHECK(b <= sparse_bucket_scan(scan));
+    }
 }

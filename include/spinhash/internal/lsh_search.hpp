@@ -20,14 +20,18 @@ void insert_top_w(Candidate* list, uint32_t* count, uint32_t w, Candidate c);
 
 struct SearchStats {
   uint64_t entries_scanned = 0;
-  bool truncated = false;  // stopped at max_scan
+  bool truncated = false;  // stopped at the scan bound
 };
 
 class LshSearcher {
  public:
+  // Carves the seen set for searches of up to max_scan bucket entries; each
+  // search scans that many until set_scan() lowers it.
   bool carve(Arena& arena, uint32_t max_scan);
+  // The bucket entries each search looks at from now on, at most the carved max_scan.
+  void set_scan(uint32_t scan);
   // Union of the query's L buckets, each distinct feature ranked by true
-  // distance, best w kept; at most max_scan bucket entries are looked at.
+  // distance, best w kept; at most the set scan's bucket entries are looked at.
   uint32_t search(const Database& db, const uint8_t* spin, uint32_t w, Candidate* out, SearchStats* stats);
 
  private:
@@ -37,7 +41,8 @@ class LshSearcher {
   uint32_t capacity_ = 0;
   uint32_t slot_shift_ = 32;  // 32 - log2(capacity_): a product's top bits pick the slot
   uint32_t generation_ = 0;
-  uint32_t max_scan_ = 0;
+  uint32_t max_scan_ = 0;  // the seen set's bound
+  uint32_t scan_ = 0;      // this query's, at most max_scan_
 };
 
 // The w features of `model` nearest to spin, by exhaustive L1 scan.
