@@ -411,22 +411,22 @@ TEST_CASE("under a body the band's top is kept; beside it the whole band goes") 
 // sides by a row per metre of height, the ground reaching 1.5 m past it.
 // Its 1 m cells show fewer clean ones than kMinSparseGroundCells (the 24 a
 // bare truck's roof cannot show), but they ring the body, and it stands
-// 1.45 m above them. The same car bare: its flat roof rings its footprint
-// too, with nothing standing on it.
+// 1.45 m above them.
 constexpr float kSurveySpacing = 0.35f;
+constexpr float kCarHalfLength = 2.25f, kCarHalfWidth = 0.9f, kCarHeight = 1.45f;
 
-std::vector<float> car_from_a_survey(float half_length = 2.25f, float half_width = 0.9f) {
+std::vector<float> car_from_a_survey() {
   std::vector<float> pts;
-  const std::vector<float> roof = test::plane_grid(half_length, kSurveySpacing);
+  const std::vector<float> roof = test::plane_grid(kCarHalfLength, kSurveySpacing);
   for (size_t i = 0; i < roof.size(); i += 3)
-    if (std::fabs(roof[i + 1]) <= half_width) pts.insert(pts.end(), {roof[i], roof[i + 1], 1.45f});
+    if (std::fabs(roof[i + 1]) <= kCarHalfWidth) pts.insert(pts.end(), {roof[i], roof[i + 1], kCarHeight});
   for (float z : {0.35f, 1.0f})
-    for (float x = -half_length; x <= half_length; x += kSurveySpacing)
-      for (float y : {-half_width, half_width}) pts.insert(pts.end(), {x, y, z});
+    for (float x = -kCarHalfLength; x <= kCarHalfLength; x += kSurveySpacing)
+      for (float y : {-kCarHalfWidth, kCarHalfWidth}) pts.insert(pts.end(), {x, y, z});
   return pts;
 }
 
-TEST_CASE("a survey's small cut-out of a car: the ground ringing it goes; a bare car's flat top stays") {
+TEST_CASE("a survey's small cut-out of a car: the ground ringing it goes; bare bodies keep their points") {
   constexpr float kMargin = 1.5f;
   std::vector<float> pts = car_from_a_survey();
   const uint32_t body = static_cast<uint32_t>(pts.size() / 3);
@@ -445,7 +445,8 @@ TEST_CASE("a survey's small cut-out of a car: the ground ringing it goes; a bare
   uint32_t ground = 0;
   for (size_t i = 0; i < plane.size(); i += 3) {
     const float x = std::fabs(plane[i]), y = std::fabs(plane[i + 1]);
-    const bool under = x < 2.25f && y<0.9f, beyond = x> 2.25f + kMargin || y > 0.9f + kMargin;
+    const bool under = x < kCarHalfLength && y < kCarHalfWidth;
+    const bool beyond = x > kCarHalfLength + kMargin || y > kCarHalfWidth + kMargin;
     if (under || beyond) continue;  // no sensor sees under the car; the cut-out ends
     pts.insert(pts.end(), {plane[i], plane[i + 1], 0.04f * (rng.uniform() - 0.5f)});
     ++ground;
@@ -455,5 +456,5 @@ TEST_CASE("a survey's small cut-out of a car: the ground ringing it goes; a bare
   const uint32_t dropped = remove_object_ground(pts.data(), n, kClearance, scratch.data(), &terrain);
   CHECK(terrain.found);
   CHECK(dropped == ground);
-  CHECK(terrain.top == doctest::Approx(1.45f).epsilon(0.05));
+  CHECK(terrain.top == doctest::Approx(kCarHeight).epsilon(0.05));
 }
