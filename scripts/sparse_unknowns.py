@@ -80,6 +80,7 @@ def main():
     ap.add_argument("--ground", type=float, default=6.0, help="ground square half size with the noisy scans")
     ap.add_argument("--conds", default="clean,noisy", help="of CONDITIONS: clean, noisy, survey, survey_ground")
     ap.add_argument("--extra-unknown", default="", help="comma-separated mesh folders of unknown vehicles, each named after its class")
+    ap.add_argument("--recognize-args", default="", help="more flags for spinhash recognize, e.g. '--mode sran'")
     ap.add_argument("--only-extra", action="store_true", help="scan only the --extra-unknown vehicles")
     a = ap.parse_args()
     S, out = a.spinhash, a.out
@@ -118,7 +119,7 @@ def main():
     chunk = 64
     for i in range(0, len(queries), chunk):
         part = queries[i:i + chunk]
-        lines = run(["nice", S, "recognize", "--db", db] + [q[0] for q in part], ok_codes=(0, 3)).splitlines()
+        lines = run(["nice", S, "recognize", "--db", db] + a.recognize_args.split() + [q[0] for q in part], ok_codes=(0, 3)).splitlines()
         assert len(lines) == len(part), (len(lines), len(part))
         for q, line in zip(part, lines):
             d = json.loads(line)

@@ -102,6 +102,10 @@ PairOutcome evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32
   ++st.doublets_passed;
   RigidPose pose;
   if (!pose_from_doublet(ctx.query_point(k), ctx.query_point(l), mu, mv, &pose)) return PairOutcome::kPassed;
+  if (pose.rotation(2, 2) < ctx.min_up_z) {  // the model's z under the pose: it would not stand
+    ++st.poses_tilted;
+    return PairOutcome::kRejected;
+  }
   ++st.hypotheses;
   consider_pose(ctx, model, pose);
   if (st.hypotheses >= caps.total || ctx.buf.best[model].hypotheses >= caps.per_model) {

@@ -246,6 +246,7 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
       DoubletTolerance{config_.tol_distance, deg_to_rad(config_.tol_angle_deg), config_.tol_handedness},
       config_.d_min,
       deg_to_rad(config_.theta_min_deg),
+      std::cos(deg_to_rad(config_.max_tilt_deg)),
       result.stats,
       Pcg32(config_.seed),
       nullptr,

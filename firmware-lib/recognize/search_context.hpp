@@ -65,6 +65,7 @@ struct SearchContext {
   DoubletTolerance tolerance;
   float d_min;
   float theta_min;
+  float min_up_z;  // cos(max_tilt_deg): the least z of a posed model's up axis
   RecognitionStats& stats;
   Pcg32 rng;
   const float* cumulative = nullptr;  // doublet draw weights (running sums); null = uniform
@@ -107,8 +108,9 @@ inline bool scores_higher(const SearchContext& ctx, uint32_t a, uint32_t b) {
 void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose,
                    float source_score = kNoScoreToBeat);
 
-// What became of a candidate pair: stopped by the cascade, through it (and
-// posed and verified when the pose is defined), or not tried: the budget is spent.
+// What became of a candidate pair: stopped by the cascade or by its pose's
+// tilt (max_tilt_deg), through both (and verified when the pose is
+// defined), or not tried: the budget is spent.
 enum class PairOutcome { kRejected, kPassed, kBudgetSpent };
 
 // Cascade, pose, verification and gamma_i update for query features (k, l)

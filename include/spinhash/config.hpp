@@ -67,6 +67,13 @@ struct RecognizerConfig {
   float tol_distance = 0.30f;   // |d - d'| allowed, m
   float tol_angle_deg = 25.0f;  // |a - a'|, |b - b'|, |c - c'| allowed
   float tol_handedness = 0.5f;  // |t - t'| allowed, t = (n1 x n2) . u  (rejects mirror images)
+  // A doublet's pose is verified only when it tilts the model's up axis (its
+  // z) at most this far from the query's z (not in the paper). An airborne
+  // vehicle stands on its wheels on terrain of up to 15-20 degrees, and the
+  // query is georeferenced, z up. The paper's doublets fix no axis, and on
+  // sparse noisy scans most verified poses laid a bus on its side over an
+  // APC's roof (docs/results.md 11k). 180: any pose (clouds without z up).
+  float max_tilt_deg = 45.0f;
 
   // Likelihood (section 8, eqs. 4-7).
   float sigma = 0.15f;  // sigma, m: sensor noise plus basis-point sampling offset

@@ -54,6 +54,8 @@
   X(F32, tol_angle_deg, 0.0f, 180.0f, "--tol-angle", "doublet angle tolerance, degrees")                     \
   X(F32, tol_handedness, 0.0f, 2.0f, "--tol-handedness",                                                     \
     "doublet handedness tolerance (rejects mirror images)")                                                  \
+  X(F32, max_tilt_deg, 0.0f, 180.0f, "--max-tilt",                                                           \
+    "largest tilt of a model's up axis from z a doublet's pose may have, degrees (180: any; z up)")          \
   X(F32, sigma, 1e-4f, 100.0f, "--sigma", "sigma of eq. 5, m")                                               \
   X(F32, sigma_surface, 1e-4f, 100.0f, "--sigma-surface",                                                    \
     "sigma of eq. 5 for the final point-to-surface residuals, m")                                            \
@@ -110,6 +112,7 @@
   S(U32, trials, trials, "trials")                                               \
   S(U64, pair_checks, pair_checks, "doublets_tried")                             \
   S(U64, doublets_passed, doublets_passed, "doublets_passed")                    \
+  S(U64, poses_tilted, poses_tilted, "poses_tilted")                             \
   S(U32, hypotheses, hypotheses, "hypotheses")                                   \
   S(U32, transferred, transferred, "transferred")                                \
   S(U32, refinements, refinements, "refinements")                                \

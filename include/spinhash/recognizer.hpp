@@ -48,6 +48,7 @@ struct RecognitionStats {
   uint32_t trials = 0;               // doublet draws
   uint64_t pair_checks = 0;          // candidate pairs put through the cascade
   uint64_t doublets_passed = 0;      // pairs that passed the cascade
+  uint64_t poses_tilted = 0;         // their poses tilted past max_tilt_deg, not verified
   uint32_t hypotheses = 0;           // poses verified from doublets (bounded by max_hypotheses)
   uint32_t transferred = 0;          // look-alike pose transfers verified (BRAN, <= 4 x transfer_models + 32)
   uint32_t refinements = 0;          // least-squares pose refinements verified
