@@ -72,7 +72,9 @@ struct RecognizerConfig {
   // vehicle stands on its wheels on terrain of up to 15-20 degrees, and the
   // query is georeferenced, z up. The paper's doublets fix no axis, and on
   // sparse noisy scans most verified poses laid a bus on its side over an
-  // APC's roof (docs/results.md 11k). 180: any pose (clouds without z up).
+  // APC's roof (docs/results.md 11k). The bound is on the doublets' poses;
+  // refinement may turn one a few degrees further. 180: any pose (clouds
+  // without z up).
   float max_tilt_deg = 45.0f;
 
   // Likelihood (section 8, eqs. 4-7).
