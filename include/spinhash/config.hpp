@@ -170,9 +170,10 @@ struct RecognizerConfig {
   float max_residual_f = 2.5f;
 
   // Work budget (bounded time): whichever runs out first stops recognition.
-  uint32_t max_trials = 800;           // BRAN: doublet draws
-  uint32_t sran_trials = 100;          // SRAN: doublet draws per model
-  uint32_t max_hypotheses = 6000;      // poses verified: BRAN all models together, SRAN per model
+  uint32_t max_trials = 800;   // BRAN: doublet draws
+  uint32_t sran_trials = 100;  // SRAN: doublet draws per model
+  uint32_t max_hypotheses =
+      6000;  // poses: BRAN all models together (tilted ones too), SRAN verified per model
   uint32_t max_pair_checks = 2000000;  // candidate pairs put through the cascade
   // BRAN: draws go on past max_trials (up to kTrialExtension x max_trials,
   // limits.hpp) while fewer poses than this were verified: in a database

@@ -87,10 +87,11 @@
     "F of the residuals' means per surface cell against their scatter, for a confident answer")              \
   X(U32, max_trials, 0u, kMaxTrials, "--trials", "doublet draws (BRAN)")                                     \
   X(U32, sran_trials, 0u, 0xFFFFFFFFu, "--sran-trials", "doublet draws per model (SRAN)")                    \
-  X(U32, max_hypotheses, 0u, 0xFFFFFFFFu, "--max-hypotheses", "poses verified (BRAN total, SRAN per model)") \
+  X(U32, max_hypotheses, 0u, 0xFFFFFFFFu, "--max-hypotheses",                                                \
+    "poses found (BRAN total, tilted ones too; SRAN verified per model)")                                    \
   X(U32, max_pair_checks, 0u, 0xFFFFFFFFu, "--max-pair-checks", "candidate pairs through the cascade")       \
   X(U32, min_hypotheses, 0u, 0xFFFFFFFFu, "--min-hypotheses",                                                \
-    "BRAN: draws past --trials (up to 4x) while fewer poses were verified")                                  \
+    "BRAN: draws past --trials (up to 4x) while they found fewer poses")                                     \
   X(F32, stop_miss_probability, 0.0f, 0.5f, "--stop-miss-probability",                                       \
     "BRAN stops once an all-correct doublet of the leader was missed with at most this chance (0: never)")   \
   X(BOOL, has_viewpoint, 0, 1, "", "set by --viewpoint")                                                     \

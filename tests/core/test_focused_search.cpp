@@ -14,6 +14,7 @@ using namespace spinhash;
 namespace {
 
 constexpr uint32_t kCopies = 40;  // identical copies: a feature's W = 50 candidates name most of them
+constexpr uint32_t kAmplePoses = 1u << 20;
 
 struct Copies {
   test::ToyDatabase toy;
@@ -22,6 +23,8 @@ struct Copies {
   RecognitionStats stats(uint32_t focus_models) {
     RecognizerConfig cfg;
     cfg.min_hypotheses = 0;  // the draws are never extended: only the spread can start the search
+    // 40 copies pair every doublet 40 ways, half of them tilted: the pose budget is not under test.
+    cfg.max_hypotheses = kAmplePoses;
     cfg.focus_models = focus_models;
     Result res = test::recognize_copied_toy(toy, cfg, &ws);
     REQUIRE(res.status == Status::kOk);

@@ -120,14 +120,16 @@ int recognise(const Database& db, const float* xyz, uint32_t count, const char* 
   Result r = rec.recognize(xyz, count);
   const RecognitionStats& s = r.stats;
   std::printf(
-      "%s: status=%s points=%u features=%u trials=%u pair_checks=%llu hypotheses=%u "
+      "%s: status=%s points=%u features=%u trials=%u pair_checks=%llu hypotheses=%u poses_tilted=%llu "
       "bucket_entries=%llu bucket_scan_truncated=%d budget_exhausted=%d\n",
       name, status_name(r.status), count, s.features, s.trials,
       static_cast<unsigned long long>(s.pair_checks), s.hypotheses,
-      static_cast<unsigned long long>(s.bucket_entries), s.bucket_scan_truncated ? 1 : 0,
-      s.budget_exhausted ? 1 : 0);
+      static_cast<unsigned long long>(s.poses_tilted), static_cast<unsigned long long>(s.bucket_entries),
+      s.bucket_scan_truncated ? 1 : 0, s.budget_exhausted ? 1 : 0);
   if (r.status != Status::kOk) return fail(std::string(name) + ": not recognised");
-  const bool cap_reached = s.hypotheses >= cfg.max_hypotheses || s.pair_checks >= cfg.max_pair_checks;
+  // The hypothesis budget counts the poses found, tilted ones too (max_tilt_deg).
+  const bool cap_reached =
+      s.hypotheses + s.poses_tilted >= cfg.max_hypotheses || s.pair_checks >= cfg.max_pair_checks;
   if (cap_reached != s.budget_exhausted)
     return fail(std::string(name) + ": budget flag disagrees with the stats");
   if (must_exhaust && !s.budget_exhausted)
