@@ -35,9 +35,9 @@ uint64_t trial_budget(const SearchContext& ctx) {
 
 bool keep_drawing(const SearchContext& ctx) {
   const uint64_t drawn = ctx.stats.trials, budget = trial_budget(ctx);
-  return drawn < budget || (drawn < kTrialExtension * budget &&
-                            ctx.stats.hypotheses + ctx.stats.poses_tilted <
-                                static_cast<uint64_t>(ctx.trial_scale) * ctx.cfg.min_hypotheses);
+  return drawn < budget ||
+         (drawn < kTrialExtension * budget &&
+          ctx.stats.poses_found() < static_cast<uint64_t>(ctx.trial_scale) * ctx.cfg.min_hypotheses);
 }
 
 // The candidates are spread over look-alikes when their perplexity (the

@@ -107,13 +107,13 @@ PairOutcome evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32
   // worst cases' draws (docs/budgets.md) to 1.6-2x their instructions.
   if (pose.rotation(2, 2) < ctx.min_up_z) {  // the model's z under the pose: it would not stand
     ++st.poses_tilted;
-    if (st.hypotheses + st.poses_tilted < caps.total) return PairOutcome::kRejected;
+    if (st.poses_found() < caps.total) return PairOutcome::kRejected;
     st.budget_exhausted = true;
     return PairOutcome::kBudgetSpent;
   }
   ++st.hypotheses;
   consider_pose(ctx, model, pose);
-  if (st.hypotheses + st.poses_tilted >= caps.total || ctx.buf.best[model].hypotheses >= caps.per_model) {
+  if (st.poses_found() >= caps.total || ctx.buf.best[model].hypotheses >= caps.per_model) {
     st.budget_exhausted = true;
     return PairOutcome::kBudgetSpent;
   }

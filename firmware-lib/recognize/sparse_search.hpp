@@ -37,9 +37,8 @@ uint32_t trial_scale(float footprint_density);
 // named a bus with no APC posed at all. On bare survey views at 12-21
 // points per m^2 the class right first gained a net 9 and 15 of 560 scans
 // on two draws (docs/results.md 11j), most of them APCs and trucks named
-// buses. Its
-// features share the dense query's total, max_features x max_bucket_scan,
-// so the query's bound stays.
+// buses. Its features share the dense query's total, max_features x
+// max_bucket_scan, so the query's bound stays.
 constexpr uint32_t kSparseScanScale = 4;
 constexpr uint32_t kMaxSparseBucketScan = 4096;
 

@@ -172,13 +172,14 @@ struct RecognizerConfig {
   // Work budget (bounded time): whichever runs out first stops recognition.
   uint32_t max_trials = 800;   // BRAN: doublet draws
   uint32_t sran_trials = 100;  // SRAN: doublet draws per model
-  uint32_t max_hypotheses =
-      6000;  // poses: BRAN all models together (tilted ones too), SRAN verified per model
+  // Poses: BRAN's found for all models together (RecognitionStats::poses_found,
+  // tilted ones too), SRAN's verified per model.
+  uint32_t max_hypotheses = 6000;
   uint32_t max_pair_checks = 2000000;  // candidate pairs put through the cascade
   // BRAN: draws go on past max_trials (up to kTrialExtension x max_trials,
-  // limits.hpp) while fewer poses than this were verified: in a database
-  // of many look-alikes few draws pair up in one model (0: max_trials only,
-  // as the paper).
+  // limits.hpp) while the draws found fewer poses than this (tilted ones
+  // too, RecognitionStats::poses_found): in a database of many look-alikes
+  // few draws pair up in one model (0: max_trials only, as the paper).
   uint32_t min_hypotheses = 200;
 
   // BRAN stops on evidence (RANSAC's termination bound): once the chance

@@ -49,7 +49,7 @@ struct RecognitionStats {
   uint64_t pair_checks = 0;          // candidate pairs put through the cascade
   uint64_t doublets_passed = 0;      // pairs that passed the cascade
   uint64_t poses_tilted = 0;         // their poses tilted past max_tilt_deg, not verified
-  uint32_t hypotheses = 0;           // poses verified from doublets (bounded by max_hypotheses)
+  uint32_t hypotheses = 0;           // poses verified from doublets (max_hypotheses: poses_found())
   uint32_t transferred = 0;          // look-alike pose transfers verified (BRAN, <= 4 x transfer_models + 32)
   uint32_t refinements = 0;          // least-squares pose refinements verified
   bool budget_exhausted = false;     // the work budget cut recognition short
@@ -57,6 +57,10 @@ struct RecognitionStats {
   bool candidates_spread = false;    // BRAN: the candidates named many look-alikes (focus_models)
   bool bucket_scan_truncated = false;  // some LSH lookups hit max_bucket_scan
   size_t workspace_used = 0;
+  // The poses the doublets gave, verified or refused for their tilt: what
+  // BRAN's pose budget and its draw extension count (max_hypotheses,
+  // min_hypotheses).
+  uint64_t poses_found() const { return hypotheses + poses_tilted; }
 };
 
 struct Result {

@@ -112,12 +112,11 @@ TEST_CASE_FIXTURE(Stopping,
   CHECK(paper.trials == kTrials);
   // The first kTrials draws are the same; then draws go on until they find
   // one more pose, verified or refused for its tilt (max_tilt_deg).
-  const auto found = [](const RecognitionStats& s) { return s.hypotheses + s.poses_tilted; };
   REQUIRE(paper.poses_tilted > 0);  // a ball's doublets pose the toy vehicles any way up
-  const uint64_t wanted = found(paper) + 1u;
+  const uint64_t wanted = paper.poses_found() + 1u;
   const RecognitionStats more = stats_with(static_cast<uint32_t>(wanted));
   CHECK(more.trials > kTrials);
   CHECK(more.trials <= kTrialExtension * kTrials);
-  CHECK((found(more) >= wanted || more.trials == kTrialExtension * kTrials));
+  CHECK((more.poses_found() >= wanted || more.trials == kTrialExtension * kTrials));
   CHECK(stats_with(0xFFFFFFFFu).trials == kTrialExtension * kTrials);
 }

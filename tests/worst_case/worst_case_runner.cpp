@@ -128,8 +128,7 @@ int recognise(const Database& db, const float* xyz, uint32_t count, const char* 
       s.bucket_scan_truncated ? 1 : 0, s.budget_exhausted ? 1 : 0);
   if (r.status != Status::kOk) return fail(std::string(name) + ": not recognised");
   // The hypothesis budget counts the poses found, tilted ones too (max_tilt_deg).
-  const bool cap_reached =
-      s.hypotheses + s.poses_tilted >= cfg.max_hypotheses || s.pair_checks >= cfg.max_pair_checks;
+  const bool cap_reached = s.poses_found() >= cfg.max_hypotheses || s.pair_checks >= cfg.max_pair_checks;
   if (cap_reached != s.budget_exhausted)
     return fail(std::string(name) + ": budget flag disagrees with the stats");
   if (must_exhaust && !s.budget_exhausted)
