@@ -13,9 +13,25 @@ void BranKnobs::apply(RecognizerConfig* cfg) const {
   cfg->min_hypotheses = min_hypotheses;
   cfg->focus_models = focus_models;
   cfg->lookalike_box_l1 = lookalike_box_l1;
+  apply_settings(settings, cfg);
+}
+
+void apply_settings(const std::vector<std::string>& settings, RecognizerConfig* cfg) {
   std::string error;
   for (const std::string& s : settings)
     if (!host::assign_config_field(s, cfg, &error)) throw CLI::ValidationError("--set", error);
+}
+
+void add_set_option(CLI::App* cmd, std::vector<std::string>* settings) {
+  cmd->add_option(
+         "--set", *settings,
+         "FIELD=VALUE: any recognizer field by its name in include/spinhash/config.hpp, applied after "
+         "the other flags (repeatable)")
+      ->check([](const std::string& s) {
+        RecognizerConfig probe;
+        std::string error;
+        return host::assign_config_field(s, &probe, &error) ? std::string() : error;
+      });
 }
 
 void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs) {
@@ -48,14 +64,7 @@ void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs) {
                   "query features kept, evenly thinned above (all modes)")
       ->check(CLI::Range(2u, kMaxQueryFeaturesLimit))
       ->capture_default_str();
-  cmd->add_option("--set", knobs->settings,
-                  "FIELD=VALUE: any recognizer field by its name in include/spinhash/config.hpp, after the "
-                  "flags above (repeatable)")
-      ->check([](const std::string& s) {
-        RecognizerConfig probe;
-        std::string error;
-        return host::assign_config_field(s, &probe, &error) ? std::string() : error;
-      });
+  add_set_option(cmd, &knobs->settings);
 }
 
 }  // namespace spinhash::experiment

@@ -27,4 +27,9 @@ struct BranKnobs {
 
 void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs);
 
+// --set FIELD=VALUE (repeatable) alone, for experiments without the knobs
+// above (scene); apply_settings() assigns them in order.
+void add_set_option(CLI::App* cmd, std::vector<std::string>* settings);
+void apply_settings(const std::vector<std::string>& settings, RecognizerConfig* cfg);
+
 }  // namespace spinhash::experiment

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "bran_knobs.hpp"
 #include "cloud/cloud_writer.hpp"
 #include "config_text.hpp"
 #include "experiments.hpp"
@@ -39,6 +40,7 @@ struct SceneArgs {
   double size = 40.0;
   uint32_t vehicles = 5;
   uint64_t seed = 1, fleet_seed = 1;
+  std::vector<std::string> settings;  // --set FIELD=VALUE
   std::string mode = "bran";
   bool models_given = false;
   bool save_tiles = false;  // OUT/tiles/: each tile's LAS and truth, for `spinhash scene --picture-out`
@@ -164,6 +166,7 @@ int run_scene(const SceneArgs& a) {
   cfg.recognizer.mode = modes[0];
   cfg.recognizer.ground_clearance = 0.0f;  // as `spinhash scene`: the terrain classifier removes the ground
   cfg.max_tile_points = kExperimentTilePoints;
+  apply_settings(a.settings, &cfg.recognizer);
   if (!model_clouds(models, &clouds, &error) ||
       !(mdb = build_memory_database(clouds, host::BuildOptions{}, false, &error)) ||
       !session.init(&mdb->db, cfg, &error))
@@ -241,6 +244,7 @@ void add_scene_experiment(CLI::App* parent, int* exit_code) {
   cmd->add_option("--mode", a->mode, "bran, sran or sind")->capture_default_str();
   cmd->add_option("--seed", a->seed, "first tile's seed")->capture_default_str();
   cmd->add_option("--fleet-seed", a->fleet_seed, "seed of the procedural fleet")->capture_default_str();
+  add_set_option(cmd, &a->settings);
   cmd->add_flag("--save-tiles", a->save_tiles,
                 "write each tile (LAS) and its truth (CSV) to OUT/tiles/cCONDITION-tTILE.*");
   cmd->callback([a, exit_code]() { *exit_code = run_scene(*a); });
