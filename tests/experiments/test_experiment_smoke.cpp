@@ -102,3 +102,18 @@ TEST_CASE("experiment scene runs end to end on tiny tiles and scores them agains
   CHECK(summary.find("## The issue's targets") != std::string::npos);
   CHECK(summary.find("| found | >= 95% | 100% (4) | **met** |") != std::string::npos);
 }
+
+TEST_CASE("experiment scene takes --set FIELD=VALUE and states it; an unknown field is refused") {
+  TempDir dir("experiment-scene-set");
+  const std::string out = dir.file("scene");
+  const std::string base =
+      "'" SPINHASH_EXPERIMENT_BINARY
+      "' scene --models 3 --tiles 1 --size 30 --vehicles 2 --unknown-vehicles 0 "
+      "--slopes 0 --spacings 0.15 --noises 0.05 --ref-slope 0 --ref-spacing 0.15 --out '" +
+      out + "' 2> '" + dir.file("stderr.txt") + "'";
+  REQUIRE(std::system((base + " --set min_margin=3.5 --set max_tilt_deg=30").c_str()) == 0);
+  const std::string summary = read_bytes(out + "/summary.md");
+  CHECK(summary.find("min_margin 3.5;") != std::string::npos);
+  CHECK(summary.find("max_tilt_deg 30;") != std::string::npos);
+  CHECK(std::system((base + " --set no_such_field=1").c_str()) != 0);
+}
