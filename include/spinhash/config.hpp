@@ -142,14 +142,14 @@ struct RecognizerConfig {
   // log-likelihood (BRAN, SRAN): eq. 7 sums n per-feature terms, so the lead
   // grows as n and its spread as sqrt(n) (a z-score; per feature it favoured
   // small scans, in total large ones). Most wrong answers are a look-alike
-  // of the right one, which comes second a little behind. 0.8: on 68 draws
+  // of the right one, which comes second a little behind. 0.8: on 85 draws
   // of 20 real cars (10 cm noise, 20 % occluded), 1.2 left right answers
-  // among near-identical touring cars unflagged (81 % flagged with ground,
-  // 89 % without) where 0.8 flags 86.7 / 93.0 % at 99.6 % right; the fleet's
-  // wrong confident answers lead by more and stay the same. The cost: 40 %
-  // occluded at 0.15 m, 95.6-98.6 % right (96.9-100 % at 1.2): the margin
-  // does not know how much of the vehicle the scan shows (results.md 11l;
-  // 1.3 until 9l, 1.2 until 11l) ...
+  // among near-identical touring cars unflagged (81.0 % flagged with
+  // ground, 88.8 % without) where 0.8 flags 86.8 / 92.8 % at 99.6 % right;
+  // the fleet's wrong confident answers lead by more and stay the same.
+  // The cost: 40 % occluded at 0.15 m, 97.7-98.8 % right (96.9 % at worst
+  // at 1.2): the margin does not know how much of the vehicle the scan
+  // shows (results.md 11l; 1.3 until 9l, 1.2 until 11l) ...
   float min_margin = 0.8f;
   // ... and the scan pins the model's size: the query features, in the
   // model's frame under its pose, reach within max_extent_shortfall of both
