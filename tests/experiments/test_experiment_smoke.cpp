@@ -34,6 +34,18 @@ TEST_CASE("experiment accuracy runs end to end on a tiny fleet") {
   CHECK(count_lines(curves) == 1u + 2u * 3u);  // header + 2 modes x k = 1..3
   const std::string per_query = read_bytes(out + "/per_query.csv");
   CHECK(count_lines(per_query) == 1u + 2u * 4u);  // header + 2 modes x 4 queries
+  // The last column: the share of the first model's features above its wheels
+  // that the unoccluded scan reaches under BRAN's pose (NaN for SIND: no pose).
+  CHECK(per_query.find(",class_lead,coverage\n") != std::string::npos);
+  size_t covered = 0;
+  for (size_t at = per_query.find("\nbran,"); at != std::string::npos;
+       at = per_query.find("\nbran,", at + 1)) {
+    const size_t end = per_query.find('\n', at + 1);
+    const size_t from = per_query.rfind(',', end) + 1;
+    const double coverage = std::atof(per_query.substr(from, end - from).c_str());
+    covered += coverage > 0.8 ? 1u : 0u;
+  }
+  CHECK(covered == 4u);
   const std::string summary = read_bytes(out + "/summary.md");
   CHECK(summary.find("# Accuracy") != std::string::npos);
   CHECK(summary.find("| noise 5 cm, occlusion 0% | BRAN |") != std::string::npos);
