@@ -19,6 +19,15 @@ size_t count_lines(const std::string& text) {
   return n;
 }
 
+// `spinhash-experiment scene` on one tiny 30 m tile per condition, at 0.15 m
+// and 5 cm noise around a level reference, with ARGS; its stderr in DIR.
+std::string scene_command(const TempDir& dir, const std::string& out, const std::string& args) {
+  return "'" SPINHASH_EXPERIMENT_BINARY
+         "' scene --tiles 1 --size 30 --spacings 0.15 --noises 0.05 "
+         "--ref-slope 0 --ref-spacing 0.15 " +
+         args + " --out '" + out + "' 2> '" + dir.file("stderr.txt") + "'";
+}
+
 }  // namespace
 
 TEST_CASE("experiment accuracy runs end to end on a tiny fleet") {
@@ -78,10 +87,7 @@ TEST_CASE("experiment scene runs end to end on tiny tiles and scores them agains
   TempDir dir("experiment-scene");
   const std::string out = dir.file("scene");
   const std::string cmd =
-      "'" SPINHASH_EXPERIMENT_BINARY
-      "' scene --models 6 --tiles 1 --size 30 --vehicles 2 --unknown-vehicles 1 "
-      "--slopes 0,10 --spacings 0.15 --noises 0.05 --ref-slope 0 --ref-spacing 0.15 --out '" +
-      out + "' 2> '" + dir.file("stderr.txt") + "'";
+      scene_command(dir, out, "--models 6 --vehicles 2 --unknown-vehicles 1 --slopes 0,10");
   REQUIRE(std::system(cmd.c_str()) == 0);
   const std::string scene = read_bytes(out + "/scene.csv");
   CHECK(scene.rfind("sweep,slope_deg,spacing,noise,tiles,vehicles,found,recall,top1,", 0) == 0);
@@ -118,14 +124,11 @@ TEST_CASE("experiment scene runs end to end on tiny tiles and scores them agains
 TEST_CASE("experiment scene takes --set FIELD=VALUE and states it; an unknown field is refused") {
   TempDir dir("experiment-scene-set");
   const std::string out = dir.file("scene");
-  const std::string base =
-      "'" SPINHASH_EXPERIMENT_BINARY
-      "' scene --models 3 --tiles 1 --size 30 --vehicles 2 --unknown-vehicles 0 "
-      "--slopes 0 --spacings 0.15 --noises 0.05 --ref-slope 0 --ref-spacing 0.15 --out '" +
-      out + "' 2> '" + dir.file("stderr.txt") + "'";
-  REQUIRE(std::system((base + " --set min_margin=3.5 --set max_tilt_deg=30").c_str()) == 0);
+  const std::string base = "--models 3 --vehicles 2 --unknown-vehicles 0 --slopes 0";
+  REQUIRE(std::system(
+              scene_command(dir, out, base + " --set min_margin=3.5 --set max_tilt_deg=30").c_str()) == 0);
   const std::string summary = read_bytes(out + "/summary.md");
   CHECK(summary.find("min_margin 3.5;") != std::string::npos);
   CHECK(summary.find("max_tilt_deg 30;") != std::string::npos);
-  CHECK(std::system((base + " --set no_such_field=1").c_str()) != 0);
+  CHECK(std::system(scene_command(dir, out, base + " --set no_such_field=1").c_str()) != 0);
 }
