@@ -66,7 +66,7 @@ bool open_sessions(const Database& db, const AccuracyArgs& a, const std::vector<
 // Every query of every condition through every mode.
 // Queries come from the first run->query_models meshes (the originals, when
 // look-alike copies follow them).
-bool run_queries(const AccuracyArgs& a, const std::vector<pipeline::ModelMesh>& meshes, const Database& db,
+bool run_queries(const AccuracyArgs& a, const std::vector<pipeline::ModelMesh>& meshes,
                  Sessions (&all_sessions)[2], AccuracyRun* run, std::string* error) {
   const uint32_t per_condition = run->query_models * a.queries_per_model;
   for (uint32_t c = 0; c < run->conditions.size(); ++c) {
@@ -82,7 +82,7 @@ bool run_queries(const AccuracyArgs& a, const std::vector<pipeline::ModelMesh>& 
         if (!simulate_query(meshes[m].mesh, m, q, cond, a.seed, a.ground_margin, &query, error)) return false;
         for (uint32_t k = 0; k < sessions.size(); ++k)
           run->records.push_back(AccuracyRecord{c, k, m, q, static_cast<uint32_t>(query.xyz.size() / 3),
-                                                query.object_points, recognise(*sessions[k], query, &db)});
+                                                query.object_points, recognise(*sessions[k], query)});
         progress.tick(++done);
       }
   }
@@ -139,7 +139,7 @@ int run_accuracy(const AccuracyArgs& a) {
   run.database = database_text(*mdb);
   run.recognizer = recognizer_text(sessions[0].front()->config());
   std::fprintf(stderr, "spinhash-experiment accuracy: %s\n", run.database.c_str());
-  if (!run_queries(a, meshes, mdb->db, sessions, &run, &error) || !write_accuracy_report(run, &error)) {
+  if (!run_queries(a, meshes, sessions, &run, &error) || !write_accuracy_report(run, &error)) {
     std::fprintf(stderr, "spinhash-experiment accuracy: %s\n", error.c_str());
     return pipeline::kExitError;
   }

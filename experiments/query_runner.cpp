@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "model_coverage.hpp"
-
 namespace spinhash::experiment {
 namespace {
 
@@ -21,7 +19,7 @@ void pose_errors(const Pose& p, const Eigen::Matrix4d& truth, Outcome* o) {
 
 }  // namespace
 
-Outcome recognise(pipeline::RecognitionSession& session, const Query& q, const Database* db) {
+Outcome recognise(pipeline::RecognitionSession& session, const Query& q) {
   Result r = session.recognize(q.xyz);
   Outcome o;
   o.status = r.status;
@@ -32,6 +30,7 @@ Outcome recognise(pipeline::RecognitionSession& session, const Query& q, const D
   o.group_size = r.group_size;
   o.budget_exhausted = r.stats.budget_exhausted;
   o.trials = r.stats.trials;
+  o.surface_coverage = r.stats.surface_coverage;
   if (r.status != Status::kOk) return o;
   o.ranked = r.ranking_count;
   if (r.ranking_count > 0) {
@@ -39,8 +38,6 @@ Outcome recognise(pipeline::RecognitionSession& session, const Query& q, const D
     o.score_first = r.ranking[0].score;
     o.inliers = r.ranking[0].inliers;
     if (r.ranking[0].has_pose) pose_errors(r.ranking[0].pose, q.true_pose, &o);
-    if (db && r.ranking[0].has_pose)
-      o.coverage = model_coverage(*db, r.ranking[0].model, r.ranking[0].pose, q.xyz);
   }
   if (r.class_ranking_count > 0) o.class_first = r.class_ranking[0].vehicle_class;
   if (r.class_ranking_count > 1) o.class_lead = r.class_ranking[0].score - r.class_ranking[1].score;

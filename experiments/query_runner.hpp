@@ -31,12 +31,9 @@ struct Outcome {
   uint32_t class_first = 0;
   float class_lead = NAN;  // the first class's score above the second's (NaN with fewer than two)
   bool class_confident = false;
-  // model_coverage() of the first model under its pose (NaN without a pose or
-  // without the database).
-  float coverage = NAN;
+  float surface_coverage = 0.0f;  // RecognitionStats::surface_coverage
 };
 
-// With `db`, also the first model's coverage (model_coverage.hpp).
-Outcome recognise(pipeline::RecognitionSession& session, const Query& q, const Database* db = nullptr);
+Outcome recognise(pipeline::RecognitionSession& session, const Query& q);
 
 }  // namespace spinhash::experiment

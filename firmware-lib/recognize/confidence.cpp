@@ -7,7 +7,7 @@ namespace {
 
 // Box faces tested: both ends along x and y, and the top (z up in the model).
 constexpr int kTestedFaces = 5;
-constexpr float kFar = 3.0e38f;  // beyond any coordinate: no feature yet
+constexpr float kFar = 3.0e38f;  // beyond any coordinate (no feature yet) and any lead
 // The lead over the runner-up that a query whose candidates spread over many
 // look-alikes needs, in units of min_margin: the runner-up is then the best
 // of many near-identical models, and the best of N noisy scores lies about
@@ -167,12 +167,24 @@ bool is_class_confident(const Result& r, const RecognizerConfig& cfg, uint32_t f
          first.score - r.class_ranking[1].score >= cfg.min_margin * std::sqrt(n);
 }
 
+float lookalike_margin(const Result& r, const RecognizerConfig& cfg) {
+  return r.stats.candidates_spread ? kSpreadMarginFactor * cfg.min_margin : cfg.min_margin;
+}
+
+float confident_margin(const Result& r, const RecognizerConfig& cfg) {
+  const float margin = lookalike_margin(r, cfg);
+  const float c = r.stats.surface_coverage;
+  if (!(c < cfg.full_coverage)) return margin;
+  if (!(c > 0.0f)) return kFar;  // nothing of the model's top seen: no lead is enough
+  const float short_by = cfg.full_coverage / c;
+  return margin * short_by * short_by;
+}
+
 uint32_t lookalike_group_size(const Result& r, const RecognizerConfig& cfg, uint32_t features) {
   if (r.ranking_count == 0) return 0;
   if (cfg.mode == Mode::kSind) return 1;
   uint32_t k = 1;
-  const float margin = r.stats.candidates_spread ? kSpreadMarginFactor * cfg.min_margin : cfg.min_margin;
-  const float within = margin * std::sqrt(static_cast<float>(features));
+  const float within = lookalike_margin(r, cfg) * std::sqrt(static_cast<float>(features));
   while (k < r.ranking_count && r.ranking[0].score - r.ranking[k].score < within) ++k;
   return k;
 }
@@ -181,10 +193,11 @@ bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t feature
                   float residual_f) {
   if (r.ranking_count == 0 || !r.ranking[0].has_pose) return false;
   const float n = static_cast<float>(features);
+  const float lead = r.ranking_count > 1 ? r.ranking[0].score - r.ranking[1].score : kFar;
   return static_cast<float>(r.ranking[0].inliers) >= cfg.min_inlier_fraction * n &&
          r.ranking[0].score >= cfg.min_mean_log_likelihood * n && r.group_size == 1u &&
-         fit.shortfall <= cfg.max_extent_shortfall && fit.overhang <= cfg.max_extent_overhang &&
-         residual_f <= residual_limit(r, cfg);
+         lead >= confident_margin(r, cfg) * std::sqrt(n) && fit.shortfall <= cfg.max_extent_shortfall &&
+         fit.overhang <= cfg.max_extent_overhang && residual_f <= residual_limit(r, cfg);
 }
 
 }  // namespace spinhash

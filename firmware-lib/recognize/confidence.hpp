@@ -42,6 +42,16 @@ struct ExtentFit {
 ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model, const RigidPose& pose,
                      const HiddenEnds& hidden = HiddenEnds{});
 
+// The look-alike margin per sqrt(feature): min_margin, twice that when the
+// candidates spread over many look-alikes (stats.candidates_spread).
+float lookalike_margin(const Result& r, const RecognizerConfig& cfg);
+// The lead per sqrt(feature) a confident answer needs: lookalike_margin(),
+// times (full_coverage / stats.surface_coverage)^2 when the scan shows less
+// than full_coverage of the first model's upward surface: an occluder hides
+// what tells near-identical models apart, and the few features left in view
+// lead by little more by chance than by the model's shape.
+float confident_margin(const Result& r, const RecognizerConfig& cfg);
+
 // The leading models within min_margin x sqrt(features) log-likelihood of
 // the first, twice that when the candidates spread over many look-alikes
 // (stats.candidates_spread); 1 for SIND, whose votes are no likelihoods; 0
@@ -54,7 +64,7 @@ uint32_t lookalike_group_size(const Result& r, const RecognizerConfig& cfg, uint
 float residual_limit(const Result& r, const RecognizerConfig& cfg);
 
 // The first model explains enough of the query, well enough, stands alone
-// (its look-alike group is itself), is pinned by the scan's extent (`fit`
+// (its look-alike group is itself) and leads by confident_margin(), is pinned by the scan's extent (`fit`
 // under its pose within max_extent_shortfall / max_extent_overhang) and
 // leaves residuals that are noise, not a shape (`residual_f`, the F of
 // residual_structure(), at most residual_limit()).

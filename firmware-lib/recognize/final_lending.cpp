@@ -56,7 +56,7 @@ void finalise_lent(SearchContext& ctx, uint32_t model, const RigidPose& pose, co
   ++ctx.stats.transferred;
   rescore_model(ctx, model, all, exact);
   if (refine) refine_model(ctx, model, all, exact, true);
-  b.score += upward_surface_log_likelihood(ctx, model, b.pose);
+  b.score += upward_surface(ctx, model, b.pose).log_likelihood;
   if (before.final_score && !(b.score > before.score)) b = before;
 }
 

@@ -126,12 +126,12 @@ void finalise_scores(SearchContext& ctx, bool refine) {
     leading = ctx.buf.best[models[i]].score > leading ? ctx.buf.best[models[i]].score : leading;
   }
   const float refine_from = leading - kRefineWindow * static_cast<float>(all.count);
-  if (ctx.cfg.mode == Mode::kBran) index_query_features(ctx);
+  index_query_features(ctx);  // BRAN's upward surface; every mode's coverage
   float lowest_final = 0.0f;
   for (uint32_t i = 0; i < n; ++i) {
     ModelBest& b = ctx.buf.best[models[i]];
     if (refine && b.score >= refine_from) refine_both_ways(ctx, models[i], all, exact);
-    if (ctx.cfg.mode == Mode::kBran) b.score += upward_surface_log_likelihood(ctx, models[i], b.pose);
+    if (ctx.cfg.mode == Mode::kBran) b.score += upward_surface(ctx, models[i], b.pose).log_likelihood;
     lowest_final = i == 0 || b.score < lowest_final ? b.score : lowest_final;
   }
   if (ctx.cfg.mode == Mode::kBran) lend_final_pose(ctx, all, exact, refine);

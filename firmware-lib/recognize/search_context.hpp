@@ -158,11 +158,18 @@ bool final_first(const SearchContext& ctx, uint32_t* first);
 // surface alike (final_lending.cpp; BRAN with transfer_models > 0).
 void lend_final_pose(SearchContext& ctx, const QueryFeatures& all, const LikelihoodParams& exact,
                      bool refine);
-// Log-likelihood of what the scan shows of the model's upward surface under
-// `pose`: each upward model feature seen (a query feature within Delta) or
-// missed (visible_surface.cpp).
-float upward_surface_log_likelihood(const SearchContext& ctx, uint32_t model, const RigidPose& pose);
-// Indexes the query features for upward_surface_log_likelihood (once per query).
+// What the scan shows of the model's upward surface under `pose`: each
+// upward model feature seen (a query feature within Delta) or missed
+// (visible_surface.cpp).
+struct UpwardSurface {
+  float log_likelihood = 0.0f;  // of the features seen and missed
+  uint32_t facing = 0;          // model features facing up under the pose
+  uint32_t seen = 0;            // of those, with a query feature within Delta
+  // The share seen (RecognitionStats::surface_coverage); 0 when none faces up.
+  float coverage() const { return facing ? static_cast<float>(seen) / static_cast<float>(facing) : 0.0f; }
+};
+UpwardSurface upward_surface(const SearchContext& ctx, uint32_t model, const RigidPose& pose);
+// Indexes the query features for upward_surface (once per query).
 void index_query_features(SearchContext& ctx);
 // F of the residuals' means per surface cell against their scatter within
 // the cells, for `model` under `pose`: about 1 when the scan is the model

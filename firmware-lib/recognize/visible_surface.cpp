@@ -32,16 +32,19 @@ void index_query_features(SearchContext& ctx) {
   ctx.buf.feature_grid.build(ctx.query.positions, ctx.query.count, kGridCellsPerDelta * ctx.cfg.delta);
 }
 
-float upward_surface_log_likelihood(const SearchContext& ctx, uint32_t model, const RigidPose& pose) {
+UpwardSurface upward_surface(const SearchContext& ctx, uint32_t model, const RigidPose& pose) {
   const blob::ModelRecord& rec = ctx.db.model(model);
-  float sum = 0.0f;
+  UpwardSurface u;
   for (uint32_t f = rec.first_feature; f < rec.first_feature + rec.feature_count; ++f) {
     const OrientedPoint m = ctx.model_point(f);
     if ((pose.rotation * m.n)[2] < kUpwardNormalZ) continue;
     const Eigen::Vector3f x = pose.rotation * m.p + pose.translation;
-    sum += ctx.buf.feature_grid.any_within(x.data(), ctx.cfg.delta) ? kLogSeen : kLogMissed;
+    const bool seen = ctx.buf.feature_grid.any_within(x.data(), ctx.cfg.delta);
+    u.log_likelihood += seen ? kLogSeen : kLogMissed;
+    ++u.facing;
+    u.seen += seen ? 1u : 0u;
   }
-  return sum;
+  return u;
 }
 
 }  // namespace spinhash

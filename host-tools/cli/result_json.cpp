@@ -20,6 +20,7 @@ namespace {
 std::string stat_json(bool v) { return v ? "true" : "false"; }
 std::string stat_json(uint32_t v) { return std::to_string(v); }
 std::string stat_json(uint64_t v) { return std::to_string(v); }
+std::string stat_json(float v) { return json_number(static_cast<double>(v), 4); }
 
 // Every entry of SPINHASH_STATS_FIELDS, under its JSON key.
 std::string stats_json(const RecognitionStats& st) {

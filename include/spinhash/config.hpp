@@ -151,6 +151,15 @@ struct RecognizerConfig {
   // at 1.2): the margin does not know how much of the vehicle the scan
   // shows (results.md 11l; 1.3 until 9l, 1.2 until 11l) ...
   float min_margin = 0.8f;
+  // ... times (full_coverage / stats.surface_coverage)^2 when the scan shows
+  // less than this share of the first model's upward surface (0: never):
+  // an occluder hides what tells near-identical models apart. On 6 x 1 440
+  // scans of 20 real cars (0.05 / 0.15 m, 2-10 cm noise, 0 / 40 %
+  // occlusion, with and without ground) the confident answers that were
+  // wrong fell from 21 to 9 and the conditions under 99 % right from 3 to
+  // 1, at 85.3 -> 82.7 % of the right answers flagged; the fleet's flag
+  // 93.9 -> 92.0 %, its wrong answers the same 4 (results.md 11m) ...
+  float full_coverage = 0.9f;
   // ... and the scan pins the model's size: the query features, in the
   // model's frame under its pose, reach within max_extent_shortfall of both
   // ends of the model's box along x and along y and of its top, and lie at

@@ -79,6 +79,8 @@
     "log-likelihood per query feature for a confident answer")                                               \
   X(F32, min_margin, 0.0f, 1e6f, "--min-margin",                                                             \
     "lead over the runner-up, log-likelihood / sqrt(query features), for a confident answer (BRAN, SRAN)")   \
+  X(F32, full_coverage, 0.0f, 1.0f, "--full-coverage",                                                       \
+    "surface_coverage below which the margin grows as (this / coverage)^2 (0: never)")                       \
   X(F32, max_extent_shortfall, 0.0f, 1e6f, "--max-extent-shortfall",                                         \
     "m of the model's box ends and top the scan may miss for a confident answer")                            \
   X(F32, max_extent_overhang, 0.0f, 1e6f, "--max-extent-overhang",                                           \
@@ -121,7 +123,8 @@
   S(BOOL, stopped_on_evidence, stopped_on_evidence, "stopped_on_evidence")       \
   S(BOOL, candidates_spread, candidates_spread, "candidates_spread")             \
   S(BOOL, bucket_scan_truncated, bucket_scan_truncated, "bucket_scan_truncated") \
-  S(U64, workspace_used, workspace_used, "workspace_used")
+  S(U64, workspace_used, workspace_used, "workspace_used")                       \
+  S(F32, surface_coverage, surface_coverage, "surface_coverage")
 
 /* C types of the kinds (spinhash.h). */
 #define SPINHASH_CTYPE_MODE int32_t

@@ -57,6 +57,10 @@ struct RecognitionStats {
   bool candidates_spread = false;    // BRAN: the candidates named many look-alikes (focus_models)
   bool bucket_scan_truncated = false;  // some LSH lookups hit max_bucket_scan
   size_t workspace_used = 0;
+  // The share of the first model's upward-facing surface (under its pose)
+  // with a query feature within Delta: how much of the vehicle the scan
+  // shows from the air, which occlusion and sparsity lower; 0 without a pose.
+  float surface_coverage = 0.0f;
   // The poses the doublets gave, verified or refused for their tilt: what
   // BRAN's pose budget and its draw extension count (max_hypotheses,
   // min_hypotheses).

@@ -17,6 +17,7 @@ namespace {
 py::object stat_value(bool v) { return py::bool_(v); }
 py::object stat_value(uint32_t v) { return py::int_(v); }
 py::object stat_value(uint64_t v) { return py::int_(v); }
+py::object stat_value(float v) { return py::float_(static_cast<double>(v)); }
 
 // Every entry of SPINHASH_STATS_FIELDS, under its JSON key.
 py::dict stats_dict(const RecognitionStats& st) {

@@ -134,6 +134,7 @@ TEST_CASE("confident needs every gate: fit, score, a group of one, and the scan'
   r.ranking = &first;
   r.ranking_count = 1;
   r.group_size = 1;
+  r.stats.surface_coverage = 1.0f;  // the whole top seen
   const ExtentFit pinned{0.05f, 0.05f};
   constexpr float kNoiseOnlyF = 1.0f;  // residual F of a scan that is the model plus noise
   CHECK(is_confident(r, cfg, kFeatures, pinned, kNoiseOnlyF));
@@ -180,6 +181,45 @@ TEST_CASE("among many look-alikes the runner-up must trail by twice the margin")
   }
 }
 
+TEST_CASE("a scan that shows less of the model's top needs a larger lead") {
+  RecognizerConfig cfg;
+  constexpr uint32_t kFeatures = 400;
+  const float margin = cfg.min_margin * std::sqrt(static_cast<float>(kFeatures));  // log-likelihood
+  RankedModel ranking[2];
+  ranking[0].has_pose = true;
+  ranking[0].inliers = 300;
+  ranking[0].score = -600.0f;
+  ranking[1].score = ranking[0].score - 1.5f * margin;  // leads by 1.5 margins
+  Result r;
+  r.ranking = ranking;
+  r.ranking_count = 2;
+  r.group_size = 1;
+  const ExtentFit pinned{0.05f, 0.05f};
+  auto confident_at = [&](float coverage) {
+    r.stats.surface_coverage = coverage;
+    return is_confident(r, cfg, kFeatures, pinned, 1.0f);
+  };
+  CHECK(confident_at(1.0f));
+  CHECK(confident_at(cfg.full_coverage));  // the plain margin down to full_coverage
+  CHECK(confident_at(0.8f));               // (0.9 / 0.8)^2 = 1.27 margins
+  CHECK_FALSE(confident_at(0.7f));         // 1.65 margins: an occluder may hide what tells them apart
+  CHECK_FALSE(confident_at(0.0f));         // nothing of the top seen: no lead is enough
+  CHECK(confident_margin(r, cfg) > 1e30f);
+  r.stats.surface_coverage = 0.45f;
+  CHECK(confident_margin(r, cfg) == doctest::Approx(4.0f * cfg.min_margin));
+  r.stats.candidates_spread = true;  // on top of the look-alikes' doubled margin
+  CHECK(confident_margin(r, cfg) == doctest::Approx(8.0f * cfg.min_margin));
+  r.stats.candidates_spread = false;
+  cfg.full_coverage = 0.0f;  // off: the plain margin whatever the scan shows
+  CHECK(confident_at(0.7f));
+  CHECK(confident_margin(r, cfg) == doctest::Approx(cfg.min_margin));
+  cfg.full_coverage = 0.9f;
+  ranking[1].score = ranking[0].score - 2.0f * margin;
+  CHECK(confident_at(0.7f));  // a lead of 2 margins is enough at 0.7
+  r.ranking_count = 1;        // no runner-up: nothing to lead
+  CHECK(confident_at(0.5f));
+}
+
 TEST_CASE("among many look-alikes the residuals must be closer to noise") {
   RecognizerConfig cfg;
   constexpr uint32_t kFeatures = 400;
@@ -191,6 +231,7 @@ TEST_CASE("among many look-alikes the residuals must be closer to noise") {
   r.ranking = &first;
   r.ranking_count = 1;
   r.group_size = 1;
+  r.stats.surface_coverage = 1.0f;
   const ExtentFit pinned{0.05f, 0.05f};
   const float weak_shape = 0.9f * cfg.max_residual_f;  // a patch a little off the surface
   CHECK(is_confident(r, cfg, kFeatures, pinned, weak_shape));

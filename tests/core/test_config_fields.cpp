@@ -92,6 +92,7 @@ SPINHASH_CONFIG_FIELDS(SPINHASH_SAME_TYPE)
 
 template <typename T>
 constexpr bool stat_fits(const char* kind) {
+  if (starts_with(kind, "F32")) return std::is_same<T, float>::value;
   return starts_with(kind, "BOOL") ? std::is_same<T, bool>::value
                                    : std::is_unsigned<T>::value && !std::is_same<T, bool>::value &&
                                          sizeof(T) <= (starts_with(kind, "U32") ? 4u : 8u);

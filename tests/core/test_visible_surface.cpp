@@ -5,6 +5,7 @@
 // the look-alike's upward surface costs it the rest.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "blob/aligned_bytes.hpp"
@@ -43,13 +44,16 @@ struct LookAlikes {
     REQUIRE(test::make_database(clouds, &toy));
   }
 
-  Result recognize(const std::vector<double>& model, uint64_t seed) {
+  // toy_query's view, or with `airborne` toy_airborne_query's (the whole top).
+  Result recognize(const std::vector<double>& model, uint64_t seed, bool airborne = false) {
     RecognizerConfig cfg;
     ws = host::AlignedBytes(required_workspace_bytes(cfg));
     Recognizer r;
     REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
     const double t[3] = {-60.0, 25.0, 2.0};
-    const std::vector<double> q = test::toy_query(model, 0.3 * static_cast<double>(seed), t, 0.03, seed);
+    const double yaw = 0.3 * static_cast<double>(seed);
+    const std::vector<double> q = airborne ? test::toy_airborne_query(model, yaw, t, 0.03, seed)
+                                           : test::toy_query(model, yaw, t, 0.03, seed);
     Result res = r.recognize(q.data(), static_cast<uint32_t>(q.size() / 3));
     REQUIRE(res.status == Status::kOk);
     return res;
@@ -79,5 +83,28 @@ TEST_CASE_FIXTURE(LookAlikes, "the look-alike with the box is still first on its
     const Result r = recognize(boxed_truck(), seed);
     REQUIRE(r.ranking_count >= 2);
     CHECK(r.ranking[0].model == kBoxed);
+  }
+}
+
+TEST_CASE_FIXTURE(LookAlikes, "surface_coverage: the share of the first model's top the scan shows") {
+  const std::vector<double> whole = test::toy_vehicle_points(kTruck, 0.05f);
+  // A tree over the middle of the truck: both ends stay in view, so the
+  // extent test cannot tell; 3 of its 6.5 m are hidden (less the query
+  // features within Delta of the cut: a quarter to a half of its top).
+  std::vector<double> middle_hidden;
+  for (size_t i = 0; i < whole.size(); i += 3)
+    if (std::fabs(whole[i]) > 1.5)
+      middle_hidden.insert(middle_hidden.end(), whole.begin() + static_cast<long>(i),
+                           whole.begin() + static_cast<long>(i) + 3);
+  for (uint64_t seed = 1; seed <= 3; ++seed) {
+    const Result all = recognize(whole, seed, true);
+    REQUIRE(all.ranking_count > 0);
+    CHECK(all.ranking[0].model == kTruck);
+    CHECK(all.stats.surface_coverage >= 0.9f);
+    const Result part = recognize(middle_hidden, seed, true);
+    REQUIRE(part.ranking_count > 0);
+    CHECK(part.ranking[0].model == kTruck);
+    CHECK(part.stats.surface_coverage <= 0.75f);
+    CHECK(part.stats.surface_coverage >= 0.45f);
   }
 }

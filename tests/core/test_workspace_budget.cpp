@@ -29,7 +29,7 @@ struct WorkspaceThreshold {
 // (recognize/sparse_search.hpp: 4 096 entries, 8 192 slots of 8 B). Stop
 // 34: +8 B per SceneObject, its statistics' count of tilted poses
 // (max_tilt_deg; 256 objects).
-constexpr WorkspaceThreshold kThreshold64 = {6451936, 5622016, 31003280, 44621392};
+constexpr WorkspaceThreshold kThreshold64 = {6451936, 5622016, 31005328, 44621392};
 constexpr WorkspaceThreshold kThreshold32 = {6451776, 5621856, 31002976, 44621136};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.

@@ -43,9 +43,9 @@ TEST_CASE("experiment accuracy runs end to end on a tiny fleet") {
   CHECK(count_lines(curves) == 1u + 2u * 3u);  // header + 2 modes x k = 1..3
   const std::string per_query = read_bytes(out + "/per_query.csv");
   CHECK(count_lines(per_query) == 1u + 2u * 4u);  // header + 2 modes x 4 queries
-  // The last column: the share of the first model's features above its wheels
-  // that the unoccluded scan reaches under BRAN's pose (NaN for SIND: no pose).
-  CHECK(per_query.find(",class_lead,coverage\n") != std::string::npos);
+  // The last column: the share of the first model's upward surface that the
+  // unoccluded scan shows under BRAN's pose (0 for SIND: no pose).
+  CHECK(per_query.find(",class_lead,surface_coverage\n") != std::string::npos);
   size_t covered = 0;
   for (size_t at = per_query.find("\nbran,"); at != std::string::npos;
        at = per_query.find("\nbran,", at + 1)) {
