@@ -30,7 +30,7 @@ struct WorkspaceThreshold {
 // 34: +8 B per SceneObject, its statistics' count of tilted poses
 // (max_tilt_deg; 256 objects).
 constexpr WorkspaceThreshold kThreshold64 = {6451936, 5622016, 31005328, 44621392};
-constexpr WorkspaceThreshold kThreshold32 = {6451776, 5621856, 31002976, 44621136};
+constexpr WorkspaceThreshold kThreshold32 = {6451776, 5621856, 31002992, 44621136};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
 constexpr size_t kToleranceBytes = 1024;
