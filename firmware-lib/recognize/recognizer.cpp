@@ -102,20 +102,15 @@ Pose identity_pose() {
   return p;
 }
 
-// RecognitionStats::surface_coverage of the first model under its pose.
-float first_surface_coverage(const SearchContext& ctx, const Result& result) {
-  if (ctx.cfg.mode == Mode::kSind || result.ranking_count == 0 || !result.ranking[0].has_pose) return 0.0f;
-  const uint32_t first = result.ranking[0].model;
-  return upward_surface(ctx, first, ctx.buf.best[first].pose).coverage();
-}
-
-// The confidence tests of the first model under its pose (confidence.hpp);
-// the residuals' structure is measured only for an answer that passes the others.
+// The confidence tests of the first model under its pose (confidence.hpp),
+// after its stats.surface_coverage; the residuals' structure is measured
+// only for an answer that passes the others.
 // band: m above the terrain removed with the ground (FeatureSet::ground_band).
-bool first_is_confident(const SearchContext& ctx, const Result& result, float band) {
+bool first_is_confident(const SearchContext& ctx, Result& result, float band) {
   if (result.ranking_count == 0 || !result.ranking[0].has_pose) return false;
   const uint32_t first = result.ranking[0].model;
   const RigidPose& pose = ctx.buf.best[first].pose;
+  result.stats.surface_coverage = upward_surface(ctx, first, pose).coverage();
   const ExtentFit fit = extent_fit(ctx.query, ctx.db.model(first), pose, hidden_ends(ctx.db, first, band));
   if (!dense_enough_for_model(scan_density(result.stats.extract, fit))) return false;
   if (!is_confident(result, ctx.cfg, ctx.query.count, fit, 0.0f)) return false;
@@ -275,7 +270,6 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
   result.ranking_count = rank_models(*db_, b, fs.origin);
   result.group_size = lookalike_group_size(result, config_, fs.count);
   order_twins_by_residuals(ctx, b.ranking, result.group_size);
-  result.stats.surface_coverage = first_surface_coverage(ctx, result);
   result.confident = first_is_confident(ctx, result, fs.ground_band);
   result.class_ranking = b.classes;
   result.class_ranking_count = rank_classes(*db_, result, b.classes);
