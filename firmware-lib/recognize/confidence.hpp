@@ -64,8 +64,9 @@ uint32_t lookalike_group_size(const Result& r, const RecognizerConfig& cfg, uint
 float residual_limit(const Result& r, const RecognizerConfig& cfg);
 
 // The first model explains enough of the query, well enough, stands alone
-// (its look-alike group is itself) and leads by confident_margin(), is pinned by the scan's extent (`fit`
-// under its pose within max_extent_shortfall / max_extent_overhang) and
+// (its look-alike group is itself) and leads by confident_margin(), is
+// pinned by the scan's extent (`fit` under its pose within
+// max_extent_shortfall / max_extent_overhang) and
 // leaves residuals that are noise, not a shape (`residual_f`, the F of
 // residual_structure(), at most residual_limit()).
 bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,

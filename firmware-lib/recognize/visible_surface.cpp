@@ -4,10 +4,12 @@
 // scan, so larger look-alikes win. From the air the roof, the hood and the
 // deck face the sensor whatever the side scanned: every model feature facing
 // up under the pose should have query features within Delta: each one is
-// seen or missed with the probabilities below. Bounded: for each of the
-// kRefinedModels leaders, the model's features x the query features in at
-// most 8 cells of a grid twice Delta wide (found in the query features'
-// grid, built once per query).
+// seen or missed with the probabilities below. The share seen is also the
+// first model's surface_coverage, which the confidence margin reads
+// (confidence.hpp). Bounded: for each of the kRefinedModels leaders, the
+// lent look-alikes and the first model once more, the model's features x
+// the query features in at most 8 cells of a grid twice Delta wide (found
+// in the query features' grid, built once per query).
 #include "recognize/search_context.hpp"
 
 namespace spinhash {
