@@ -53,16 +53,6 @@ RigidPose identity() {
   return p;
 }
 
-// Keeps the points `keep` accepts.
-template <typename Keep>
-std::vector<float> filtered(const std::vector<float>& p, Keep keep) {
-  std::vector<float> out;
-  for (size_t i = 0; i < p.size(); i += 3)
-    if (keep(p[i], p[i + 1], p[i + 2]))
-      out.insert(out.end(), p.begin() + static_cast<long>(i), p.begin() + static_cast<long>(i) + 3);
-  return out;
-}
-
 }  // namespace
 
 TEST_CASE(
@@ -74,18 +64,19 @@ TEST_CASE(
   CHECK(whole.overhang <= kTolerance);
 
   // The front 1.5 m hidden: the query stops 1.5 m short of the box's front.
-  const ExtentFit cut =
-      fit_of(filtered(box, [](float x, float, float) { return x <= 0.5f * kLength - 1.5f; }), identity());
+  const ExtentFit cut = fit_of(
+      test::filtered(box, [](float x, float, float) { return x <= 0.5f * kLength - 1.5f; }), identity());
   CHECK(cut.shortfall == doctest::Approx(1.5f).epsilon(0.01));
   CHECK(cut.overhang <= kTolerance);
 
   // The top hidden (a lower look-alike would fit): short by the part's height.
   const ExtentFit low =
-      fit_of(filtered(box, [](float, float, float z) { return z <= kHeight - 0.6f; }), identity());
+      fit_of(test::filtered(box, [](float, float, float z) { return z <= kHeight - 0.6f; }), identity());
   CHECK(low.shortfall == doctest::Approx(0.6f).epsilon(0.01));
 
   // The bottom is not tested: terrain removal cuts it.
-  const ExtentFit raised = fit_of(filtered(box, [](float, float, float z) { return z >= 0.5f; }), identity());
+  const ExtentFit raised =
+      fit_of(test::filtered(box, [](float, float, float z) { return z >= 0.5f; }), identity());
   CHECK(raised.shortfall <= kTolerance);
 
   // One stray feature 0.6 m above the roof (a noise spike) is not an
@@ -249,11 +240,8 @@ TEST_CASE("a scan that hides a toy's end is not confident, though the right toy 
   constexpr uint32_t kModel = 0;       // toy-0: hull 4.5 m long, x in [-2.25, 2.25]
   constexpr double kHiddenFrom = 1.0;  // m: the hood beyond this is hidden (a tree)
   const std::vector<double> model = test::toy_vehicle_points(kModel, 0.05f);
-  std::vector<double> front_hidden;
-  for (size_t i = 0; i < model.size(); i += 3)
-    if (model[i] <= kHiddenFrom)
-      front_hidden.insert(front_hidden.end(), model.begin() + static_cast<long>(i),
-                          model.begin() + static_cast<long>(i) + 3);
+  const std::vector<double> front_hidden =
+      test::filtered(model, [&](double x, double, double) { return x <= kHiddenFrom; });
   const double t[3] = {-300.0, 80.0, 5.0};
   auto run = [&](const std::vector<double>& points, float shortfall, float residual_f = kAnyResidualF) {
     RecognizerConfig cfg;

@@ -91,11 +91,8 @@ TEST_CASE_FIXTURE(LookAlikes, "surface_coverage: the share of the first model's 
   // A tree over the middle of the truck: both ends stay in view, so the
   // extent test cannot tell; 3 of its 6.5 m are hidden (less the query
   // features within Delta of the cut: a quarter to a half of its top).
-  std::vector<double> middle_hidden;
-  for (size_t i = 0; i < whole.size(); i += 3)
-    if (std::fabs(whole[i]) > 1.5)
-      middle_hidden.insert(middle_hidden.end(), whole.begin() + static_cast<long>(i),
-                           whole.begin() + static_cast<long>(i) + 3);
+  const std::vector<double> middle_hidden =
+      test::filtered(whole, [](double x, double, double) { return std::fabs(x) > 1.5; });
   for (uint64_t seed = 1; seed <= 3; ++seed) {
     const Result all = recognize(whole, seed, true);
     REQUIRE(all.ranking_count > 0);
