@@ -31,6 +31,7 @@ constexpr uint32_t kFlightMaxFeatures = 256;     // s: query features kept (even
 constexpr uint32_t kFlightMaxBucketScan = 512;   // LSH entries scanned per query feature
 constexpr uint32_t kFlightTopW = 30;             // W: candidates per query feature
 constexpr uint32_t kFlightVerifyFeatures = 128;  // query features scored per hypothesis
+constexpr uint32_t kFlightMaxTrials = 800;  // BRAN's draws: the budget the figures above were measured at
 
 // Sets the fields a preset names; every other field keeps its value.
 inline void apply_preset(Preset preset, RecognizerConfig* c) {
@@ -40,6 +41,7 @@ inline void apply_preset(Preset preset, RecognizerConfig* c) {
   c->max_bucket_scan = kFlightMaxBucketScan;
   c->top_w = kFlightTopW;
   c->verify_features = kFlightVerifyFeatures;
+  c->max_trials = kFlightMaxTrials;
 }
 
 inline RecognizerConfig preset_config(Preset preset) {

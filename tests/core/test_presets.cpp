@@ -30,9 +30,10 @@ std::vector<std::string> changed_fields(const RecognizerConfig& a, const Recogni
 TEST_CASE("presets: default is RecognizerConfig{} and flight changes only its named fields") {
   CHECK(changed_fields(preset_config(Preset::kDefault), RecognizerConfig{}).empty());
   const RecognizerConfig flight = preset_config(Preset::kFlight);
-  const std::vector<std::string> expected = {"max_features", "query_cloud_voxel", "top_w", "max_bucket_scan",
-                                             "verify_features"};
+  const std::vector<std::string> expected = {"max_features",    "query_cloud_voxel", "top_w",
+                                             "max_bucket_scan", "verify_features",   "max_trials"};
   CHECK(changed_fields(flight, RecognizerConfig{}) == expected);
+  CHECK(flight.max_trials == kFlightMaxTrials);
   CHECK(flight.query_cloud_voxel == kFlightQueryVoxel);
   CHECK(flight.max_features == kFlightMaxFeatures);
   CHECK(flight.max_bucket_scan == kFlightMaxBucketScan);
