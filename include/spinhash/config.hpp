@@ -189,9 +189,10 @@ struct RecognizerConfig {
   // BRAN's draws: a query whose leader the evidence settles stops long
   // before (stop_miss_probability), so this caps only the unsettled ones,
   // where the true model may not yet hold a good pose. 1 600 instead of
-  // 800 costs the fleet's noisy scans 7.5 % more instructions and names
-  // 0.8-0.9 % more of them right; the focused search on such draws gained
-  // less at 71 % more (docs/results.md 11n). The flight preset keeps 800.
+  // 800 costs the fleet's noisy scans 7.5 % more instructions (1 000
+  // models, whose draws are extended: 22 %) and names 0.8-1.1 % more of
+  // them right first; the focused search on such draws gained less at 71 %
+  // more (docs/results.md 11n). The flight preset keeps 800.
   uint32_t max_trials = 1600;  // BRAN: doublet draws
   uint32_t sran_trials = 100;  // SRAN: doublet draws per model
   // Poses: BRAN's found for all models together (RecognitionStats::poses_found,
