@@ -23,10 +23,11 @@ struct Copies {
   RecognitionStats stats(uint32_t focus_models) {
     RecognizerConfig cfg;
     cfg.min_hypotheses = 0;  // the draws are never extended: only the spread can start the search
-    // The draws it was written for: 40 copies pair every doublet 40 ways,
-    // and 1 600 draws spend max_pair_checks before the focused search.
+    // 40 copies pair every doublet 40 ways, half of them tilted: the work
+    // budget is not under test. The poses get ample room; the pair checks
+    // fit the 800 draws the case was written for (1 600 spend
+    // max_pair_checks before the focused search).
     cfg.max_trials = 800;
-    // 40 copies pair every doublet 40 ways, half of them tilted: the pose budget is not under test.
     cfg.max_hypotheses = kAmplePoses;
     cfg.focus_models = focus_models;
     Result res = test::recognize_copied_toy(toy, cfg, &ws);
