@@ -81,8 +81,10 @@ RigidPose turned_end_to_end(const RigidPose& pose, const blob::ModelRecord& mode
 bool end_aligned_pose(const RigidPose& pose, const blob::ModelRecord& source, const blob::ModelRecord& target,
                       uint32_t index, RigidPose* out) {
   const bool front = index >= 2u, turned = (index & 1u) != 0u;
-  const float dx = front ? source.bbox_max[0] - target.bbox_max[0] : source.bbox_min[0] - target.bbox_min[0];
-  if (!turned && std::fabs(dx) < kMinEndShift) return false;
+  const float rear_dx = source.bbox_min[0] - target.bbox_min[0];
+  const float dx = front ? source.bbox_max[0] - target.bbox_max[0] : rear_dx;
+  // Front ends aligned as the rear ends were: pose 0 once more.
+  if (front && !turned && std::fabs(dx - rear_dx) < kMinEndShift) return false;
   // x -> x + dx in the target's frame: q = R (x + dx e_x) + t.
   *out = pose;
   out->translation += dx * pose.rotation.col(0);

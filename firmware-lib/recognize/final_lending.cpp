@@ -13,10 +13,14 @@
 //   a metre shorter or longer than the first, or one the first fits the
 //   wrong way round; the first's pose puts the sibling's centre where its
 //   own was, off by half the difference in length, and the sibling's own
-//   poses had not come near. The pose is lent to kFamilyLookalikes models
-//   with the two boxes' rear ends, or front ends, made to coincide, each also
-//   turned end to end; the best of these on the hypothesis loop's features
-//   is finalised when it comes within kEndAlignedWindow of the first there.
+//   poses had not come near. A twin of the same length gets the pose as it
+//   is: the in-loop transfer lent it the first's pose before the focused
+//   search and refinement moved it (Warzone's two identical tankers: the
+//   twin 700 log units behind, so the first named confidently). The pose
+//   is lent to kFamilyLookalikes models with the two boxes' rear ends, or
+//   front ends, made to coincide, each also turned end to end; the best of
+//   these on the hypothesis loop's features is finalised when it comes
+//   within kEndAlignedWindow of the first there.
 //
 // Bounded: kFinalLendRounds x look-alikes x (kEndAlignedPoses screens (one when spread) on the
 // hypothesis loop's features + 2 + kRefineIterations full verifications).

@@ -63,12 +63,20 @@ TEST_CASE("end-aligned poses put a longer sibling's rear, then its front, on the
   CHECK((out[1].rotation.col(0) + pose.rotation.col(0)).norm() < kTolerance);
 }
 
-TEST_CASE("a sibling of the same length gets only the turned pose: the pose as it is is the transfer's") {
+TEST_CASE("a sibling of the same length gets the pose as it is and the turned ones, not pose 0 twice") {
   const blob::ModelRecord first = centred_box(4.4f), twin = centred_box(4.42f);  // within kMinEndShift
   const RigidPose pose = yawed_pose();
   RigidPose out;
-  CHECK(!end_aligned_pose(pose, first, twin, 0, &out));
-  CHECK(!end_aligned_pose(pose, first, twin, 2, &out));
+  REQUIRE(end_aligned_pose(pose, first, twin, 0, &out));  // rear ends 0.01 m apart: nearly as it is
+  CHECK((out.translation - pose.translation).norm() < 0.011f);
+  CHECK((out.rotation - pose.rotation).norm() < kTolerance);
+  CHECK(!end_aligned_pose(pose, first, twin, 2, &out));  // front ends: pose 0 once more
+  // A sibling of the first's length in a frame 0.3 m along: one shifted pose.
+  blob::ModelRecord shifted = centred_box(4.4f);
+  shifted.bbox_min[0] += 0.3f, shifted.bbox_max[0] += 0.3f;
+  REQUIRE(end_aligned_pose(pose, first, shifted, 0, &out));
+  CHECK((out.translation - (pose.translation - 0.3f * pose.rotation.col(0))).norm() < kTolerance);
+  CHECK(!end_aligned_pose(pose, first, shifted, 2, &out));
   const RigidPose turned = turned_end_to_end(pose, twin);
   // Each shift is 0.01 m, within kMinEndShift: the turned poses are nearly the plain turn.
   for (uint32_t i : {1u, 3u}) {
