@@ -33,13 +33,13 @@ bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query,
 RigidPose turned_end_to_end(const RigidPose& pose, const blob::ModelRecord& model);
 
 // Pose `index` (< kEndAlignedPoses) of `target` from `source`'s `pose`, for
-// a sibling of another length: 0 and 1 with the two boxes' rear ends (x
-// min) made to coincide, 2 and 3 with their front ends (x max); 1 and 3
-// also turned end to end (target's front where source's rear was). false
-// for 2 when its shift is within kMinEndShift of 0's (the same pose). A
-// sibling of the same length gets pose 0 as it is: the pose the first model
-// ends with (after its focused search and refinement) may fit a twin that
-// the draws' own poses never came near.
+// a sibling of any length: 0 and 1 with the two boxes' rear ends (x min)
+// made to coincide, 2 and 3 with their front ends (x max); 1 and 3 also
+// turned end to end (target's front where source's rear was). false for 2
+// when its shift is within kMinEndShift of 0's (the same pose). A sibling
+// of the same length gets pose 0 as it is: the pose the first model ends
+// with (after its focused search and refinement) may fit a twin that the
+// draws' own poses never came near.
 constexpr float kMinEndShift = 0.05f;  // m along the length
 constexpr uint32_t kEndAlignedPoses = 4;
 bool end_aligned_pose(const RigidPose& pose, const blob::ModelRecord& source, const blob::ModelRecord& target,
