@@ -106,7 +106,8 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
                       "class_first",
                       "class_confident",
                       "class_lead",
-                      "surface_coverage"});
+                      "surface_coverage",
+                      "scan_density"});
   for (const AccuracyRecord& r : run.records) {
     const QueryCondition& c = run.conditions[r.condition];
     const Outcome& o = r.outcome;
@@ -140,7 +141,8 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
                    vehicle_class_name(o.class_first),
                    o.class_confident ? "1" : "0",
                    num(o.class_lead),
-                   num(o.surface_coverage)});
+                   num(o.surface_coverage),
+                   num(o.scan_density)});
   }
   CsvTable curves({"mode", "noise", "occlusion", "ground", "spacing", "k", "p_correct_within_k", "queries"});
   CsvTable timing({"mode", "noise", "occlusion", "ground", "spacing", "queries", "not_ok", "budget_exhausted",

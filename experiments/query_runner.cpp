@@ -31,6 +31,7 @@ Outcome recognise(pipeline::RecognitionSession& session, const Query& q) {
   o.budget_exhausted = r.stats.budget_exhausted;
   o.trials = r.stats.trials;
   o.surface_coverage = r.stats.surface_coverage;
+  o.scan_density = r.stats.scan_density;
   if (r.status != Status::kOk) return o;
   o.ranked = r.ranking_count;
   if (r.ranking_count > 0) {

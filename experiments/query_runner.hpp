@@ -32,6 +32,7 @@ struct Outcome {
   float class_lead = NAN;  // the first class's score above the second's (NaN with fewer than two)
   bool class_confident = false;
   float surface_coverage = 0.0f;  // RecognitionStats::surface_coverage
+  float scan_density = 0.0f;      // RecognitionStats::scan_density
 };
 
 Outcome recognise(pipeline::RecognitionSession& session, const Query& q);

@@ -76,6 +76,12 @@ struct Outermost {
   }
 };
 
+// 1, or sqrt(kFullModelDensity / density) for a sparser scan; 1 for an
+// unmeasured density (0: no pose, no answer to gate).
+float density_factor(float density) {
+  return density > 0.0f && density < kFullModelDensity ? std::sqrt(kFullModelDensity / density) : 1.0f;
+}
+
 }  // namespace
 
 HiddenEnds hidden_ends(const Database& db, uint32_t model, float band) {
@@ -172,7 +178,7 @@ float lookalike_margin(const Result& r, const RecognizerConfig& cfg) {
 }
 
 float confident_margin(const Result& r, const RecognizerConfig& cfg) {
-  const float margin = lookalike_margin(r, cfg);
+  const float margin = lookalike_margin(r, cfg) * density_factor(r.stats.scan_density);
   const float c = r.stats.surface_coverage;
   if (!(c < cfg.full_coverage)) return margin;
   if (!(c > 0.0f)) return kFar;  // nothing of the model's top seen: no lead is enough

@@ -49,7 +49,9 @@ float lookalike_margin(const Result& r, const RecognizerConfig& cfg);
 // times (full_coverage / stats.surface_coverage)^2 when the scan shows less
 // than full_coverage of the first model's upward surface: an occluder hides
 // what tells near-identical models apart, and the few features left in view
-// lead by little more by chance than by the model's shape.
+// lead by little more by chance than by the model's shape; and times
+// sqrt(kFullModelDensity / stats.scan_density) when the scan is sparser
+// than that.
 float confident_margin(const Result& r, const RecognizerConfig& cfg);
 
 // The leading models within min_margin x sqrt(features) log-likelihood of
@@ -83,6 +85,15 @@ bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t feature
 // at 75, while above 30 the unknown vehicles' confident share (near twins,
 // 10-20 %) does not fall with density: the gate answers sparsity only.
 constexpr float kMinModelDensity = 50.0f;
+// The density (scan_density()) the margin was calibrated at, and below
+// which it grows as 1 / sqrt(density): a spin image is a histogram of about
+// density x its support's area points, so the per-feature log-likelihood,
+// and the lead's spread with it, grows noisier as 1 / sqrt(density). 130:
+// the least the fleet's scans that set min_margin reach (0.10 m, 40 %
+// occluded: 5th percentile 130 per m^2, median 170). The 20 real cars'
+// scans at 0.15 m fall to 57-74 when 40 % occluded; there 5 of 354
+// confident answers were wrong, now 0-2 per six seeds (docs/results.md 11r).
+constexpr float kFullModelDensity = 130.0f;
 
 // How densely the scan samples the vehicle: the object's points (after
 // terrain removal) per m^2 of the part of the model box's top the scan

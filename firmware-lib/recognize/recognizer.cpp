@@ -112,7 +112,8 @@ bool first_is_confident(const SearchContext& ctx, Result& result, float band) {
   const RigidPose& pose = ctx.buf.best[first].pose;
   result.stats.surface_coverage = upward_surface(ctx, first, pose).coverage();
   const ExtentFit fit = extent_fit(ctx.query, ctx.db.model(first), pose, hidden_ends(ctx.db, first, band));
-  if (!dense_enough_for_model(scan_density(result.stats.extract, fit))) return false;
+  result.stats.scan_density = scan_density(result.stats.extract, fit);
+  if (!dense_enough_for_model(result.stats.scan_density)) return false;
   if (!is_confident(result, ctx.cfg, ctx.query.count, fit, 0.0f)) return false;
   return is_confident(result, ctx.cfg, ctx.query.count, fit, residual_structure(ctx, first, pose));
 }

@@ -61,6 +61,10 @@ struct RecognitionStats {
   // with a query feature within Delta: how much of the vehicle the scan
   // shows from the air, which occlusion and sparsity lower; 0 without a pose.
   float surface_coverage = 0.0f;
+  // Object points (after terrain removal) per m^2 of the first model's box
+  // top the scan spans, under its pose: how densely the scan samples the
+  // vehicle, whatever the occlusion; 0 without a pose.
+  float scan_density = 0.0f;
   // The poses the doublets gave, verified or refused for their tilt: what
   // BRAN's pose budget and its draw extension count (max_hypotheses,
   // min_hypotheses).

@@ -211,6 +211,37 @@ TEST_CASE("a scan that shows less of the model's top needs a larger lead") {
   CHECK(confident_at(0.5f));
 }
 
+TEST_CASE("a sparser scan needs a larger lead: the margin grows as 1 / sqrt(density)") {
+  RecognizerConfig cfg;
+  constexpr uint32_t kFeatures = 200;
+  const float margin = cfg.min_margin * std::sqrt(static_cast<float>(kFeatures));  // log-likelihood
+  RankedModel ranking[2];
+  ranking[0].has_pose = true;
+  ranking[0].inliers = 180;
+  ranking[0].score = -400.0f;
+  ranking[1].score = ranking[0].score - 1.3f * margin;  // leads by 1.3 margins
+  Result r;
+  r.ranking = ranking;
+  r.ranking_count = 2;
+  r.group_size = 1;
+  r.stats.surface_coverage = 1.0f;
+  const ExtentFit pinned{0.05f, 0.05f};
+  auto confident_at = [&](float density) {
+    r.stats.scan_density = density;
+    return is_confident(r, cfg, kFeatures, pinned, 1.0f);
+  };
+  CHECK(confident_at(1000.0f));            // 0.05 m
+  CHECK(confident_at(kFullModelDensity));  // the plain margin down to where it was set
+  CHECK(confident_at(90.0f));              // sqrt(130 / 90) = 1.20 margins
+  CHECK_FALSE(confident_at(64.0f));        // 0.15 m, 40 % occluded: 1.43 margins
+  r.stats.scan_density = 0.25f * kFullModelDensity;
+  CHECK(confident_margin(r, cfg) == doctest::Approx(2.0f * cfg.min_margin));
+  r.stats.surface_coverage = 0.45f;  // times the coverage's (0.9 / 0.45)^2
+  CHECK(confident_margin(r, cfg) == doctest::Approx(8.0f * cfg.min_margin));
+  r.stats.scan_density = 0.0f;  // not measured: no factor
+  CHECK(confident_margin(r, cfg) == doctest::Approx(4.0f * cfg.min_margin));
+}
+
 TEST_CASE("among many look-alikes the residuals must be closer to noise") {
   RecognizerConfig cfg;
   constexpr uint32_t kFeatures = 400;

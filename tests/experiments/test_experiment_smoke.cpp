@@ -45,7 +45,7 @@ TEST_CASE("experiment accuracy runs end to end on a tiny fleet") {
   CHECK(count_lines(per_query) == 1u + 2u * 4u);  // header + 2 modes x 4 queries
   // The last column: the share of the first model's upward surface that the
   // unoccluded scan shows under BRAN's pose (0 for SIND: no pose).
-  CHECK(per_query.find(",class_lead,surface_coverage\n") != std::string::npos);
+  CHECK(per_query.find(",class_lead,surface_coverage,scan_density\n") != std::string::npos);
   size_t covered = 0;
   for (size_t at = per_query.find("\nbran,"); at != std::string::npos;
        at = per_query.find("\nbran,", at + 1)) {
