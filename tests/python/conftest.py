@@ -27,6 +27,15 @@ def run_cli(*args, check=True, cwd=None):
     return done
 
 
+def assert_same_stats(stats, cli_stats):
+    """The module's statistics against the CLI's JSON: counters exactly, a
+    float as the CLI prints it (4 significant digits)."""
+    assert stats.keys() == cli_stats.keys()
+    for key, value in stats.items():
+        expected = cli_stats[key]
+        assert value == (pytest.approx(expected, rel=5e-4, abs=5e-5) if isinstance(value, float) else expected), key
+
+
 def json_lines(text):
     return [json.loads(line) for line in text.splitlines() if line.strip()]
 

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import spinhash
-from conftest import json_lines, run_cli
+from conftest import assert_same_stats, json_lines, run_cli
 
 
 def cli_answer(fleet, query, *flags):
@@ -27,10 +27,7 @@ def assert_same_answer(result, line):
     assert result.group_size == line["group_size"]
     assert result.group_size >= (1 if result.ranking else 0)
     assert_same_classes(result, line)
-    assert result.stats.keys() == line["stats"].keys()
-    for key, value in result.stats.items():  # counters exactly; a float as the CLI's 4 digits
-        expected = line["stats"][key]
-        assert value == (pytest.approx(expected, abs=5e-5) if isinstance(value, float) else expected), key
+    assert_same_stats(result.stats, line["stats"])
 
 
 def assert_same_classes(answer, line):
