@@ -124,7 +124,7 @@
   S(BOOL, candidates_spread, candidates_spread, "candidates_spread")             \
   S(BOOL, bucket_scan_truncated, bucket_scan_truncated, "bucket_scan_truncated") \
   S(U64, workspace_used, workspace_used, "workspace_used")                       \
-  S(F32, surface_coverage, surface_coverage, "surface_coverage")                \
+  S(F32, surface_coverage, surface_coverage, "surface_coverage")                 \
   S(F32, scan_density, scan_density, "scan_density")
 
 /* C types of the kinds (spinhash.h). */
