@@ -53,6 +53,23 @@ RigidPose identity() {
   return p;
 }
 
+// A posed first model that explains the query well and leads a runner-up
+// by `margins` x min_margin x sqrt(features): only the margin's factors
+// (coverage, density, spread) decide whether it is confident.
+struct LeadingAnswer {
+  RankedModel ranking[2];
+  Result r;
+  LeadingAnswer(const RecognizerConfig& cfg, uint32_t features, float margins) {
+    ranking[0].has_pose = true;
+    ranking[0].inliers = 3u * features / 4u;
+    ranking[0].score = -1.5f * static_cast<float>(features);
+    ranking[1].score = ranking[0].score - margins * cfg.min_margin * std::sqrt(static_cast<float>(features));
+    r.ranking = ranking;
+    r.ranking_count = 2;
+    r.group_size = 1;
+  }
+};
+
 }  // namespace
 
 TEST_CASE(
@@ -175,16 +192,10 @@ TEST_CASE("among many look-alikes the runner-up must trail by twice the margin")
 TEST_CASE("a scan that shows less of the model's top needs a larger lead") {
   RecognizerConfig cfg;
   constexpr uint32_t kFeatures = 400;
+  LeadingAnswer a(cfg, kFeatures, 1.5f);  // leads by 1.5 margins
+  Result& r = a.r;
+  RankedModel* ranking = a.ranking;
   const float margin = cfg.min_margin * std::sqrt(static_cast<float>(kFeatures));  // log-likelihood
-  RankedModel ranking[2];
-  ranking[0].has_pose = true;
-  ranking[0].inliers = 300;
-  ranking[0].score = -600.0f;
-  ranking[1].score = ranking[0].score - 1.5f * margin;  // leads by 1.5 margins
-  Result r;
-  r.ranking = ranking;
-  r.ranking_count = 2;
-  r.group_size = 1;
   const ExtentFit pinned{0.05f, 0.05f};
   auto confident_at = [&](float coverage) {
     r.stats.surface_coverage = coverage;
@@ -214,16 +225,8 @@ TEST_CASE("a scan that shows less of the model's top needs a larger lead") {
 TEST_CASE("a sparser scan needs a larger lead: the margin grows as 1 / sqrt(density)") {
   RecognizerConfig cfg;
   constexpr uint32_t kFeatures = 200;
-  const float margin = cfg.min_margin * std::sqrt(static_cast<float>(kFeatures));  // log-likelihood
-  RankedModel ranking[2];
-  ranking[0].has_pose = true;
-  ranking[0].inliers = 180;
-  ranking[0].score = -400.0f;
-  ranking[1].score = ranking[0].score - 1.3f * margin;  // leads by 1.3 margins
-  Result r;
-  r.ranking = ranking;
-  r.ranking_count = 2;
-  r.group_size = 1;
+  LeadingAnswer a(cfg, kFeatures, 1.3f);  // leads by 1.3 margins
+  Result& r = a.r;
   r.stats.surface_coverage = 1.0f;
   const ExtentFit pinned{0.05f, 0.05f};
   auto confident_at = [&](float density) {
