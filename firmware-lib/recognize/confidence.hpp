@@ -91,8 +91,9 @@ constexpr float kMinModelDensity = 50.0f;
 // and the lead's spread with it, grows noisier as 1 / sqrt(density). 130:
 // the least the fleet's scans that set min_margin reach (0.10 m, 40 %
 // occluded: 5th percentile 130 per m^2, median 170). The 20 real cars'
-// scans at 0.15 m fall to 57-74 when 40 % occluded; there 5 of 354
-// confident answers were wrong, now 0-2 per six seeds (docs/results.md 11r).
+// scans at 0.15 m fall to 57-74 when 40 % occluded; there 10 of 736
+// confident answers were wrong on 24 seeds, now 3 of 562 (docs/results.md
+// 11r).
 constexpr float kFullModelDensity = 130.0f;
 
 // How densely the scan samples the vehicle: the object's points (after

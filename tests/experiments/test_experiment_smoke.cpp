@@ -43,18 +43,24 @@ TEST_CASE("experiment accuracy runs end to end on a tiny fleet") {
   CHECK(count_lines(curves) == 1u + 2u * 3u);  // header + 2 modes x k = 1..3
   const std::string per_query = read_bytes(out + "/per_query.csv");
   CHECK(count_lines(per_query) == 1u + 2u * 4u);  // header + 2 modes x 4 queries
-  // The last column: the share of the first model's upward surface that the
-  // unoccluded scan shows under BRAN's pose (0 for SIND: no pose).
+  // The last two columns: the share of the first model's upward surface that
+  // the unoccluded scan shows under BRAN's pose, and the scan's points per m^2
+  // of that model's top (both 0 for SIND: no pose).
   CHECK(per_query.find(",class_lead,surface_coverage,scan_density\n") != std::string::npos);
-  size_t covered = 0;
+  size_t covered = 0, dense = 0;
   for (size_t at = per_query.find("\nbran,"); at != std::string::npos;
        at = per_query.find("\nbran,", at + 1)) {
     const size_t end = per_query.find('\n', at + 1);
-    const size_t from = per_query.rfind(',', end) + 1;
-    const double coverage = std::atof(per_query.substr(from, end - from).c_str());
-    covered += coverage > 0.8 ? 1u : 0u;
+    const size_t density_from = per_query.rfind(',', end) + 1;
+    const size_t coverage_from = per_query.rfind(',', density_from - 2) + 1;
+    const double coverage =
+        std::atof(per_query.substr(coverage_from, density_from - 1 - coverage_from).c_str());
+    const double density = std::atof(per_query.substr(density_from, end - density_from).c_str());
+    covered += coverage > 0.8 && coverage <= 1.0 ? 1u : 0u;
+    dense += density > 100.0 ? 1u : 0u;  // the experiment's 0.05 m spacing: hundreds per m^2
   }
   CHECK(covered == 4u);
+  CHECK(dense == 4u);
   const std::string summary = read_bytes(out + "/summary.md");
   CHECK(summary.find("# Accuracy") != std::string::npos);
   CHECK(summary.find("| noise 5 cm, occlusion 0% | BRAN |") != std::string::npos);
