@@ -28,9 +28,11 @@ struct WorkspaceThreshold {
 // KiB for the LSH seen set of a sparse scan's fourfold bucket scan
 // (recognize/sparse_search.hpp: 4 096 entries, 8 192 slots of 8 B). Stop
 // 34: +8 B per SceneObject, its statistics' count of tilted poses
-// (max_tilt_deg; 256 objects).
+// (max_tilt_deg; 256 objects). Stop 39: its statistics' scan_density, +8 B
+// per SceneObject on 32-bit ABIs (the 8-byte aligned struct pads the
+// float), none on 64-bit, where it fills the padding surface_coverage left.
 constexpr WorkspaceThreshold kThreshold64 = {6451936, 5622016, 31005328, 44621392};
-constexpr WorkspaceThreshold kThreshold32 = {6451776, 5621856, 31002992, 44621136};
+constexpr WorkspaceThreshold kThreshold32 = {6451776, 5621856, 31005040, 44621136};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
 constexpr size_t kToleranceBytes = 1024;
