@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "mesh/vehicle_generator.hpp"
+#include "scan/ground_square.hpp"
 #include "scan/scan_simulator.hpp"
 
 namespace spinhash::experiment {
@@ -46,11 +46,7 @@ bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const Qu
   opt.ground_slope_deg = c.ground == Ground::kNone ? 0.0 : c.slope_deg;
   host::Mesh ground;
   if (c.ground != Ground::kNone) {
-    host::Box3 box = mesh.bounding_box();
-    double half =
-        std::max({std::abs(box.lo.x()), std::abs(box.hi.x()), std::abs(box.lo.y()), std::abs(box.hi.y())}) +
-        ground_margin;
-    ground = host::make_ground_patch(half, box.lo.z());
+    ground = host::ground_square_around(mesh, ground_margin, mesh.bounding_box().lo.z());
     opt.ground = &ground;
   }
   host::ScanResult scan = host::simulate_scan(mesh, opt);

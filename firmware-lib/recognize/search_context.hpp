@@ -8,6 +8,7 @@
 #include "spinhash/features.hpp"
 #include "spinhash/internal/lsh_search.hpp"
 #include "spinhash/recognizer.hpp"
+#include "spinhash/vehicle_group_standin.hpp"
 #include "util/rng.hpp"
 
 namespace spinhash {
@@ -44,6 +45,7 @@ struct RecognizerBuffers {
   CellGrid feature_grid;                    // the query features (visible_surface.cpp)
   ResidualSample* residuals = nullptr;      // max_features (residual_structure.cpp)
   RankedClass classes[kVehicleClassCount];  // Result::class_ranking
+  RankedGroup groups[kVehicleGroupCount];   // Result::group_ranking
 };
 
 // The leading model as BRAN's stop on evidence follows it (evidence_stop.cpp).

@@ -39,6 +39,17 @@ int run_build(const BuildArgs& a) {
       "largest LSH bucket %u, %.1f s\n",
       a.output.c_str(), summary.models, summary.features, static_cast<unsigned long long>(summary.bytes),
       static_cast<double>(summary.bytes) / summary.features, summary.report.max_bucket, summary.seconds);
+  if (summary.calibrated)
+    std::fprintf(
+        stderr,
+        "spinhash build: calibrated on %llu runs: %u scans per model, %u models left out, %u clutter "
+        "scans, %u threads, %.1f s (spinhash info prints the thresholds)\n",
+        static_cast<unsigned long long>(summary.calibration_runs), summary.calibration.scans_per_model,
+        summary.calibration.models_left_out, summary.calibration.clutter_scans, summary.calibration.jobs,
+        summary.calibration.seconds);
+  else
+    std::fprintf(stderr,
+                 "spinhash build: not calibrated (--no-calibration): the recognizer's priors decide\n");
   return kExitOk;
 }
 

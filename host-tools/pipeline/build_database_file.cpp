@@ -15,6 +15,49 @@ void report_progress(uint32_t done, uint32_t /*total*/, void* user) {
   static_cast<Progress*>(user)->tick(done);
 }
 
+// Runs the calibration scans of every model and fits the section from them.
+bool calibrate(const std::vector<ModelMesh>& meshes, const CalibrationSettings& s, bool quiet,
+               host::BlobContent* content, BuildSummary* summary, std::string* error) {
+  std::vector<const host::Mesh*> models;
+  for (const ModelMesh& m : meshes) models.push_back(&m.mesh);
+  calib::RunSettings runs = s.runs;
+  runs.quiet = quiet;
+  std::vector<host::CalibrationRun> records;
+  if (!calib::run_calibration(*content, models, runs, &records, &summary->calibration, error)) return false;
+  host::FitProvenance provenance;
+  provenance.scans_per_model = summary->calibration.scans_per_model;
+  provenance.models_left_out = summary->calibration.models_left_out;
+  provenance.clutter_scans = summary->calibration.clutter_scans;
+  provenance.seed = runs.seed;
+  if (!host::fit_calibration(records, s.fit, provenance, &content->calibration, error)) return false;
+  summary->calibrated = true;
+  summary->calibration_runs = records.size();
+  return true;
+}
+
+void add_calibration_flags(CLI::App* cmd, CalibrationSettings* c) {
+  cmd->add_flag("!--no-calibration", c->enabled,
+                "skip the calibration scans: the recognizer's priors decide every level's flag (quick test "
+                "databases)");
+  cmd->add_option("--target-precision", c->fit.target_precision,
+                  "precision each level's flag is fitted to on the calibration runs")
+      ->check(CLI::Range(0.5, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--calibration-scans", c->runs.scans_per_model,
+                  "calibration scans per model (0: 8 up to 64 models, fewer above, at least 2)")
+      ->check(CLI::Range(0u, 1000u))
+      ->capture_default_str();
+  cmd->add_option("--calibration-max-left-out", c->runs.max_left_out,
+                  "models also recognised with a database built without them (a class-stratified sample when "
+                  "there are more)")
+      ->check(CLI::Range(0u, kMaxModels))
+      ->capture_default_str();
+  cmd->add_option("--calibration-seed", c->runs.seed, "seed of the calibration scans")->capture_default_str();
+  cmd->add_option("--jobs", c->runs.jobs, "threads of the calibration (0: every hardware thread)")
+      ->check(CLI::Range(0u, 1024u))
+      ->capture_default_str();
+}
+
 }  // namespace
 
 void add_build_flags(CLI::App* cmd, BuildSettings* s) {
@@ -67,6 +110,7 @@ void add_build_flags(CLI::App* cmd, BuildSettings* s) {
          "manifest of 'MODEL_NAME CLASS' lines; without it a model's class is its folder's name or "
          "its name's first word when that is a class (pickup/x.obj, sedan-03.obj), else unclassified")
       ->check(CLI::ExistingFile);
+  add_calibration_flags(cmd, &s->calibration);
   cmd->add_flag("--quiet", s->quiet, "no progress on stderr");
 }
 
@@ -79,6 +123,8 @@ bool build_database_file(const std::vector<ModelMesh>& meshes, const BuildSettin
   host::BlobContent content;
   Progress progress("features", static_cast<uint32_t>(clouds.size()), s.quiet);
   if (!host::build_database(clouds, s.options, &content, &summary->report, error, report_progress, &progress))
+    return false;
+  if (s.calibration.enabled && !calibrate(meshes, s.calibration, s.quiet, &content, summary, error))
     return false;
   std::vector<uint8_t> bytes;
   if (!host::serialize_blob(content, s.byte_order, &bytes, error)) return false;

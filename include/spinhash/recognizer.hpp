@@ -4,7 +4,9 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
+#include "spinhash/calibration.hpp"
 #include "spinhash/config.hpp"
 #include "spinhash/database.hpp"
 #include "spinhash/features.hpp"
@@ -37,6 +39,25 @@ struct RankedClass {
   float score = 0.0f;          // its best model's score (RankedModel::score)
   uint32_t model = 0;          // that model (database index)
   uint32_t best_rank = 0;      // that model's place in Result::ranking
+};
+
+// One vehicle group of the database (vehicle_group_of() of its classes),
+// scored by its best model: what a scan too sparse or too unlike every model
+// for a class still tells (a light vehicle, not a bus).
+struct RankedGroup {
+  uint32_t group = 0;      // VehicleGroup id
+  float score = 0.0f;      // its best model's score (RankedModel::score)
+  uint32_t model = 0;      // that model (database index)
+  uint32_t best_rank = 0;  // that model's place in Result::ranking
+};
+
+// A calibrated level's evidence and flag (answer_levels.h): the flag is the
+// evidence at or above the database's threshold for the scan's density
+// (Database::calibration()), or the recognizer's priors without a fitted
+// table. Evidence is -infinity when a prerequisite of the level fails.
+struct LevelAnswer {
+  float evidence = -std::numeric_limits<float>::infinity();
+  bool confident = false;
 };
 
 struct RecognitionStats {
@@ -91,6 +112,16 @@ struct Result {
   // extent-shortfall and density tests: a class is told apart on less) and
   // the scan carries enough evidence (docs/api.md, section 3).
   bool class_confident = false;
+  // The groups of the ranked models, best first (ties by group id), like
+  // class_ranking.
+  const RankedGroup* group_ranking = nullptr;
+  uint32_t group_ranking_count = 0;
+  // Per calibrated level, vehicle .. model (index level_index()).
+  LevelAnswer levels[kCalibratedLevels];
+  // The most specific confident level whose coarser levels are all
+  // confident and consistent (the model is of the first class, which is of
+  // the first group); kNone when not even the vehicle level is.
+  AnswerLevel level = AnswerLevel::kNone;
   RecognitionStats stats;
 };
 

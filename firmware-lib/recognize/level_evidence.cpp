@@ -1,0 +1,198 @@
+#include "recognize/level_evidence.hpp"
+
+#include <cmath>
+
+#include "spinhash/vehicle_group_standin.hpp"
+
+namespace spinhash {
+namespace {
+
+// The settings with no margin: what is_confident() and
+// is_class_confident() then test are the prerequisites alone.
+RecognizerConfig without_margin(const RecognizerConfig& cfg) {
+  RecognizerConfig c = cfg;
+  c.min_margin = 0.0f;
+  return c;
+}
+
+// confident_margin()'s factors but density: the margin of a unit min_margin
+// for a scan whose density is not measured.
+float shape_factor(const Result& r, const RecognizerConfig& cfg) {
+  Result unit = r;
+  unit.stats.scan_density = 0.0f;
+  RecognizerConfig c = cfg;
+  c.min_margin = 1.0f;
+  return confident_margin(unit, c);
+}
+
+uint32_t group_of_class(uint32_t vehicle_class) {
+  return static_cast<uint32_t>(vehicle_group_of(static_cast<VehicleClass>(vehicle_class)));
+}
+
+float lead_per_feature(float first, float second, uint32_t features) {
+  return (first - second) / std::sqrt(static_cast<float>(features));
+}
+
+float span(float lo, float hi) { return hi > lo ? hi - lo : 0.0f; }
+
+}  // namespace
+
+float model_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
+                     float residual_f) {
+  if (features == 0u || !is_confident(r, without_margin(cfg), features, fit, residual_f)) return kNoEvidence;
+  if (r.ranking_count < 2u) return kUnopposed;
+  const float shape = shape_factor(r, cfg);
+  if (!(shape > 0.0f)) return kNoEvidence;
+  return lead_per_feature(r.ranking[0].score, r.ranking[1].score, features) / shape;
+}
+
+float class_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
+                     float density, bool within_envelope) {
+  if (features == 0u || !within_envelope ||
+      !is_class_confident(r, without_margin(cfg), features, fit, density))
+    return kNoEvidence;
+  return lead_per_feature(r.class_ranking[0].score, r.class_ranking[1].score, features);
+}
+
+uint32_t rank_groups(const Database& db, const Result& r, RankedGroup* out) {
+  uint32_t n = 0;
+  for (uint32_t k = 0; k < r.ranking_count; ++k) {
+    const uint32_t g = group_of_class(db.model(r.ranking[k].model).vehicle_class);
+    uint32_t i = 0;
+    while (i < n && out[i].group != g) ++i;
+    if (i < n) continue;  // ranked already, by a better model
+    out[n++] = RankedGroup{g, r.ranking[k].score, r.ranking[k].model, k};
+    if (n == kVehicleGroupCount) break;
+  }
+  // Insertion sort of at most kVehicleGroupCount: best first, ties by group id.
+  for (uint32_t i = 1; i < n; ++i)
+    for (uint32_t j = i; j > 0; --j) {
+      const RankedGroup& a = out[j - 1];
+      const RankedGroup& b = out[j];
+      if (a.score > b.score || (a.score == b.score && a.group < b.group)) break;
+      const RankedGroup t = out[j - 1];
+      out[j - 1] = out[j];
+      out[j] = t;
+    }
+  return n;
+}
+
+ClassEnvelope group_envelope(const Database& db, uint32_t group) {
+  ClassEnvelope e;
+  for (uint32_t m = 0; m < db.model_count(); ++m) {
+    const blob::ModelRecord& r = db.model(m);
+    if (group_of_class(r.vehicle_class) != group) continue;
+    const float dx = span(r.bbox_min[0], r.bbox_max[0]), dy = span(r.bbox_min[1], r.bbox_max[1]);
+    const float length = dx > dy ? dx : dy, width = dx > dy ? dy : dx;
+    const float height = span(r.bbox_min[2], r.bbox_max[2]);
+    if (e.members == 0u) {
+      e.length_max = length, e.width_max = width, e.height_min = e.height_max = height;
+    } else {
+      e.length_max = length > e.length_max ? length : e.length_max;
+      e.width_max = width > e.width_max ? width : e.width_max;
+      e.height_min = height < e.height_min ? height : e.height_min;
+      e.height_max = height > e.height_max ? height : e.height_max;
+    }
+    ++e.members;
+  }
+  return e;
+}
+
+float group_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
+                     float density, bool within_envelope) {
+  if (features == 0u || !within_envelope || r.group_ranking_count == 0u) return kNoEvidence;
+  if (r.group_ranking[0].group == static_cast<uint32_t>(VehicleGroup::kNone)) return kNoEvidence;
+  if (!is_class_confident(r, without_margin(cfg), features, fit, density)) return kNoEvidence;
+  if (r.group_ranking_count < 2u) return kUnopposed;
+  return lead_per_feature(r.group_ranking[0].score, r.group_ranking[1].score, features);
+}
+
+float vehicle_evidence(const Result& r, uint32_t features, const ExtentFit& fit) {
+  (void)fit;
+  if (features == 0u || r.ranking_count == 0u || !r.ranking[0].has_pose) return kNoEvidence;
+  return r.ranking[0].score / static_cast<float>(features);
+}
+
+bool prior_confident(AnswerLevel level, float evidence, float density, const RecognizerConfig& cfg) {
+  switch (level) {
+    case AnswerLevel::kModel: {
+      if (!dense_enough_for_model(density)) return false;
+      const float sparse =
+          density > 0.0f && density < kFullModelDensity ? std::sqrt(kFullModelDensity / density) : 1.0f;
+      return evidence >= cfg.min_margin * sparse;
+    }
+    case AnswerLevel::kClass:
+    case AnswerLevel::kGroup: return evidence >= cfg.min_margin;
+    case AnswerLevel::kVehicle: return evidence >= cfg.min_mean_log_likelihood;
+    default: return false;
+  }
+}
+
+bool level_confident(const Database& db, AnswerPass pass, AnswerLevel level, float evidence, float density,
+                     const RecognizerConfig& cfg) {
+  const Calibration& c = db.calibration();
+  return c.fitted(pass) ? c.confident(pass, level, evidence, density)
+                        : prior_confident(level, evidence, density, cfg);
+}
+
+AnswerLevel answer_level(const Database& db, const Result& r) {
+  const auto confident = [&r](AnswerLevel l) { return r.levels[level_index(l)].confident; };
+  if (!confident(AnswerLevel::kVehicle)) return AnswerLevel::kNone;
+  if (!confident(AnswerLevel::kGroup) || r.group_ranking_count == 0u) return AnswerLevel::kVehicle;
+  if (!confident(AnswerLevel::kClass) || r.class_ranking_count == 0u ||
+      group_of_class(r.class_ranking[0].vehicle_class) != r.group_ranking[0].group)
+    return AnswerLevel::kGroup;
+  if (!confident(AnswerLevel::kModel) || r.ranking_count == 0u ||
+      db.model(r.ranking[0].model).vehicle_class != r.class_ranking[0].vehicle_class)
+    return AnswerLevel::kClass;
+  return AnswerLevel::kModel;
+}
+
+void assess_levels(const SearchContext& ctx, const FeatureSet& fs, AnswerPass pass, Result& r) {
+  const Database& db = ctx.db;
+  const RecognizerConfig& cfg = ctx.cfg;
+  const uint32_t n = ctx.query.count;
+  r.group_ranking = ctx.buf.groups;
+  r.group_ranking_count = rank_groups(db, r, ctx.buf.groups);
+  for (LevelAnswer& l : r.levels) l = LevelAnswer{};
+  LevelAnswer& vehicle = r.levels[level_index(AnswerLevel::kVehicle)];
+  LevelAnswer& group = r.levels[level_index(AnswerLevel::kGroup)];
+  LevelAnswer& vclass = r.levels[level_index(AnswerLevel::kClass)];
+  LevelAnswer& model = r.levels[level_index(AnswerLevel::kModel)];
+  if (r.ranking_count > 0u && r.ranking[0].has_pose) {
+    const uint32_t first = r.ranking[0].model;
+    const RigidPose& pose = ctx.buf.best[first].pose;
+    const ExtentFit fit =
+        extent_fit(ctx.query, db.model(first), pose, hidden_ends(db, first, fs.ground_band));
+    vehicle.evidence = vehicle_evidence(r, n, fit);
+    model.evidence =
+        model_evidence(r, cfg, n, fit, 0.0f);  // the residuals only for an answer that passes the rest
+    if (model.evidence > kNoEvidence)
+      model.evidence = model_evidence(r, cfg, n, fit, residual_structure(ctx, first, pose));
+  }
+  if (r.class_ranking_count > 0u && r.ranking[r.class_ranking[0].best_rank].has_pose) {
+    const RankedClass& first = r.class_ranking[0];
+    const uint32_t leader = r.ranking[first.best_rank].model;
+    const RigidPose& pose = ctx.buf.best[leader].pose;
+    const ExtentFit fit =
+        extent_fit(ctx.query, db.model(leader), pose, hidden_ends(db, leader, fs.ground_band));
+    const float density = scan_density(r.stats.extract, fit);
+    const ScanShape shape = measure_scan(ctx.query, db.model(leader), pose, fs.top_above_terrain,
+                                         fs.terrain_sigma, cfg.sigma_surface, density);
+    vclass.evidence = class_evidence(
+        r, cfg, n, fit, density,
+        within_envelope(shape, class_envelope(db, first.vehicle_class), cfg.max_extent_overhang));
+    if (r.group_ranking_count > 0u)
+      group.evidence = group_evidence(
+          r, cfg, n, fit, density,
+          within_envelope(shape, group_envelope(db, r.group_ranking[0].group), cfg.max_extent_overhang));
+  }
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l)
+    r.levels[l].confident = level_confident(db, pass, static_cast<AnswerLevel>(l + 1u), r.levels[l].evidence,
+                                            r.stats.scan_density, cfg);
+  r.confident = model.confident;
+  r.class_confident = vclass.confident;
+  r.level = answer_level(db, r);
+}
+
+}  // namespace spinhash

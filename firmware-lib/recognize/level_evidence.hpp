@@ -1,0 +1,82 @@
+// The evidence of each answer level (answer_levels.h), its flag and the
+// answer's level (not in the paper). Every level's evidence is a scalar the
+// core computes from a result, the same at build time, when `spinhash build`
+// fits the thresholds from the database's own models, and on board; hard
+// prerequisites stay priors of the recognizer's settings: a failed one makes
+// the evidence kNoEvidence, which no threshold reaches.
+#pragma once
+#include <cstdint>
+#include <limits>
+
+#include "recognize/class_envelope.hpp"
+#include "recognize/confidence.hpp"
+#include "recognize/search_context.hpp"
+#include "spinhash/calibration.hpp"
+#include "spinhash/database.hpp"
+#include "spinhash/recognizer.hpp"
+
+namespace spinhash {
+
+constexpr float kNoEvidence = -std::numeric_limits<float>::infinity();
+// The lead of an answer without a runner-up: no score of the database
+// opposes it.
+constexpr float kUnopposed = std::numeric_limits<float>::infinity();
+
+// Model level: the first model's lead over the runner-up per sqrt(query
+// features), divided by the shape factors of confident_margin() that are
+// not density (the look-alike spread, the coverage): the lead in units of
+// what the scan's shape lets a look-alike gain by chance. Prerequisites:
+// the tests of is_confident() but its margin (inliers, mean log-likelihood,
+// a look-alike group of 1, the extent fit, the residual F), and some of the
+// model's upward surface seen.
+float model_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
+                     float residual_f);
+
+// Class level: the first class's lead over the next per sqrt(query
+// features). Prerequisites: those of is_class_confident() but its margin,
+// and the scan within the class's envelope (`within_envelope`).
+float class_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
+                     float density, bool within_envelope);
+
+// The groups of r's ranking (vehicle_group_of() of each model's class), each
+// scored by its first model in the ranking, best first (ties by group id);
+// returns how many (at most kVehicleGroupCount).
+uint32_t rank_groups(const Database& db, const Result& r, RankedGroup* out);
+// The range of the boxes of the database's models of `group` (as
+// class_envelope() for a class).
+ClassEnvelope group_envelope(const Database& db, uint32_t group);
+
+// Group level: the first group's lead over the next per sqrt(query
+// features) (kUnopposed when no other group is ranked). Prerequisites: the
+// class level's tests of the leader's fit, a group other than none, and the
+// scan within the group's envelope (`within_envelope`).
+float group_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
+                     float density, bool within_envelope);
+
+// Vehicle level: how well the best model explains the scan as a whole.
+float vehicle_evidence(const Result& r, uint32_t features, const ExtentFit& fit);
+
+// The flag without a fitted table: the recognizer's settings as they decided
+// before calibration (the model level: min_margin, times
+// sqrt(kFullModelDensity / density) below that density, and no flag below
+// kMinModelDensity; class and group: min_margin).
+bool prior_confident(AnswerLevel level, float evidence, float density, const RecognizerConfig& cfg);
+
+// The flag of `level`: the database's fitted threshold for `pass` at the
+// scan's density, else the priors.
+bool level_confident(const Database& db, AnswerPass pass, AnswerLevel level, float evidence, float density,
+                     const RecognizerConfig& cfg);
+
+// The most specific confident level whose coarser levels are all confident
+// and consistent: the first model is of the first class, which is of the
+// first group.
+AnswerLevel answer_level(const Database& db, const Result& r);
+
+// Every level of a ranked result (after its class ranking): the group
+// ranking, each level's evidence and flag (pass `pass`), `confident` and
+// `class_confident` as the model and class levels' flags, and the level.
+// `fs`: the query's features (the terrain under the object and the band
+// removed with it).
+void assess_levels(const SearchContext& ctx, const FeatureSet& fs, AnswerPass pass, Result& r);
+
+}  // namespace spinhash
