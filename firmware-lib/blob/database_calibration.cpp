@@ -35,7 +35,7 @@ Status check_counts(const blob::CalibrationHeader& h, uint64_t size) {
 
 // Band edges: from 0, finite, strictly increasing; the unused ones zero.
 Status check_bands(const blob::CalibrationHeader& h) {
-  if (h.reserved0 != 0u || !all_zero(h.reserved, sizeof(h.reserved))) return Status::kBlobNotZeroed;
+  if (!all_zero(h.reserved, sizeof(h.reserved))) return Status::kBlobNotZeroed;
   for (uint32_t b = h.band_count; b < blob::kMaxDensityBands; ++b)
     if (h.band_min_density[b] != 0.0f) return Status::kBlobNotZeroed;
   if (!(std::isfinite(h.target_precision) && h.target_precision > 0.0f && h.target_precision <= 1.0f))

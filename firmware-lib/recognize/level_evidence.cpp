@@ -107,10 +107,13 @@ float group_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t feat
   return lead_per_feature(r.group_ranking[0].score, r.group_ranking[1].score, features);
 }
 
-float vehicle_evidence(const Result& r, uint32_t features, const ExtentFit& fit) {
-  (void)fit;
+float vehicle_evidence(const Result& r, uint32_t features, const ExtentFit& fit,
+                       const blob::ModelRecord& model) {
   if (features == 0u || r.ranking_count == 0u || !r.ranking[0].has_pose) return kNoEvidence;
-  return r.ranking[0].score / static_cast<float>(features);
+  const float top = span(model.bbox_min[0], model.bbox_max[0]) * span(model.bbox_min[1], model.bbox_max[1]);
+  if (!(top > 0.0f) || !(fit.seen_area > 0.0f)) return kNoEvidence;
+  const float seen = fit.seen_area < top ? fit.seen_area / top : 1.0f;
+  return r.ranking[0].score / static_cast<float>(features) + std::log(seen);
 }
 
 bool prior_confident(AnswerLevel level, float evidence, float density, const RecognizerConfig& cfg) {
@@ -164,7 +167,7 @@ void assess_levels(const SearchContext& ctx, const FeatureSet& fs, AnswerPass pa
     const RigidPose& pose = ctx.buf.best[first].pose;
     const ExtentFit fit =
         extent_fit(ctx.query, db.model(first), pose, hidden_ends(db, first, fs.ground_band));
-    vehicle.evidence = vehicle_evidence(r, n, fit);
+    vehicle.evidence = vehicle_evidence(r, n, fit, db.model(first));
     model.evidence =
         model_evidence(r, cfg, n, fit, 0.0f);  // the residuals only for an answer that passes the rest
     if (model.evidence > kNoEvidence)

@@ -53,13 +53,30 @@ ClassEnvelope group_envelope(const Database& db, uint32_t group);
 float group_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
                      float density, bool within_envelope);
 
-// Vehicle level: how well the best model explains the scan as a whole.
-float vehicle_evidence(const Result& r, uint32_t features, const ExtentFit& fit);
+// Vehicle level: whether the best model explains the scan as a vehicle,
+// not a tree, wall, crate or building: its mean log-likelihood per query
+// feature (how near the scan's points lie to the model's surface, with
+// agreeing normals and spin images), plus the log of the share of the
+// model's box top the scan spans under its pose (ExtentFit::seen_area):
+// the log of a per-feature likelihood times the part of the vehicle seen.
+// A crate or a wall is explained by one face of a vehicle nearly as well
+// as a vehicle is, but spans a tenth of its top; a tree or a building spans
+// all of it, and its points lie off the model's surface. On the procedural
+// fleet's calibration scans this separated the scene simulator's clutter
+// from the vehicles (known and unknown) better than the log-likelihood
+// alone, the inlier share or the surface coverage, and as well as a
+// penalty in metres on the extent misfit, which needs a weight and grows
+// with a vehicle's size. Prerequisite: a pose; kNoEvidence when the scan
+// spans none of the top.
+float vehicle_evidence(const Result& r, uint32_t features, const ExtentFit& fit,
+                       const blob::ModelRecord& model);
 
 // The flag without a fitted table: the recognizer's settings as they decided
 // before calibration (the model level: min_margin, times
 // sqrt(kFullModelDensity / density) below that density, and no flag below
-// kMinModelDensity; class and group: min_margin).
+// kMinModelDensity; class and group: min_margin; the vehicle level, which
+// had no flag: min_mean_log_likelihood, the floor of a confident model's
+// fit, over the whole top).
 bool prior_confident(AnswerLevel level, float evidence, float density, const RecognizerConfig& cfg);
 
 // The flag of `level`: the database's fitted threshold for `pass` at the

@@ -72,7 +72,7 @@ void swap_fields(blob::CalibrationHeader* h, bool swap) {
   swap_in_place(&h->scans_per_model, swap);
   swap_in_place(&h->models_left_out, swap);
   swap_in_place(&h->clutter_scans, swap);
-  swap_in_place(&h->reserved0, swap);
+  swap_in_place(&h->scans_per_left_out, swap);
   swap_in_place(&h->seed, swap);
 }
 

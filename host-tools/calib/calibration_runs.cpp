@@ -16,9 +16,8 @@
 namespace spinhash::calib {
 namespace {
 
-constexpr uint32_t kMaxScansPerModel = 8;
+constexpr uint32_t kMaxScansPerModel = 32;
 constexpr uint32_t kMinScansPerModel = 2;
-constexpr uint32_t kKnownRunsWanted = 512;
 constexpr uint32_t kMinClutterScans = 32, kMaxClutterScans = 256;
 
 uint32_t group_of(uint32_t vehicle_class) {
@@ -34,7 +33,7 @@ struct Shared {
   const Database& db;
   const std::vector<const host::Mesh*>& meshes;
   const RunSettings& settings;
-  uint32_t scans = 0;
+  uint32_t scans = 0, left_out_scans = 0;
   std::vector<bool> leave_out;  // per model
   uint32_t clutter = 0;
   std::atomic<uint32_t> next{0}, done{0};
@@ -69,9 +68,10 @@ bool run_model(Shared& sh, pipeline::RecognitionSession& known, uint32_t m,
   }
   const uint32_t vehicle_class = sh.full.models[m].vehicle_class;
   std::vector<double> xyz;
-  for (uint32_t s = 0; s < sh.scans; ++s) {
+  const uint32_t scans = sh.leave_out[m] ? sh.left_out_scans : sh.scans;
+  for (uint32_t s = 0; s < scans; ++s) {
     if (!scan_vehicle(*sh.meshes[m], draw_scan(sh.settings.seed, m, s), &xyz, error)) return false;
-    out->push_back(record(host::RunKind::kKnown, known.recognize(xyz), m, vehicle_class));
+    if (s < sh.scans) out->push_back(record(host::RunKind::kKnown, known.recognize(xyz), m, vehicle_class));
     if (sh.leave_out[m])
       out->push_back(record(host::RunKind::kUnknown, unknown.recognize(xyz), -1, vehicle_class));
   }
@@ -117,8 +117,14 @@ uint32_t default_scans_per_model(uint32_t models) {
   return std::clamp(kKnownRunsWanted / models, kMinScansPerModel, kMaxScansPerModel);
 }
 
+uint32_t left_out_scans(uint32_t scans_per_model, uint32_t left_out) {
+  if (left_out == 0u) return scans_per_model;
+  const uint32_t wanted = std::min((kUnknownRunsWanted + left_out - 1u) / left_out, kMaxScansPerModel);
+  return std::max(scans_per_model, wanted);
+}
+
 uint32_t default_clutter_scans(uint32_t unknown_runs) {
-  return std::clamp(unknown_runs / 4u, kMinClutterScans, kMaxClutterScans);
+  return std::clamp(unknown_runs / 8u, kMinClutterScans, kMaxClutterScans);
 }
 
 std::vector<uint32_t> left_out_models(const std::vector<blob::ModelRecord>& models, uint32_t max) {
@@ -195,9 +201,12 @@ bool run_calibration(const host::BlobContent& full, const std::vector<const host
   sh.leave_out.assign(models, false);
   const std::vector<uint32_t> out = left_out_models(full.models, settings.max_left_out);
   for (uint32_t m : out) sh.leave_out[m] = true;
+  sh.left_out_scans = settings.left_out_scans > 0u
+                          ? std::max(settings.left_out_scans, sh.scans)
+                          : left_out_scans(sh.scans, static_cast<uint32_t>(out.size()));
   sh.clutter = settings.clutter_scans > 0u
                    ? settings.clutter_scans
-                   : default_clutter_scans(static_cast<uint32_t>(out.size()) * sh.scans);
+                   : default_clutter_scans(static_cast<uint32_t>(out.size()) * sh.left_out_scans);
   const uint32_t items = models + sh.clutter;
   uint32_t jobs = settings.jobs > 0u ? settings.jobs : std::max(1u, std::thread::hardware_concurrency());
   jobs = std::min(jobs, items);
@@ -216,6 +225,7 @@ bool run_calibration(const host::BlobContent& full, const std::vector<const host
   runs->clear();
   for (const auto& r : results) runs->insert(runs->end(), r.begin(), r.end());
   summary->scans_per_model = sh.scans;
+  summary->scans_per_left_out = sh.left_out_scans;
   summary->models_left_out = static_cast<uint32_t>(out.size());
   summary->clutter_scans = sh.clutter;
   summary->jobs = jobs;

@@ -21,19 +21,33 @@
 namespace spinhash::calib {
 
 struct RunSettings {
-  uint32_t scans_per_model = 0;  // 0: default_scans_per_model()
-  uint32_t max_left_out = 64;    // models recognised left out (all of them when there are fewer)
-  uint32_t clutter_scans = 0;    // 0: default_clutter_scans()
-  uint64_t seed = 1;             // of every draw
-  uint32_t jobs = 0;             // threads; 0: every hardware thread
-  RecognizerConfig recognizer;   // the full pass's settings
-  bool quiet = false;            // no progress on stderr
+  // Scans of each model, recognised with the database as built; 0:
+  // default_scans_per_model(). A model left out is scanned at least as
+  // often, and often enough that the unknown runs reach about
+  // kUnknownRunsWanted (left_out_scans()); its first scans_per_model scans
+  // are also recognised with it in.
+  uint32_t scans_per_model = 0;
+  uint32_t left_out_scans = 0;  // scans of each model left out; 0: left_out_scans()
+  uint32_t max_left_out = 64;   // models recognised left out (all of them when there are fewer)
+  uint32_t clutter_scans = 0;   // 0: default_clutter_scans()
+  uint64_t seed = 1;            // of every draw
+  uint32_t jobs = 0;            // threads; 0: every hardware thread
+  RecognizerConfig recognizer;  // the full pass's settings
+  bool quiet = false;           // no progress on stderr
 };
 
-// Scans per model when none is asked for: 8 up to 64 models, fewer above
-// (at least 2), so that the known runs stay about 512 with any model count.
+// Runs the fit wants of the known and of the unknown vehicles: about 100
+// per band of density for each of them at a 0.99 target, over six bands,
+// three times over.
+constexpr uint32_t kKnownRunsWanted = 2048;
+constexpr uint32_t kUnknownRunsWanted = 2048;
+// Scans per model when none is asked for: 32 up to 64 models, fewer above
+// (at least 2), so that the known runs stay about kKnownRunsWanted.
 uint32_t default_scans_per_model(uint32_t models);
-// Clutter scans when none is asked for: a quarter of the unknown runs, 32
+// Scans of each model left out: scans_per_model, or more (at most 32) so
+// that the left-out models give about kUnknownRunsWanted runs.
+uint32_t left_out_scans(uint32_t scans_per_model, uint32_t left_out);
+// Clutter scans when none is asked for: an eighth of the unknown runs, 32
 // to 256, spread over the four kinds.
 uint32_t default_clutter_scans(uint32_t unknown_runs);
 
@@ -50,6 +64,7 @@ void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class,
 
 struct RunSummary {
   uint32_t scans_per_model = 0;
+  uint32_t scans_per_left_out = 0;
   uint32_t models_left_out = 0;
   uint32_t clutter_scans = 0;
   uint32_t jobs = 0;

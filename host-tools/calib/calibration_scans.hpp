@@ -11,13 +11,16 @@
 
 namespace spinhash::calib {
 
-// Ranges of the draws. Ray spacing at the object 0.05-0.32 m (log-uniform):
-// about 400 down to 10 object points per m^2 of the vehicle's top, from a
-// low corridor flight to a national survey.
-constexpr double kMinSpacing = 0.05, kMaxSpacing = 0.32;  // m
-constexpr double kMinNoise = 0.02, kMaxNoise = 0.10;      // m along the ray
-constexpr double kMaxOcclusion = 0.4;                     // share of the object hidden by a slab
-constexpr uint32_t kMinViews = 2, kMaxViews = 3;          // overlapping flight lines
+// Ranges of the draws. Ray spacing at the object 0.08-0.5 m (log-uniform):
+// scan densities (RecognitionStats::scan_density: object points per m^2 of
+// the vehicle's top the scan spans) of about 400 down to 10, from a low
+// corridor flight to a national survey, spread about evenly over the
+// calibration's bands (the density falls as 2.5 / spacing^2 on the
+// procedural fleet's 2-3 view scans).
+constexpr double kMinSpacing = 0.08, kMaxSpacing = 0.5;  // m
+constexpr double kMinNoise = 0.02, kMaxNoise = 0.10;     // m along the ray
+constexpr double kMaxOcclusion = 0.4;                    // share of the object hidden by a slab
+constexpr uint32_t kMinViews = 2, kMaxViews = 3;         // overlapping flight lines
 // View elevation above the horizon: the scene simulator's oblique views.
 constexpr double kMinElevationDeg = 45.0, kMaxElevationDeg = 60.0;
 constexpr double kGroundShare = 0.5;   // of the scans that keep the ground around the object

@@ -80,6 +80,7 @@ bool recheck_calibration(const VerifyArgs& a, const Database& db, const std::vec
     }
   calib::RunSettings runs;
   runs.scans_per_model = a.calibration_scans;
+  runs.left_out_scans = a.calibration_scans;
   runs.max_left_out = a.calibration_left_out;
   runs.clutter_scans = std::max(16u, a.calibration_left_out);
   runs.seed = db.calibration().header().seed + 1u;

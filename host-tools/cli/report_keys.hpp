@@ -46,6 +46,7 @@ constexpr const char* kTargetPrecision = "target_precision";
 constexpr const char* kScansPerModel = "scans_per_model";
 constexpr const char* kModelsLeftOut = "models_left_out";
 constexpr const char* kClutterScans = "clutter_scans";
+constexpr const char* kScansPerLeftOut = "scans_per_left_out";
 constexpr const char* kSeed = "seed";
 constexpr const char* kBands = "bands";    // the density bands' lower edges, points per m^2
 constexpr const char* kPasses = "passes";  // [{pass, source, runs, levels}]
@@ -99,6 +100,7 @@ constexpr const char* kAll[] = {kFormat,
                                 kScansPerModel,
                                 kModelsLeftOut,
                                 kClutterScans,
+                                kScansPerLeftOut,
                                 kSeed,
                                 kBands,
                                 kPasses,

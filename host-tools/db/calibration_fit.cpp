@@ -206,6 +206,7 @@ bool fit_calibration(const std::vector<CalibrationRun>& runs, const FitOptions& 
   c.header.scans_per_model = provenance.scans_per_model;
   c.header.models_left_out = provenance.models_left_out;
   c.header.clutter_scans = provenance.clutter_scans;
+  c.header.scans_per_left_out = provenance.scans_per_left_out;
   c.header.seed = provenance.seed;
   c.passes.push_back(blob::CalibrationPass{static_cast<uint32_t>(AnswerPass::kFull), blob::kSourceFitted,
                                            static_cast<uint32_t>(runs.size()), 0u});

@@ -49,6 +49,7 @@ struct FitOptions {
 // What the fit drew on, for the section's header.
 struct FitProvenance {
   uint32_t scans_per_model = 0;
+  uint32_t scans_per_left_out = 0;
   uint32_t models_left_out = 0;
   uint32_t clutter_scans = 0;
   uint64_t seed = 0;

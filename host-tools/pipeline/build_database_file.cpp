@@ -26,6 +26,7 @@ bool calibrate(const std::vector<ModelMesh>& meshes, const CalibrationSettings& 
   if (!calib::run_calibration(*content, models, runs, &records, &summary->calibration, error)) return false;
   host::FitProvenance provenance;
   provenance.scans_per_model = summary->calibration.scans_per_model;
+  provenance.scans_per_left_out = summary->calibration.scans_per_left_out;
   provenance.models_left_out = summary->calibration.models_left_out;
   provenance.clutter_scans = summary->calibration.clutter_scans;
   provenance.seed = runs.seed;
@@ -43,8 +44,16 @@ void add_calibration_flags(CLI::App* cmd, CalibrationSettings* c) {
                   "precision each level's flag is fitted to on the calibration runs")
       ->check(CLI::Range(0.5, 1.0))
       ->capture_default_str();
-  cmd->add_option("--calibration-scans", c->runs.scans_per_model,
-                  "calibration scans per model (0: 8 up to 64 models, fewer above, at least 2)")
+  cmd->add_option(
+         "--calibration-scans", c->runs.scans_per_model,
+         "calibration scans per model (0: 32 up to 64 models, 2048 / models above, at least 2); a model "
+         "left out gets more, up to 32, so that the left-out models give about 2048 runs")
+      ->check(CLI::Range(0u, 1000u))
+      ->capture_default_str();
+  cmd->add_option(
+         "--calibration-left-out-scans", c->runs.left_out_scans,
+         "calibration scans of each model left out (0: as many as --calibration-scans, more up to 32 so "
+         "that the left-out models give about 2048 runs)")
       ->check(CLI::Range(0u, 1000u))
       ->capture_default_str();
   cmd->add_option("--calibration-max-left-out", c->runs.max_left_out,

@@ -158,12 +158,12 @@ struct CalibrationHeader {
   // above. band_min_density[0] == 0, strictly increasing; entries from
   // band_count on are zero.
   float band_min_density[kMaxDensityBands];
-  uint32_t scans_per_model;  // calibration scans of each model (0: not fitted)
-  uint32_t models_left_out;  // models recognised with a database that lacks them
-  uint32_t clutter_scans;    // scans of trees, walls, crates and buildings
-  uint32_t reserved0;        // zero
-  uint64_t seed;             // of the calibration scans
-  uint8_t reserved[24];      // zero
+  uint32_t scans_per_model;     // calibration scans of each model (0: not fitted)
+  uint32_t models_left_out;     // models recognised with a database that lacks them
+  uint32_t clutter_scans;       // scans of trees, walls, crates and buildings
+  uint32_t scans_per_left_out;  // scans of each model left out (at least scans_per_model)
+  uint64_t seed;                // of the calibration scans
+  uint8_t reserved[24];         // zero
 };
 static_assert(sizeof(CalibrationHeader) == 128, "calibration header is 128 bytes");
 

@@ -286,7 +286,6 @@ TEST_CASE("a priors pass with anything in its cells is kBlobBadCalibration") {
 
 TEST_CASE("non-zero reserved calibration bytes and unused band edges are kBlobNotZeroed") {
   const Corruption cases[] = {
-      {"header reserved0", [](BlobPatch& b) { header(b).reserved0 = 1; }},
       {"header reserved, last byte", [](BlobPatch& b) { header(b).reserved[23] = 1; }},
       {"an unused band edge", [](BlobPatch& b) { header(b).band_min_density[kBands] = 500.0f; }},
       {"pass reserved", [](BlobPatch& b) { pass(b).reserved = 1; }},

@@ -43,7 +43,7 @@ struct Fixture {
 
   Fixture() {
     REQUIRE(run("generate --count 2 -o " + q(meshes)).exit_code == kExitOk);
-    REQUIRE(run("build --quiet -o " + q(good_db) + " " + q(meshes)).exit_code == kExitOk);
+    REQUIRE(run("build --quiet --no-calibration -o " + q(good_db) + " " + q(meshes)).exit_code == kExitOk);
     const std::string mesh = fs::directory_iterator(meshes)->path().string();
     REQUIRE(run("scan " + q(mesh) + " -o " + q(query) + " --views 2 --spacing 0.08 --seed 3").exit_code ==
             kExitOk);
@@ -105,13 +105,13 @@ TEST_CASE("build refuses meshes that won't load, empty or degenerate meshes and 
     CAPTURE(b.name);
     const std::string input = make_bad_input(dir, b);
     const std::string out = dir.file("new.shdb");
-    const Run r = f.run("build --quiet -o " + f.q(out) + " " + f.q(input));
+    const Run r = f.run("build --quiet --no-calibration -o " + f.q(out) + " " + f.q(input));
     CHECK(r.exit_code == kExitError);
     CHECK(contains(r.err, fs::path(b.name).stem().string()));  // the file or the model it names
     CHECK_FALSE(fs::exists(out));
   }
-  const Run missing =
-      f.run("build --quiet -o " + f.q(dir.file("x.shdb")) + " " + f.q(dir.file("missing.obj")));
+  const Run missing = f.run("build --quiet --no-calibration -o " + f.q(dir.file("x.shdb")) + " " +
+                            f.q(dir.file("missing.obj")));
   CHECK(missing.exit_code == kExitError);
   CHECK(contains(missing.err, "missing.obj"));
 }
@@ -125,7 +125,8 @@ TEST_CASE("a failed build never clobbers an existing good database") {
     write_bytes(target, f.good_bytes);
     const std::string input = make_bad_input(dir, b);
     // The good meshes first, so loading gets going before the bad input fails.
-    const Run r = f.run("build --quiet -o " + f.q(target) + " " + f.q(f.meshes) + " " + f.q(input));
+    const Run r =
+        f.run("build --quiet --no-calibration -o " + f.q(target) + " " + f.q(f.meshes) + " " + f.q(input));
     CHECK(r.exit_code == kExitError);
     CHECK(read_bytes(target) == f.good_bytes);
   }
@@ -145,9 +146,11 @@ TEST_CASE("outputs that cannot be written are errors with a message") {
   };
   const Case cases[] = {
       {"build into a missing directory",
-       "build --quiet -o " + f.q(dir.file("no/such/dir/db.shdb")) + " " + f.q(f.meshes)},
-      {"build under a file", "build --quiet -o " + f.q(under_file + ".shdb") + " " + f.q(f.meshes)},
-      {"build onto a directory", "build --quiet -o " + f.q(dir.path().string()) + " " + f.q(f.meshes)},
+       "build --quiet --no-calibration -o " + f.q(dir.file("no/such/dir/db.shdb")) + " " + f.q(f.meshes)},
+      {"build under a file",
+       "build --quiet --no-calibration -o " + f.q(under_file + ".shdb") + " " + f.q(f.meshes)},
+      {"build onto a directory",
+       "build --quiet --no-calibration -o " + f.q(dir.path().string()) + " " + f.q(f.meshes)},
       {"scan under a file",
        "scan " + f.q(fs::directory_iterator(f.meshes)->path().string()) + " -o " + f.q(under_file + ".ply")},
       {"generate under a file", "generate --count 1 -o " + f.q(under_file)},
@@ -269,7 +272,7 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
   // The older format says which it is and how to get the current one.
   const Run old = f.run("info " + f.q(dir.file("format1.shdb")));
   CHECK(contains(old.err,
-                 "format 1; this spinhash reads format 4: rebuild it from its meshes with `spinhash build`"));
+                 "format 1; this spinhash reads format 5: rebuild it from its meshes with `spinhash build`"));
   write_bytes(dir.file("empty.shdb"), "");
   const Run empty = f.run("verify " + f.q(dir.file("empty.shdb")));
   CHECK(empty.exit_code == kExitError);

@@ -157,7 +157,8 @@ TEST_CASE("every key of info and verify --format json is in their output and in 
   const t::TempDir dir("field-mirrors-json");
   const std::string meshes = dir.file("meshes"), db = dir.file("two.shdb");
   REQUIRE(t::run_spinhash(dir, "generate --count 2 -o " + t::shell_quoted(meshes)).exit_code == 0);
-  REQUIRE(t::run_spinhash(dir, "build --quiet -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
+  REQUIRE(t::run_spinhash(
+              dir, "build --quiet --no-calibration -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
               .exit_code == 0);
   write_bytes(dir.file("bad.shdb"), "not a database");
   const std::string docs = read_bytes(SPINHASH_SOURCE_DIR "/docs/cli.md");
@@ -191,7 +192,8 @@ TEST_CASE(
   const t::TempDir dir("field-mirrors-class");
   const std::string meshes = dir.file("meshes"), db = dir.file("two.shdb"), q = dir.file("q.ply");
   REQUIRE(t::run_spinhash(dir, "generate --count 2 -o " + t::shell_quoted(meshes)).exit_code == 0);
-  REQUIRE(t::run_spinhash(dir, "build --quiet -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
+  REQUIRE(t::run_spinhash(
+              dir, "build --quiet --no-calibration -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
               .exit_code == 0);
   REQUIRE(t::run_spinhash(dir, "scan " + t::shell_quoted(meshes + "/van-00.obj") + " --random-pose -o " +
                                    t::shell_quoted(q))
@@ -300,7 +302,8 @@ TEST_CASE("scene's lines carry the object keys of scene_fields.h in order, then 
   const t::TempDir dir("field-mirrors-object-keys");
   const std::string meshes = dir.file("meshes"), db = dir.file("two.shdb"), tile = dir.file("tile.las");
   REQUIRE(t::run_spinhash(dir, "generate --count 2 -o " + t::shell_quoted(meshes)).exit_code == 0);
-  REQUIRE(t::run_spinhash(dir, "build --quiet -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
+  REQUIRE(t::run_spinhash(
+              dir, "build --quiet --no-calibration -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
               .exit_code == 0);
   REQUIRE(t::run_spinhash(dir, "scan " + t::shell_quoted(meshes + "/van-00.obj") + " --ground 12 -o " +
                                    t::shell_quoted(tile))

@@ -109,7 +109,8 @@ struct Survey {
   int across = 0;
   Survey() {
     REQUIRE(run_spinhash(dir, "generate --count 12 -o " + shell_quoted(dir.file("fleet"))).exit_code == 0);
-    REQUIRE(run_spinhash(dir, "build --quiet -o " + shell_quoted(db) + " " + shell_quoted(dir.file("fleet")))
+    REQUIRE(run_spinhash(dir, "build --quiet --no-calibration -o " + shell_quoted(db) + " " +
+                                  shell_quoted(dir.file("fleet")))
                 .exit_code == 0);
     const CliRun s =
         run_spinhash(dir, "scan-scene " + shell_quoted(dir.file("fleet")) + " -o " + shell_quoted(scene) +
