@@ -30,10 +30,15 @@ bool is_outsider(RunKind kind, AnswerLevel level) {
   return kind == RunKind::kClutter || (level == AnswerLevel::kModel && kind == RunKind::kUnknown);
 }
 
+// The target as the decimal it was given as: 0.99f is a little over 0.99,
+// and would refuse exactly 99 right of 100.
+double decimal(float target) { return std::round(static_cast<double>(target) * 1e6) / 1e6; }
+
 // Smallest threshold over `s` (sorted by evidence, highest first) whose
 // flagged samples are right with `target` precision and flag at most
 // (1 - target) / 2 of the outsiders.
-Fit fit_samples(std::vector<Sample>& s, float target, uint32_t min_runs) {
+Fit fit_samples(std::vector<Sample>& s, float target_f, uint32_t min_runs) {
+  const double target = decimal(target_f);
   Fit fit;
   fit.enough = s.size() >= min_runs;
   if (!fit.enough) return fit;
@@ -44,7 +49,7 @@ Fit fit_samples(std::vector<Sample>& s, float target, uint32_t min_runs) {
     right_total += x.right ? x.weight : 0.0;
     outsiders += x.outsider ? 1u : 0u;
   }
-  const double outsider_share = 0.5 * (1.0 - static_cast<double>(target));
+  const double outsider_share = 0.5 * (1.0 - target);
   double right = 0.0, flagged = 0.0;
   uint64_t outsiders_flagged = 0;
   for (size_t i = 0; i < s.size();) {
@@ -57,7 +62,7 @@ Fit fit_samples(std::vector<Sample>& s, float target, uint32_t min_runs) {
     }
     if (static_cast<double>(outsiders_flagged) > outsider_share * static_cast<double>(outsiders)) break;
     const double precision = flagged > 0.0 ? right / flagged : 0.0;
-    if (precision >= static_cast<double>(target)) {
+    if (precision >= target) {
       fit.reached = true;
       fit.threshold = std::min(v, kLargestThreshold);
       fit.precision = precision;
@@ -114,14 +119,21 @@ class LevelFitter {
     return band;
   }
 
+  // An unknown vehicle is never right at the model level: there the
+  // outsider rate bounds it, and precision is that of the answers whose
+  // model could be named. Elsewhere it weighs unknown_weight_.
+  double weight(RunKind kind) const {
+    if (kind != RunKind::kUnknown) return 1.0;
+    return level_ == AnswerLevel::kModel ? 0.0 : unknown_weight_;
+  }
+
   std::vector<Sample> samples(uint32_t first, uint32_t last) const {
     const uint32_t l = level_index(level_);
     std::vector<Sample> s;
     for (const CalibrationRun& r : runs_) {
       const uint32_t b = band_of(r.density);
       if (b < first || b > last) continue;
-      s.push_back(Sample{r.evidence[l], r.right[l], is_outsider(r.kind, level_),
-                         r.kind == RunKind::kUnknown ? unknown_weight_ : 1.0});
+      s.push_back(Sample{r.evidence[l], r.right[l], is_outsider(r.kind, level_), weight(r.kind)});
     }
     return s;
   }
@@ -181,8 +193,7 @@ bool check_options(const FitOptions& o, std::string* error) {
 
 uint32_t default_min_band_runs(float target) {
   if (!(target < 1.0f)) return std::numeric_limits<uint32_t>::max();
-  // To a thousandth: 0.99f is a little over 0.99, which would ask for 101.
-  return static_cast<uint32_t>(std::ceil(1.0 / (1.0 - static_cast<double>(target)) - 1e-3));
+  return static_cast<uint32_t>(std::ceil(1.0 / (1.0 - decimal(target)) - 1e-9));
 }
 
 bool fit_calibration(const std::vector<CalibrationRun>& runs, const FitOptions& options,

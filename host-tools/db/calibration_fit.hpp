@@ -8,10 +8,12 @@
 // evidence at which the runs at or above it are right with at least the
 // target precision, and at which at most (1 - target) / 2 of the outsiders
 // are flagged: at the model level the unknown vehicles and the clutter,
-// at every other level the clutter. Precision weighs the unknown runs so
-// that they count as much as the known ones together (the fit expects half
-// the vehicles met to be in the database, whatever share of its models was
-// left out). Thresholds never increase with density: where a denser band
+// at every other level the clutter. At the group and class levels,
+// precision weighs the unknown runs so that they count as much as the
+// known ones together (the fit expects half the vehicles met to be in the
+// database, whatever share of its models was left out); at the model level
+// it leaves them out (none of them can be named right: the outsider rate
+// bounds them). Thresholds never increase with density: where a denser band
 // would need more evidence than a sparser one, the two are pooled and fitted
 // together. A band with fewer than min_band_runs runs, or whose runs reach
 // the target at no threshold, is never confident.

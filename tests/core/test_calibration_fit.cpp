@@ -181,6 +181,27 @@ TEST_CASE(
   CHECK(with_tree.cells[level_index(AnswerLevel::kVehicle)].threshold == 81.0f);
 }
 
+TEST_CASE("at the model level unknown runs count in the outsider rate alone, not in precision") {
+  // 200 known runs right at 101-300 (800 more never pass the prerequisites),
+  // 5 of 1 000 unknown runs just below: 0.5 %, as many as allowed. In
+  // precision they would take it to 200 / 205.
+  std::vector<host::CalibrationRun> runs;
+  for (int k = 0; k < 1000; ++k)
+    runs.push_back(
+        run(host::RunKind::kKnown, 100.0f, k < 200 ? 101.0f + static_cast<float>(k) : -kInf, true));
+  for (int k = 0; k < 1000; ++k) {
+    host::CalibrationRun unknown = run(host::RunKind::kUnknown, 100.0f, k < 5 ? 100.5f : -kInf, true);
+    unknown.right[level_index(AnswerLevel::kModel)] = false;
+    runs.push_back(unknown);
+  }
+  const host::CalibrationContent c = fit(runs, options({0.0f}, 0.99f, 5));
+  const blob::CalibrationCell& model = cell(c, AnswerLevel::kModel, 0);
+  CHECK(model.threshold == 100.5f);
+  CHECK(model.precision == 1.0f);
+  CHECK(model.negatives == 1000u);
+  CHECK(model.flagged == 205u);
+}
+
 TEST_CASE("unknown runs weigh as much as the known ones together") {
   // 40 known runs right at 10; 4 unknown runs, one of them wrong at 10:
   // unweighted 43 of 44 (0.977) would pass a 0.95 target, weighted
