@@ -12,12 +12,6 @@ namespace spinhash {
 namespace blob_check {
 namespace {
 
-bool all_zero(const uint8_t* p, size_t n) {
-  uint8_t any = 0;
-  for (size_t i = 0; i < n; ++i) any |= p[i];
-  return any == 0u;
-}
-
 bool unit_interval(float v) { return std::isfinite(v) && v >= 0.0f && v <= 1.0f; }
 
 uint64_t payload_bytes(const blob::CalibrationHeader& h) {

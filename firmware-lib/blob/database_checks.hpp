@@ -75,6 +75,13 @@ Status check_lsh(const Sections& s);
 // The Calibration section: counts and size, density bands, passes, cells.
 Status check_calibration(const Sections& s);
 
+// No bit set in n bytes.
+inline bool all_zero(const uint8_t* p, uint64_t n) {
+  uint8_t any = 0;
+  for (uint64_t i = 0; i < n; ++i) any |= p[i];
+  return any == 0u;
+}
+
 // a * b into *out unless it overflows 64 bits.
 inline bool mul_u64(uint64_t a, uint64_t b, uint64_t* out) {
   if (a != 0u && b > UINT64_MAX / a) return false;

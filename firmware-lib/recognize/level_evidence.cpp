@@ -79,21 +79,19 @@ uint32_t rank_groups(const Database& db, const Result& r, RankedGroup* out) {
 
 ClassEnvelope group_envelope(const Database& db, uint32_t group) {
   ClassEnvelope e;
-  for (uint32_t m = 0; m < db.model_count(); ++m) {
-    const blob::ModelRecord& r = db.model(m);
-    if (group_of_class(r.vehicle_class) != group) continue;
-    const float dx = span(r.bbox_min[0], r.bbox_max[0]), dy = span(r.bbox_min[1], r.bbox_max[1]);
-    const float length = dx > dy ? dx : dy, width = dx > dy ? dy : dx;
-    const float height = span(r.bbox_min[2], r.bbox_max[2]);
+  for (uint32_t c = 0; c < kVehicleClassCount; ++c) {
+    if (group_of_class(c) != group) continue;
+    const ClassEnvelope k = class_envelope(db, c);
+    if (k.members == 0u) continue;
     if (e.members == 0u) {
-      e.length_max = length, e.width_max = width, e.height_min = e.height_max = height;
-    } else {
-      e.length_max = length > e.length_max ? length : e.length_max;
-      e.width_max = width > e.width_max ? width : e.width_max;
-      e.height_min = height < e.height_min ? height : e.height_min;
-      e.height_max = height > e.height_max ? height : e.height_max;
+      e = k;
+      continue;
     }
-    ++e.members;
+    e.length_max = k.length_max > e.length_max ? k.length_max : e.length_max;
+    e.width_max = k.width_max > e.width_max ? k.width_max : e.width_max;
+    e.height_min = k.height_min < e.height_min ? k.height_min : e.height_min;
+    e.height_max = k.height_max > e.height_max ? k.height_max : e.height_max;
+    e.members += k.members;
   }
   return e;
 }

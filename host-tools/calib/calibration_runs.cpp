@@ -224,10 +224,11 @@ bool run_calibration(const host::BlobContent& full, const std::vector<const host
     }
   runs->clear();
   for (const auto& r : results) runs->insert(runs->end(), r.begin(), r.end());
-  summary->scans_per_model = sh.scans;
-  summary->scans_per_left_out = sh.left_out_scans;
-  summary->models_left_out = static_cast<uint32_t>(out.size());
-  summary->clutter_scans = sh.clutter;
+  summary->drawn.scans_per_model = sh.scans;
+  summary->drawn.scans_per_left_out = sh.left_out_scans;
+  summary->drawn.models_left_out = static_cast<uint32_t>(out.size());
+  summary->drawn.clutter_scans = sh.clutter;
+  summary->drawn.seed = settings.seed;
   summary->jobs = jobs;
   summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return true;

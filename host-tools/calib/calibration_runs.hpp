@@ -63,10 +63,7 @@ void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class,
            bool right[kCalibratedLevels]);
 
 struct RunSummary {
-  uint32_t scans_per_model = 0;
-  uint32_t scans_per_left_out = 0;
-  uint32_t models_left_out = 0;
-  uint32_t clutter_scans = 0;
+  host::FitProvenance drawn;  // scans per model, models left out, ..., seed
   uint32_t jobs = 0;
   double seconds = 0.0;
 };

@@ -24,13 +24,8 @@ bool calibrate(const std::vector<ModelMesh>& meshes, const CalibrationSettings& 
   runs.quiet = quiet;
   std::vector<host::CalibrationRun> records;
   if (!calib::run_calibration(*content, models, runs, &records, &summary->calibration, error)) return false;
-  host::FitProvenance provenance;
-  provenance.scans_per_model = summary->calibration.scans_per_model;
-  provenance.scans_per_left_out = summary->calibration.scans_per_left_out;
-  provenance.models_left_out = summary->calibration.models_left_out;
-  provenance.clutter_scans = summary->calibration.clutter_scans;
-  provenance.seed = runs.seed;
-  if (!host::fit_calibration(records, s.fit, provenance, &content->calibration, error)) return false;
+  if (!host::fit_calibration(records, s.fit, summary->calibration.drawn, &content->calibration, error))
+    return false;
   summary->calibrated = true;
   summary->calibration_runs = records.size();
   return true;

@@ -4,8 +4,6 @@
 #include <doctest/doctest.h>
 
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 #include <string>
 
 #include "cli_runner.hpp"
@@ -14,11 +12,6 @@
 using namespace spinhash::host::test;
 
 namespace {
-
-std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 // Few runs: every band of this fleet is too small for a 0.99 target, which
 // is what info must then say.

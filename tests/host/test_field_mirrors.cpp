@@ -178,7 +178,15 @@ TEST_CASE("every key of info and verify --format json is in their output and in 
                                t::shell_quoted(db) + " " + t::shell_quoted(meshes));
   const t::CliRun corrupt =
       t::run_spinhash(dir, "verify --format json " + t::shell_quoted(dir.file("bad.shdb")));
-  const std::string all = verify.out + noisy.out + corrupt.out;
+  // A calibrated blob's verify re-runs its calibration (calibration_check).
+  const std::string calibrated = dir.file("calibrated.shdb");
+  REQUIRE(t::run_spinhash(dir, "build --quiet --calibration-scans 2 --calibration-left-out-scans 2 -o " +
+                                   t::shell_quoted(calibrated) + " " + t::shell_quoted(meshes))
+              .exit_code == 0);
+  const t::CliRun rerun =
+      t::run_spinhash(dir, "verify --quiet --queries 1 --calibration-left-out 1 --format json " +
+                               t::shell_quoted(calibrated) + " " + t::shell_quoted(meshes));
+  const std::string all = verify.out + noisy.out + corrupt.out + rerun.out;
   for (const char* key : spinhash::cli::verify_keys::kAll) {
     INFO("verify key ", std::string(key));
     CHECK(t::contains(all, "\"" + std::string(key) + "\":"));
