@@ -206,13 +206,20 @@ TEST_CASE(
     CHECK(t::contains(docs, "`" + std::string(key) + "`"));
   }
   CHECK(t::contains(rec.out, "\"class\":\"van\""));  // generate names the fleet by family: van-00 is a van
-#define SPINHASH_CLASS_DOCUMENTED(id, Name, name, help) \
-  {                                                     \
-    INFO("class " name);                                \
-    CHECK(t::contains(docs, "`" name "`"));             \
+#define SPINHASH_CLASS_DOCUMENTED(id, Name, name, group, help) \
+  {                                                            \
+    INFO("class " name);                                       \
+    CHECK(t::contains(docs, "`" name "`"));                    \
   }
   SPINHASH_VEHICLE_CLASSES(SPINHASH_CLASS_DOCUMENTED)
 #undef SPINHASH_CLASS_DOCUMENTED
+#define SPINHASH_GROUP_DOCUMENTED(id, Name, name, help) \
+  {                                                     \
+    INFO("group " name);                                \
+    CHECK(t::contains(docs, "`" name "`"));             \
+  }
+  SPINHASH_VEHICLE_GROUPS(SPINHASH_GROUP_DOCUMENTED)
+#undef SPINHASH_GROUP_DOCUMENTED
 }
 
 TEST_CASE(
