@@ -61,8 +61,7 @@ void print_text(const Database& db, uint64_t bytes) {
     const blob::ModelRecord& r = db.model(m);
     std::printf("%-24s %-12s %-9s %8u  %.2f %.2f %.2f\n", model_name(db, m).c_str(),
                 vehicle_class_name(r.vehicle_class), vehicle_group_name(vehicle_group_of(r.vehicle_class)),
-                r.feature_count,
-                static_cast<double>(r.bbox_max[0] - r.bbox_min[0]),
+                r.feature_count, static_cast<double>(r.bbox_max[0] - r.bbox_min[0]),
                 static_cast<double>(r.bbox_max[1] - r.bbox_min[1]),
                 static_cast<double>(r.bbox_max[2] - r.bbox_min[2]));
   }

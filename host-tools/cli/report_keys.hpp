@@ -45,7 +45,7 @@ constexpr const char* kAll[] = {
     kFormat, kBytes,        kBytesPerFeature, kFingerprint, kModels, kFeatures,     kSpinImages,   kBins,
     kRadius, kSupportAngle, kQuantScale,      kSampling,    kVoxel,  kNormalRadius, kBasisSpacing, kLsh,
     kTables, kBits,         kBuckets,         kDc,          kGrid,   kCell,         kOffsets,      kField,
-    kReach,  kSlots,        kEntries,         kModelList,   kName,   kClass,        kGroup, kExtent};
+    kReach,  kSlots,        kEntries,         kModelList,   kName,   kClass,        kGroup,        kExtent};
 }  // namespace info_keys
 
 namespace verify_keys {

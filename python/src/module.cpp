@@ -19,7 +19,8 @@ PYBIND11_MODULE(_spinhash, m) {
   // Every group, in id order, and each class's group (CLASS_GROUPS[i] is the
   // group of CLASS_NAMES[i]): the group column of vehicle_classes.h.
   pybind11::list groups;
-  for (uint32_t id = 0; id < spinhash::kVehicleGroupCount; ++id) groups.append(spinhash::vehicle_group_name(id));
+  for (uint32_t id = 0; id < spinhash::kVehicleGroupCount; ++id)
+    groups.append(spinhash::vehicle_group_name(id));
   m.attr("GROUP_NAMES") = pybind11::tuple(groups);
   pybind11::list class_groups;
   for (uint32_t id = 0; id < spinhash::kVehicleClassCount; ++id)

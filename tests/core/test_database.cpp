@@ -469,7 +469,8 @@ TEST_CASE("class groups: every class has a group of the list, and the group is t
   for (VehicleClass c : {VehicleClass::kSedan, VehicleClass::kSuv, VehicleClass::kVan, VehicleClass::kPickup,
                          VehicleClass::kCar})
     CHECK(vehicle_group_of(c) == VehicleGroup::kLight);
-  for (VehicleClass c : {VehicleClass::kTruck, VehicleClass::kBus}) CHECK(vehicle_group_of(c) == VehicleGroup::kHeavy);
+  for (VehicleClass c : {VehicleClass::kTruck, VehicleClass::kBus})
+    CHECK(vehicle_group_of(c) == VehicleGroup::kHeavy);
   for (VehicleClass c : {VehicleClass::kTracked, VehicleClass::kApc})
     CHECK(vehicle_group_of(c) == VehicleGroup::kArmoured);
   // "other" spans every size and "unclassified" says nothing: no group.
