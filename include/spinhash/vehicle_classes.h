@@ -24,26 +24,26 @@
 #ifndef SPINHASH_VEHICLE_CLASSES_H
 #define SPINHASH_VEHICLE_CLASSES_H
 
-#define SPINHASH_VEHICLE_GROUPS(G)                                                              \
-  G(0, None, "none", "no group: unclassified, or a class whose members span the groups (other)")   \
-  G(1, Light, "light", "light vehicle up to 3.5 t: cars, SUVs, vans and minibuses, pickups")        \
-  G(2, Heavy, "heavy", "heavy vehicle over 3.5 t: lorries, tractor units, buses and coaches")      \
+#define SPINHASH_VEHICLE_GROUPS(G)                                                               \
+  G(0, None, "none", "no group: unclassified, or a class whose members span the groups (other)") \
+  G(1, Light, "light", "light vehicle up to 3.5 t: cars, SUVs, vans and minibuses, pickups")     \
+  G(2, Heavy, "heavy", "heavy vehicle over 3.5 t: lorries, tractor units, buses and coaches")    \
   G(3, Armoured, "armoured", "tracked or armoured vehicle: tanks, tracked carriers, wheeled APCs")
 
 /* Number of groups; ids are 0 .. SPINHASH_GROUP_COUNT - 1. */
 #define SPINHASH_GROUP_COUNT 4
 
-#define SPINHASH_VEHICLE_CLASSES(C)                                                         \
-  C(0, Unclassified, "unclassified", None, "no class was given at build time")              \
-  C(1, Sedan, "sedan", Light, "passenger car: saloon, hatchback, estate, coupe")            \
-  C(2, Van, "van", Light, "panel van, minibus, MPV")                                        \
-  C(3, Pickup, "pickup", Light, "pickup truck: cab and open bed")                           \
-  C(4, Truck, "truck", Heavy, "lorry, box truck, tractor unit")                             \
-  C(5, Bus, "bus", Heavy, "bus, coach")                                                     \
-  C(6, Tracked, "tracked", Armoured, "tracked vehicle: tank, tracked carrier, digger")      \
-  C(7, Apc, "apc", Armoured, "wheeled armoured vehicle")                                    \
-  C(8, Suv, "suv", Light, "sport utility vehicle, off-roader, jeep")                        \
-  C(9, Car, "car", Light, "passenger car of unknown body type")                             \
+#define SPINHASH_VEHICLE_CLASSES(C)                                                    \
+  C(0, Unclassified, "unclassified", None, "no class was given at build time")         \
+  C(1, Sedan, "sedan", Light, "passenger car: saloon, hatchback, estate, coupe")       \
+  C(2, Van, "van", Light, "panel van, minibus, MPV")                                   \
+  C(3, Pickup, "pickup", Light, "pickup truck: cab and open bed")                      \
+  C(4, Truck, "truck", Heavy, "lorry, box truck, tractor unit")                        \
+  C(5, Bus, "bus", Heavy, "bus, coach")                                                \
+  C(6, Tracked, "tracked", Armoured, "tracked vehicle: tank, tracked carrier, digger") \
+  C(7, Apc, "apc", Armoured, "wheeled armoured vehicle")                               \
+  C(8, Suv, "suv", Light, "sport utility vehicle, off-roader, jeep")                   \
+  C(9, Car, "car", Light, "passenger car of unknown body type")                        \
   C(10, Other, "other", None, "a vehicle of none of these classes (tractor, trailer, buggy)")
 
 /* Number of classes; ids are 0 .. SPINHASH_CLASS_COUNT - 1. */
