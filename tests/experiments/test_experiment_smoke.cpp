@@ -123,7 +123,7 @@ TEST_CASE("experiment scene runs end to end on tiny tiles and scores them agains
   CHECK(alarms.find(",vehicle,") == std::string::npos);
   const std::string summary = read_bytes(out + "/summary.md");
   CHECK(summary.find("# Scene: simulated airborne tiles") != std::string::npos);
-  CHECK(summary.find("## The issue's targets") != std::string::npos);
+  CHECK(summary.find("## Targets") != std::string::npos);
   CHECK(summary.find("| found | >= 95% | 100% (4) | **met** |") != std::string::npos);
 }
 

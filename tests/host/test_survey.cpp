@@ -37,7 +37,7 @@ constexpr useconds_t kKillPollMicroseconds = 10000;  // 10 ms between polls
 
 // scan-scene's default offset: the scene's centre, where the tiles meet.
 constexpr double kCentreX = 512000.0, kCentreY = 5400000.0;
-constexpr double kSameCentre = 0.01;  // m: the "centre within 1 cm"
+constexpr double kSameCentre = 0.01;  // m: a tile's object is the whole scene's to the centimetre
 
 struct Detection {
   std::string model;
