@@ -153,6 +153,14 @@ constexpr uint64_t kCycleStream = 0x3000;
 double lerp(const Range& r, double t) { return r.lo + (r.hi - r.lo) * t; }
 double draw(SeededRandom& rng, const Range& r) { return rng.uniform(r.lo, r.hi); }
 
+// The row of a per-style table (the first row when the style has none).
+template <typename Row, size_t N>
+const Row& row_of(const Row (&table)[N], BodyStyle style) {
+  for (const Row& row : table)
+    if (row.style == style) return row;
+  return table[0];
+}
+
 // Slot `slot` of a family's style cycle: the style whose share is furthest
 // behind after the slots before it (largest remainder, so every style's
 // slots are spread over the cycle), and how many of that style's slots
@@ -303,9 +311,7 @@ constexpr TwoBoxRanges kTwoBox[] = {
 constexpr double kMinTwoBoxGlasshouse = 0.45;
 
 void draw_two_box(SeededRandom& rng, BodyStyle style, VehicleSpec* s) {
-  const TwoBoxRanges* r = &kTwoBox[0];
-  for (const TwoBoxRanges& row : kTwoBox)
-    if (row.style == style) r = &row;
+  const TwoBoxRanges* r = &row_of(kTwoBox, style);
   s->ground_clearance = draw(rng, r->clearance);
   s->belt_height = std::min(s->ground_clearance + draw(rng, r->belt_rise), s->height - kMinTwoBoxGlasshouse);
   s->front_length = draw(rng, r->bonnet);
@@ -393,119 +399,145 @@ void draw_truck(SeededRandom& rng, BodyStyle style, VehicleSpec* s) {
   s->spare_wheel = rng.chance(0.35);          // behind the cab
 }
 
+// Buses per style: ground clearance, front and rear overhangs,
+// windscreen run, wheel radius (m), the odds of a roof air-conditioning unit.
+struct BusRanges {
+  BodyStyle style;
+  Range clearance, front_overhang, rear_overhang, windscreen, wheel_radius;
+  double roof_unit_odds;
+};
+constexpr BusRanges kBuses[] = {
+    {BodyStyle::kMidibus, {0.28, 0.35}, {2.0, 2.5}, {2.2, 2.9}, {0.15, 0.35}, {0.44, 0.48}, 0.5},
+    {BodyStyle::kCityBus, {0.28, 0.34}, {2.6, 2.9}, {3.2, 3.8}, {0.10, 0.25}, {0.48, 0.52}, 0.7},
+    {BodyStyle::kCoach, {0.33, 0.42}, {2.4, 2.8}, {2.8, 3.5}, {0.25, 0.45}, {0.50, 0.53}, 0.3},
+};
+
 void draw_bus(SeededRandom& rng, BodyStyle style, VehicleSpec* s) {
-  switch (style) {
-    case BodyStyle::kMidibus:
-      s->ground_clearance = rng.uniform(0.28, 0.35);
-      s->front_length = rng.uniform(2.0, 2.5);  // front overhang
-      s->rear_length = rng.uniform(2.2, 2.9);   // rear overhang
-      s->windscreen_run = rng.uniform(0.15, 0.35);
-      s->wheel_radius = rng.uniform(0.44, 0.48);
-      s->roof_rack = rng.chance(0.5);  // roof air-conditioning unit
-      break;
-    case BodyStyle::kCoach:
-      s->ground_clearance = rng.uniform(0.33, 0.42);
-      s->front_length = rng.uniform(2.4, 2.8);
-      s->rear_length = rng.uniform(2.8, 3.5);
-      s->windscreen_run = rng.uniform(0.25, 0.45);
-      s->wheel_radius = rng.uniform(0.50, 0.53);
-      s->roof_rack = rng.chance(0.3);
-      break;
-    default:  // city bus
-      s->ground_clearance = rng.uniform(0.28, 0.34);
-      s->front_length = rng.uniform(2.6, 2.9);
-      s->rear_length = rng.uniform(3.2, 3.8);
-      s->windscreen_run = rng.uniform(0.10, 0.25);
-      s->wheel_radius = rng.uniform(0.48, 0.52);
-      s->roof_rack = rng.chance(0.7);
-      break;
-  }
+  const BusRanges& r = row_of(kBuses, style);
+  s->ground_clearance = draw(rng, r.clearance);
+  s->front_length = draw(rng, r.front_overhang);
+  s->rear_length = draw(rng, r.rear_overhang);
+  s->windscreen_run = draw(rng, r.windscreen);
+  s->wheel_radius = draw(rng, r.wheel_radius);
+  s->roof_rack = rng.chance(r.roof_unit_odds);
   s->wheel_width = rng.uniform(0.28, 0.32);
   s->axles = (s->length > 12.0 && rng.chance(0.4)) ? 3 : 2;
   s->axle_spacing = rng.uniform(1.3, 1.45);
 }
 
+// Tracked vehicles per style: ground clearance, the turret's height (a
+// carrier's casemate rise), glacis run, track width, and the turret: its
+// length, width (and the hull margin it keeps), centre along x, the odds
+// of a gun and its length (m). A carrier has no turret; its casemate
+// reaches forward to turret_x.
+struct TrackedRanges {
+  BodyStyle style;
+  Range clearance, turret_height, glacis, track_width;
+  bool turret;
+  Range turret_length, turret_width;
+  double turret_margin;
+  Range turret_x;
+  double barrel_odds;
+  Range barrel_length;
+};
+constexpr TrackedRanges kTracked[] = {
+    {BodyStyle::kMainBattleTank,
+     {0.43, 0.50},
+     {0.60, 0.90},
+     {1.2, 1.8},
+     {0.55, 0.70},
+     true,
+     {2.8, 3.8},
+     {2.2, 3.1},
+     0.5,
+     {-0.6, 0.4},
+     1.0,
+     {4.0, 5.8}},
+    {BodyStyle::kIfv,
+     {0.40, 0.48},
+     {0.55, 0.85},
+     {1.0, 1.6},
+     {0.45, 0.55},
+     true,
+     {1.6, 2.4},
+     {1.4, 2.0},
+     0.6,
+     {-0.3, 0.6},
+     0.95,
+     {2.0, 3.2}},
+    {BodyStyle::kTrackedCarrier,
+     {0.38, 0.45},
+     {0.15, 0.45},
+     {0.8, 1.4},
+     {0.38, 0.50},
+     false,
+     {0, 0},
+     {0, 0},
+     0.0,
+     {-0.8, 0.6},
+     0.0,
+     {0, 0}},
+    {BodyStyle::kSelfPropelledGun,
+     {0.40, 0.48},
+     {1.10, 1.50},
+     {1.0, 1.5},
+     {0.50, 0.65},
+     true,
+     {3.0, 4.2},
+     {2.6, 3.2},
+     0.4,
+     {-1.5, -0.5},
+     1.0,
+     {4.5, 7.0}},
+};
+
 void draw_tracked(SeededRandom& rng, BodyStyle style, VehicleSpec* s) {
+  const TrackedRanges& r = row_of(kTracked, style);
   const double overall = s->height;
   s->axles = 0;
-  switch (style) {
-    case BodyStyle::kMainBattleTank:
-      s->ground_clearance = rng.uniform(0.43, 0.50);
-      s->turret_height = rng.uniform(0.60, 0.90);
-      s->front_length = rng.uniform(1.2, 1.8);  // glacis run
-      s->track_width = rng.uniform(0.55, 0.70);
-      s->turret = true;
-      s->turret_length = rng.uniform(2.8, 3.8);
-      s->turret_width = std::fmin(rng.uniform(2.2, 3.1), s->width - 0.5);
-      s->turret_x = rng.uniform(-0.6, 0.4);
-      s->barrel = true;
-      s->barrel_length = rng.uniform(4.0, 5.8);
-      break;
-    case BodyStyle::kIfv:
-      s->ground_clearance = rng.uniform(0.40, 0.48);
-      s->turret_height = rng.uniform(0.55, 0.85);
-      s->front_length = rng.uniform(1.0, 1.6);
-      s->track_width = rng.uniform(0.45, 0.55);
-      s->turret = true;
-      s->turret_length = rng.uniform(1.6, 2.4);
-      s->turret_width = std::fmin(rng.uniform(1.4, 2.0), s->width - 0.6);
-      s->turret_x = rng.uniform(-0.3, 0.6);
-      s->barrel = rng.chance(0.95);
-      s->barrel_length = rng.uniform(2.0, 3.2);
-      break;
-    case BodyStyle::kSelfPropelledGun:
-      s->ground_clearance = rng.uniform(0.40, 0.48);
-      s->turret_height = rng.uniform(1.10, 1.50);
-      s->front_length = rng.uniform(1.0, 1.5);
-      s->track_width = rng.uniform(0.50, 0.65);
-      s->turret = true;
-      s->turret_length = rng.uniform(3.0, 4.2);
-      s->turret_width = std::fmin(rng.uniform(2.6, 3.2), s->width - 0.4);
-      s->turret_x = rng.uniform(-1.5, -0.5);
-      s->barrel = true;
-      s->barrel_length = rng.uniform(4.5, 7.0);
-      break;
-    default:  // tracked carrier: box hull and a low casemate, no turret
-      s->ground_clearance = rng.uniform(0.38, 0.45);
-      s->turret_height = rng.uniform(0.15, 0.45);  // the casemate's rise, over the engine deck
-      s->front_length = rng.uniform(0.8, 1.4);
-      s->track_width = rng.uniform(0.38, 0.50);
-      s->turret_x = rng.uniform(-0.8, 0.6);
-      break;
+  s->ground_clearance = draw(rng, r.clearance);
+  s->turret_height = draw(rng, r.turret_height);
+  s->front_length = draw(rng, r.glacis);
+  s->track_width = draw(rng, r.track_width);
+  s->turret = r.turret;
+  if (r.turret) {
+    s->turret_length = draw(rng, r.turret_length);
+    s->turret_width = std::fmin(draw(rng, r.turret_width), s->width - r.turret_margin);
+    s->turret_x = draw(rng, r.turret_x);
+    s->barrel = r.barrel_odds >= 1.0 || rng.chance(r.barrel_odds);
+    s->barrel_length = draw(rng, r.barrel_length);
+  } else {
+    s->turret_x = draw(rng, r.turret_x);
   }
   s->belt_height = overall - s->turret_height;  // hull top
   // Without a turret: a casemate superstructure up to rear_height.
   s->rear_height = overall;
 }
 
+// Wheeled APCs per style: ground clearance, wheel radius, axles and their
+// spacing (the wheelbase for two), glacis run (m), the odds of a turret.
+struct ApcRanges {
+  BodyStyle style;
+  Range clearance, wheel_radius;
+  uint32_t axles;
+  Range axle_spacing, glacis;
+  double turret_odds;
+};
+constexpr ApcRanges kApcs[] = {
+    {BodyStyle::kApc8x8, {0.45, 0.55}, {0.55, 0.62}, 4, {1.40, 1.75}, {1.0, 1.6}, 0.6},
+    {BodyStyle::kApc6x6, {0.40, 0.50}, {0.50, 0.58}, 3, {1.35, 1.90}, {1.0, 1.6}, 0.5},
+    {BodyStyle::kApc4x4, {0.40, 0.50}, {0.50, 0.60}, 2, {3.0, 3.9}, {1.2, 1.8}, 0.4},
+};
+
 void draw_apc(SeededRandom& rng, BodyStyle style, VehicleSpec* s) {
+  const ApcRanges& r = row_of(kApcs, style);
   const double overall = s->height;
-  switch (style) {
-    case BodyStyle::kApc4x4:
-      s->ground_clearance = rng.uniform(0.40, 0.50);
-      s->wheel_radius = rng.uniform(0.50, 0.60);
-      s->axles = 2;
-      s->axle_spacing = rng.uniform(3.0, 3.9);  // wheelbase
-      s->front_length = rng.uniform(1.2, 1.8);
-      s->turret = rng.chance(0.4);
-      break;
-    case BodyStyle::kApc6x6:
-      s->ground_clearance = rng.uniform(0.40, 0.50);
-      s->wheel_radius = rng.uniform(0.50, 0.58);
-      s->axles = 3;
-      s->axle_spacing = rng.uniform(1.35, 1.90);
-      s->front_length = rng.uniform(1.0, 1.6);
-      s->turret = rng.chance(0.5);
-      break;
-    default:  // 8x8
-      s->ground_clearance = rng.uniform(0.45, 0.55);
-      s->wheel_radius = rng.uniform(0.55, 0.62);
-      s->axles = 4;
-      s->axle_spacing = rng.uniform(1.40, 1.75);
-      s->front_length = rng.uniform(1.0, 1.6);
-      s->turret = rng.chance(0.6);
-      break;
-  }
+  s->ground_clearance = draw(rng, r.clearance);
+  s->wheel_radius = draw(rng, r.wheel_radius);
+  s->axles = r.axles;
+  s->axle_spacing = draw(rng, r.axle_spacing);
+  s->front_length = draw(rng, r.glacis);
+  s->turret = rng.chance(r.turret_odds);
   s->wheel_width = rng.uniform(0.36, 0.44);
   s->axle_shift = rng.uniform(-0.3, 0.1);
   s->turret_length = rng.uniform(1.2, 1.7);
