@@ -189,6 +189,22 @@ CycleSlot cycle_slot(Family family, uint32_t slot) {
   return out;
 }
 
+// Sedans' tails per style: the boot behind the rear window (m, or a share
+// of the length) and the rear window's run (m).
+struct SedanRear {
+  BodyStyle style;
+  Range boot;
+  bool boot_is_share;
+  Range rear_window;
+};
+constexpr SedanRear kSedanRears[] = {
+    {BodyStyle::kNotchback, {0.17, 0.23}, true, {0.45, 0.70}},
+    {BodyStyle::kHatchback, {0.10, 0.16}, false, {0.30, 0.55}},
+    {BodyStyle::kFastback, {0.08, 0.12}, true, {0.85, 1.25}},
+    {BodyStyle::kEstate, {0.06, 0.10}, false, {0.10, 0.22}},
+    {BodyStyle::kCoupe, {0.12, 0.18}, true, {0.70, 1.10}},
+};
+
 void draw_sedan(SeededRandom& rng, BodyStyle style, VehicleSpec* s) {
   const double l = s->length;
   const bool coupe = style == BodyStyle::kCoupe;
@@ -197,28 +213,9 @@ void draw_sedan(SeededRandom& rng, BodyStyle style, VehicleSpec* s) {
   s->belt_height = std::min(s->ground_clearance + rng.uniform(0.62, 0.76), s->height - 0.42);
   s->front_length = l * (coupe ? rng.uniform(0.28, 0.34) : rng.uniform(0.22, 0.29));
   s->windscreen_run = coupe ? rng.uniform(0.80, 1.10) : rng.uniform(0.55, 0.85);
-  switch (style) {
-    case BodyStyle::kHatchback:
-      s->rear_length = rng.uniform(0.10, 0.16);
-      s->rear_window_run = rng.uniform(0.30, 0.55);
-      break;
-    case BodyStyle::kFastback:
-      s->rear_length = l * rng.uniform(0.08, 0.12);
-      s->rear_window_run = rng.uniform(0.85, 1.25);
-      break;
-    case BodyStyle::kEstate:
-      s->rear_length = rng.uniform(0.06, 0.10);
-      s->rear_window_run = rng.uniform(0.10, 0.22);
-      break;
-    case BodyStyle::kCoupe:
-      s->rear_length = l * rng.uniform(0.12, 0.18);
-      s->rear_window_run = rng.uniform(0.70, 1.10);
-      break;
-    default:  // notchback
-      s->rear_length = l * rng.uniform(0.17, 0.23);
-      s->rear_window_run = rng.uniform(0.45, 0.70);
-      break;
-  }
+  const SedanRear& rear = row_of(kSedanRears, style);
+  s->rear_length = draw(rng, rear.boot) * (rear.boot_is_share ? l : 1.0);
+  s->rear_window_run = draw(rng, rear.rear_window);
   s->tumblehome = rng.uniform(0.10, 0.20);
   s->wheel_radius = rng.uniform(0.28, 0.34);
   s->wheel_width = rng.uniform(0.18, 0.24);
