@@ -28,8 +28,9 @@ void add_survey_command(CLI::App& app, int* exit_code) {
       ->check(CLI::Range(survey::kMinBuffer, survey::kMaxBuffer));
   cmd->add_flag("--resume", o->resume, "keep the tiles a previous run in DIR finished (same inputs)");
   cmd->add_flag("--quiet", o->quiet, "no progress line");
+  add_work_crs_option(cmd, &o->work);
   pipeline::add_scene_flags(cmd, &o->scene, {"--top", "--max-objects"});
-  cmd->add_option("tiles", *tiles, "tiles (LAS, LAZ, PLY, x y z text) or folders of them")->required();
+  cmd->add_option("tiles", *tiles, "tiles (LAS, LAZ, COPC, PLY, x y z text) or folders of them")->required();
   cmd->callback([o, tiles, exit_code]() { *exit_code = survey::run_survey(*o, *tiles); });
 }
 

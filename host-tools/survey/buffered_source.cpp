@@ -2,7 +2,7 @@
 
 namespace spinhash::survey {
 
-BufferedSource::BufferedSource(const SurveyTask& task) : task_(task) {
+BufferedSource::BufferedSource(const SurveyTask& task) : task_(task), work_(task.work()) {
   header_.format = "survey";
   header_.count_known = false;
   open_next();
@@ -13,7 +13,7 @@ bool BufferedSource::open_next() {
   if (next_ > task_.neighbours.size()) return false;
   const std::string& path = next_ == 0 ? task_.tile.path : task_.neighbours[next_ - 1].path;
   ++next_;
-  current_ = host::open_point_source(path);
+  current_ = host::open_metric_source(path, work_);
   if (next_ == 1) header_.crs = current_->header().crs;
   return true;
 }

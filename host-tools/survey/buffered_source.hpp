@@ -1,12 +1,14 @@
-// A tile with its neighbours' buffer as one point source: the tile's points,
-// then each neighbour's points inside the seen rectangle, neighbours in
-// path order, each opened only while it is read (memory: one reader's chunk).
+// A tile with its neighbours' buffer as one point source, in metres of the
+// survey's CRS (cloud/metric_source.hpp: each file scaled by its own units,
+// or reprojected): the tile's points, then each neighbour's points inside
+// the seen rectangle, neighbours in path order, each opened only while it
+// is read (memory: one reader's chunk).
 #pragma once
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "cloud/point_source.hpp"
+#include "cloud/metric_source.hpp"
 #include "survey/task.hpp"
 
 namespace spinhash::survey {
@@ -25,6 +27,7 @@ class BufferedSource final : public host::PointSource {
   bool open_next();
 
   const SurveyTask& task_;
+  host::WorkCrs work_;
   host::CloudHeader header_;
   std::unique_ptr<host::PointSource> current_;
   size_t next_ = 0;  // 0: the tile; k: neighbour k - 1

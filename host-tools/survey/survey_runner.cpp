@@ -54,7 +54,8 @@ void remove_results(const std::string& folder) {
 std::string settings_key(const SurveyOptions& o) {
   return "spinhash=" + std::string(pipeline::version()) + ";db=" + file_digest(o.db_path) +
          ";top=" + std::to_string(o.scene.top_n) + ";max_objects=" + std::to_string(o.scene.max_objects) +
-         ";max_window_points=" + std::to_string(o.scene.max_tile_points);
+         ";max_window_points=" + std::to_string(o.scene.max_tile_points) +
+         ";work_crs=" + escape_line(o.work.named ? o.work.crs.proj_definition() : "");
 }
 
 bool read_text(const std::string& path, std::string* text) {
@@ -116,7 +117,7 @@ bool prepare_survey(const SurveyOptions& options, const std::vector<std::string>
   std::vector<std::string> paths;
   if (!expand_tile_arguments(args, &paths, error)) return false;
   s.catalogue = read_catalogue(paths);
-  if (!check_catalogue(s.catalogue, error)) return false;
+  if (!check_catalogue(s.catalogue, options.work, error)) return false;
   for (const CatalogueTile& t : s.catalogue.tiles)
     if (!t.error.empty()) s.refused.push_back({t.name, t.path, t.error});
   std::error_code ec;

@@ -6,6 +6,7 @@
 #include "pipeline/json_line.hpp"
 #include "pipeline/object_box.hpp"
 #include "pipeline/object_json.hpp"
+#include "pipeline/object_units.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/status_word.hpp"
 #include "pipeline/tile_stream.hpp"
@@ -21,6 +22,7 @@ using pipeline::json_string;
 // The survey's members: the scene's, then the CRS, the native footprint and
 // the version. The JSON line, the GeoJSON properties and the GeoPackage's
 // columns all come from this one list.
+// o in the survey CRS's units (pipeline/object_units.hpp).
 std::vector<pipeline::JsonMember> survey_members(const SurveyTask& task, uint32_t k, const Database& db,
                                                  const SceneObject& o) {
   std::vector<pipeline::JsonMember> m = pipeline::object_members(task.tile.name, k, db, o);
@@ -58,22 +60,23 @@ TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfi
   pipeline::TileStreamOptions options;
   options.scene = scene;
   options.own_given = true;  // what the tile might own; owner_of decides among its neighbours
-  options.units = task.units;
   const Rect own = task.tile.core.grown(kGapTolerance);
   std::copy(own.min, own.min + 2, options.own_min);
   std::copy(own.max, own.max + 2, options.own_max);
-  const pipeline::ObjectCallback keep = [&](const SceneObject& o) {
-    const TaskTile* owner = owner_of(task, o.center[0], o.center[1]);
+  const pipeline::ObjectCallback keep = [&](const SceneObject& metres) {
+    const TaskTile* owner = owner_of(task, metres.center[0], metres.center[1]);
     if (owner != &task.tile) {
       ++(owner == nullptr ? r.objects_in_holes : r.objects_not_owned);
       return;
     }
+    std::vector<RankedModel> ranking;
+    const SceneObject o = pipeline::in_file_units(metres, task.units, &ranking);
     const auto members = survey_members(task, static_cast<uint32_t>(r.lines.size()), db, o);
     r.lines.push_back(pipeline::members_json(members));
     if (o.kind == ObjectKind::kVehicleCandidate)
       r.features.push_back(feature_json(members, o, task.units.horizontal, to_wgs84.get()));
     count(r, db, o);
-    r.boxes.push_back(pipeline::object_box(db, o, task.units.horizontal));
+    r.boxes.push_back(pipeline::object_box(db, metres));  // the overview is drawn in metres
   };
   const pipeline::TileStreamResult s = pipeline::stream_tile(db, source, options, keep);
   r.status = pipeline::status_word(s.status);
