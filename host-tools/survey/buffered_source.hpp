@@ -17,7 +17,8 @@ class BufferedSource final : public host::PointSource {
  public:
   explicit BufferedSource(const SurveyTask& task);
   const host::CloudHeader& header() const override { return header_; }
-  // Throws host::CloudError naming the file (the tile or a neighbour).
+  // Throws host::CloudError naming the file: the tile's own error, or
+  // "refused for its neighbour PATH, which cannot be read: ...".
   size_t read(double* xyz, size_t max_points) override;
 
   uint64_t tile_points() const { return tile_points_; }
@@ -25,6 +26,10 @@ class BufferedSource final : public host::PointSource {
 
  private:
   bool open_next();
+  size_t read_any(double* xyz, size_t max_points);
+  const std::string& path_now() const;  // the file being read
+  template <class F>
+  auto neighbour_named(F&& f) -> decltype(f());
 
   const SurveyTask& task_;
   host::WorkCrs work_;

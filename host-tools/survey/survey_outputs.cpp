@@ -37,6 +37,13 @@ std::string geojson(const Catalogue& c, const std::vector<TileResult>& done) {
   return s + "\n]}\n";
 }
 
+// The units of the outputs' coordinates (the survey CRS's; metres when unknown).
+std::string units_json(const host::AxisUnits& u) {
+  if (u.geographic) return "{\"horizontal\":\"degree\",\"horizontal_m\":null,\"vertical\":null,\"vertical_m\":null}";
+  return "{\"horizontal\":" + json_string(u.horizontal_name) + ",\"horizontal_m\":" + json_number(u.horizontal, 15) +
+         ",\"vertical\":" + json_string(u.vertical_name) + ",\"vertical_m\":" + json_number(u.vertical, 15) + "}";
+}
+
 std::string models_json(const std::map<std::string, ModelCount>& models) {
   std::string s = "{";
   for (const auto& kv : models)
@@ -86,7 +93,8 @@ std::string survey_json(const Catalogue& c, const std::vector<TileResult>& done,
   for (const std::string& n : c.notes) notes += (notes.empty() ? "" : ",") + json_string(n);
   return "{\"version\":" + json_string(pipeline::version()) + ",\"database\":" + json_string(rep.database) +
          ",\"buffer_m\":" + json_number(rep.buffer) + ",\"jobs\":" + std::to_string(rep.jobs) +
-         ",\"crs\":" + json_string(c.crs.describe()) + ",\"geometry\":" + json_string(geometry_note(c)) +
+         ",\"crs\":" + json_string(c.crs.describe()) + ",\"crs_units\":" + units_json(c.crs.units) +
+         ",\"geometry\":" + json_string(geometry_note(c)) +
          ",\"notes\":[" + notes + "],\"tiles_total\":" + std::to_string(rep.tiles_total) +
          ",\"tiles_done\":" + std::to_string(done.size()) +
          ",\"tiles_resumed\":" + std::to_string(rep.tiles_resumed) +
@@ -118,6 +126,15 @@ bool write_overview(const std::string& path, const Catalogue& c, const std::vect
 }
 
 }  // namespace
+
+std::string without_path(const std::string& reason, const std::string& path) {
+  const std::string prefix = path + ": ";
+  return reason.compare(0, prefix.size(), prefix) == 0 ? reason.substr(prefix.size()) : reason;
+}
+
+Refusal refusal(const std::string& tile, const std::string& path, const std::string& reason) {
+  return {tile, path, without_path(reason, path)};
+}
 
 bool write_survey_outputs(const std::string& dir, const Catalogue& catalogue,
                           const std::vector<TileResult>& done, const SurveyReport& report,

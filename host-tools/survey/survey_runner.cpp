@@ -119,7 +119,7 @@ bool prepare_survey(const SurveyOptions& options, const std::vector<std::string>
   s.catalogue = read_catalogue(paths);
   if (!check_catalogue(s.catalogue, options.work, error)) return false;
   for (const CatalogueTile& t : s.catalogue.tiles)
-    if (!t.error.empty()) s.refused.push_back({t.name, t.path, t.error});
+    if (!t.error.empty()) s.refused.push_back(refusal(t.name, t.path, t.error));
   std::error_code ec;
   const std::string results = options.out_dir + "/" + kResultsFolder;
   fs::create_directories(results, ec);
@@ -207,8 +207,8 @@ int run_survey(const SurveyOptions& options, const std::vector<std::string>& arg
         why = e.what();
       }
       std::lock_guard<std::mutex> lock(failed_mutex);
-      failed.push_back({task.tile.name, task.tile.path, why});
-      std::fprintf(stderr, "spinhash survey: %s: %s\n", task.tile.name.c_str(), why.c_str());
+      failed.push_back(refusal(task.tile.name, task.tile.path, why));
+      std::fprintf(stderr, "spinhash survey: %s: %s\n", task.tile.path.c_str(), failed.back().reason.c_str());
       progress.tile_done(0);
     }
   };

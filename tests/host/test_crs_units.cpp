@@ -13,6 +13,7 @@
 #include "cloud/crs_units.hpp"
 #include "cloud/metric_source.hpp"
 #include "cloud/point_source.hpp"
+#include "cloud_test_support.hpp"
 #include "pipeline/database_file.hpp"
 #include "pipeline/object_units.hpp"
 #include "pipeline/tile_stream.hpp"
@@ -158,7 +159,7 @@ TEST_CASE("crs units: a tile in US survey feet gives the metre tile's vehicles, 
   std::string error;
   REQUIRE_MESSAGE(pipeline::load_database(db_path, &db, &error), error);
   std::vector<double> metres;
-  REQUIRE_MESSAGE(read_cloud(scene, &metres, &error), error);
+  REQUIRE_MESSAGE(spinhash::host::test::try_read_cloud(scene, &metres, &error), error);
   std::vector<double> feet = metres;
   for (double& v : feet) v /= kUsFoot;
   AxisUnits ftus;

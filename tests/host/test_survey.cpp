@@ -19,7 +19,9 @@
 
 #include "cli_runner.hpp"
 #include "cloud/cloud_reader.hpp"
+#include "cloud/crs_resolve.hpp"
 #include "cloud/las_writer.hpp"
+#include "cloud_test_support.hpp"
 #include "pipeline/database_file.hpp"
 #include "survey/footprint.hpp"
 #include "survey/gpkg_writer.hpp"
@@ -31,6 +33,12 @@ using namespace spinhash::host::test;
 namespace survey = spinhash::survey;
 
 namespace {
+
+spinhash::host::Crs epsg_crs(uint32_t code) {
+  spinhash::host::Crs c;
+  c.horizontal_epsg = code;
+  return spinhash::host::resolved(c);
+}
 
 constexpr int kKillWaitSteps = 6000;                 // polls for the first stored tile: 60 s at most
 constexpr useconds_t kKillPollMicroseconds = 10000;  // 10 ms between polls
@@ -88,7 +96,7 @@ int vehicles_across_cuts(const std::string& truth_csv) {
 void write_tiles(const std::string& scene, const std::string& dir) {
   std::vector<double> xyz;
   std::string error;
-  REQUIRE_MESSAGE(spinhash::host::read_cloud(scene, &xyz, &error), error);
+  REQUIRE_MESSAGE(spinhash::host::test::try_read_cloud(scene, &xyz, &error), error);
   std::vector<double> parts[4];
   for (size_t i = 0; i < xyz.size(); i += 3) {
     std::vector<double>& part = parts[2 * (xyz[i] >= kCentreX) + (xyz[i + 1] >= kCentreY)];
@@ -312,7 +320,7 @@ TEST_CASE(
   std::string error;
   REQUIRE_MESSAGE(spinhash::pipeline::load_database(s.db, &db, &error), error);
   survey::Catalogue cat = survey::read_catalogue({s.tiles + "/t00.las", s.tiles + "/t01.las"});
-  REQUIRE(survey::check_catalogue(cat, &error));
+  REQUIRE(survey::check_catalogue(cat, {}, &error));
   std::vector<survey::SurveyTask> tasks = survey::plan_survey(cat, survey::kDefaultBuffer, "test");
   REQUIRE(tasks.size() == 2);
   tasks[0].crs = "EPSG:32633", tasks[0].crs_name = "EPSG:32633";  // as the LAS readers set it
@@ -333,12 +341,12 @@ TEST_CASE(
               ("ogrinfo -so " + shell_quoted(gpkg) + " detections | grep -q 'UTM zone 33N'").c_str()) == 0);
 
   survey::Catalogue mixed = cat;
-  mixed.tiles[0].header.crs.horizontal_epsg = 32633;
-  REQUIRE(survey::check_catalogue(mixed, &error));
+  mixed.tiles[0].header.crs = epsg_crs(32633);
+  REQUIRE(survey::check_catalogue(mixed, {}, &error));
   CHECK(mixed.crs.describe() == "EPSG:32633");
   REQUIRE(mixed.notes.size() == 1);  // t01 declares none: assumed to be in it, and said so
   CHECK(contains(mixed.notes[0], "t01"));
-  mixed.tiles[1].header.crs.horizontal_epsg = 25833;
-  CHECK_FALSE(survey::check_catalogue(mixed, &error));
+  mixed.tiles[1].header.crs = epsg_crs(25833);
+  CHECK_FALSE(survey::check_catalogue(mixed, {}, &error));
   CHECK(contains(error, "do not share a CRS"));
 }
