@@ -96,8 +96,7 @@ Crs las_crs(const LasHeader& h, const std::vector<Vlr>& vlrs) {
       crs.warnings.push_back("GeoKey " + std::to_string(id) +
                              " is user-defined: no EPSG code, and no WKT record");
   if (!crs.wkt.empty()) {
-    crs.horizontal_epsg = crs.vertical_epsg = 0;  // the WKT says all; unit keys stay as a fallback
-    crs.source = "wkt";
+    crs.source = "wkt";  // the WKT says all; the GeoKeys stay as declared
   } else if (crs.horizontal_epsg != 0) {
     crs.source = "geokeys";
   }

@@ -10,6 +10,7 @@
 
 #include "cli_runner.hpp"
 #include "cloud/cloud_reader.hpp"
+#include "cloud/crs_resolve.hpp"
 #include "cloud/crs_units.hpp"
 #include "cloud/metric_source.hpp"
 #include "cloud/point_source.hpp"
@@ -109,10 +110,11 @@ TEST_CASE("crs units: feet, US survey feet, metres and degrees from EPSG codes, 
 
   CHECK(axis_units(Crs{}).metric());  // unknown: the file's own coordinates, taken as metres
   CHECK(axis_units(Crs{}).notes.empty());
-  Crs unknown_code = epsg(999999);
-  const AxisUnits unread = axis_units(unknown_code);
-  CHECK(unread.metric());
-  CHECK(!unread.notes.empty());  // and says it could not read it
+  const Crs unread = resolved(epsg(999999));
+  CHECK(unread.units.metric());
+  CHECK_FALSE(unread.known());  // PROJ does not read it: the file's own coordinates
+  REQUIRE(!unread.warnings.empty());  // and says it could not read it
+  CHECK(contains(unread.warnings.back(), "PROJ does not read"));
 }
 
 TEST_CASE("crs units: the real samples' units from their headers") {

@@ -31,7 +31,7 @@ def test_the_header_and_crs_come_without_the_points():
     assert h["format"] == "laz" and h["point_count"] == 1247 and h["las_point_format"] == 1
     assert h["crs"]["epsg"] == 6580 and h["crs"]["vertical_epsg"] == 5703
     wkt = spinhash.read_cloud_header(LAZ / "crs" / "file_with_both_wkt_and_geotiff_vlrs.las")["crs"]
-    assert wkt["source"] == "wkt" and wkt["name"] == "WKT: NAD83_2011_Nebraska_ft"
+    assert wkt["source"] == "wkt" and wkt["name"] == "NAD83_2011_Nebraska_ft"
     us_foot = 1200 / 3937  # the WKT's unit: US survey feet, metres per unit for x y and z
     assert wkt["metres_per_unit"] == pytest.approx((us_foot, us_foot)) and wkt["unit_notes"]
     assert h["crs"]["metres_per_unit"] == (1.0, 1.0) and h["crs"]["unit_notes"] == []
