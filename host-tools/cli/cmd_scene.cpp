@@ -19,6 +19,7 @@
 #include "pipeline/recognizer_flags.hpp"
 #include "pipeline/scene_flags.hpp"
 #include "pipeline/scene_session.hpp"
+#include "pipeline/spill_folder.hpp"
 #include "pipeline/tile_stream.hpp"
 #include "render/tile_picture.hpp"
 
@@ -120,6 +121,7 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
 }
 
 int run_scene(const SceneArgs& a) {
+  pipeline::report_stale_spill_folders("scene");
   DatabaseFile file;
   std::string error;
   if (!pipeline::load_database(a.db_path, &file, &error)) {

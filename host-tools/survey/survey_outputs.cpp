@@ -39,9 +39,12 @@ std::string geojson(const Catalogue& c, const std::vector<TileResult>& done) {
 
 // The units of the outputs' coordinates (the survey CRS's; metres when unknown).
 std::string units_json(const host::AxisUnits& u) {
-  if (u.geographic) return "{\"horizontal\":\"degree\",\"horizontal_m\":null,\"vertical\":null,\"vertical_m\":null}";
-  return "{\"horizontal\":" + json_string(u.horizontal_name) + ",\"horizontal_m\":" + json_number(u.horizontal, 15) +
-         ",\"vertical\":" + json_string(u.vertical_name) + ",\"vertical_m\":" + json_number(u.vertical, 15) + "}";
+  if (u.geographic)
+    return "{\"horizontal\":\"degree\",\"horizontal_m\":null,\"vertical\":null,\"vertical_m\":null}";
+  return "{\"horizontal\":" + json_string(u.horizontal_name) +
+         ",\"horizontal_m\":" + json_number(u.horizontal, 15) +
+         ",\"vertical\":" + json_string(u.vertical_name) + ",\"vertical_m\":" + json_number(u.vertical, 15) +
+         "}";
 }
 
 std::string models_json(const std::map<std::string, ModelCount>& models) {
@@ -94,8 +97,8 @@ std::string survey_json(const Catalogue& c, const std::vector<TileResult>& done,
   return "{\"version\":" + json_string(pipeline::version()) + ",\"database\":" + json_string(rep.database) +
          ",\"buffer_m\":" + json_number(rep.buffer) + ",\"jobs\":" + std::to_string(rep.jobs) +
          ",\"crs\":" + json_string(c.crs.describe()) + ",\"crs_units\":" + units_json(c.crs.units) +
-         ",\"geometry\":" + json_string(geometry_note(c)) +
-         ",\"notes\":[" + notes + "],\"tiles_total\":" + std::to_string(rep.tiles_total) +
+         ",\"geometry\":" + json_string(geometry_note(c)) + ",\"notes\":[" + notes +
+         "],\"tiles_total\":" + std::to_string(rep.tiles_total) +
          ",\"tiles_done\":" + std::to_string(done.size()) +
          ",\"tiles_resumed\":" + std::to_string(rep.tiles_resumed) +
          ",\"tiles_refused\":" + std::to_string(rep.refused.size()) +

@@ -14,8 +14,10 @@
 #include "pipeline/database_file.hpp"
 #include "pipeline/exit_codes.hpp"
 #include "pipeline/json_line.hpp"
+#include "pipeline/spill_folder.hpp"
 #include "pipeline/version.hpp"
 #include "survey/footprint.hpp"
+#include "survey/interrupt_cleanup.hpp"
 #include "survey/survey_progress.hpp"
 #include "survey/tile_run.hpp"
 
@@ -178,6 +180,8 @@ int finish_survey(const PreparedSurvey& s, const std::vector<Refusal>& failed, d
 
 int run_survey(const SurveyOptions& options, const std::vector<std::string>& args) {
   const auto t0 = std::chrono::steady_clock::now();
+  const InterruptCleanup cleanup("survey");  // before any worker thread
+  pipeline::report_stale_spill_folders("survey");
   PreparedSurvey s;
   std::string error;
   pipeline::DatabaseFile db;
@@ -188,8 +192,15 @@ int run_survey(const SurveyOptions& options, const std::vector<std::string>& arg
   std::vector<size_t> todo;
   for (size_t i = 0; i < s.tasks.size(); ++i)
     if (!s.done[i]) todo.push_back(i);
-  SurveyProgress progress(static_cast<uint32_t>(s.tasks.size()),
-                          static_cast<uint32_t>(s.tasks.size() - todo.size()), options.quiet);
+  std::string kept;
+  for (size_t i = 0; i < s.tasks.size(); ++i)
+    if (s.done[i]) kept += (kept.empty() ? "" : ", ") + s.tasks[i].tile.name;
+  if (!kept.empty())
+    std::fprintf(stderr, "spinhash survey: kept %zu tile%s a previous run finished: %s\n",
+                 s.tasks.size() - todo.size(), s.tasks.size() - todo.size() == 1 ? "" : "s", kept.c_str());
+  SurveyProgress progress(static_cast<uint32_t>(s.catalogue.tiles.size()),
+                          static_cast<uint32_t>(s.tasks.size() - todo.size()),
+                          static_cast<uint32_t>(s.refused.size()), options.quiet);
   std::vector<Refusal> failed;
   std::mutex failed_mutex;
   std::atomic<size_t> next{0};

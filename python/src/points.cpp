@@ -39,10 +39,11 @@ void warn_float32_precision(const std::vector<double>& xyz) {
     if (std::isfinite(v)) largest = std::max(largest, std::abs(v));
   if (largest < kFloat32WarnAbove) return;
   const double step = std::nextafter(static_cast<float>(largest), INFINITY) - static_cast<float>(largest);
-  const std::string message = "float32 points: coordinates up to " + metres_text(largest) +
-                              " are held only to steps of " + metres_text(step) +
-                              " (georeferenced coordinates need float64: read them with spinhash.read_cloud, or "
-                              "subtract an offset before converting to float32)";
+  const std::string message =
+      "float32 points: coordinates up to " + metres_text(largest) + " are held only to steps of " +
+      metres_text(step) +
+      " (georeferenced coordinates need float64: read them with spinhash.read_cloud, or "
+      "subtract an offset before converting to float32)";
   if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 2) != 0) throw py::error_already_set();
 }
 

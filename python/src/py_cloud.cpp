@@ -38,7 +38,8 @@ host::WorkCrs work_crs(const py::object& text) {
   std::string error;
   if (!host::crs_from_user(py::cast<std::string>(text), &w.crs, &error)) throw py::value_error(error);
   if (w.crs.units.geographic)
-    throw py::value_error(py::cast<std::string>(text) + " is in degrees: name a projected CRS (metres or feet)");
+    throw py::value_error(py::cast<std::string>(text) +
+                          " is in degrees: name a projected CRS (metres or feet)");
   w.named = true;
   return w;
 }
@@ -161,7 +162,8 @@ void bind_cloud(py::module_& m) {
         "is given). FileNotFoundError, or ValueError naming what is wrong with the file.");
   m.def("read_cloud_header", &read_cloud_header, py::arg("path"),
         "A cloud file's header without its points (LAS/LAZ: format, point_count, bounds, las_point_format, "
-        "las_version, crs {name, epsg, vertical_epsg, wkt, definition (what PROJ reads), source, warnings, units "
+        "las_version, crs {name, epsg, vertical_epsg, wkt, definition (what PROJ reads), source, warnings, "
+        "units "
         "(x y, z names), metres_per_unit (x y, z; None "
         "for degrees), unit_notes}). PLY and text are read to "
         "count.");

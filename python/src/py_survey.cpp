@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "cloud/crs_resolve.hpp"
 #include "cloud/point_source.hpp"
 #include "pipeline/exit_codes.hpp"
+#include "pipeline/spill_folder.hpp"
 #include "py_database.hpp"
 #include "spinhash/limits.hpp"
 #include "survey/survey_runner.hpp"
@@ -98,9 +100,11 @@ std::unique_ptr<PySurvey> prepare(const std::string& db_path, const std::vector<
     std::string error;
     if (!host::crs_from_user(work_crs, &o.work.crs, &error)) throw py::value_error("work_crs: " + error);
     if (o.work.crs.units.geographic)
-      throw py::value_error("work_crs: " + work_crs + " is in degrees: name a projected CRS (metres or feet)");
+      throw py::value_error("work_crs: " + work_crs +
+                            " is in degrees: name a projected CRS (metres or feet)");
     o.work.named = true;
   }
+  pipeline::report_stale_spill_folders("survey");  // what killed workers on this machine left
   survey::PreparedSurvey s;
   std::string error;
   if (!survey::prepare_survey(o, tiles, &s, &error)) throw py::value_error("survey: " + error);
@@ -111,6 +115,8 @@ std::string run_task(const std::shared_ptr<PyDatabase>& db, const std::string& t
                      uint32_t max_objects) {
   if (!db) throw py::type_error("survey_run_task needs a spinhash.Database");
   const SceneConfig scene = survey_scene(top_n, max_objects);
+  static std::once_flag swept;  // a worker's first task: what killed workers of this machine left
+  std::call_once(swept, [] { pipeline::remove_stale_spill_folders(); });
   survey::SurveyTask task;
   std::string error;
   if (!survey::parse_task_text(task_text, &task, &error)) throw py::value_error("survey task: " + error);
@@ -133,7 +139,8 @@ void bind_survey(py::module_& m) {
       .def("finish", &PySurvey::finish, py::arg("failed"), py::arg("workers") = 0u,
            "writes the outputs from the stored results; the exit status of `spinhash survey`")
       .def_property_readonly("tiles", &PySurvey::tiles)
-      .def_property_readonly("tiles_planned", &PySurvey::tiles_planned, "tiles with a task (readable headers)")
+      .def_property_readonly("tiles_planned", &PySurvey::tiles_planned,
+                             "tiles with a task (readable headers)")
       .def_property_readonly("kept", &PySurvey::kept, "tiles a previous run finished, kept (resume)")
       .def_property_readonly("crs", &PySurvey::crs, "the tiles' PROJ definition ('' when unknown)")
       .def_property_readonly("refused", &PySurvey::refused,
