@@ -145,10 +145,16 @@ bool write_survey_outputs(const std::string& dir, const Catalogue& catalogue,
   std::string lines;
   for (const TileResult& r : done)
     for (const std::string& l : r.lines) lines += l + "\n";
-  const std::string geo = dir + "/detections.geojson";
+  std::vector<std::string> features;
+  std::vector<Column> columns;
+  for (const TileResult& r : done) {
+    features.insert(features.end(), r.features.begin(), r.features.end());
+    if (columns.empty()) columns = r.columns;
+  }
   return write_text(dir + "/detections.jsonl", lines, error) &&
-         write_text(geo, geojson(catalogue, done), error) &&
-         write_geopackage(geo, dir + "/detections.gpkg", catalogue.crs.proj_definition(), error) &&
+         write_text(dir + "/detections.geojson", geojson(catalogue, done), error) &&
+         write_geopackage(features, columns, dir + "/detections.gpkg", catalogue.crs.proj_definition(),
+                          error) &&
          write_overview(dir + "/overview.png", catalogue, done, error) &&
          write_text(dir + "/survey.json", survey_json(catalogue, done, report), error);
 }

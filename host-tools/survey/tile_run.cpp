@@ -41,6 +41,32 @@ std::string feature_json(const std::vector<pipeline::JsonMember>& members, const
          "]},\"properties\":" + pipeline::members_json(members) + "}";
 }
 
+// A detection with every member set and every real number fractional, so
+// that its members' JSON shows each one's type.
+SceneObject typed_example(RankedModel* ranked) {
+  ranked->score = 0.5f;
+  ranked->has_pose = true;
+  SceneObject o{};
+  o.kind = ObjectKind::kVehicleCandidate;
+  o.ranking = ranked;
+  o.ranking_count = 1;
+  o.class_count = 1;
+  o.classes[0].score = 0.5f;
+  o.ground_gap = 0.25f;
+  o.heading_deg = 12.5f;
+  o.points = 7;
+  o.group_size = 1;
+  for (int a = 0; a < 3; ++a) o.center[a] = 0.5, o.extent[a] = 1.5f;
+  return o;
+}
+
+ColumnType type_of(const std::string& raw) {
+  if (raw.empty() || raw[0] == '"') return ColumnType::kString;
+  if (raw[0] == '[' || raw[0] == '{') return ColumnType::kJson;
+  if (raw == "true" || raw == "false") return ColumnType::kBoolean;
+  return raw.find_first_of(".eE") == std::string::npos ? ColumnType::kInteger : ColumnType::kReal;
+}
+
 void count(TileResult& r, const Database& db, const SceneObject& o) {
   ++r.kinds[object_kind_name(o.kind)];
   if (o.kind != ObjectKind::kVehicleCandidate || o.ranking_count == 0) return;
@@ -55,6 +81,9 @@ TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfi
   const auto t0 = std::chrono::steady_clock::now();
   TileResult r;
   r.index = task.index, r.name = task.tile.name, r.path = task.tile.path, r.key = task.key;
+  RankedModel ranked{};
+  for (const pipeline::JsonMember& m : survey_members(task, 0, db, typed_example(&ranked)))
+    r.columns.push_back({m.key, type_of(m.value)});
   std::unique_ptr<ToWgs84> to_wgs84 = task.crs.empty() ? nullptr : std::make_unique<ToWgs84>(task.crs);
   BufferedSource source(task);
   pipeline::TileStreamOptions options;

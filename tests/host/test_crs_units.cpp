@@ -112,7 +112,7 @@ TEST_CASE("crs units: feet, US survey feet, metres and degrees from EPSG codes, 
   CHECK(axis_units(Crs{}).notes.empty());
   const Crs unread = resolved(epsg(999999));
   CHECK(unread.units.metric());
-  CHECK_FALSE(unread.known());  // PROJ does not read it: the file's own coordinates
+  CHECK_FALSE(unread.known());        // PROJ does not read it: the file's own coordinates
   REQUIRE(!unread.warnings.empty());  // and says it could not read it
   CHECK(contains(unread.warnings.back(), "PROJ does not read"));
 }

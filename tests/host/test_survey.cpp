@@ -335,7 +335,7 @@ TEST_CASE(
   CHECK(contains(f, "\"crs\":\"EPSG:32633\""));
   const std::string geo = s.dir.file("crs.geojson"), gpkg = s.dir.file("crs.gpkg");
   write_bytes(geo, "{\"type\":\"FeatureCollection\",\"features\":[" + f + "]}");
-  REQUIRE_MESSAGE(survey::write_geopackage(geo, gpkg, "EPSG:32633", &error), error);
+  REQUIRE_MESSAGE(survey::write_geopackage({f}, r.columns, gpkg, "EPSG:32633", &error), error);
   if (std::system("command -v ogrinfo > /dev/null") == 0)
     CHECK(std::system(
               ("ogrinfo -so " + shell_quoted(gpkg) + " detections | grep -q 'UTM zone 33N'").c_str()) == 0);
