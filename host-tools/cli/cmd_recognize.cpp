@@ -130,7 +130,7 @@ void add_recognize_command(CLI::App& app, int* exit_code) {
   CLI::App* cmd = app.add_subcommand(
       "recognize",
       "recognise point clouds (LAS, LAZ, COPC, PLY or x y z text; '-': stdin) against a database");
-  cmd->add_option("--db", a->db_path, "database file")->required();
+  cmd->add_option("--db", a->db_path, "database file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--top", a->top, "models listed per query (default: all that got a score)");
   cmd->add_option(
          "--overlay-out", a->overlay_out,

@@ -82,10 +82,8 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
     confident += o.confident ? 1u : 0u;
   };
   pipeline::TileStreamResult r;
-  bool opened = false;
   try {
     std::unique_ptr<host::MetricSource> source = host::open_metric_source(path, a.work);
-    opened = true;
     const host::ToMetres& to_metres = source->to_metres();
     if (to_metres.work_crs().known()) crs = to_metres.work_crs().describe();
     units = to_metres.units();
@@ -93,8 +91,8 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
       std::fprintf(stderr, "spinhash scene: %s: %s\n", name.c_str(), note.c_str());
     r = pipeline::stream_tile(file.db, *source, options, print);
   } catch (const std::exception& e) {
-    std::fflush(stdout);
-    if (!opened) std::printf("%s\n", pipeline::unreadable_json("tile", name, e.what()).c_str());
+    std::fflush(stdout);  // the objects already reported stay; the tile's status line follows them
+    std::printf("%s\n", pipeline::unreadable_json("tile", name, e.what()).c_str());
     std::fflush(stdout);
     std::fprintf(stderr, "spinhash scene: %s\n", e.what());  // the reader names the file
     return kExitCheckFailed;
@@ -147,7 +145,7 @@ void add_scene_command(CLI::App& app, int* exit_code) {
   CLI::App* cmd = app.add_subcommand(
       "scene",
       "find and recognise every vehicle in airborne lidar tiles (LAS, LAZ, COPC, PLY or x y z text, z up)");
-  cmd->add_option("--db", a->db_path, "database file")->required();
+  cmd->add_option("--db", a->db_path, "database file")->required()->check(CLI::ExistingFile);
   pipeline::add_scene_flags(cmd, &a->config);  // --top, --window-core, --max-window-points, ...
   cmd->add_option("--picture-out", a->picture_dir,
                   "folder for a top-down PNG per tile: objects outlined and labelled (green: confident)")

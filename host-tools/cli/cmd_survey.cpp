@@ -18,7 +18,7 @@ void add_survey_command(CLI::App& app, int* exit_code) {
   CLI::App* cmd = app.add_subcommand(
       "survey",
       "every vehicle of a survey of adjacent tiles, on all cores, with GIS outputs (docs/survey.md)");
-  cmd->add_option("--db", o->db_path, "database file")->required();
+  cmd->add_option("--db", o->db_path, "database file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--out", o->out_dir, "output folder (made if missing)")->required();
   cmd->add_option("--jobs", o->jobs, "tiles processed at once (default: every core)")
       ->check(CLI::Range(1u, 1024u));
@@ -30,7 +30,9 @@ void add_survey_command(CLI::App& app, int* exit_code) {
   cmd->add_flag("--quiet", o->quiet, "no progress line");
   add_work_crs_option(cmd, &o->work);
   pipeline::add_scene_flags(cmd, &o->scene, {"--top", "--max-objects"});
-  cmd->add_option("tiles", *tiles, "tiles (LAS, LAZ, COPC, PLY, x y z text) or folders of them")->required();
+  cmd->add_option("tiles", *tiles, "tiles (LAS, LAZ, COPC, PLY, x y z text) or folders of them")
+      ->required()
+      ->check(CLI::ExistingPath);  // planned before any runs: a missing one is a usage error
   cmd->callback([o, tiles, exit_code]() { *exit_code = survey::run_survey(*o, *tiles); });
 }
 

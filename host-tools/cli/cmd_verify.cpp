@@ -146,7 +146,7 @@ int run_verify(const VerifyArgs& a) {
 void add_verify_command(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<VerifyArgs>();
   CLI::App* cmd = app.add_subcommand("verify", "check a database's integrity and self-recognition");
-  cmd->add_option("database", a->db_path, "database file")->required();
+  cmd->add_option("database", a->db_path, "database file")->required()->check(CLI::ExistingFile);
   cmd->add_option("meshes", a->meshes, "the model meshes, to recognise each from its own scans");
   cmd->add_option("--queries", a->queries, "scans per model")
       ->check(CLI::Range(1u, 100u))

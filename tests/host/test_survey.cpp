@@ -254,12 +254,12 @@ TEST_CASE("survey: bad input has a clear message and exit status") {
   const CliRun missing = run_spinhash(s.dir, "survey --quiet --db " + shell_quoted(s.db) + " --out " +
                                                  shell_quoted(s.dir.file("bad")) + " " +
                                                  shell_quoted(s.dir.file("no-such-tile.las")));
-  CHECK(missing.exit_code == 1);
-  CHECK(contains(missing.err, "no such file"));
+  CHECK(missing.exit_code == 2);  // a usage error: docs/cli.md's rule
+  CHECK(contains(missing.err, "no-such-tile.las"));
   const CliRun no_db =
       run_spinhash(s.dir, "survey --quiet --db " + shell_quoted(s.dir.file("none.shdb")) + " --out " +
                               shell_quoted(s.dir.file("bad")) + " " + shell_quoted(s.tiles));
-  CHECK(no_db.exit_code == 1);
+  CHECK(no_db.exit_code == 2);
   CHECK(run_spinhash(s.dir, "survey --db x --out y --jobs 0 z").exit_code == 2);
   // A fresh run clears only its own stored results: --out over the folder
   // that holds the input tiles (DIR/tiles) leaves them alone.

@@ -94,3 +94,15 @@ def test_the_class_level_is_documented_and_every_class_named():
     listed = re.findall(r'C\((\d+), \w+, "([a-z]+)"', header)
     assert [int(i) for i, _ in listed] == list(range(len(listed)))
     assert spinhash.CLASS_NAMES == tuple(name for _, name in listed)
+
+
+def test_the_readme_python_snippet_reads_files_the_readme_makes():
+    readme = (SOURCE_DIR / "README.md").read_text()
+    snippet = readme[readme.index("From Python"):]
+    snippet = re.findall(r"```python\n(.*?)```", snippet, re.S)[0]
+    read = re.findall(r"(?:read_cloud|Database)\(\"([^\"]+)\"\)", snippet)
+    assert read, "the snippet reads no file"
+    made = set(re.findall(r"\$ build/host-tools/spinhash \w+[^\n]*?-o (\S+)", readme))
+    for name in read:
+        assert name in made, f"README's Python snippet reads {name}, which no README command makes"
+
