@@ -55,3 +55,18 @@ def test_broken_laz_raises_naming_the_problem():
         spinhash.read_cloud(LAZ / "broken" / "broken_compressor.laz")
     with pytest.raises(ValueError, match="coder 15"):
         list(spinhash.iter_cloud(LAZ / "broken" / "broken_coder.laz"))
+
+
+def test_units_and_reprojection_through_the_reading_door():
+    autzen = LAZ / "twins" / "autzen_trim.laz"
+    crs = spinhash.read_cloud_header(autzen)["crs"]
+    assert crs["name"] == "NAD_1983_HARN_Lambert_Conformal_Conic" and crs["units"] == ("foot", "foot")
+    feet, metres = spinhash.read_cloud(autzen), spinhash.read_cloud(autzen, metres=True)
+    np.testing.assert_allclose(metres, feet * 0.3048, rtol=1e-12)
+    with pytest.raises(ValueError, match="degrees"):
+        spinhash.read_cloud(LAZ / "crs" / "epsg_4326.las", metres=True)
+    utm = spinhash.read_cloud(LAZ / "crs" / "epsg_4326.las", work_crs="EPSG:32615")
+    assert utm[:, 0].min() == pytest.approx(339337, abs=50) and utm[:, 1].min() == pytest.approx(3434860, abs=100)
+    chunks = np.concatenate(list(spinhash.iter_cloud(autzen, 4096, metres=True)))
+    np.testing.assert_array_equal(chunks, metres)
+
