@@ -18,7 +18,8 @@ import subprocess
 import sys
 import tempfile
 
-STATUS = re.compile(r"spinhash scene: [^:]+: (\w+); CRS (.*?); points (\d+)")
+STATUS = re.compile(r"spinhash scene: [^:\n]+: ([^;\n]+); CRS (.*?); points (\d+)")
+UNKNOWN = "unknown (the file's own coordinates, taken as metres)"
 
 
 def cloud_files(data):
@@ -40,9 +41,11 @@ def scene(spinhash, db, path):
     lines = [json.loads(l) for l in r.stdout.splitlines() if l.strip()]
     m = STATUS.search(r.stderr)
     if m:
-        return {"exit": r.returncode, "crs": m.group(2), "objects": len(lines), "note": ""}
+        crs = "unknown (taken as metres)" if m.group(2) == UNKNOWN else m.group(2)
+        note = "" if m.group(1) == "ok" else m.group(1)
+        return {"exit": r.returncode, "crs": crs, "objects": len(lines), "note": note}
     why = lines[0].get("error", "") if lines else r.stderr.strip().splitlines()[0] if r.stderr.strip() else ""
-    return {"exit": r.returncode, "crs": "", "objects": 0, "note": short(why)}
+    return {"exit": r.returncode, "crs": "", "objects": 0, "note": short(why.replace(path + ": ", ""))}
 
 
 def survey(spinhash, db, path):
@@ -60,6 +63,8 @@ def survey(spinhash, db, path):
     if units.get("vertical") and units.get("vertical") != unit_text:
         unit_text += "; z " + units["vertical"]
     note = "; ".join(r_["reason"] for r_ in s["refused"]) if s["refused"] else ""
+    if not note and any(t["status"] != "ok" for t in s["tiles"]):
+        note = ", ".join(sorted({t["status"] for t in s["tiles"]}))
     return {"exit": r.returncode, "crs": s["crs"], "units": unit_text, "objects": sum(s["kinds"].values()),
             "note": short(note)}
 
@@ -91,7 +96,7 @@ def main():
                 "coordinates, taken as metres (\"unknown\"); files in degrees are refused with how to\n"
                 "reproject them (`--work-crs`); unreadable files are refused with what is wrong.\n\n")
         f.write(f"{len(rows)} files.\n\n")
-        f.write("| file | scene: CRS (units) | exit | objects | survey: CRS | units | exit | objects | why refused |\n")
+        f.write("| file | scene: CRS (units) | exit | objects | survey: CRS | units | exit | objects | status, or why refused |\n")
         f.write("|---|---|---|---|---|---|---|---|---|\n")
         for rel, sc, sv in rows:
             why = sc["note"] or sv["note"]

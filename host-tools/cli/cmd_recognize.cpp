@@ -11,16 +11,16 @@
 #include "cli/json_line.hpp"
 #include "cli/result_json.hpp"
 #include "cloud/metric_source.hpp"
+#include "flags/recognizer_flags.hpp"
 #include "pipeline/answer_overlay.hpp"
 #include "pipeline/database_file.hpp"
 #include "pipeline/json_line.hpp"
 #include "pipeline/object_units.hpp"
 #include "pipeline/recognition_session.hpp"
-#include "pipeline/recognizer_flags.hpp"
 
 namespace spinhash::cli {
 
-using pipeline::add_recognizer_flags;
+using flags::add_recognizer_flags;
 using pipeline::DatabaseFile;
 using pipeline::load_database;
 using pipeline::RecognitionSession;

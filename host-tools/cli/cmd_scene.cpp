@@ -9,6 +9,8 @@
 
 #include "cli/commands.hpp"
 #include "cloud/metric_source.hpp"
+#include "flags/recognizer_flags.hpp"
+#include "flags/scene_flags.hpp"
 #include "pipeline/database_file.hpp"
 #include "pipeline/json_line.hpp"
 #include "pipeline/object_box.hpp"
@@ -16,8 +18,6 @@
 #include "pipeline/object_units.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/recognition_session.hpp"
-#include "pipeline/recognizer_flags.hpp"
-#include "pipeline/scene_flags.hpp"
 #include "pipeline/scene_session.hpp"
 #include "pipeline/spill_folder.hpp"
 #include "pipeline/tile_stream.hpp"
@@ -146,13 +146,13 @@ void add_scene_command(CLI::App& app, int* exit_code) {
       "scene",
       "find and recognise every vehicle in airborne lidar tiles (LAS, LAZ, COPC, PLY or x y z text, z up)");
   cmd->add_option("--db", a->db_path, "database file")->required()->check(CLI::ExistingFile);
-  pipeline::add_scene_flags(cmd, &a->config);  // --top, --window-core, --max-window-points, ...
+  flags::add_scene_flags(cmd, &a->config);  // --top, --window-core, --max-window-points, ...
   cmd->add_option("--picture-out", a->picture_dir,
                   "folder for a top-down PNG per tile: objects outlined and labelled (green: confident)")
       ->check(CLI::ExistingDirectory);
   add_work_crs_option(cmd, &a->work);
   cmd->add_option("tiles", a->tiles, "point cloud files ('-': stdin)")->required();
-  pipeline::add_recognizer_flags(cmd, &a->config.recognizer);
+  flags::add_recognizer_flags(cmd, &a->config.recognizer);
   cmd->callback([a, exit_code]() {
     refuse_repeated_stdin(a->tiles);
     *exit_code = run_scene(*a);

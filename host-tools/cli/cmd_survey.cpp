@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "pipeline/scene_flags.hpp"
+#include "flags/scene_flags.hpp"
 #include "survey/survey_runner.hpp"
 
 namespace spinhash::cli {
@@ -29,7 +29,7 @@ void add_survey_command(CLI::App& app, int* exit_code) {
   cmd->add_flag("--resume", o->resume, "keep the tiles a previous run in DIR finished (same inputs)");
   cmd->add_flag("--quiet", o->quiet, "no progress line");
   add_work_crs_option(cmd, &o->work);
-  pipeline::add_scene_flags(cmd, &o->scene, {"--top", "--max-objects"});
+  flags::add_scene_flags(cmd, &o->scene, {"--top", "--max-objects"});
   cmd->add_option("tiles", *tiles, "tiles (LAS, LAZ, COPC, PLY, x y z text) or folders of them")
       ->required()
       ->check(CLI::ExistingPath);  // planned before any runs: a missing one is a usage error

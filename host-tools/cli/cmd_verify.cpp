@@ -8,16 +8,17 @@
 #include "cli/json_line.hpp"
 #include "cli/report_keys.hpp"
 #include "cli/result_json.hpp"
+#include "flags/recognizer_flags.hpp"
 #include "pipeline/database_file.hpp"
+#include "pipeline/mode_name.hpp"
 #include "pipeline/model_sources.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/recognition_session.hpp"
-#include "pipeline/recognizer_flags.hpp"
 #include "scan/scan_simulator.hpp"
 
 namespace spinhash::cli {
 
-using pipeline::add_recognizer_flags;
+using flags::add_recognizer_flags;
 using pipeline::DatabaseFile;
 using pipeline::load_database;
 using pipeline::load_model_meshes;
