@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
-#include <sstream>
 #include <thread>
 
 #include "blob/file_io.hpp"
@@ -60,20 +59,14 @@ std::string settings_key(const SurveyOptions& o) {
          ";work_crs=" + escape_line(o.work.named ? o.work.crs.proj_definition() : "");
 }
 
-bool read_text(const std::string& path, std::string* text) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream s;
-  s << in.rdbuf();
-  *text = s.str();
-  return true;
-}
+// A stored result is a few lines per object: far below this.
+constexpr uint64_t kMaxResultBytes = uint64_t{1} << 30;
 
 // The stored result of a task, when it exists and was made from the same inputs.
 bool load_result(const std::string& out_dir, const SurveyTask& task, TileResult* r) {
   std::string text, error;
-  return read_text(result_path(out_dir, task.tile.name), &text) && parse_result_text(text, r, &error) &&
-         r->key == task.key;
+  return host::read_file(result_path(out_dir, task.tile.name), kMaxResultBytes, &text, &error) &&
+         parse_result_text(text, r, &error) && r->key == task.key;
 }
 
 std::string manifest_json(const PreparedSurvey& s, const std::vector<bool>& done) {
