@@ -53,7 +53,7 @@ if command -v clang-format >/dev/null; then
   if ! clang-format --dry-run --Werror $sources 2>/tmp/check_layout_format.txt; then
     echo "check_layout: files not laid out as .clang-format says (clang-format -i FILE):"
     grep -oE '^[^ :]+\.(c|h|cpp|hpp):[0-9]+:[0-9]+: (error|warning)' /tmp/check_layout_format.txt |
-      cut -d: -f1 | sort -u | head -40
+      cut -d: -f1 | sort -u | sed -n 1,40p
     status=1
   fi
 else
