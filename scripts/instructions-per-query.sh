@@ -16,12 +16,12 @@
 # same default config) under qemu-user with scripts/qemu/insn_count.c, a TCG
 # plugin that counts the instructions of the recognition (Debian ships no
 # libinsn.so); it must rank the same model first. Writes DIR/instructions.csv
-# and prints a Markdown table of the means.
+# (DIR: out/instructions unless given; git ignores out/) and prints a Markdown table of the means.
 set -euo pipefail
 
 usage() { sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
-sizes="56,1000" queries=3 modes="bran,sran,sind" sran_large=1 out="instructions-out"
+sizes="56,1000" queries=3 modes="bran,sran,sind" sran_large=1 out="out/instructions"
 sran_large_from=100
 noise=0.05 spacing=0.05
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -102,7 +102,7 @@ for size in "${size_list[@]}"; do
     for ((q = 0; q < n; q++)); do
       json=$("$spinhash" recognize --db "$db" --mode "$mode" --top 1 "$out/q$q.ply")
       ms=$(grep -o '"time_ms":[0-9.e+]*' <<< "$json" | cut -d: -f2)
-      hyp=$(grep -o '"hypotheses":[0-9]*' <<< "$json" | head -1 | cut -d: -f2)
+      hyp=$(grep -o '"hypotheses":[0-9]*' <<< "$json" | sed -n 1p | cut -d: -f2)
       top=$(grep -o '"ranking":\[{"model":"[^"]*"' <<< "$json" | sed 's/.*"model":"//; s/"$//')
       cg="$out/callgrind.$size.$mode.$q"
       echo "instructions-per-query: $size models, $mode, query $q (callgrind)" >&2

@@ -11,7 +11,7 @@
 # Stages: features (FeatureExtractor::extract), lsh (LshSearcher::search),
 # verification (verify_pose, hypotheses and finalisation alike, with its
 # nearest-feature lookups), rest (the total less those: doublets, poses,
-# ranking, refinement's least squares). Writes DIR/stages.csv and prints,
+# ranking, refinement's least squares). Writes DIR/stages.csv (out/stages) and prints,
 # per size and stage, the median and the worst query (Markdown). --check
 # compares them with the `stage.<size>.<stage>.median` and `.worst` rows of
 # docs/budgets.md (scripts/budgets.sh) and fails over budget. --reuse keeps
@@ -20,7 +20,7 @@ set -euo pipefail
 
 usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
-sizes="17,56,1000" queries=3 spacings="0.05,0.10" out="stages-out" jobs=2 check=0 reuse=""
+sizes="17,56,1000" queries=3 spacings="0.05,0.10" out="out/stages" jobs=2 check=0 reuse=""
 noise=0.05
 root=$(cd "$(dirname "$0")/.." && pwd)
 spinhash="${SPINHASH:-}"
@@ -63,7 +63,7 @@ count_stages() {  # DB PLY CGFILE
   local total top
   total=$(awk '/^(summary|totals):/ {print $2; exit}' "$cg")
   callgrind_annotate --inclusive=yes --threshold=100 "$cg" 2>/dev/null > "$cg.txt"
-  incl() { grep -F "$1" "$cg.txt" | head -1 | awk '{gsub(",", "", $1); print $1 + 0}'; }
+  incl() { grep -F "$1" "$cg.txt" | sed -n 1p | awk '{gsub(",", "", $1); print $1 + 0}'; }
   top=$(grep -o '"ranking":\[{"model":"[^"]*"' "$cg.json" | sed 's/.*"model":"//; s/"$//')
   echo "$total $(incl 'FeatureExtractor::extract(') $(incl 'LshSearcher::search(') $(incl 'spinhash::verify_pose(') ${top:-none}"
 }

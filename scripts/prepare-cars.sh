@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# An independent test world of real car meshes (issue 28), never tuned on:
+# An independent test world of real car meshes, never tuned on:
 # downloads Debian's torcs-data (333 MB: 17 TORCS car bodies, AC3D) and
 # trigger-rally-data (119 MB: 3 distinct Trigger Rally bodies, OBJ) with
 # apt-get download (game content under the GPL and other free licences:
@@ -33,7 +33,7 @@ unpack() {
   fi
   ls "$work/${pkg}"_*.deb >/dev/null 2>&1 || (cd "$work" && apt-get download "$pkg" >&2)
   rm -rf "$dir" && mkdir -p "$dir"
-  dpkg-deb --fsys-tarfile "$(ls "$work/${pkg}"_*.deb | head -n 1)" | tar -x -C "$dir" --wildcards "$pattern"
+  dpkg-deb --fsys-tarfile "$(ls "$work/${pkg}"_*.deb | sed -n 1p)" | tar -x -C "$dir" --wildcards "$pattern"
   echo "$dir"
 }
 torcs=$(unpack torcs-data torcs './usr/share/games/torcs/cars/*')

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "spinhash/vehicle_group_standin.hpp"
+#include "spinhash/vehicle_class.hpp"
 
 namespace spinhash {
 namespace {
@@ -26,7 +26,7 @@ float shape_factor(const Result& r, const RecognizerConfig& cfg) {
 }
 
 uint32_t group_of_class(uint32_t vehicle_class) {
-  return static_cast<uint32_t>(vehicle_group_of(static_cast<VehicleClass>(vehicle_class)));
+  return static_cast<uint32_t>(vehicle_group_of(vehicle_class));
 }
 
 float lead_per_feature(float first, float second, uint32_t features) {
@@ -136,17 +136,25 @@ bool level_confident(const Database& db, AnswerPass pass, AnswerLevel level, flo
                         : prior_confident(level, evidence, density, cfg);
 }
 
-AnswerLevel answer_level(const Database& db, const Result& r) {
-  const auto confident = [&r](AnswerLevel l) { return r.levels[level_index(l)].confident; };
+AnswerLevel answer_level(const Database& db, const LevelAnswer* levels, const AnswerLeaders& first) {
+  const auto confident = [levels](AnswerLevel l) { return levels[level_index(l)].confident; };
   if (!confident(AnswerLevel::kVehicle)) return AnswerLevel::kNone;
-  if (!confident(AnswerLevel::kGroup) || r.group_ranking_count == 0u) return AnswerLevel::kVehicle;
-  if (!confident(AnswerLevel::kClass) || r.class_ranking_count == 0u ||
-      group_of_class(r.class_ranking[0].vehicle_class) != r.group_ranking[0].group)
+  if (!confident(AnswerLevel::kGroup) || first.group == nullptr) return AnswerLevel::kVehicle;
+  if (!confident(AnswerLevel::kClass) || first.vehicle_class == nullptr ||
+      group_of_class(first.vehicle_class->vehicle_class) != first.group->group)
     return AnswerLevel::kGroup;
-  if (!confident(AnswerLevel::kModel) || r.ranking_count == 0u ||
-      db.model(r.ranking[0].model).vehicle_class != r.class_ranking[0].vehicle_class)
+  if (!confident(AnswerLevel::kModel) || first.model == nullptr ||
+      db.model(first.model->model).vehicle_class != first.vehicle_class->vehicle_class)
     return AnswerLevel::kClass;
   return AnswerLevel::kModel;
+}
+
+AnswerLevel answer_level(const Database& db, const Result& r) {
+  AnswerLeaders first;
+  first.model = r.ranking_count > 0u ? r.ranking : nullptr;
+  first.vehicle_class = r.class_ranking_count > 0u ? r.class_ranking : nullptr;
+  first.group = r.group_ranking_count > 0u ? r.group_ranking : nullptr;
+  return answer_level(db, r.levels, first);
 }
 
 void assess_levels(const SearchContext& ctx, const FeatureSet& fs, AnswerPass pass, Result& r) {

@@ -84,9 +84,18 @@ bool prior_confident(AnswerLevel level, float evidence, float density, const Rec
 bool level_confident(const Database& db, AnswerPass pass, AnswerLevel level, float evidence, float density,
                      const RecognizerConfig& cfg);
 
-// The most specific confident level whose coarser levels are all confident
-// and consistent: the first model is of the first class, which is of the
-// first group.
+// The first entries of an answer's rankings (null: that ranking is empty).
+struct AnswerLeaders {
+  const RankedModel* model = nullptr;
+  const RankedClass* vehicle_class = nullptr;
+  const RankedGroup* group = nullptr;
+};
+
+// The most specific confident level (`levels`, kCalibratedLevels of them)
+// whose coarser levels are all confident and consistent: the first model is
+// of the first class, which is of the first group. A scene, which adds its
+// own size tests to the model and class flags, asks it again with them.
+AnswerLevel answer_level(const Database& db, const LevelAnswer* levels, const AnswerLeaders& first);
 AnswerLevel answer_level(const Database& db, const Result& r);
 
 // Every level of a ranked result (after its class ranking): the group

@@ -8,7 +8,7 @@
 #include "spinhash/features.hpp"
 #include "spinhash/internal/lsh_search.hpp"
 #include "spinhash/recognizer.hpp"
-#include "spinhash/vehicle_group_standin.hpp"
+#include "spinhash/vehicle_class.hpp"
 #include "util/rng.hpp"
 
 namespace spinhash {

@@ -11,7 +11,7 @@
 #include "db/leave_one_out.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/recognition_session.hpp"
-#include "spinhash/vehicle_group_standin.hpp"
+#include "spinhash/vehicle_class.hpp"
 
 namespace spinhash::calib {
 namespace {
@@ -19,10 +19,6 @@ namespace {
 constexpr uint32_t kMaxScansPerModel = 32;
 constexpr uint32_t kMinScansPerModel = 2;
 constexpr uint32_t kMinClutterScans = 32, kMaxClutterScans = 256;
-
-uint32_t group_of(uint32_t vehicle_class) {
-  return static_cast<uint32_t>(vehicle_group_of(static_cast<VehicleClass>(vehicle_class)));
-}
 
 // What every thread shares, read-only but for the progress.
 struct Shared {
@@ -176,7 +172,8 @@ void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class,
   right[level_index(AnswerLevel::kVehicle)] = true;
   if (r.status != Status::kOk) return;
   if (r.group_ranking_count > 0u)
-    right[level_index(AnswerLevel::kGroup)] = r.group_ranking[0].group == group_of(vehicle_class);
+    right[level_index(AnswerLevel::kGroup)] =
+        r.group_ranking[0].group == static_cast<uint32_t>(vehicle_group_of(vehicle_class));
   if (r.class_ranking_count > 0u)
     right[level_index(AnswerLevel::kClass)] = r.class_ranking[0].vehicle_class == vehicle_class;
   if (r.ranking_count > 0u && model >= 0)

@@ -36,9 +36,10 @@ constexpr const char* kField = "nearest_field";  // object: cell, reach, slots, 
 constexpr const char* kReach = "reach";
 constexpr const char* kSlots = "slots";
 constexpr const char* kEntries = "entries";
-constexpr const char* kModelList = "model_list";  // [{name, class, features, extent}]
+constexpr const char* kModelList = "model_list";  // [{name, class, group, features, extent}]
 constexpr const char* kName = "name";
 constexpr const char* kClass = "class";  // the model's vehicle class (vehicle_classes.h)
+constexpr const char* kGroup = "group";  // its class's group (vehicle_classes.h)
 constexpr const char* kExtent = "extent";
 // object: target_precision, scans_per_model, models_left_out, clutter_scans, seed, bands, passes
 constexpr const char* kCalibration = "calibration";
@@ -94,6 +95,7 @@ constexpr const char* kAll[] = {kFormat,
                                 kModelList,
                                 kName,
                                 kClass,
+                                kGroup,
                                 kExtent,
                                 kCalibration,
                                 kTargetPrecision,

@@ -22,6 +22,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "spinhash/answer_levels.h"
 #include "spinhash/config_fields.h"
 #include "spinhash/status_list.h"
 #include "spinhash/vehicle_classes.h"
@@ -95,9 +96,22 @@ typedef struct spinhash_result {
    * min_margin x sqrt(features) on enough evidence (docs/api.md). */
   uint32_t class_ranking_count;
   uint32_t class_confident;
+  /* The answer levels (SPINHASH_ANSWER_LEVELS, answer_levels.h): per
+   * calibrated level, vehicle .. model at index id - 1, its flag (the
+   * database's calibrated threshold at the scan's density; the model
+   * level's is `confident`, the class level's `class_confident`) and its
+   * evidence (-infinity when a prerequisite of the level failed); `level`,
+   * the id of the most specific confident level whose coarser levels are
+   * confident and consistent (0: none; spinhash_level_name). The groups of
+   * the ranked models, best first (spinhash_result_group). */
+  uint32_t level_confident[SPINHASH_CALIBRATED_LEVELS];
+  float level_evidence[SPINHASH_CALIBRATED_LEVELS];
+  uint32_t level;
+  uint32_t group_ranking_count;
   spinhash_stats stats;
   const void* ranking_;               /* private */
   const void* class_ranking_;         /* private */
+  const void* group_ranking_;         /* private */
   const spinhash_database* database_; /* private: for model names */
 } spinhash_result;
 
@@ -120,6 +134,14 @@ typedef struct spinhash_ranked_class {
   uint32_t model;         /* that model */
   const char* name;       /* the class's name, e.g. "pickup" */
 } spinhash_ranked_class;
+
+/* One ranked vehicle group: scored by its best model. */
+typedef struct spinhash_ranked_group {
+  uint32_t group;   /* id in SPINHASH_VEHICLE_GROUPS (vehicle_classes.h) */
+  float score;      /* its best model's score */
+  uint32_t model;   /* that model */
+  const char* name; /* the group's name, e.g. "light" */
+} spinhash_ranked_group;
 
 /* Log levels passed to the hook. */
 #define SPINHASH_LOG_ERROR 1
@@ -152,6 +174,15 @@ const char* spinhash_database_model_name(const spinhash_database* db, uint32_t i
 uint32_t spinhash_database_model_class(const spinhash_database* db, uint32_t index) SPINHASH_NOEXCEPT;
 /* Name of class id `vehicle_class` ("sedan", ...); "unknown" outside the list. */
 const char* spinhash_class_name(uint32_t vehicle_class) SPINHASH_NOEXCEPT;
+/* Group id (SPINHASH_VEHICLE_GROUPS, vehicle_classes.h) of class id
+ * `vehicle_class`: the class list's group column; 0 ("none") outside the list. */
+uint32_t spinhash_class_group(uint32_t vehicle_class) SPINHASH_NOEXCEPT;
+/* Name of group id `group` ("light", ...); "unknown" outside the list. */
+const char* spinhash_group_name(uint32_t group) SPINHASH_NOEXCEPT;
+
+/* Name of answer level id `level` ("none", "vehicle", "group", "class",
+ * "model"; answer_levels.h); "unknown" outside the list. */
+const char* spinhash_level_name(uint32_t level) SPINHASH_NOEXCEPT;
 
 /* Carves every buffer from the workspace; the database must outlive rec. */
 spinhash_status spinhash_recognizer_init(spinhash_recognizer* rec, const spinhash_database* db,
@@ -168,6 +199,9 @@ spinhash_status spinhash_result_entry(const spinhash_result* result, uint32_t ra
 /* Class `rank` (0 = best) of a successful result. */
 spinhash_status spinhash_result_class(const spinhash_result* result, uint32_t rank,
                                       spinhash_ranked_class* out) SPINHASH_NOEXCEPT;
+/* Group `rank` (0 = best) of a successful result. */
+spinhash_status spinhash_result_group(const spinhash_result* result, uint32_t rank,
+                                      spinhash_ranked_group* out) SPINHASH_NOEXCEPT;
 
 #ifdef __cplusplus
 }

@@ -48,6 +48,42 @@ py::object first_class(const RankedClass* classes, uint32_t count) {
   return count > 0 ? py::object(py::str(vehicle_class_name(classes[0].vehicle_class))) : py::none();
 }
 
+py::list group_list(const Database& db, const RankedGroup* groups, uint32_t count) {
+  py::list out;
+  for (uint32_t i = 0; i < count; ++i)
+    out.append(py::make_tuple(vehicle_group_name(groups[i].group), static_cast<double>(groups[i].score),
+                              pipeline::model_name(db, groups[i].model)));
+  return out;
+}
+
+py::object first_group(const RankedGroup* groups, uint32_t count) {
+  return count > 0 ? py::object(py::str(vehicle_group_name(groups[0].group))) : py::none();
+}
+
+// Per calibrated level its flag and evidence (None when a prerequisite
+// failed), under the level's name.
+py::dict level_dict(const LevelAnswer* levels) {
+  py::dict d;
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) {
+    const LevelAnswer a = levels != nullptr ? levels[l] : LevelAnswer{};
+    py::dict one;
+    one["confident"] = py::bool_(a.confident);
+    one["evidence"] = std::isfinite(a.evidence) ? py::object(py::float_(static_cast<double>(a.evidence)))
+                                                : py::object(py::none());
+    d[answer_level_name(l + 1u)] = one;
+  }
+  return d;
+}
+
+template <typename Out>
+void set_levels(const Database& db, const RankedGroup* groups, uint32_t count, const LevelAnswer* levels,
+                AnswerLevel level, Out* out) {
+  out->group = first_group(groups, count);
+  out->group_ranking = group_list(db, groups, count);
+  out->levels = level_dict(levels);
+  out->level = answer_level_name(static_cast<uint32_t>(level));
+}
+
 py::object best_pose(const std::vector<RankedModel>& ranking) {
   if (ranking.empty() || !ranking[0].has_pose) return py::none();
   return pose_matrix(ranking[0].pose);
@@ -63,6 +99,9 @@ ResultCopy copy_result(const Result& r, double time_ms) {
   c.result.class_ranking = nullptr;
   if (r.status == Status::kOk && r.class_ranking != nullptr)
     c.classes.assign(r.class_ranking, r.class_ranking + r.class_ranking_count);
+  c.result.group_ranking = nullptr;
+  if (r.status == Status::kOk && r.group_ranking != nullptr)
+    c.groups.assign(r.group_ranking, r.group_ranking + r.group_ranking_count);
   c.time_ms = time_ms;
   return c;
 }
@@ -79,6 +118,9 @@ PyResult make_result(const Database& db, const ResultCopy& r) {
   out.vehicle_class = first_class(r.classes.data(), classes);
   out.class_confident = r.result.status == Status::kOk && r.result.class_confident;
   out.class_ranking = class_list(db, r.classes.data(), classes);
+  const bool ok = r.result.status == Status::kOk;
+  set_levels(db, r.groups.data(), static_cast<uint32_t>(r.groups.size()), ok ? r.result.levels : nullptr,
+             ok ? r.result.level : AnswerLevel::kNone, &out);
   out.stats = stats_dict(r.result.stats);
   out.time_ms = r.time_ms;
   return out;
@@ -99,6 +141,7 @@ PySceneObject make_scene_object(const Database& db, const SceneObjectCopy& c) {
   out.vehicle_class = first_class(o.classes, o.class_count);
   out.class_confident = o.class_confident;
   out.class_ranking = class_list(db, o.classes, o.class_count);
+  set_levels(db, o.groups, o.group_count, o.levels, o.level, &out);
   out.ground_gap =
       std::isfinite(o.ground_gap) ? py::object(py::float_(static_cast<double>(o.ground_gap))) : py::none();
   out.points = o.points;
@@ -127,6 +170,16 @@ void bind_result(py::module_& m) {
                     "the first class leads the next by min_margin on enough evidence")
       .def_readonly("class_ranking", &PyResult::class_ranking,
                     "[(class name, score, best model's name), ...], best first")
+      .def_readonly("group", &PyResult::group,
+                    "the first group's name (the CLI's \"group\"), e.g. 'light'; None without a ranking")
+      .def_readonly("group_ranking", &PyResult::group_ranking,
+                    "[(group name, score, best model's name), ...], best first")
+      .def_readonly("levels", &PyResult::levels,
+                    "{level name: {'confident': bool, 'evidence': float or None}} for 'vehicle', 'group', "
+                    "'class' and 'model' (the CLI's \"levels\")")
+      .def_readonly("level", &PyResult::level,
+                    "the most specific confident level whose coarser levels are confident and consistent: "
+                    "'model', 'class', 'group', 'vehicle' or 'none'")
       .def_readonly("stats", &PyResult::stats, "the CLI's \"stats\" object as a dict")
       .def_readonly("time_ms", &PyResult::time_ms, "wall time of the recognition, ms")
       .def_property_readonly(
@@ -161,6 +214,16 @@ void bind_result(py::module_& m) {
                     "a confident class whose leader fits the object's size")
       .def_readonly("class_ranking", &PySceneObject::class_ranking,
                     "[(class name, score, best model's name), ...], best first")
+      .def_readonly("group", &PySceneObject::group,
+                    "the first group's name (the CLI's \"group\"), e.g. 'light'; None without a ranking")
+      .def_readonly("group_ranking", &PySceneObject::group_ranking,
+                    "[(group name, score, best model's name), ...], best first")
+      .def_readonly("levels", &PySceneObject::levels,
+                    "{level name: {'confident': bool, 'evidence': float or None}} for 'vehicle', 'group', "
+                    "'class' and 'model' (the CLI's \"levels\")")
+      .def_readonly("level", &PySceneObject::level,
+                    "the most specific confident level whose coarser levels are confident and consistent: "
+                    "'model', 'class', 'group', 'vehicle' or 'none'")
       .def_readonly("ground_gap", &PySceneObject::ground_gap,
                     "best model's box bottom above the terrain under its pose, m, or None")
       .def_readonly("points", &PySceneObject::points, "points in the object")

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "blob/tiny_blob.hpp"
+#include "db/tiny_blob.hpp"
 #include "recognize/level_evidence.hpp"
 #include "support/blob_patch.hpp"
 

@@ -106,6 +106,10 @@ TEST_CASE("C API: the golden blob opens, recognises in float and double, and nam
   CHECK(std::strcmp(spinhash_class_name(spinhash_database_model_class(&db, 0)), "sedan") == 0);
   CHECK(spinhash_database_model_class(&db, 6) == SPINHASH_CLASS_COUNT);
   CHECK(std::strcmp(spinhash_class_name(SPINHASH_CLASS_COUNT), "unknown") == 0);
+  CHECK(std::strcmp(spinhash_group_name(spinhash_class_group(1u)), "light") == 0);     // a sedan
+  CHECK(std::strcmp(spinhash_group_name(spinhash_class_group(6u)), "armoured") == 0);  // tracked
+  CHECK(spinhash_class_group(SPINHASH_CLASS_COUNT) == 0u);
+  CHECK(std::strcmp(spinhash_group_name(SPINHASH_GROUP_COUNT), "unknown") == 0);
   REQUIRE(r32.class_ranking_count >= 2u);
   CHECK(r32.class_ranking_count <= SPINHASH_CLASS_COUNT);
   CHECK(r64.class_confident == r32.class_confident);
@@ -120,6 +124,25 @@ TEST_CASE("C API: the golden blob opens, recognises in float and double, and nam
   CHECK(spinhash_result_class(&r32, r32.class_ranking_count, &beyond) == SPINHASH_INVALID_ARGUMENT);
   CHECK(spinhash_result_class(&r32, 0, nullptr) == SPINHASH_INVALID_ARGUMENT);
   CHECK(spinhash_result_class(nullptr, 0, &beyond) == SPINHASH_INVALID_ARGUMENT);
+
+  // The answer levels: the model and class flags are the levels', the level
+  // is a name of answer_levels.h, the first group is the first class's.
+  CHECK(r32.level_confident[SPINHASH_CALIBRATED_LEVELS - 1] == r32.confident);
+  CHECK(r32.level_confident[SPINHASH_CALIBRATED_LEVELS - 2] == r32.class_confident);
+  CHECK(r32.level < SPINHASH_ANSWER_LEVEL_COUNT);
+  CHECK(r64.level == r32.level);
+  CHECK(std::strcmp(spinhash_level_name(0u), "none") == 0);
+  CHECK(std::strcmp(spinhash_level_name(4u), "model") == 0);
+  CHECK(std::strcmp(spinhash_level_name(SPINHASH_ANSWER_LEVEL_COUNT), "unknown") == 0);
+  REQUIRE(r32.group_ranking_count >= 1u);
+  CHECK(r32.group_ranking_count <= SPINHASH_GROUP_COUNT);
+  spinhash_ranked_group group = {0u, 0.0f, 0u, ""}, no_group;
+  REQUIRE(spinhash_result_group(&r32, 0, &group) == SPINHASH_OK);
+  CHECK(std::strcmp(group.name, "light") == 0);
+  CHECK(group.group == spinhash_class_group(first.vehicle_class));
+  CHECK(group.score == first.score);
+  CHECK(spinhash_result_group(&r32, r32.group_ranking_count, &no_group) == SPINHASH_INVALID_ARGUMENT);
+  CHECK(spinhash_result_group(&r32, 0, nullptr) == SPINHASH_INVALID_ARGUMENT);
 }
 
 TEST_CASE("C API: bad arguments are statuses, never crashes") {

@@ -10,7 +10,7 @@
 #include <limits>
 #include <string>
 
-#include "blob/tiny_blob.hpp"
+#include "db/tiny_blob.hpp"
 #include "db/calibration_fit.hpp"
 #include "support/blob_patch.hpp"
 

@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "blob/blob_writer.hpp"
-#include "blob/tiny_blob.hpp"
+#include "db/tiny_blob.hpp"
 #include "spinhash/calibration.hpp"
 #include "support/blob_patch.hpp"
 

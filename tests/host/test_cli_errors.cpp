@@ -281,10 +281,11 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
 
 namespace {
 
-// Offsets of single bytes no checksum covers or that carry no value: every
-// byte between the section table and the first payload (none when the
-// table ends on a 64-byte boundary), the first and last padding bytes after
-// each payload that has padding, and reserved fields.
+// Offsets of single bytes that Database::open refuses by its zero checks
+// (docs/blob-format.md, "Alignment and padding"): every byte between the
+// section table and the first payload (none when the table ends on a
+// 64-byte boundary), the first and last padding bytes after each payload
+// that has padding, and reserved fields.
 std::vector<size_t> zero_fill_offsets(const std::string& blob) {
   using spinhash::blob::Header;
   using spinhash::blob::SectionEntry;

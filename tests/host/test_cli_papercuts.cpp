@@ -1,4 +1,4 @@
-// The command line as a new user meets it (issue 10): clouds from stdin,
+// The command line as a new user meets it: clouds from stdin,
 // machine-readable info and verify, a version on every JSON line, valid JSON
 // whatever the file names, builds that name every unreadable mesh, and the
 // overlay and picture of one answer. Runs the built binary on two generated
@@ -15,6 +15,7 @@
 #include "cli_runner.hpp"
 #include "cloud/cloud_reader.hpp"
 #include "cloud/ply_header.hpp"
+#include "cloud_test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace spinhash::host::test;
@@ -192,7 +193,7 @@ struct Overlay {
 Overlay read_overlay(const std::string& path) {
   Overlay o;
   std::string bytes, error;
-  REQUIRE_MESSAGE(spinhash::host::read_file_bytes(path, 1u << 28, &bytes, &error), error);
+  REQUIRE_MESSAGE(spinhash::host::read_file(path, 1u << 28, &bytes, &error), error);
   spinhash::host::ply::Header h;
   REQUIRE_MESSAGE(spinhash::host::ply::parse_header(bytes, &h, &error), error);
   REQUIRE(h.format == spinhash::host::ply::Format::kBinaryLittleEndian);
@@ -223,7 +224,7 @@ TEST_CASE("recognize --overlay-out and --picture-out show the posed model over t
   REQUIRE(r.exit_code == kExitOk);
   std::vector<double> query;
   std::string error;
-  REQUIRE(spinhash::host::read_cloud(f.query, &query, &error));
+  REQUIRE(spinhash::host::test::try_read_cloud(f.query, &query, &error));
   const Overlay o = read_overlay(overlay);
   const size_t n = o.colour.size(), nq = query.size() / 3;
   REQUIRE(n > nq + 50);  // the query and the model's stored points
@@ -244,7 +245,7 @@ TEST_CASE("recognize --overlay-out and --picture-out show the posed model over t
   }
   CHECK(close > model_points / 3);  // the query sees 3 sides: about half the model's surface
   std::string png;
-  REQUIRE(spinhash::host::read_file_bytes(picture, 1u << 26, &png, &error));
+  REQUIRE(spinhash::host::read_file(picture, 1u << 26, &png, &error));
   CHECK(png.rfind("\x89PNG\r\n\x1a\n", 0) == 0);
   CHECK(png.size() > 10000);
 

@@ -27,6 +27,7 @@ def assert_same_answer(result, line):
     assert result.group_size == line["group_size"]
     assert result.group_size >= (1 if result.ranking else 0)
     assert_same_classes(result, line)
+    assert_same_levels(result, line)
     assert_same_stats(result.stats, line["stats"])
 
 
@@ -39,6 +40,24 @@ def assert_same_classes(answer, line):
     for (_, score, _), entry in zip(answer.class_ranking, line["class_ranking"]):
         assert score == pytest.approx(entry["score"], rel=1e-6, abs=1e-9)
     assert all(c in spinhash.CLASS_NAMES for c, _, _ in answer.class_ranking)
+
+
+def assert_same_levels(answer, line):
+    """The answer levels: the CLI's group, group_ranking, levels and level."""
+    assert answer.group == line["group"]
+    assert [(g, m) for g, _, m in answer.group_ranking] == \
+        [(entry["group"], entry["model"]) for entry in line["group_ranking"]]
+    assert list(answer.levels) == list(line["levels"]) == ["vehicle", "group", "class", "model"]
+    for name, level in answer.levels.items():
+        assert level["confident"] == line["levels"][name]["confident"]
+        if line["levels"][name]["evidence"] is None:
+            assert level["evidence"] is None
+        else:
+            assert level["evidence"] == pytest.approx(line["levels"][name]["evidence"], rel=1e-5, abs=1e-6)
+    assert answer.levels["model"]["confident"] == answer.confident
+    assert answer.levels["class"]["confident"] == answer.class_confident
+    assert answer.level == line["level"]
+    assert answer.level in ("none", "vehicle", "group", "class", "model")
 
 
 @pytest.mark.parametrize("mode", ["bran", "sran", "sind"])
@@ -88,6 +107,7 @@ def test_database_describes_itself_as_info_does(fleet):
     text = run_cli("info", fleet.db)
     for model in db.models:
         assert model["name"] in text and model["features"] > 0
+        assert model["group"] == spinhash.CLASS_GROUPS[spinhash.CLASS_NAMES.index(model["class"])]
         assert all(e > 0.5 for e in model["extent"])
     assert f"models        {db.info['models']}" in text
     assert f"features      {db.info['features']}" in text
