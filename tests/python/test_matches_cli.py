@@ -115,4 +115,4 @@ def test_database_describes_itself_as_info_does(fleet):
     assert f"{db.info['bins_alpha']}x{db.info['bins_beta']} bins" in text
     field = f"nearest field {db.info['field_cell']:g} m voxels, reach {db.info['field_reach']:g} m, "
     assert field + f"{db.info['field_slots']} slots, {db.info['field_entry_count']} entries" in text
-    assert db.info["format_version"] == 4 and db.info["field_entry_count"] > 0
+    assert db.info["format_version"] == 5 and db.info["field_entry_count"] > 0
