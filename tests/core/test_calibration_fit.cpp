@@ -10,8 +10,8 @@
 #include <limits>
 #include <string>
 
-#include "db/tiny_blob.hpp"
 #include "db/calibration_fit.hpp"
+#include "db/tiny_blob.hpp"
 #include "support/blob_patch.hpp"
 
 using spinhash::AnswerLevel;
