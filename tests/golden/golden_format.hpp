@@ -54,7 +54,7 @@ inline RecognizerConfig golden_config(Mode mode) {
   c.seed = 7;
   c.max_points = 8192;
   c.max_models = 16;
-  c.max_hypotheses = kGoldenMaxHypotheses;
+  c.draws.max_hypotheses = kGoldenMaxHypotheses;
   return c;
 }
 
