@@ -43,7 +43,7 @@ struct AccuracyArgs {
   uint64_t fleet_seed = 1;  // procedural vehicles
   uint32_t max_k = 10;
   BranKnobs bran;
-  float ground_clearance = RecognizerConfig{}.ground_clearance;
+  float ground_clearance = GroundParams{}.ground_clearance;
   bool models_given = false;
 };
 
@@ -56,7 +56,7 @@ bool open_sessions(const Database& db, const AccuracyArgs& a, const std::vector<
     RecognizerConfig cfg;  // library defaults (but the BRAN knobs): the experiment measures them
     cfg.mode = m;
     a.bran.apply(&cfg);
-    cfg.ground_clearance = keep_ground ? 0.0f : a.ground_clearance;
+    cfg.ground.ground_clearance = keep_ground ? 0.0f : a.ground_clearance;
     out->push_back(std::make_unique<pipeline::RecognitionSession>());
     if (!out->back()->init(&db, cfg, error)) return false;
   }

@@ -327,7 +327,7 @@ std::string ground_section(const AccuracyRun& run) {
   if (scanned)
     s << " -> with a ground square reaching " << run.ground_margin
       << " m beyond the vehicle scanned too (the recognizer's default level-ground removal, ground_clearance "
-      << RecognizerConfig{}.ground_clearance << " m)";
+      << GroundParams{}.ground_clearance << " m)";
   if (kept) s << " -> the same scans with the ground removal off (what a pipeline without it sees)";
   s << ":\n\n| noise, occlusion |";
   for (Mode m : run.modes) s << " " << mode_title(m) << " |";

@@ -2,7 +2,6 @@
 // fixed-size 3x3 SVD) over the two points and the two normal tips.
 #pragma once
 #include "match/oriented_point.hpp"
-#include "spinhash/config.hpp"
 
 namespace spinhash {
 
@@ -11,6 +10,6 @@ namespace spinhash {
 // (DrawsParams::normal_lever), so a normal error of e radians weighs like a
 // position error of e * normal_lever metres.
 bool pose_from_doublet(const OrientedPoint& q1, const OrientedPoint& q2, const OrientedPoint& m1,
-                       const OrientedPoint& m2, RigidPose* out, float normal_lever = DrawsParams{}.normal_lever);
+                       const OrientedPoint& m2, RigidPose* out, float normal_lever);
 
 }  // namespace spinhash

@@ -22,8 +22,7 @@ constexpr uint32_t kMinRefineMatches = 6;
 // direction no match constrains (sliding along a single flat side) does not
 // move, and constrained ones are untouched (their weight is ~0.1-10 per match).
 bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query, const LikelihoodParams& lp,
-                 RigidPose* pose, const int32_t* matches = nullptr,
-                 float damping = RefineParams{}.damping_per_match);
+                 RigidPose* pose, const int32_t* matches, float damping);
 
 // `pose` turned by 180 degrees about the vertical line through the centre of
 // the model's box: the other way round on the same footprint. Vehicles are
@@ -42,6 +41,6 @@ RigidPose turned_end_to_end(const RigidPose& pose, const blob::ModelRecord& mode
 // and refinement) may fit a twin that the draws' own poses never came near.
 constexpr uint32_t kEndAlignedPoses = 4;
 bool end_aligned_pose(const RigidPose& pose, const blob::ModelRecord& source, const blob::ModelRecord& target,
-                      uint32_t index, RigidPose* out, float min_end_shift = RefineParams{}.lend_min_end_shift);
+                      uint32_t index, RigidPose* out, float min_end_shift);
 
 }  // namespace spinhash

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "pipeline/recognizer_flags.hpp"
 #include "pipeline/scene_flags.hpp"
 #include "survey/survey_runner.hpp"
 
@@ -29,6 +30,7 @@ void add_survey_command(CLI::App& app, int* exit_code) {
   cmd->add_flag("--resume", o->resume, "keep the tiles a previous run in DIR finished (same inputs)");
   cmd->add_flag("--quiet", o->quiet, "no progress line");
   pipeline::add_scene_flags(cmd, &o->scene, {"--top", "--max-objects"});
+  pipeline::add_set_option(cmd, &o->scene.recognizer);  // --preset, --set STAGE.FIELD=VALUE
   cmd->add_option("tiles", *tiles, "tiles (LAS, LAZ, PLY, x y z text) or folders of them")->required();
   cmd->callback([o, tiles, exit_code]() { *exit_code = survey::run_survey(*o, *tiles); });
 }

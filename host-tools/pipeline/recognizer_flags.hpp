@@ -1,12 +1,20 @@
-// Recognizer settings on the command line (recognize, verify, experiment).
+// Recognizer settings on the command line (recognize, verify, scene,
+// survey, the experiments): a flag per field that has one (the field lists),
+// `--preset`, `--viewpoint`, and `--set KEY=VALUE` for every field
+// (config/config_assign.hpp), applied after the flags, in order.
 #pragma once
 #include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
 
 #include "spinhash/config.hpp"
 
 namespace spinhash::pipeline {
 
+// Every flag of the field lists, --preset, --viewpoint and --set.
 void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* cfg);
+// --preset and --set alone (survey: the scene's own flags choose the rest).
+void add_set_option(CLI::App* cmd, RecognizerConfig* cfg);
 const char* mode_name(Mode m);
 
 }  // namespace spinhash::pipeline

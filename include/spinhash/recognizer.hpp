@@ -44,10 +44,10 @@ struct GroundStats {
   uint32_t points_ground = 0;  // dropped as terrain (geometry/object_ground.hpp)
 };
 struct CandidatesStats {
-  uint32_t salient_features = 0;       // features with candidates that sampling may draw
   uint64_t kept = 0;                   // candidate model features kept (sum of W_l; SRAN and focus too)
   uint64_t bucket_entries = 0;         // LSH entries scanned
-  bool spread = false;                 // BRAN: the candidates named many look-alikes (focus_models)
+  uint32_t salient_features = 0;       // features with candidates that sampling may draw
+  bool spread = false;                 // BRAN: the candidates named many look-alikes (spread_perplexity)
   bool bucket_scan_truncated = false;  // some LSH lookups hit max_bucket_scan
 };
 // The hypothesis machinery's counts: the draws', and the focused search's,
