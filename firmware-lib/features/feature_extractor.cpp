@@ -140,7 +140,8 @@ Status FeatureExtractor::load(const CloudView& cloud, FeatureSet* out, ExtractSt
   return n == 0 ? Status::kEmptyCloud : Status::kOk;
 }
 
-Status FeatureExtractor::drop_ground(const GroundParams& params, FeatureSet* out, uint32_t* dropped) noexcept {
+Status FeatureExtractor::drop_ground(const GroundParams& params, FeatureSet* out,
+                                     uint32_t* dropped) noexcept {
   if (impl_ == nullptr || out == nullptr || dropped == nullptr) return Status::kNotOpen;
   Impl& m = *impl_;
   *dropped = 0;

@@ -11,7 +11,7 @@
 namespace spinhash {
 namespace {
 
-constexpr float kEmptyCell = kFar;  // lowest point of a cell without points
+constexpr float kEmptyCell = kFar;      // lowest point of a cell without points
 constexpr uint32_t kMinPlaneCells = 3;  // a plane through fewer is not determined
 // CellStats::spread of a cell without min_roughness_points ground points:
 // none (kUnmeasured), or a few, all within roughness_band of its low lowest
@@ -142,8 +142,8 @@ void accumulate(const float* xyz, uint32_t n, const Grid& g, const Plane& plane,
 }
 
 // Sparse-flat cells with a point above the roughness band hold an object.
-void unflatten_occupied(const float* xyz, uint32_t n, const Grid& g, const float* lowest, float roughness_band,
-                        const CellStats& cs) {
+void unflatten_occupied(const float* xyz, uint32_t n, const Grid& g, const float* lowest,
+                        float roughness_band, const CellStats& cs) {
   for (uint32_t i = 0; i < n; ++i) {
     const float* x = xyz + 3u * i;
     const uint32_t c = g.cell_of(x);
@@ -275,7 +275,7 @@ BandCounts column_tops(const float* xyz, uint32_t n, const Level& level, float d
 // the two highest of them above their terrain in top.
 uint32_t keep_above_band(float* xyz, uint32_t n, const Level& level, float drop, const GroundParams& gp,
                          const float* tops, float top[2]) {
-  const float body = drop + gp.body_above;             // a column rising this high holds a body
+  const float body = drop + gp.body_above;            // a column rising this high holds a body
   const float body_floor = gp.band_kept_from * drop;  // band points below it are ground even there
   uint32_t kept = 0;
   for (uint32_t i = 0; i < n; ++i) {

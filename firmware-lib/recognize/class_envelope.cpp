@@ -104,7 +104,8 @@ ScanShape measure_scan(const QueryFeatures& query, const blob::ModelRecord& lead
   return s;
 }
 
-bool within_envelope(const ScanShape& scan, const ClassEnvelope& env, float end_tolerance, const ClassesParams& p) {
+bool within_envelope(const ScanShape& scan, const ClassEnvelope& env, float end_tolerance,
+                     const ClassesParams& p) {
   if (env.members == 0u) return false;
   if (scan.length > env.length_max + 2.0f * end_tolerance) return false;  // both ends
   if (scan.width > env.width_max + 2.0f * end_tolerance) return false;

@@ -70,6 +70,7 @@ ScanShape measure_scan(const QueryFeatures& query, const blob::ModelRecord& lead
 // van's roof explains a saloon's; and below min_height_density a scan
 // without terrain never measures the height (that allowance is coarser than
 // the step between classes). False for a class without members.
-bool within_envelope(const ScanShape& scan, const ClassEnvelope& env, float end_tolerance, const ClassesParams& p);
+bool within_envelope(const ScanShape& scan, const ClassEnvelope& env, float end_tolerance,
+                     const ClassesParams& p);
 
 }  // namespace spinhash

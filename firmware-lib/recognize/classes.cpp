@@ -59,7 +59,8 @@ bool is_class_confident(const Result& r, const RecognizerConfig& cfg, uint32_t f
   const ClassesParams& k = cfg.classes;
   const float n = static_cast<float>(features);
   return m.has_pose && features >= k.min_class_features && density >= k.min_class_density &&
-         static_cast<float>(m.inliers) >= c.min_inlier_fraction * n && m.score >= c.min_mean_log_likelihood * n &&
+         static_cast<float>(m.inliers) >= c.min_inlier_fraction * n &&
+         m.score >= c.min_mean_log_likelihood * n &&
          fit.shortfall <= k.class_extent_factor * c.max_extent_shortfall &&
          fit.overhang <= k.class_extent_factor * c.max_extent_overhang &&
          first.score - r.class_ranking[1].score >= c.min_margin * std::sqrt(n);

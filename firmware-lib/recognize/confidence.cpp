@@ -164,7 +164,8 @@ Status confidence_stage(SearchContext& ctx) {
   st.scan_density = scan_density(ctx.stats, fit);
   if (!dense_enough_for_model(ctx.params, st.scan_density)) return Status::kOk;
   if (!is_confident(result, ctx.params, ctx.query.count, fit, 0.0f)) return Status::kOk;
-  result.confident = is_confident(result, ctx.params, ctx.query.count, fit, residual_structure(ctx, first, pose));
+  result.confident =
+      is_confident(result, ctx.params, ctx.query.count, fit, residual_structure(ctx, first, pose));
   return Status::kOk;
 }
 

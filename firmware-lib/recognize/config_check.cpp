@@ -34,9 +34,9 @@ bool config_valid(const RecognizerConfig& c) {
 #undef SPINHASH_CHECK_RANGE
   // Each stage's fields, through `p`, the stage's member.
 #define SPINHASH_CHECK_PARAM(kind, name, def, lo, hi, flag, why) ok = ok && in_range_##kind(p.name, lo, hi);
-#define SPINHASH_CHECK_STAGE(id, Name, what) \
-  {                                          \
-    const Name##Params& p = c.id;            \
+#define SPINHASH_CHECK_STAGE(id, Name, what)   \
+  {                                            \
+    const Name##Params& p = c.id;              \
     SPINHASH_PARAMS_##id(SPINHASH_CHECK_PARAM) \
   }
   SPINHASH_STAGES(SPINHASH_CHECK_STAGE)

@@ -16,9 +16,9 @@ namespace {
 // same: the draws did pair up.
 bool keep_drawing(const SearchContext& ctx) {
   const uint64_t drawn = ctx.stats.draws.trials, budget = trial_budget(ctx);
-  return drawn < budget ||
-         (drawn < kTrialExtension * budget &&
-          ctx.stats.draws.poses_found() < static_cast<uint64_t>(ctx.trial_scale) * ctx.params.draws.min_hypotheses);
+  return drawn < budget || (drawn < kTrialExtension * budget &&
+                            ctx.stats.draws.poses_found() <
+                                static_cast<uint64_t>(ctx.trial_scale) * ctx.params.draws.min_hypotheses);
 }
 
 // Look-alike doublets (lookalike_box_l1): each of feature k's candidates
@@ -99,7 +99,7 @@ void draw_sran(SearchContext& ctx) {
   const HypothesisCaps caps{0xFFFFFFFFu, d.max_hypotheses};
   for (uint32_t model = 0; model < ctx.db.model_count(); ++model) {
     for (uint32_t l = 0; l < ctx.query.count; ++l) gather_model_candidates(ctx, model, l);
-    draw_for_model(ctx, model, d.sran_trials, caps);             // a model's own cap ends its draws only
+    draw_for_model(ctx, model, d.sran_trials, caps);               // a model's own cap ends its draws only
     if (ctx.stats.draws.pair_checks >= d.max_pair_checks) return;  // global budget spent
   }
 }

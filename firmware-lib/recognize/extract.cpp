@@ -34,8 +34,8 @@ Status extract_stage(SearchContext& ctx) {
                   b.query_spins + static_cast<size_t>(f) * fs.dims);
   for (uint32_t m = 0; m < ctx.db.model_count(); ++m) reset(b.best[m]);
   const uint32_t verify = ctx.params.draws.verify_features;
-  ctx.query = QueryFeatures{fs.positions, fs.normals, b.query_spins, fs.count, fs.dims,
-                            verify < fs.count ? verify : fs.count};
+  ctx.query = QueryFeatures{fs.positions, fs.normals, b.query_spins,
+                            fs.count,     fs.dims,    verify < fs.count ? verify : fs.count};
   return Status::kOk;
 }
 

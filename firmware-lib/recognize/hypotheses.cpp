@@ -92,7 +92,8 @@ PairOutcome evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32
   if (check_doublet(shape, mu, mv, ctx.tolerance) != CascadeStage::kPass) return PairOutcome::kRejected;
   ++st.doublets_passed;
   RigidPose pose;
-  if (!pose_from_doublet(ctx.query_point(k), ctx.query_point(l), mu, mv, &pose, ctx.params.draws.normal_lever))
+  if (!pose_from_doublet(ctx.query_point(k), ctx.query_point(l), mu, mv, &pose,
+                         ctx.params.draws.normal_lever))
     return PairOutcome::kPassed;
   // The total budget counts the poses found, tilted ones too: a sphere
   // pairs with any patch, and counting only the verified poses took the

@@ -6,8 +6,8 @@
 
 namespace spinhash {
 
-SearchContext::SearchContext(const Database& database, const RecognizerConfig& pass, RecognizerBuffers& buffers,
-                             Result& answer)
+SearchContext::SearchContext(const Database& database, const RecognizerConfig& pass,
+                             RecognizerBuffers& buffers, Result& answer)
     : db(database),
       params(pass),
       mode(pass.mode),

@@ -69,9 +69,9 @@ struct SearchContext {
   Result& result;  // the answer being built; its stats are every stage's counts
   RecognitionStats& stats;
   OrientationHint hint;
-  ObjectTerrain terrain;    // the caller's measure of the terrain, or none (top < 0)
-  FeatureSet features;      // the ground and extract stages'
-  QueryFeatures query;      // the features as the search sees them (spins quantised)
+  ObjectTerrain terrain;        // the caller's measure of the terrain, or none (top < 0)
+  FeatureSet features;          // the ground and extract stages'
+  QueryFeatures query;          // the features as the search sees them (spins quantised)
   LikelihoodParams likelihood;  // eqs. 4-7 with the draws' parameters
   DoubletTolerance tolerance;
   float d_min;

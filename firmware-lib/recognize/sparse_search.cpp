@@ -29,7 +29,9 @@ float footprint_density(const QueryFeatures& query, uint32_t points) {
   return static_cast<float>(points) / (area > kMinFootprint ? area : kMinFootprint);
 }
 
-bool searched_as_sparse(const StageParams& p, float density) { return !(density >= p.candidates.sparse_density); }
+bool searched_as_sparse(const StageParams& p, float density) {
+  return !(density >= p.candidates.sparse_density);
+}
 
 uint32_t trial_scale(const StageParams& p, float density) {
   return searched_as_sparse(p, density) ? p.draws.sparse_trial_scale : 1u;

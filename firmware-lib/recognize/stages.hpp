@@ -20,8 +20,8 @@ enum class StageId : uint8_t {
 
 struct Stage {
   StageId id;
-  const char* name;                          // the id, as `--set` spells it
-  Status (*run)(SearchContext& ctx);         // the stage's entry (its own header)
+  const char* name;                            // the id, as `--set` spells it
+  Status (*run)(SearchContext& ctx);           // the stage's entry (its own header)
   bool (*enabled)(const StageParams& params);  // false: skipped
 };
 

@@ -10,7 +10,8 @@ constexpr float kGridCellsPerDelta = 2.0f;
 }  // namespace
 
 void index_query_features(SearchContext& ctx) {
-  ctx.buf.feature_grid.build(ctx.query.positions, ctx.query.count, kGridCellsPerDelta * ctx.params.draws.delta);
+  ctx.buf.feature_grid.build(ctx.query.positions, ctx.query.count,
+                             kGridCellsPerDelta * ctx.params.draws.delta);
 }
 
 UpwardSurface upward_surface(const SearchContext& ctx, uint32_t model, const RigidPose& pose) {

@@ -172,8 +172,8 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
   // The tile's terrain measures the object's top (the class envelope's
   // height; its noise: the recognizer's sigma_surface, not measured per
   // object); the object's points start ground_height above it.
-  const Result r = b.recognizer.recognize(points, o.points,
-                                          ObjectTerrain{o.hmax, c.recognizer.refine.sigma_surface, c.ground_height});
+  const Result r = b.recognizer.recognize(
+      points, o.points, ObjectTerrain{o.hmax, c.recognizer.refine.sigma_surface, c.ground_height});
   out.status = r.status;
   out.stats = r.stats;
   stats->recognition_hypotheses += r.stats.draws.hypotheses;

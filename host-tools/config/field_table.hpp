@@ -18,9 +18,9 @@ struct ConfigField {
   const char* stage;  // the stage's id (stage_fields.h), "" for a top-level field
   const char* name;   // the field's name in its struct
   FieldKind kind;
-  long double lo, hi;  // the valid range (inclusive; BOOL, MODE and VEC3D: none to check here)
-  const char* flag;    // CLI11 option name(s), "" for none
-  const char* help;    // the list's one line
+  long double lo, hi;                // the valid range (inclusive; BOOL, MODE and VEC3D: none to check here)
+  const char* flag;                  // CLI11 option name(s), "" for none
+  const char* help;                  // the list's one line
   void* (*at)(RecognizerConfig& c);  // the field in c
 
   // "stage.name", or "name" for a top-level field: what `--set` takes.

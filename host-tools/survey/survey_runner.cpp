@@ -16,9 +16,9 @@
 #include "pipeline/exit_codes.hpp"
 #include "pipeline/json_line.hpp"
 #include "pipeline/version.hpp"
+#include "spinhash/internal/fnv1a.hpp"
 #include "survey/footprint.hpp"
 #include "survey/survey_progress.hpp"
-#include "spinhash/internal/fnv1a.hpp"
 #include "survey/tile_run.hpp"
 
 namespace spinhash::survey {
@@ -101,7 +101,7 @@ bool write_manifest(const PreparedSurvey& s, const std::vector<bool>& done, std:
 SceneConfig default_survey_scene() {
   SceneConfig c;
   c.recognizer.ground.ground_clearance = 0.0f;  // the scene's terrain classifier removes the ground
-  c.max_tile_points = 0;                 // sized per tile from its density (tile_stream.hpp)
+  c.max_tile_points = 0;                        // sized per tile from its density (tile_stream.hpp)
   return c;
 }
 

@@ -35,8 +35,8 @@ enum class Mode : uint8_t {
 #define SPINHASH_CXX_TYPE_U32 uint32_t
 #define SPINHASH_CXX_TYPE_F32 float
 #define SPINHASH_CXX_PARAMS_MEMBER(kind, name, def, lo, hi, flag, why) SPINHASH_CXX_TYPE_##kind name = def;
-#define SPINHASH_CXX_PARAMS_STRUCT(id, Name, what) \
-  struct Name##Params {                            \
+#define SPINHASH_CXX_PARAMS_STRUCT(id, Name, what)   \
+  struct Name##Params {                              \
     SPINHASH_PARAMS_##id(SPINHASH_CXX_PARAMS_MEMBER) \
   };
 SPINHASH_STAGES(SPINHASH_CXX_PARAMS_STRUCT)

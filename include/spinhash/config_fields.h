@@ -44,32 +44,32 @@
   X(BOOL, has_viewpoint, 0, 1, "", "set by --viewpoint")                                                     \
   X(VEC3D, viewpoint, 0, 0, "", "set by --viewpoint X Y Z: sensor position, normals turn towards it")
 
-#define SPINHASH_STATS_FIELDS(S)                                                           \
-  S(U32, points_in, extract.points_in, "points")                                           \
-  S(U32, points_thinned, extract.points_thinned, "points_thinned")                         \
-  S(U32, points_nonfinite, extract.points_nonfinite, "points_nonfinite")                   \
-  S(U32, points_ground, ground.points_ground, "points_ground")                             \
-  S(U32, points_equalised, extract.points_equalised, "points_equalised")                   \
-  S(U32, points_oriented, extract.points_oriented, "points_oriented")                      \
-  S(U32, basis_points, extract.basis_points, "basis_points")                               \
-  S(BOOL, features_thinned, extract.features_thinned, "features_thinned")                  \
-  S(U32, features, extract.features, "features")                                           \
-  S(U32, salient_features, candidates.salient_features, "salient_features")                \
-  S(U64, candidates, candidates.kept, "candidates")                                        \
-  S(U64, bucket_entries, candidates.bucket_entries, "bucket_entries")                      \
-  S(U32, trials, draws.trials, "trials")                                                   \
-  S(U64, pair_checks, draws.pair_checks, "doublets_tried")                                 \
-  S(U64, doublets_passed, draws.doublets_passed, "doublets_passed")                        \
-  S(U64, poses_tilted, draws.poses_tilted, "poses_tilted")                                 \
-  S(U32, hypotheses, draws.hypotheses, "hypotheses")                                       \
-  S(U32, transferred, transfer.transferred, "transferred")                                 \
-  S(U32, refinements, refine.refinements, "refinements")                                   \
-  S(BOOL, budget_exhausted, draws.budget_exhausted, "budget_exhausted")                    \
-  S(BOOL, stopped_on_evidence, draws.stopped_on_evidence, "stopped_on_evidence")           \
-  S(BOOL, candidates_spread, candidates.spread, "candidates_spread")                       \
+#define SPINHASH_STATS_FIELDS(S)                                                            \
+  S(U32, points_in, extract.points_in, "points")                                            \
+  S(U32, points_thinned, extract.points_thinned, "points_thinned")                          \
+  S(U32, points_nonfinite, extract.points_nonfinite, "points_nonfinite")                    \
+  S(U32, points_ground, ground.points_ground, "points_ground")                              \
+  S(U32, points_equalised, extract.points_equalised, "points_equalised")                    \
+  S(U32, points_oriented, extract.points_oriented, "points_oriented")                       \
+  S(U32, basis_points, extract.basis_points, "basis_points")                                \
+  S(BOOL, features_thinned, extract.features_thinned, "features_thinned")                   \
+  S(U32, features, extract.features, "features")                                            \
+  S(U32, salient_features, candidates.salient_features, "salient_features")                 \
+  S(U64, candidates, candidates.kept, "candidates")                                         \
+  S(U64, bucket_entries, candidates.bucket_entries, "bucket_entries")                       \
+  S(U32, trials, draws.trials, "trials")                                                    \
+  S(U64, pair_checks, draws.pair_checks, "doublets_tried")                                  \
+  S(U64, doublets_passed, draws.doublets_passed, "doublets_passed")                         \
+  S(U64, poses_tilted, draws.poses_tilted, "poses_tilted")                                  \
+  S(U32, hypotheses, draws.hypotheses, "hypotheses")                                        \
+  S(U32, transferred, transfer.transferred, "transferred")                                  \
+  S(U32, refinements, refine.refinements, "refinements")                                    \
+  S(BOOL, budget_exhausted, draws.budget_exhausted, "budget_exhausted")                     \
+  S(BOOL, stopped_on_evidence, draws.stopped_on_evidence, "stopped_on_evidence")            \
+  S(BOOL, candidates_spread, candidates.spread, "candidates_spread")                        \
   S(BOOL, bucket_scan_truncated, candidates.bucket_scan_truncated, "bucket_scan_truncated") \
-  S(U64, workspace_used, workspace_used, "workspace_used")                                 \
-  S(F32, surface_coverage, confidence.surface_coverage, "surface_coverage")                \
+  S(U64, workspace_used, workspace_used, "workspace_used")                                  \
+  S(F32, surface_coverage, confidence.surface_coverage, "surface_coverage")                 \
   S(F32, scan_density, confidence.scan_density, "scan_density")
 
 /* C types of the kinds (spinhash.h). */

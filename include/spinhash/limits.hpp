@@ -22,17 +22,18 @@ constexpr uint32_t kTrialExtension = 4;
 constexpr uint32_t kMaxTrials = 0xFFFFFFFFu / kTrialExtension;
 // Bounds of the stages' counts (stage_fields.h): each sizes an array or
 // bounds a loop of its stage.
-constexpr uint32_t kMaxTransferModels = 64;   // TransferParams::transfer_models
-constexpr uint32_t kMaxTransferPoses = 16;    // TransferParams::transfer_poses
-constexpr uint32_t kMaxFocusModels = 64;      // FocusParams::focus_models
-constexpr uint32_t kMaxRescoredModels = 64;   // RefineParams::rescored_models
-constexpr uint32_t kMaxRefineIterations = 16; // RefineParams::refine_iterations
-constexpr uint32_t kMaxLendModels = 32;       // RefineParams::lend_spread_models, lend_family_models
-constexpr uint32_t kMaxLendRounds = 8;        // RefineParams::lend_rounds
-constexpr uint32_t kMaxNormalRadiusSteps = 8; // ExtractParams::max_radius_steps
-constexpr uint32_t kMaxGroundFitRounds = 16;  // GroundParams::fit_rounds
-constexpr uint32_t kMaxBucketScan = 1u << 24; // CandidatesParams::max_bucket_scan, max_sparse_bucket_scan
-constexpr uint32_t kMaxSparseScale = 64;      // CandidatesParams::sparse_scan_scale, DrawsParams::sparse_trial_scale
+constexpr uint32_t kMaxTransferModels = 64;    // TransferParams::transfer_models
+constexpr uint32_t kMaxTransferPoses = 16;     // TransferParams::transfer_poses
+constexpr uint32_t kMaxFocusModels = 64;       // FocusParams::focus_models
+constexpr uint32_t kMaxRescoredModels = 64;    // RefineParams::rescored_models
+constexpr uint32_t kMaxRefineIterations = 16;  // RefineParams::refine_iterations
+constexpr uint32_t kMaxLendModels = 32;        // RefineParams::lend_spread_models, lend_family_models
+constexpr uint32_t kMaxLendRounds = 8;         // RefineParams::lend_rounds
+constexpr uint32_t kMaxNormalRadiusSteps = 8;  // ExtractParams::max_radius_steps
+constexpr uint32_t kMaxGroundFitRounds = 16;   // GroundParams::fit_rounds
+constexpr uint32_t kMaxBucketScan = 1u << 24;  // CandidatesParams::max_bucket_scan, max_sparse_bucket_scan
+constexpr uint32_t kMaxSparseScale =
+    64;  // CandidatesParams::sparse_scan_scale, DrawsParams::sparse_trial_scale
 // The object ground's grid over a cut-out's footprint (geometry/object_ground.hpp).
 constexpr uint32_t kObjectGroundGridSide = 32;
 constexpr uint32_t kObjectGroundCells = kObjectGroundGridSide * kObjectGroundGridSide;

@@ -71,9 +71,9 @@ typedef union spinhash_recognizer {
  * (stage_fields.h), spinhash_<id>_params, one member per entry of its
  * SPINHASH_PARAMS_<id>, in that order (the list gives each one's default,
  * range and meaning). BOOL members are 0 or 1. */
-#define SPINHASH_C_STAGE_STRUCT(id, Name, what)     \
-  typedef struct spinhash_##id##_params {           \
-    SPINHASH_PARAMS_##id(SPINHASH_C_PARAMS_MEMBER)  \
+#define SPINHASH_C_STAGE_STRUCT(id, Name, what)    \
+  typedef struct spinhash_##id##_params {          \
+    SPINHASH_PARAMS_##id(SPINHASH_C_PARAMS_MEMBER) \
   } spinhash_##id##_params;
 SPINHASH_STAGES(SPINHASH_C_STAGE_STRUCT)
 #undef SPINHASH_C_STAGE_STRUCT

@@ -3,8 +3,8 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "config_kinds.hpp"
 #include "config/field_table.hpp"
+#include "config_kinds.hpp"
 #include "pipeline/recognizer_flags.hpp"  // mode_name
 #include "spinhash/recognizer.hpp"
 
@@ -131,8 +131,8 @@ RecognizerConfig recognizer_config(const RecognizerConfig& base, py::handle conf
   }
   set_config_fields(&c, kwargs);
   if (c.draws.delta_max < c.draws.delta)
-    throw py::value_error("delta_max (" + bound_text(double{c.draws.delta_max}) + ") must be at least delta (" +
-                          bound_text(double{c.draws.delta}) + ")");
+    throw py::value_error("delta_max (" + bound_text(double{c.draws.delta_max}) +
+                          ") must be at least delta (" + bound_text(double{c.draws.delta}) + ")");
   if (required_workspace_bytes(c) == 0) throw py::value_error("invalid recognizer configuration");
   return c;
 }
@@ -149,7 +149,8 @@ void bind_config(py::module_& m) {
   cls.attr("modes") = mode_names();
   // A BOOL field whose CLI flag sets it to false says so first.
   for (const ConfigField& f : host::config_fields()) {
-    const std::string doc = (f.kind == FieldKind::BOOL && *f.flag == '!' ? "False: " : "") + std::string(f.help);
+    const std::string doc =
+        (f.kind == FieldKind::BOOL && *f.flag == '!' ? "False: " : "") + std::string(f.help);
     cls.def_property(
         f.flat().c_str(), [&f](const RecognizerConfig& c) { return get_field(f, c); },
         [&f](RecognizerConfig& c, py::handle v) { set_field(f, &c, v); }, doc.c_str());

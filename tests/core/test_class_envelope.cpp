@@ -175,7 +175,7 @@ TEST_CASE("a 1.25 m saloon is no van: on terrain, and without terrain under a va
   const ScanShape real_van =
       measure_scan(features_of(sparse_van), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 60.0f);
   CHECK(within_envelope(real_van, vans, kEndTolerance, kClasses));
-  // The same scan at 20 per m^2 (below kMinModelDensity): the allowance
+  // The same scan at 20 per m^2 (below min_height_density): the allowance
   // (0.67 m) would let a van sunk under a saloon pass, so without terrain
   // the height counts as unmeasured; with its terrain the class holds.
   const ScanShape bare_sparse =

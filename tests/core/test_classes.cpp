@@ -132,7 +132,7 @@ TEST_CASE("scan density: points per m^2 of the part of the model's top the scan 
   const float min_density = cfg.confidence.min_model_density;
   CHECK(dense_enough_for_model(cfg, min_density));
   CHECK_FALSE(dense_enough_for_model(cfg, min_density - 1.0f));
-  CHECK(min_density == 50.0f);  // above what most cars of a 10-30 per m^2 survey return
+  CHECK(min_density == 50.0f);    // above what most cars of a 10-30 per m^2 survey return
   s.ground.points_ground = 2000;  // more dropped than counted: no points, not a wrap-around
   CHECK(scan_density(s, whole) == 0.0f);
 }

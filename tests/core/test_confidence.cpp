@@ -63,7 +63,8 @@ struct LeadingAnswer {
     ranking[0].has_pose = true;
     ranking[0].inliers = 3u * features / 4u;
     ranking[0].score = -1.5f * static_cast<float>(features);
-    ranking[1].score = ranking[0].score - margins * cfg.confidence.min_margin * std::sqrt(static_cast<float>(features));
+    ranking[1].score =
+        ranking[0].score - margins * cfg.confidence.min_margin * std::sqrt(static_cast<float>(features));
     r.ranking = ranking;
     r.ranking_count = 2;
     r.group_size = 1;
@@ -146,7 +147,8 @@ TEST_CASE("confident needs every gate: fit, score, a group of one, and the scan'
   const ExtentFit pinned{0.05f, 0.05f};
   constexpr float kNoiseOnlyF = 1.0f;  // residual F of a scan that is the model plus noise
   CHECK(is_confident(r, cfg, kFeatures, pinned, kNoiseOnlyF));
-  CHECK_FALSE(is_confident(r, cfg, kFeatures, pinned, cfg.confidence.max_residual_f + 0.5f));  // a patch off the surface
+  CHECK_FALSE(is_confident(r, cfg, kFeatures, pinned,
+                           cfg.confidence.max_residual_f + 0.5f));  // a patch off the surface
 
   // The same answer with one thing changed.
   auto with = [&](auto change) {
@@ -163,17 +165,21 @@ TEST_CASE("confident needs every gate: fit, score, a group of one, and the scan'
   CHECK_FALSE(
       with([](Result& c, RankedModel&, ExtentFit&) { c.group_size = 2; }));  // a look-alike within the margin
   CHECK_FALSE(with([](Result& c, RankedModel&, ExtentFit&) { c.ranking_count = 0; }));
-  CHECK_FALSE(
-      with([&](Result&, RankedModel&, ExtentFit& f) { f.shortfall = cfg.confidence.max_extent_shortfall + 0.05f; }));
-  CHECK_FALSE(
-      with([&](Result&, RankedModel&, ExtentFit& f) { f.overhang = cfg.confidence.max_extent_overhang + 0.05f; }));
-  CHECK(with([&](Result&, RankedModel&, ExtentFit& f) { f.shortfall = cfg.confidence.max_extent_shortfall - 0.05f; }));
+  CHECK_FALSE(with([&](Result&, RankedModel&, ExtentFit& f) {
+    f.shortfall = cfg.confidence.max_extent_shortfall + 0.05f;
+  }));
+  CHECK_FALSE(with(
+      [&](Result&, RankedModel&, ExtentFit& f) { f.overhang = cfg.confidence.max_extent_overhang + 0.05f; }));
+  CHECK(with([&](Result&, RankedModel&, ExtentFit& f) {
+    f.shortfall = cfg.confidence.max_extent_shortfall - 0.05f;
+  }));
 }
 
 TEST_CASE("among many look-alikes the runner-up must trail by twice the margin") {
   const RecognizerConfig cfg;
   constexpr uint32_t kFeatures = 400;
-  const float margin = cfg.confidence.min_margin * std::sqrt(static_cast<float>(kFeatures));  // log-likelihood
+  const float margin =
+      cfg.confidence.min_margin * std::sqrt(static_cast<float>(kFeatures));  // log-likelihood
   RankedModel ranking[2];
   ranking[0].score = -600.0f;
   Result r;
@@ -195,7 +201,8 @@ TEST_CASE("a scan that shows less of the model's top needs a larger lead") {
   LeadingAnswer a(cfg, kFeatures, 1.5f);  // leads by 1.5 margins
   Result& r = a.r;
   RankedModel* ranking = a.ranking;
-  const float margin = cfg.confidence.min_margin * std::sqrt(static_cast<float>(kFeatures));  // log-likelihood
+  const float margin =
+      cfg.confidence.min_margin * std::sqrt(static_cast<float>(kFeatures));  // log-likelihood
   const ExtentFit pinned{0.05f, 0.05f};
   auto confident_at = [&](float coverage) {
     r.stats.confidence.surface_coverage = coverage;
@@ -203,9 +210,9 @@ TEST_CASE("a scan that shows less of the model's top needs a larger lead") {
   };
   CHECK(confident_at(1.0f));
   CHECK(confident_at(cfg.confidence.full_coverage));  // the plain margin down to full_coverage
-  CHECK(confident_at(0.8f));               // (0.9 / 0.8)^2 = 1.27 margins
-  CHECK_FALSE(confident_at(0.7f));         // 1.65 margins: an occluder may hide what tells them apart
-  CHECK_FALSE(confident_at(0.0f));         // nothing of the top seen: no lead is enough
+  CHECK(confident_at(0.8f));                          // (0.9 / 0.8)^2 = 1.27 margins
+  CHECK_FALSE(confident_at(0.7f));  // 1.65 margins: an occluder may hide what tells them apart
+  CHECK_FALSE(confident_at(0.0f));  // nothing of the top seen: no lead is enough
   CHECK(confident_margin(r, cfg) > 1e30f);
   r.stats.confidence.surface_coverage = 0.45f;
   CHECK(confident_margin(r, cfg) == doctest::Approx(4.0f * cfg.confidence.min_margin));
@@ -233,10 +240,10 @@ TEST_CASE("a sparser scan needs a larger lead: the margin grows as 1 / sqrt(dens
     r.stats.confidence.scan_density = density;
     return is_confident(r, cfg, kFeatures, pinned, 1.0f);
   };
-  CHECK(confident_at(1000.0f));            // 0.05 m
+  CHECK(confident_at(1000.0f));                            // 0.05 m
   CHECK(confident_at(cfg.confidence.full_model_density));  // the plain margin down to where it was set
-  CHECK(confident_at(90.0f));              // sqrt(130 / 90) = 1.20 margins
-  CHECK_FALSE(confident_at(64.0f));        // 0.15 m, 40 % occluded: 1.43 margins
+  CHECK(confident_at(90.0f));                              // sqrt(130 / 90) = 1.20 margins
+  CHECK_FALSE(confident_at(64.0f));                        // 0.15 m, 40 % occluded: 1.43 margins
   r.stats.confidence.scan_density = 0.25f * cfg.confidence.full_model_density;
   CHECK(confident_margin(r, cfg) == doctest::Approx(2.0f * cfg.confidence.min_margin));
   r.stats.confidence.surface_coverage = 0.45f;  // times the coverage's (0.9 / 0.45)^2
@@ -264,7 +271,7 @@ TEST_CASE("among many look-alikes the residuals must be closer to noise") {
   CHECK(residual_limit(r, cfg) < weak_shape);
   CHECK_FALSE(is_confident(r, cfg, kFeatures, pinned, weak_shape));
   CHECK(is_confident(r, cfg, kFeatures, pinned, 1.0f));  // noise alone stays confident
-  cfg.confidence.max_residual_f = 2.0f * weak_shape;                // the limit follows the configured field
+  cfg.confidence.max_residual_f = 2.0f * weak_shape;     // the limit follows the configured field
   CHECK(is_confident(r, cfg, kFeatures, pinned, weak_shape));
 }
 

@@ -17,11 +17,11 @@
 #include "recognize/config_check.hpp"
 #include "recognize/stages.hpp"
 #include "spinhash/config_fields.h"
-#include "spinhash/stage_fields.h"
 #include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"
 #include "spinhash/scene_fields.h"
 #include "spinhash/scene_stream.hpp"
+#include "spinhash/stage_fields.h"
 
 using namespace spinhash;
 
@@ -100,7 +100,8 @@ static_assert(member_count<GroundStats>() == listed_stats("ground."), "GroundSta
 static_assert(member_count<CandidatesStats>() == listed_stats("candidates."),
               "CandidatesStats and candidates.* differ");
 static_assert(member_count<DrawsStats>() == listed_stats("draws."), "DrawsStats and draws.* differ");
-static_assert(member_count<TransferStats>() == listed_stats("transfer."), "TransferStats and transfer.* differ");
+static_assert(member_count<TransferStats>() == listed_stats("transfer."),
+              "TransferStats and transfer.* differ");
 static_assert(member_count<RefineStats>() == listed_stats("refine."), "RefineStats and refine.* differ");
 static_assert(member_count<ConfidenceStats>() == listed_stats("confidence."),
               "ConfidenceStats and confidence.* differ");
@@ -125,27 +126,26 @@ constexpr bool same_name(const char* a, const char* b) {
   return *a == *b;
 }
 
-#define SPINHASH_PARAM_CHECKS(kind, name, def, lo, hi, flag, why)                              \
-  static_assert(std::is_same<decltype(Params::name), CppType_##kind>::value,                 \
-                #name ": another type in its Params struct than in stage_fields.h");        \
-  static_assert(Params{}.name == (def), #name ": another default than in stage_fields.h");    \
+#define SPINHASH_PARAM_CHECKS(kind, name, def, lo, hi, flag, why)                          \
+  static_assert(std::is_same<decltype(Params::name), CppType_##kind>::value,               \
+                #name ": another type in its Params struct than in stage_fields.h");       \
+  static_assert(Params{}.name == (def), #name ": another default than in stage_fields.h"); \
   static_assert(in_range(Params{}.name, lo, hi), #name ": the default is outside its range");
 #define SPINHASH_COUNT_PARAM(kind, name, def, lo, hi, flag, why) +1
-#define SPINHASH_ENABLED_AT(kind, name, def, lo, hi, flag, why) ok = ok && (at++ == 0 || !same_name(#name, "enabled"));
+#define SPINHASH_ENABLED_AT(kind, name, def, lo, hi, flag, why) \
+  ok = ok && (at++ == 0 || !same_name(#name, "enabled"));
 #define SPINHASH_STAGE_CHECKS(id, Name, what)                                                   \
-  namespace stage_##id {                                                                       \
-  using Params = Name##Params;                                                                 \
-  static_assert(member_count<Params>() == 0 SPINHASH_PARAMS_##id(SPINHASH_COUNT_PARAM),        \
-                #Name "Params and SPINHASH_PARAMS_" #id " list different fields");             \
-  static_assert(std::is_same<decltype(StageParams::id), Params>::value, "StageParams::" #id);  \
-  SPINHASH_PARAMS_##id(SPINHASH_PARAM_CHECKS)                                                  \
-  constexpr bool enabled_first() {                                                             \
-    int at = 0;                                                                                \
-    bool ok = true;                                                                            \
-    SPINHASH_PARAMS_##id(SPINHASH_ENABLED_AT)                                                  \
-    return ok;                                                                                 \
-  }                                                                                            \
-  static_assert(enabled_first(), #Name "Params: `enabled` must be the first field");           \
+  namespace stage_##id {                                                                        \
+    using Params = Name##Params;                                                                \
+    static_assert(member_count<Params>() == 0 SPINHASH_PARAMS_##id(SPINHASH_COUNT_PARAM),       \
+                  #Name "Params and SPINHASH_PARAMS_" #id " list different fields");            \
+    static_assert(std::is_same<decltype(StageParams::id), Params>::value, "StageParams::" #id); \
+    SPINHASH_PARAMS_##id(SPINHASH_PARAM_CHECKS) constexpr bool enabled_first() {                \
+      int at = 0;                                                                               \
+      bool ok = true;                                                                           \
+      SPINHASH_PARAMS_##id(SPINHASH_ENABLED_AT) return ok;                                      \
+    }                                                                                           \
+    static_assert(enabled_first(), #Name "Params: `enabled` must be the first field");          \
   }
 SPINHASH_STAGES(SPINHASH_STAGE_CHECKS)
 #undef SPINHASH_STAGE_CHECKS
@@ -206,9 +206,9 @@ TEST_CASE("config fields: every field survives C++ -> C -> C++ with a non-defaul
   SPINHASH_CONFIG_FIELDS(SPINHASH_EDIT)
 #undef SPINHASH_EDIT
 #define SPINHASH_EDIT_PARAM(kind, name, def, lo, hi, flag, why) change(p.name, k++);
-#define SPINHASH_EDIT_STAGE(id, Name, what) \
-  {                                         \
-    Name##Params& p = edited.id;            \
+#define SPINHASH_EDIT_STAGE(id, Name, what)   \
+  {                                           \
+    Name##Params& p = edited.id;              \
     SPINHASH_PARAMS_##id(SPINHASH_EDIT_PARAM) \
   }
   SPINHASH_STAGES(SPINHASH_EDIT_STAGE)
@@ -237,14 +237,14 @@ TEST_CASE("config fields: every field survives C++ -> C -> C++ with a non-defaul
     CHECK(same(mine.name, c_stage.name));                             \
     CHECK(same(back_stage.name, c_stage.name));                       \
   }
-#define SPINHASH_STAGE_ROUND_TRIP(id, Name, what)    \
-  {                                                  \
-    INFO("stage " #id);                              \
-    const Name##Params& mine = edited.id;            \
-    const Name##Params& back_stage = back.id;        \
-    const auto& c_stage = c.id;                      \
-    const auto& c_defaults_stage = c_defaults.id;    \
-    SPINHASH_PARAMS_##id(SPINHASH_PARAM_ROUND_TRIP)  \
+#define SPINHASH_STAGE_ROUND_TRIP(id, Name, what)   \
+  {                                                 \
+    INFO("stage " #id);                             \
+    const Name##Params& mine = edited.id;           \
+    const Name##Params& back_stage = back.id;       \
+    const auto& c_stage = c.id;                     \
+    const auto& c_defaults_stage = c_defaults.id;   \
+    SPINHASH_PARAMS_##id(SPINHASH_PARAM_ROUND_TRIP) \
   }
   SPINHASH_STAGES(SPINHASH_STAGE_ROUND_TRIP)
 #undef SPINHASH_STAGE_ROUND_TRIP
@@ -269,17 +269,16 @@ TEST_CASE("config fields: the C default config is the C++ default, field by fiel
     INFO("field " #name);                                          \
     CHECK(same(mine.name, c_stage.name));                          \
   }
-#define SPINHASH_STAGE_DEFAULT(id, Name, what)     \
-  {                                                \
-    const Name##Params& mine = defaults.id;        \
-    const auto& c_stage = c.id;                    \
-    SPINHASH_PARAMS_##id(SPINHASH_PARAM_DEFAULT)   \
+#define SPINHASH_STAGE_DEFAULT(id, Name, what)   \
+  {                                              \
+    const Name##Params& mine = defaults.id;      \
+    const auto& c_stage = c.id;                  \
+    SPINHASH_PARAMS_##id(SPINHASH_PARAM_DEFAULT) \
   }
   SPINHASH_STAGES(SPINHASH_STAGE_DEFAULT)
 #undef SPINHASH_STAGE_DEFAULT
 #undef SPINHASH_PARAM_DEFAULT
 }
-
 
 TEST_CASE("config fields: every statistic reaches the C struct") {
   RecognitionStats st;
@@ -431,20 +430,20 @@ TEST_CASE("scene fields: the defaults are valid and a field just outside its ran
 TEST_CASE("stage fields: the defaults are valid and a field just outside its range is refused") {
   REQUIRE(config_valid(RecognizerConfig{}));
   int checked = 0;
-#define SPINHASH_PARAM_OUTSIDE(kind, name, def, lo, hi, flag, why)              \
-  {                                                                             \
-    INFO("field " << stage_name << "." #name);                                  \
-    RecognizerConfig c;                                                         \
-    if (below(lo, &(c.*member).name)) CHECK_FALSE(config_valid(c));             \
-    RecognizerConfig d;                                                         \
-    if (above(hi, &(d.*member).name)) CHECK_FALSE(config_valid(d));             \
-    ++checked;                                                                  \
+#define SPINHASH_PARAM_OUTSIDE(kind, name, def, lo, hi, flag, why)  \
+  {                                                                 \
+    INFO("field " << stage_name << "." #name);                      \
+    RecognizerConfig c;                                             \
+    if (below(lo, &(c.*member).name)) CHECK_FALSE(config_valid(c)); \
+    RecognizerConfig d;                                             \
+    if (above(hi, &(d.*member).name)) CHECK_FALSE(config_valid(d)); \
+    ++checked;                                                      \
   }
-#define SPINHASH_STAGE_OUTSIDE(id, Name, what)                 \
-  {                                                            \
-    const char* stage_name = #id;                              \
-    Name##Params StageParams::*member = &StageParams::id;      \
-    SPINHASH_PARAMS_##id(SPINHASH_PARAM_OUTSIDE)               \
+#define SPINHASH_STAGE_OUTSIDE(id, Name, what)            \
+  {                                                       \
+    const char* stage_name = #id;                         \
+    Name##Params StageParams::*member = &StageParams::id; \
+    SPINHASH_PARAMS_##id(SPINHASH_PARAM_OUTSIDE)          \
   }
   SPINHASH_STAGES(SPINHASH_STAGE_OUTSIDE)
 #undef SPINHASH_STAGE_OUTSIDE

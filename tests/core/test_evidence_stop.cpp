@@ -68,8 +68,8 @@ TEST_CASE_FIXTURE(Stopping, "a clear view stops on evidence with the model and p
   CHECK_FALSE(early.stats.draws.budget_exhausted);
   CHECK(early.stats.draws.trials < full_trials);
   CHECK(early.stats.draws.hypotheses * 3u < full_hypotheses * 2u);
-  MESSAGE("trials ", early.stats.draws.trials, " of ", full_trials, ", hypotheses ", early.stats.draws.hypotheses, " of ",
-          full_hypotheses);
+  MESSAGE("trials ", early.stats.draws.trials, " of ", full_trials, ", hypotheses ",
+          early.stats.draws.hypotheses, " of ", full_hypotheses);
   CHECK(early.ranking[0].model == kModel);
   CHECK(std::fabs(yaw_of(early.ranking[0].pose) - kYaw) < 0.05);  // rad, about 3 degrees
   for (int a = 0; a < 3; ++a)
@@ -94,15 +94,15 @@ TEST_CASE_FIXTURE(Stopping,
   constexpr uint32_t kTrials = 50;
   // The ball passes 20-30 poses a draw: 200 draws came within 3 % of the
   // default budget (6 000) on x86-64 and reached it on aarch64 (a sphere's
-  // features tie, and its poses differ across targets; they did before the
-  // normals of results.md 9n too). The pose budget is not under test.
+  // features tie, and its poses differ across targets). The pose budget is
+  // not under test.
   constexpr uint32_t kAmpleHypotheses = 1u << 20;
   auto stats_with = [&](uint32_t min_hypotheses) {
     RecognizerConfig cfg;
     cfg.draws.max_trials = kTrials;
     cfg.draws.max_hypotheses = kAmpleHypotheses;
     cfg.draws.min_hypotheses = min_hypotheses;
-    cfg.focus.focus_models = 0;                     // its draws follow extended ones (test_pose_transfer.cpp)
+    cfg.focus.focus_models = 0;               // its draws follow extended ones (test_pose_transfer.cpp)
     const Result r = recognize(ball(), cfg);  // never stops on evidence
     REQUIRE_FALSE(r.stats.draws.budget_exhausted);
     REQUIRE_FALSE(r.stats.draws.stopped_on_evidence);

@@ -45,7 +45,8 @@ TEST_CASE("end-aligned poses put a longer sibling's rear, then its front, on the
   const blob::ModelRecord first = centred_box(11.0f), sibling = centred_box(12.0f);
   const RigidPose pose = yawed_pose();
   RigidPose out[kEndAlignedPoses];
-  for (uint32_t i = 0; i < kEndAlignedPoses; ++i) REQUIRE(end_aligned_pose(pose, first, sibling, i, &out[i], kMinEndShift));
+  for (uint32_t i = 0; i < kEndAlignedPoses; ++i)
+    REQUIRE(end_aligned_pose(pose, first, sibling, i, &out[i], kMinEndShift));
   const Eigen::Vector3f side(0.0f, 1.2f, 1.0f);  // a point on the left side, mid-height
   const Eigen::Vector3f first_rear = apply(pose, side + Eigen::Vector3f(first.bbox_min[0], 0, 0));
   const Eigen::Vector3f first_front = apply(pose, side + Eigen::Vector3f(first.bbox_max[0], 0, 0));
@@ -69,7 +70,8 @@ TEST_CASE("a sibling of the same length gets the pose as it is and the turned on
   const blob::ModelRecord first = centred_box(4.4f), twin = centred_box(4.42f);  // within lend_min_end_shift
   const RigidPose pose = yawed_pose();
   RigidPose out;
-  REQUIRE(end_aligned_pose(pose, first, twin, 0, &out, kMinEndShift));  // rear ends 0.01 m apart: nearly as it is
+  REQUIRE(
+      end_aligned_pose(pose, first, twin, 0, &out, kMinEndShift));  // rear ends 0.01 m apart: nearly as it is
   CHECK((out.translation - pose.translation).norm() < 0.011f);
   CHECK((out.rotation - pose.rotation).norm() < kTolerance);
   CHECK(!end_aligned_pose(pose, first, twin, 2, &out, kMinEndShift));  // front ends: pose 0 once more

@@ -261,7 +261,9 @@ std::vector<double> random_blob(uint32_t points, double side) {
 constexpr uint32_t kUnknownPoints = 3000;
 constexpr float kSphereZ = 1.5f;  // m: centred at a toy's height
 
-float mean_score(const Result& r) { return r.ranking[0].score / static_cast<float>(r.stats.extract.features); }
+float mean_score(const Result& r) {
+  return r.ranking[0].score / static_cast<float>(r.stats.extract.features);
+}
 
 }  // namespace
 
@@ -362,9 +364,12 @@ TEST_CASE("invalid config values are refused by required_workspace_bytes and ini
       {"zero spin lambda", [](RecognizerConfig& c) { c.draws.spin_lambda = 0.0f; }},
       {"NaN min_inlier_fraction", [](RecognizerConfig& c) { c.confidence.min_inlier_fraction = kNaN; }},
       {"min_inlier_fraction 1.5", [](RecognizerConfig& c) { c.confidence.min_inlier_fraction = 1.5f; }},
-      {"NaN min_mean_log_likelihood", [](RecognizerConfig& c) { c.confidence.min_mean_log_likelihood = kNaN; }},
-      {"positive min_mean_log_likelihood", [](RecognizerConfig& c) { c.confidence.min_mean_log_likelihood = 1.0f; }},
-      {"-inf min_mean_log_likelihood", [](RecognizerConfig& c) { c.confidence.min_mean_log_likelihood = -kInf; }},
+      {"NaN min_mean_log_likelihood",
+       [](RecognizerConfig& c) { c.confidence.min_mean_log_likelihood = kNaN; }},
+      {"positive min_mean_log_likelihood",
+       [](RecognizerConfig& c) { c.confidence.min_mean_log_likelihood = 1.0f; }},
+      {"-inf min_mean_log_likelihood",
+       [](RecognizerConfig& c) { c.confidence.min_mean_log_likelihood = -kInf; }},
       {"verify_features 0", [](RecognizerConfig& c) { c.draws.verify_features = 0; }},
       {"NaN query basis spacing", [](RecognizerConfig& c) { c.extract.query_basis_spacing = kNaN; }},
       {"negative query basis spacing", [](RecognizerConfig& c) { c.extract.query_basis_spacing = -1.0f; }},

@@ -194,7 +194,7 @@ TEST_CASE(
   // The top of a 4.5 x 1.4 m body rising from 0.10 to 0.22 m, with a 0.45 m
   // cockpit hump: noise-free, its smooth slopes fill every 0.5 m cell with a
   // few centimetres of spread, which read as the ground's roughness (TORCS'
-  // open-wheel racer lost 85 % of its points that way, issue 28).
+  // open-wheel racer lost most of its points that way).
   auto racer = [](std::vector<float>* pts) {
     for (float x = -2.25f; x <= 2.25f; x += 0.05f)
       for (float y = -0.7f; y <= 0.7f; y += 0.05f) {
@@ -211,8 +211,8 @@ TEST_CASE(
   std::vector<float> ground = test::plane_grid(4.0f, 0.1f);
   const uint32_t ground_points = static_cast<uint32_t>(ground.size() / 3);
   pts.insert(pts.end(), ground.begin(), ground.end());
-  const uint32_t dropped =
-      remove_object_ground(pts.data(), static_cast<uint32_t>(pts.size() / 3), with_clearance(kClearance), scratch.data());
+  const uint32_t dropped = remove_object_ground(pts.data(), static_cast<uint32_t>(pts.size() / 3),
+                                                with_clearance(kClearance), scratch.data());
   CHECK(dropped >= ground_points);
   CHECK(dropped <= ground_points + n / 10u);
 }
@@ -375,8 +375,8 @@ TEST_CASE("the terrain found says the object's top above it and the ground's noi
   std::vector<float> scratch(kObjectGroundScratchFloats);
   TerrainUnder terrain;
   terrain.found = true;
-  CHECK(remove_object_ground(box.data(), static_cast<uint32_t>(box.size() / 3), with_clearance(kClearance), scratch.data(),
-                             &terrain) == 0u);
+  CHECK(remove_object_ground(box.data(), static_cast<uint32_t>(box.size() / 3), with_clearance(kClearance),
+                             scratch.data(), &terrain) == 0u);
   CHECK_FALSE(terrain.found);
 }
 
@@ -387,7 +387,8 @@ TEST_CASE("under a body the band's top is kept; beside it the whole band goes") 
   const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
   std::vector<float> scratch(kObjectGroundScratchFloats);
   TerrainUnder terrain;
-  const uint32_t kept = n - remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data(), &terrain);
+  const uint32_t kept =
+      n - remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data(), &terrain);
   REQUIRE(terrain.found);
   // Heights within kSlack of a bound may fall either side (the cells' levels are noisy).
   constexpr float kSlack = 0.015f;
@@ -413,10 +414,10 @@ TEST_CASE("under a body the band's top is kept; beside it the whole band goes") 
   CHECK(ground_in_band == 0u);
 }
 
-// A survey's cut-out of a car (issue 28): a 4.5 x 1.8 x 1.45 m body seen
+// A survey's cut-out of a car: a 4.5 x 1.8 x 1.45 m body seen
 // by two flight lines at 70 degrees, its roof sampled at 0.35 m and its
 // sides by a row per metre of height, the ground reaching 1.5 m past it.
-// Its 1 m cells show fewer clean ones than kMinSparseGroundCells (the 24 a
+// Its 1 m cells show fewer clean ones than min_sparse_ground_cells (the 24 a
 // bare truck's roof cannot show), but they ring the body, and it stands
 // 1.45 m above them.
 constexpr float kSurveySpacing = 0.35f;
@@ -445,8 +446,8 @@ TEST_CASE("a survey's small cut-out of a car: the ground ringing it goes; bare b
   std::vector<float> bed = test::plane_grid(2.5f, kSurveySpacing);
   for (size_t i = 0; i < bed.size(); i += 3) bed[i + 1] *= 0.6f;
   for (size_t i = 2; i < bed.size(); i += 3) bed[i] = 1.1f;
-  CHECK(remove_object_ground(bed.data(), static_cast<uint32_t>(bed.size() / 3), with_clearance(kClearance), scratch.data()) ==
-        0u);
+  CHECK(remove_object_ground(bed.data(), static_cast<uint32_t>(bed.size() / 3), with_clearance(kClearance),
+                             scratch.data()) == 0u);
   const std::vector<float> plane = test::plane_grid(4.0f, kSurveySpacing);
   Pcg32 rng(23u);
   uint32_t ground = 0;
@@ -460,7 +461,8 @@ TEST_CASE("a survey's small cut-out of a car: the ground ringing it goes; bare b
   }
   const uint32_t n = body + ground;
   TerrainUnder terrain;
-  const uint32_t dropped = remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data(), &terrain);
+  const uint32_t dropped =
+      remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data(), &terrain);
   CHECK(terrain.found);
   CHECK(dropped == ground);
   CHECK(terrain.top == doctest::Approx(kCarHeight).epsilon(0.05));

@@ -177,7 +177,8 @@ TEST_CASE_FIXTURE(Twinned, "after extended draws the leading models get a focuse
 
 TEST_CASE_FIXTURE(Twinned, "draws that meet min_hypotheses within max_trials leave the focused search out") {
   RecognizerConfig with, without;
-  with.draws.min_hypotheses = without.draws.min_hypotheses = 10;  // W = 1 verifies a few dozen poses in 800 draws
+  with.draws.min_hypotheses = without.draws.min_hypotheses =
+      10;  // W = 1 verifies a few dozen poses in 800 draws
   without.focus.focus_models = 0;
   const Result a = recognize(8, with);
   const std::vector<RankedModel> ranked = copied(a);

@@ -8,8 +8,8 @@
 #include "blob/aligned_bytes.hpp"
 #include "spinhash/config_fields.h"
 #include "spinhash/presets.hpp"
-#include "spinhash/stage_fields.h"
 #include "spinhash/recognizer.hpp"
+#include "spinhash/stage_fields.h"
 #include "support/toy_database.hpp"
 
 using namespace spinhash;
@@ -43,8 +43,8 @@ TEST_CASE("presets: default and full are RecognizerConfig{} and flight changes o
   CHECK(changed_fields(preset_config(Preset::kDefault), RecognizerConfig{}).empty());
   CHECK(changed_fields(preset_config(Preset::kFull), RecognizerConfig{}).empty());
   const RecognizerConfig flight = preset_config(Preset::kFlight);
-  const std::vector<std::string> expected = {"max_features",         "extract.query_cloud_voxel",
-                                             "candidates.top_w",     "candidates.max_bucket_scan",
+  const std::vector<std::string> expected = {"max_features",          "extract.query_cloud_voxel",
+                                             "candidates.top_w",      "candidates.max_bucket_scan",
                                              "draws.verify_features", "draws.max_trials"};
   CHECK(changed_fields(flight, RecognizerConfig{}) == expected);
   CHECK(flight.draws.max_trials == kFlightMaxTrials);

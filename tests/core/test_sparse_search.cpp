@@ -13,8 +13,8 @@ using namespace spinhash;
 namespace {
 
 const RecognizerConfig kDefaults;
-const float kSparseBelow = kDefaults.candidates.sparse_density;           // object points per m^2
-const uint32_t kSparseTrialScale = kDefaults.draws.sparse_trial_scale;    // 4
+const float kSparseBelow = kDefaults.candidates.sparse_density;            // object points per m^2
+const uint32_t kSparseTrialScale = kDefaults.draws.sparse_trial_scale;     // 4
 const uint32_t kSparseScanScale = kDefaults.candidates.sparse_scan_scale;  // 4
 
 // The candidates' parameters with max_bucket_scan `scan`.

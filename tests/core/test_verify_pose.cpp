@@ -97,7 +97,8 @@ TEST_CASE_FIXTURE(Fixture, "refine_pose, repeated, recovers the pose from a pert
         0.5f * angle_between(start.rotation, truth.rotation));
   CHECK((refined.translation - truth.translation).norm() <
         0.5f * (start.translation - truth.translation).norm());
-  for (int step = 0; step < kRefineSteps; ++step) REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &refined, nullptr, kDamping));
+  for (int step = 0; step < kRefineSteps; ++step)
+    REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &refined, nullptr, kDamping));
   CHECK(angle_between(refined.rotation, truth.rotation) < 0.05f * kDegree);
   CHECK((refined.translation - truth.translation).norm() < 1e-3f);
 }
@@ -142,7 +143,8 @@ TEST_CASE_FIXTURE(
   REQUIRE_FALSE(surface.use_field);
   CHECK(surface.surface_patch_radius ==
         doctest::Approx(cfg.refine.patch_radius_per_spacing * toy.db.params().basis_spacing));
-  CHECK(surface.inv_two_sigma2 == doctest::Approx(1.0f / (2.0f * cfg.refine.sigma_surface * cfg.refine.sigma_surface)));
+  CHECK(surface.inv_two_sigma2 ==
+        doctest::Approx(1.0f / (2.0f * cfg.refine.sigma_surface * cfg.refine.sigma_surface)));
   CHECK(surface.floor == lp.floor);  // an unexplained feature costs what it cost in the hypothesis loop
   const uint32_t f = toy.db.model(kModel).first_feature;
   const Eigen::Vector3f p = Eigen::Map<const Eigen::Vector3f>(toy.db.positions() + 3u * f);
@@ -222,7 +224,8 @@ TEST_CASE_FIXTURE(
   const float right =
       verify_pose(toy.db, kModel, truth, q.view, surface, kNoScoreToBeat, kNoScoreToBeat).log_likelihood;
   RigidPose refined = turned;
-  for (int step = 0; step < kRefineSteps; ++step) refine_pose(toy.db, kModel, q.view, surface, &refined, nullptr, kDamping);
+  for (int step = 0; step < kRefineSteps; ++step)
+    refine_pose(toy.db, kModel, q.view, surface, &refined, nullptr, kDamping);
   CHECK(angle_between(refined.rotation, truth.rotation) > 90.0f * kDegree);
   const float stuck =
       verify_pose(toy.db, kModel, refined, q.view, surface, kNoScoreToBeat, kNoScoreToBeat).log_likelihood;

@@ -52,7 +52,8 @@ bool same_field(const ConfigField& f, const RecognizerConfig& a, const Recognize
     case FieldKind::U64: return f.in<uint64_t>(a) == f.in<uint64_t>(b);
     case FieldKind::F32: return std::memcmp(&f.in<float>(a), &f.in<float>(b), sizeof(float)) == 0;
     case FieldKind::MODE: return f.in<spinhash::Mode>(a) == f.in<spinhash::Mode>(b);
-    case FieldKind::VEC3D: return std::memcmp(&f.in<double[3]>(a), &f.in<double[3]>(b), 3 * sizeof(double)) == 0;
+    case FieldKind::VEC3D:
+      return std::memcmp(&f.in<double[3]>(a), &f.in<double[3]>(b), 3 * sizeof(double)) == 0;
   }
   return false;
 }
@@ -132,8 +133,8 @@ TEST_CASE("--set reaches every field of the lists, and only that field") {
 }
 
 TEST_CASE("--set applies after the flags and --preset, in order") {
-  const RecognizerConfig c =
-      parsed({"--preset", "flight", "--trials", "300", "--set", "draws.max_trials=400", "--set", "max_trials=500"});
+  const RecognizerConfig c = parsed(
+      {"--preset", "flight", "--trials", "300", "--set", "draws.max_trials=400", "--set", "max_trials=500"});
   CHECK(c.draws.max_trials == 500u);
   CHECK(c.candidates.top_w == spinhash::kFlightTopW);
   CHECK(parsed({"--set", "candidates.top_w=7", "-W", "9"}).candidates.top_w == 7u);

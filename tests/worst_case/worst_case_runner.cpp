@@ -125,8 +125,8 @@ int recognise(const Database& db, const float* xyz, uint32_t count, const char* 
       name, status_name(r.status), count, s.extract.features, s.draws.trials,
       static_cast<unsigned long long>(s.draws.pair_checks), s.draws.hypotheses,
       static_cast<unsigned long long>(s.draws.poses_tilted),
-      static_cast<unsigned long long>(s.candidates.bucket_entries), s.candidates.bucket_scan_truncated ? 1 : 0,
-      s.draws.budget_exhausted ? 1 : 0);
+      static_cast<unsigned long long>(s.candidates.bucket_entries),
+      s.candidates.bucket_scan_truncated ? 1 : 0, s.draws.budget_exhausted ? 1 : 0);
   if (r.status != Status::kOk) return fail(std::string(name) + ": not recognised");
   // The hypothesis budget counts the poses found, tilted ones too (max_tilt_deg).
   const bool cap_reached =
@@ -194,8 +194,8 @@ int query(const std::string& db_path, const std::string& cloud_path, const std::
   spinhash_bench_end();
   if (r.status != Status::kOk || r.ranking_count == 0)
     return fail(std::string("query: ") + status_name(r.status));
-  std::printf("top=%s hypotheses=%u features=%u\n", db.model(r.ranking[0].model).name, r.stats.draws.hypotheses,
-              r.stats.extract.features);
+  std::printf("top=%s hypotheses=%u features=%u\n", db.model(r.ranking[0].model).name,
+              r.stats.draws.hypotheses, r.stats.extract.features);
   return 0;
 }
 
