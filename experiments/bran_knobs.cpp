@@ -1,6 +1,6 @@
 #include "bran_knobs.hpp"
 
-#include "config/config_assign.hpp"
+#include "pipeline/recognizer_flags.hpp"
 #include "spinhash/limits.hpp"
 
 namespace spinhash::experiment {
@@ -17,21 +17,14 @@ void BranKnobs::apply(RecognizerConfig* cfg) const {
 }
 
 void apply_settings(const std::vector<std::string>& settings, RecognizerConfig* cfg) {
-  std::string error;
-  for (const std::string& s : settings)
-    if (!host::assign_config_field(s, cfg, &error)) throw CLI::ValidationError("--set", error);
+  pipeline::apply_settings(settings, cfg);
 }
 
 void add_set_option(CLI::App* cmd, std::vector<std::string>* settings) {
-  cmd->add_option(
-         "--set", *settings,
-         "STAGE.FIELD=VALUE: any stage parameter (docs/api.md lists them), or a top-level field by its "
-         "name; applied after the other flags (repeatable)")
-      ->check([](const std::string& s) {
-        RecognizerConfig probe;
-        std::string error;
-        return host::assign_config_field(s, &probe, &error) ? std::string() : error;
-      });
+  cmd->add_option("--set", *settings,
+                  "STAGE.FIELD=VALUE: any stage parameter (docs/api.md lists them), or a top-level field by "
+                  "its name; applied after the other flags (repeatable)")
+      ->check(pipeline::check_setting);
 }
 
 void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs) {

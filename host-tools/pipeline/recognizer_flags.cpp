@@ -63,24 +63,27 @@ void add_preset(CLI::App* cmd, RecognizerConfig* c) {
 
 void add_set(CLI::App* cmd, RecognizerConfig* c) {
   cmd->add_option_function<std::vector<std::string>>(
-         "--set",
-         [c](const std::vector<std::string>& settings) {
-           std::string error;
-           for (const std::string& s : settings)
-             if (!host::assign_config_field(s, c, &error)) throw CLI::ValidationError("--set", error);
-         },
+         "--set", [c](const std::vector<std::string>& settings) { apply_settings(settings, c); },
          "STAGE.FIELD=VALUE: any stage parameter (docs/api.md lists them), or a top-level field by its "
          "name; applied after the other flags, in order (repeatable)")
-      ->check([](const std::string& s) {
-        RecognizerConfig probe;
-        std::string error;
-        return host::assign_config_field(s, &probe, &error) ? std::string() : error;
-      })
+      ->check(check_setting)
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
 
 }  // namespace
+
+std::string check_setting(const std::string& setting) {
+  RecognizerConfig probe;
+  std::string error;
+  return host::assign_config_field(setting, &probe, &error) ? std::string() : error;
+}
+
+void apply_settings(const std::vector<std::string>& settings, RecognizerConfig* cfg) {
+  std::string error;
+  for (const std::string& s : settings)
+    if (!host::assign_config_field(s, cfg, &error)) throw CLI::ValidationError("--set", error);
+}
 
 const char* mode_name(Mode m) {
   for (const auto& [name, mode] : mode_names())

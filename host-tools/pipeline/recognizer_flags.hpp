@@ -17,4 +17,10 @@ void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* cfg);
 void add_set_option(CLI::App* cmd, RecognizerConfig* cfg);
 const char* mode_name(Mode m);
 
+// One KEY=VALUE of --set: "" when it names a field and a valid value, else
+// the error (a CLI11 validator).
+std::string check_setting(const std::string& setting);
+// The KEY=VALUEs in order; a bad one throws CLI::ValidationError("--set").
+void apply_settings(const std::vector<std::string>& settings, RecognizerConfig* cfg);
+
 }  // namespace spinhash::pipeline
