@@ -4,7 +4,6 @@
 #include <Eigen/Core>
 #include <cmath>
 
-#include "util/angle_math.hpp"
 #include "util/far.hpp"
 #include "util/heap_sort.hpp"
 
@@ -104,7 +103,7 @@ bool fit_terrain_plane(const Grid& g, const float* lowest, const GroundParams& p
     const float rise = round <= p.coarse_rounds ? p.object_cell_rise : p.ground_cell_rise;
     if (!fit_plane(g, lowest, &previous, rise, plane)) return false;
   }
-  return std::sqrt(plane->a * plane->a + plane->b * plane->b) <= std::tan(deg_to_rad(p.max_ground_slope_deg));
+  return std::sqrt(plane->a * plane->a + plane->b * plane->b) <= p.max_ground_slope;
 }
 
 // Per cell, over its ground points (those within roughness_band of the

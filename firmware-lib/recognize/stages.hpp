@@ -3,8 +3,10 @@
 // pass's config (ctx.params.<id>), counts in its block of the statistics
 // (stats.<id>) and may stop the pass with a status (the ground and extract
 // stages, on a cloud without enough features). A stage with an `enabled`
-// field is skipped when it is false. The table is fixed at compile time:
-// a bounded, deterministic list, as an op list of an inference engine.
+// field is skipped when it is false. The list is fixed at compile time, a
+// bounded, deterministic op list, and each stage is called directly (no
+// function pointers), so that the static call graph, and the stack budget
+// measured from it, sees every stage.
 #pragma once
 #include <cstdint>
 
@@ -18,17 +20,15 @@ enum class StageId : uint8_t {
 #undef SPINHASH_STAGE_ID
 };
 
-struct Stage {
-  StageId id;
-  const char* name;                            // the id, as `--set` spells it
-  Status (*run)(SearchContext& ctx);           // the stage's entry (its own header)
-  bool (*enabled)(const StageParams& params);  // false: skipped
-};
-
-// Every stage, in run order.
-extern const Stage kStages[];
+// Every stage's id in run order, and its name (the id, as `--set` spells it).
+extern const StageId kStageOrder[];
 extern const uint32_t kStageCount;
+const char* stage_name(StageId id);
 
+// false when `params` switch the stage off (its `enabled` field).
+bool stage_enabled(StageId id, const StageParams& params);
+// Runs one stage.
+Status run_stage(StageId id, SearchContext& ctx);
 // Runs the enabled stages of ctx.params in order; the first status other
 // than kOk ends the pass and is returned.
 Status run_stages(SearchContext& ctx);

@@ -82,8 +82,8 @@
   X(F32, min_below_terrain, 0.3f, 0.0f, 100.0f, "", "m: ... at least this deep ...")                        \
   X(F32, max_below_terrain_share, 0.02f, 0.0f, 1.0f, "",                                                    \
     "... when more than this share of the points lie there")                                                \
-  X(F32, max_ground_slope_deg, 18.0f, 0.0f, 89.0f, "",                                                      \
-    "degrees: steeper \"ground\" is a vehicle's side or cargo bed")                                         \
+  X(F32, max_ground_slope, 0.3249197f, 0.0f, 100.0f, "",                                                    \
+    "rise per m: steeper \"ground\" (0.3249197: 18 degrees) is a vehicle's side or cargo bed")              \
   X(F32, min_object_ground_share, 0.15f, 0.0f, 1.0f, "",                                                    \
     "share of the points within the band that says there is ground under the object")                       \
   X(F32, min_ground_cell_share, 0.3f, 0.0f, 1.0f, "",                                                       \

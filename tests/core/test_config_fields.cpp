@@ -464,10 +464,11 @@ TEST_CASE("the stage table runs the stages of stage_fields.h in their order, eac
   off.focus.enabled = false;
   for (uint32_t i = 0; i < kStageCount; ++i) {
     INFO("stage ", listed[i]);
-    CHECK(std::string(kStages[i].name) == listed[i]);
-    CHECK(static_cast<uint32_t>(kStages[i].id) == i);
-    CHECK(kStages[i].enabled(StageParams{}));
+    const StageId id = kStageOrder[i];
+    CHECK(std::string(stage_name(id)) == listed[i]);
+    CHECK(static_cast<uint32_t>(id) == i);
+    CHECK(stage_enabled(id, StageParams{}));
     const std::string name = listed[i];
-    CHECK(kStages[i].enabled(off) == !(name == "ground" || name == "transfer" || name == "focus"));
+    CHECK(stage_enabled(id, off) == !(name == "ground" || name == "transfer" || name == "focus"));
   }
 }

@@ -70,6 +70,10 @@ test::Tile toy_on_plane(double slope_deg, double ground_spacing, float toy_spaci
 
 }  // namespace
 
+TEST_CASE("object ground: the steepest terrain is 18 degrees, as a rise per m") {
+  CHECK(GroundParams{}.max_ground_slope == doctest::Approx(std::tan(18.0 * 3.14159265358979323846 / 180.0)));
+}
+
 TEST_CASE("noise-free ground and the lowest centimetres of an object on it are dropped, nothing else") {
   std::vector<float> pts = box_on_ground(5.0f);
   const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
