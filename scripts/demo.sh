@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Set-up and demo on built-in data: installs what is missing (Debian 12),
-# builds, generates 56 procedural look-alike vehicles (7 families), compiles
+# builds, generates 56 procedural look-alike vehicles (8 families), compiles
 # them into a database, simulates airborne 3-view scans of every vehicle
 # (5 cm noise, random pose, georeferenced) and recognises them with batch
 # RANSAC, then prints accuracy and time; ends with a small survey of 4 adjacent

@@ -18,7 +18,9 @@ bool in_range_MODE(Mode v, int lo, int hi) { return static_cast<int>(v) >= lo &&
 bool in_range_BOOL(bool, int, int) { return true; }
 bool in_range_U32(uint32_t v, uint32_t lo, uint32_t hi) { return v >= lo && v <= hi; }
 bool in_range_U64(uint64_t v, uint64_t lo, uint64_t hi) { return v >= lo && v <= hi; }
-[[maybe_unused]] bool in_range_F32(float v, float lo, float hi) { return v >= lo && v <= hi; }  // false for NaN
+[[maybe_unused]] bool in_range_F32(float v, float lo, float hi) {
+  return v >= lo && v <= hi;
+}  // false for NaN
 bool in_range_VEC3D(const double (&)[3], int, int) { return true; }  // checked with has_viewpoint below
 
 // The stages' fields are checked from tables (offset in the stage's struct,

@@ -17,10 +17,10 @@ using namespace spinhash;
 
 namespace {
 
-constexpr uint32_t kCopies = 40;       // a feature's W = 50 candidates name most of them
-constexpr uint32_t kTrials = 200;      // draws, all of them made (no stop, no extension)
+constexpr uint32_t kCopies = 40;   // a feature's W = 50 candidates name most of them
+constexpr uint32_t kTrials = 200;  // draws, all of them made (no stop, no extension)
 const uint32_t kPairsPerDraw = RecognizerConfig{}.draws.lookalike_pairs_per_draw;  // 4
-constexpr double kApart = 0.5;         // m along x between shifted copies: box L1 1 m or more
+constexpr double kApart = 0.5;  // m along x between shifted copies: box L1 1 m or more
 const float kLookalikeBox = RecognizerConfig{}.draws.lookalike_box_l1;  // the default
 
 struct Copies {
