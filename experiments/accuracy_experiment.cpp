@@ -5,6 +5,7 @@
 
 #include "accuracy_data.hpp"
 #include "bran_knobs.hpp"
+#include "config/mode_name.hpp"
 #include "config_text.hpp"
 #include "experiments.hpp"
 #include "lookalikes.hpp"
@@ -15,7 +16,6 @@
 #include "output_dir.hpp"
 #include "pipeline/exit_codes.hpp"
 #include "pipeline/progress.hpp"
-#include "pipeline/recognizer_flags.hpp"
 #include "scan/scan_simulator.hpp"
 #include "spinhash/limits.hpp"
 

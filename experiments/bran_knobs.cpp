@@ -1,6 +1,6 @@
 #include "bran_knobs.hpp"
 
-#include "pipeline/recognizer_flags.hpp"
+#include "flags/recognizer_flags.hpp"
 #include "spinhash/limits.hpp"
 
 namespace spinhash::experiment {
@@ -17,14 +17,14 @@ void BranKnobs::apply(RecognizerConfig* cfg) const {
 }
 
 void apply_settings(const std::vector<std::string>& settings, RecognizerConfig* cfg) {
-  pipeline::apply_settings(settings, cfg);
+  flags::apply_settings(settings, cfg);
 }
 
 void add_set_option(CLI::App* cmd, std::vector<std::string>* settings) {
   cmd->add_option("--set", *settings,
                   "STAGE.FIELD=VALUE: any stage parameter (docs/api.md lists them), or a top-level field by "
                   "its name; applied after the other flags (repeatable)")
-      ->check(pipeline::check_setting);
+      ->check(flags::check_setting);
 }
 
 void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs) {

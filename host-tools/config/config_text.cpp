@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "config/field_table.hpp"
+#include "config/mode_name.hpp"
 
 namespace spinhash::host {
 
@@ -15,7 +16,7 @@ std::string config_text(const RecognizerConfig& c, bool with_mode) {
     switch (f.kind) {
       case FieldKind::MODE: {
         const Mode m = f.in<Mode>(c);
-        s << (m == Mode::kBran ? "bran" : (m == Mode::kSran ? "sran" : "sind"));
+        s << mode_name(m);
         break;
       }
       case FieldKind::BOOL: s << (f.in<bool>(c) ? "on" : "off"); break;

@@ -4,8 +4,8 @@
 
 #include "bindings.hpp"
 #include "config/field_table.hpp"
+#include "config/mode_name.hpp"
 #include "config_kinds.hpp"
-#include "pipeline/recognizer_flags.hpp"  // mode_name
 #include "spinhash/recognizer.hpp"
 
 namespace py = pybind11;
@@ -79,7 +79,7 @@ py::tuple mode_names() {
   for (const ConfigField& f : host::config_fields())
     if (f.kind == FieldKind::MODE)
       for (int m = static_cast<int>(f.lo); m <= static_cast<int>(f.hi); ++m)
-        names.append(pipeline::mode_name(Mode(m)));
+        names.append(host::mode_name(Mode(m)));
   return py::tuple(names);
 }
 

@@ -11,7 +11,7 @@
 
 #include "config/config_assign.hpp"
 #include "config/field_table.hpp"
-#include "pipeline/recognizer_flags.hpp"
+#include "flags/recognizer_flags.hpp"
 #include "spinhash/presets.hpp"
 #include "spinhash/scene_fields.h"
 
@@ -62,7 +62,7 @@ bool same_field(const ConfigField& f, const RecognizerConfig& a, const Recognize
 RecognizerConfig parsed(const std::vector<std::string>& args) {
   RecognizerConfig c;
   CLI::App app;
-  spinhash::pipeline::add_recognizer_flags(&app, &c);
+  spinhash::flags::add_recognizer_flags(&app, &c);
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
   app.parse(reversed);
   return c;

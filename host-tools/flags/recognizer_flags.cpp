@@ -1,23 +1,21 @@
-#include "pipeline/recognizer_flags.hpp"
+#include "flags/recognizer_flags.hpp"
 
 #include <map>
 #include <string>
 
 #include "config/config_assign.hpp"
 #include "config/field_table.hpp"
+#include "config/mode_name.hpp"
 #include "spinhash/presets.hpp"
 
-namespace spinhash::pipeline {
-namespace {
+namespace spinhash::flags {
 
 using host::ConfigField;
 using host::FieldKind;
+using host::mode_name;
+using host::mode_names;
 
-const std::map<std::string, Mode>& mode_names() {
-  static const std::map<std::string, Mode> names{
-      {"bran", Mode::kBran}, {"sran", Mode::kSran}, {"sind", Mode::kSind}};
-  return names;
-}
+namespace {
 
 // By name: a transformer over the enum would print its raw bytes in --help.
 void add_mode(CLI::App* cmd, Mode* v, const ConfigField& f) {
@@ -56,7 +54,8 @@ void add_preset(CLI::App* cmd, RecognizerConfig* c) {
            preset_from_name(name.c_str(), &preset);
            apply_preset(preset, c);
          },
-         "a named configuration (include/spinhash/presets.hpp): default, full (today the default) or "
+         "a named configuration (include/spinhash/presets.hpp): default, full (every stage at the default's "
+         "settings) or "
          "flight (a third of the default's instructions); the other flags and --set override its fields")
       ->check(CLI::IsMember({"default", "flight", "full"}));
 }
@@ -85,12 +84,6 @@ void apply_settings(const std::vector<std::string>& settings, RecognizerConfig* 
     if (!host::assign_config_field(s, cfg, &error)) throw CLI::ValidationError("--set", error);
 }
 
-const char* mode_name(Mode m) {
-  for (const auto& [name, mode] : mode_names())
-    if (mode == m) return name.c_str();
-  return "?";
-}
-
 void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
   // First, so that its callback runs before the fields' flags, which override it.
   add_preset(cmd, c);
@@ -112,4 +105,4 @@ void add_set_option(CLI::App* cmd, RecognizerConfig* c) {
   add_set(cmd, c);
 }
 
-}  // namespace spinhash::pipeline
+}  // namespace spinhash::flags

@@ -9,13 +9,12 @@
 
 #include "spinhash/config.hpp"
 
-namespace spinhash::pipeline {
+namespace spinhash::flags {
 
 // Every flag of the field lists, --preset, --viewpoint and --set.
 void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* cfg);
 // --preset and --set alone (survey: the scene's own flags choose the rest).
 void add_set_option(CLI::App* cmd, RecognizerConfig* cfg);
-const char* mode_name(Mode m);
 
 // One KEY=VALUE of --set: "" when it names a field and a valid value, else
 // the error (a CLI11 validator).
@@ -23,4 +22,4 @@ std::string check_setting(const std::string& setting);
 // The KEY=VALUEs in order; a bad one throws CLI::ValidationError("--set").
 void apply_settings(const std::vector<std::string>& settings, RecognizerConfig* cfg);
 
-}  // namespace spinhash::pipeline
+}  // namespace spinhash::flags
