@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "recognize/classes.hpp"
+#include "recognize/residual_structure.hpp"
 #include "spinhash/vehicle_class.hpp"
 
 namespace spinhash {
@@ -11,7 +13,7 @@ namespace {
 // is_class_confident() then test are the prerequisites alone.
 RecognizerConfig without_margin(const RecognizerConfig& cfg) {
   RecognizerConfig c = cfg;
-  c.min_margin = 0.0f;
+  c.confidence.min_margin = 0.0f;
   return c;
 }
 
@@ -19,9 +21,9 @@ RecognizerConfig without_margin(const RecognizerConfig& cfg) {
 // for a scan whose density is not measured.
 float shape_factor(const Result& r, const RecognizerConfig& cfg) {
   Result unit = r;
-  unit.stats.scan_density = 0.0f;
+  unit.stats.confidence.scan_density = 0.0f;
   RecognizerConfig c = cfg;
-  c.min_margin = 1.0f;
+  c.confidence.min_margin = 1.0f;
   return confident_margin(unit, c);
 }
 
@@ -115,16 +117,17 @@ float vehicle_evidence(const Result& r, uint32_t features, const ExtentFit& fit,
 }
 
 bool prior_confident(AnswerLevel level, float evidence, float density, const RecognizerConfig& cfg) {
+  const ConfidenceParams& c = cfg.confidence;
   switch (level) {
     case AnswerLevel::kModel: {
-      if (!dense_enough_for_model(density)) return false;
+      if (!dense_enough_for_model(cfg, density)) return false;
       const float sparse =
-          density > 0.0f && density < kFullModelDensity ? std::sqrt(kFullModelDensity / density) : 1.0f;
-      return evidence >= cfg.min_margin * sparse;
+          density > 0.0f && density < c.full_model_density ? std::sqrt(c.full_model_density / density) : 1.0f;
+      return evidence >= c.min_margin * sparse;
     }
     case AnswerLevel::kClass:
-    case AnswerLevel::kGroup: return evidence >= cfg.min_margin;
-    case AnswerLevel::kVehicle: return evidence >= cfg.min_mean_log_likelihood;
+    case AnswerLevel::kGroup: return evidence >= c.min_margin;
+    case AnswerLevel::kVehicle: return evidence >= c.min_mean_log_likelihood;
     default: return false;
   }
 }
@@ -157,27 +160,42 @@ AnswerLevel answer_level(const Database& db, const Result& r) {
   return answer_level(db, r.levels, first);
 }
 
-void assess_levels(const SearchContext& ctx, const FeatureSet& fs, AnswerPass pass, Result& r) {
+void assess_model_level(const SearchContext& ctx, const ExtentFit& fit, AnswerPass pass) {
+  Result& r = ctx.result;
+  LevelAnswer& model = r.levels[level_index(AnswerLevel::kModel)];
+  model = LevelAnswer{};
+  const uint32_t n = ctx.query.count;
+  if (r.ranking_count > 0u && r.ranking[0].has_pose) {
+    model.evidence =
+        model_evidence(r, ctx.params, n, fit, 0.0f);  // the residuals only for what passes the rest
+    if (model.evidence > kNoEvidence) {
+      const uint32_t first = r.ranking[0].model;
+      model.evidence =
+          model_evidence(r, ctx.params, n, fit, residual_structure(ctx, first, ctx.buf.best[first].pose));
+    }
+  }
+  model.confident = level_confident(ctx.db, pass, AnswerLevel::kModel, model.evidence,
+                                    r.stats.confidence.scan_density, ctx.params);
+  r.confident = model.confident;
+}
+
+void assess_coarse_levels(const SearchContext& ctx, AnswerPass pass) {
+  Result& r = ctx.result;
   const Database& db = ctx.db;
-  const RecognizerConfig& cfg = ctx.cfg;
+  const RecognizerConfig& cfg = ctx.params;
+  const FeatureSet& fs = ctx.features;
   const uint32_t n = ctx.query.count;
   r.group_ranking = ctx.buf.groups;
   r.group_ranking_count = rank_groups(db, r, ctx.buf.groups);
-  for (LevelAnswer& l : r.levels) l = LevelAnswer{};
   LevelAnswer& vehicle = r.levels[level_index(AnswerLevel::kVehicle)];
   LevelAnswer& group = r.levels[level_index(AnswerLevel::kGroup)];
   LevelAnswer& vclass = r.levels[level_index(AnswerLevel::kClass)];
-  LevelAnswer& model = r.levels[level_index(AnswerLevel::kModel)];
+  vehicle = group = vclass = LevelAnswer{};
   if (r.ranking_count > 0u && r.ranking[0].has_pose) {
     const uint32_t first = r.ranking[0].model;
-    const RigidPose& pose = ctx.buf.best[first].pose;
-    const ExtentFit fit =
-        extent_fit(ctx.query, db.model(first), pose, hidden_ends(db, first, fs.ground_band));
+    const ExtentFit fit = extent_fit(ctx.query, db.model(first), ctx.buf.best[first].pose,
+                                     hidden_ends(db, first, fs.ground_band));
     vehicle.evidence = vehicle_evidence(r, n, fit, db.model(first));
-    model.evidence =
-        model_evidence(r, cfg, n, fit, 0.0f);  // the residuals only for an answer that passes the rest
-    if (model.evidence > kNoEvidence)
-      model.evidence = model_evidence(r, cfg, n, fit, residual_structure(ctx, first, pose));
   }
   if (r.class_ranking_count > 0u && r.ranking[r.class_ranking[0].best_rank].has_pose) {
     const RankedClass& first = r.class_ranking[0];
@@ -185,21 +203,22 @@ void assess_levels(const SearchContext& ctx, const FeatureSet& fs, AnswerPass pa
     const RigidPose& pose = ctx.buf.best[leader].pose;
     const ExtentFit fit =
         extent_fit(ctx.query, db.model(leader), pose, hidden_ends(db, leader, fs.ground_band));
-    const float density = scan_density(r.stats.extract, fit);
+    const float density = scan_density(r.stats, fit);
     const ScanShape shape = measure_scan(ctx.query, db.model(leader), pose, fs.top_above_terrain,
-                                         fs.terrain_sigma, cfg.sigma_surface, density);
-    vclass.evidence = class_evidence(
-        r, cfg, n, fit, density,
-        within_envelope(shape, class_envelope(db, first.vehicle_class), cfg.max_extent_overhang));
+                                         fs.terrain_sigma, cfg.refine.sigma_surface, density);
+    const float ends = cfg.confidence.max_extent_overhang;
+    vclass.evidence =
+        class_evidence(r, cfg, n, fit, density,
+                       within_envelope(shape, class_envelope(db, first.vehicle_class), ends, cfg.classes));
     if (r.group_ranking_count > 0u)
       group.evidence = group_evidence(
           r, cfg, n, fit, density,
-          within_envelope(shape, group_envelope(db, r.group_ranking[0].group), cfg.max_extent_overhang));
+          within_envelope(shape, group_envelope(db, r.group_ranking[0].group), ends, cfg.classes));
   }
-  for (uint32_t l = 0; l < kCalibratedLevels; ++l)
-    r.levels[l].confident = level_confident(db, pass, static_cast<AnswerLevel>(l + 1u), r.levels[l].evidence,
-                                            r.stats.scan_density, cfg);
-  r.confident = model.confident;
+  const float density = r.stats.confidence.scan_density;
+  vehicle.confident = level_confident(db, pass, AnswerLevel::kVehicle, vehicle.evidence, density, cfg);
+  group.confident = level_confident(db, pass, AnswerLevel::kGroup, group.evidence, density, cfg);
+  vclass.confident = level_confident(db, pass, AnswerLevel::kClass, vclass.evidence, density, cfg);
   r.class_confident = vclass.confident;
   r.level = answer_level(db, r);
 }

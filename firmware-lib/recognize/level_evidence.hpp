@@ -71,12 +71,13 @@ float group_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t feat
 float vehicle_evidence(const Result& r, uint32_t features, const ExtentFit& fit,
                        const blob::ModelRecord& model);
 
-// The flag without a fitted table: the recognizer's settings as they decided
-// before calibration (the model level: min_margin, times
-// sqrt(kFullModelDensity / density) below that density, and no flag below
-// kMinModelDensity; class and group: min_margin; the vehicle level, which
+// The flag without a fitted table (a blob built with --no-calibration):
+// the stage parameters as they decided before calibration, the priors the
+// fit replaces. The model level: confidence.min_margin times
+// sqrt(full_model_density / density) below that density, and no flag below
+// min_model_density; class and group: min_margin; the vehicle level, which
 // had no flag: min_mean_log_likelihood, the floor of a confident model's
-// fit, over the whole top).
+// fit, over the whole top.
 bool prior_confident(AnswerLevel level, float evidence, float density, const RecognizerConfig& cfg);
 
 // The flag of `level`: the database's fitted threshold for `pass` at the
@@ -98,11 +99,14 @@ struct AnswerLeaders {
 AnswerLevel answer_level(const Database& db, const LevelAnswer* levels, const AnswerLeaders& first);
 AnswerLevel answer_level(const Database& db, const Result& r);
 
-// Every level of a ranked result (after its class ranking): the group
-// ranking, each level's evidence and flag (pass `pass`), `confident` and
-// `class_confident` as the model and class levels' flags, and the level.
-// `fs`: the query's features (the terrain under the object and the band
-// removed with it).
-void assess_levels(const SearchContext& ctx, const FeatureSet& fs, AnswerPass pass, Result& r);
+// The model level (the confidence stage, after the first model's
+// coverage and scan density): its evidence under `fit` (the first model's
+// extent fit), its flag for `pass`, and `confident` as that flag.
+void assess_model_level(const SearchContext& ctx, const ExtentFit& fit, AnswerPass pass);
+
+// The coarser levels (the classes stage, after the class ranking): the
+// group ranking, the vehicle, group and class levels' evidence and flags
+// for `pass`, `class_confident` as the class level's flag, and the level.
+void assess_coarse_levels(const SearchContext& ctx, AnswerPass pass);
 
 }  // namespace spinhash

@@ -40,7 +40,7 @@ struct Shared {
 host::CalibrationRun record(host::RunKind kind, const Result& r, int64_t model, uint32_t vehicle_class) {
   host::CalibrationRun run;
   run.kind = kind;
-  run.density = r.status == Status::kOk ? r.stats.scan_density : 0.0f;
+  run.density = r.status == Status::kOk ? r.stats.confidence.scan_density : 0.0f;
   for (uint32_t l = 0; l < kCalibratedLevels; ++l)
     run.evidence[l] =
         r.status == Status::kOk ? r.levels[l].evidence : -std::numeric_limits<float>::infinity();

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "db/tiny_blob.hpp"
+#include "recognize/classes.hpp"
 #include "recognize/level_evidence.hpp"
 #include "support/blob_patch.hpp"
 
@@ -115,8 +116,9 @@ TEST_CASE("a level inconsistent with the coarser one does not count") {
 
 TEST_CASE("the priors decide as the recognizer did before calibration") {
   const RecognizerConfig cfg;
-  const float m = cfg.min_margin;
-  // Model: no flag below kMinModelDensity, the margin times sqrt(130 / density) below 130.
+  const float m = cfg.confidence.min_margin;
+  // Model: no flag below min_model_density (50), the margin times sqrt(130 / density) below
+  // full_model_density (130).
   CHECK_FALSE(spinhash::prior_confident(AnswerLevel::kModel, 1e30f, 49.0f, cfg));
   CHECK(spinhash::prior_confident(AnswerLevel::kModel, m, 200.0f, cfg));
   CHECK_FALSE(spinhash::prior_confident(AnswerLevel::kModel, m * 0.99f, 200.0f, cfg));
@@ -152,8 +154,8 @@ TEST_CASE("a fitted table replaces the priors") {
   CHECK_FALSE(spinhash::level_confident(o.db, AnswerPass::kFull, AnswerLevel::kModel, 1e30f, 50.0f, cfg));
   CHECK_FALSE(spinhash::level_confident(o.db, AnswerPass::kFull, AnswerLevel::kClass, 1e30f, 150.0f, cfg));
   Opened priors(six_models());
-  CHECK(spinhash::level_confident(priors.db, AnswerPass::kFull, AnswerLevel::kClass, cfg.min_margin, 150.0f,
-                                  cfg));
+  CHECK(spinhash::level_confident(priors.db, AnswerPass::kFull, AnswerLevel::kClass,
+                                  cfg.confidence.min_margin, 150.0f, cfg));
   CHECK_FALSE(
       spinhash::level_confident(priors.db, AnswerPass::kFull, AnswerLevel::kModel, 0.3f, 150.0f, cfg));
 }

@@ -187,8 +187,9 @@ TEST_CASE("a byte-swapped byte-order mark alone is kBlobWrongByteOrder") {
   CHECK(b.open() == Status::kBlobWrongByteOrder);
 }
 
-TEST_CASE("versions 1-3 (no vehicle class) and the next version are kBlobUnsupportedVersion") {
-  for (uint32_t version : {1u, 2u, 3u, blob::kFormatVersion + 1u}) {
+TEST_CASE(
+    "versions 1-4 (no vehicle class, no calibration) and the next version are kBlobUnsupportedVersion") {
+  for (uint32_t version : {1u, 2u, 3u, 4u, blob::kFormatVersion + 1u}) {
     BlobPatch b = fresh();
     b.header().version = version;
     b.reseal_header();

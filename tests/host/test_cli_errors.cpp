@@ -245,6 +245,10 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
   std::string v1 = f.good_bytes;
   const uint32_t format1 = 1;
   std::memcpy(&v1[offsetof(spinhash::blob::Header, version)], &format1, sizeof format1);
+  // A format-4 header: a blob without the calibration section.
+  std::string v4 = f.good_bytes;
+  const uint32_t format4 = 4;
+  std::memcpy(&v4[offsetof(spinhash::blob::Header, version)], &format4, sizeof format4);
   struct Case {
     const char* name;
     std::string bytes;
@@ -255,6 +259,7 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
       {"truncated.shdb", f.good_bytes.substr(0, f.good_bytes.size() / 2), Status::kBlobTruncated},
       {"magic.shdb", magic, Status::kBlobBadMagic},
       {"format1.shdb", v1, Status::kBlobUnsupportedVersion},
+      {"format4.shdb", v4, Status::kBlobUnsupportedVersion},
   };
   for (const Case& k : cases) {
     CAPTURE(k.name);
@@ -273,6 +278,9 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
   const Run old = f.run("info " + f.q(dir.file("format1.shdb")));
   CHECK(contains(old.err,
                  "format 1; this spinhash reads format 5: rebuild it from its meshes with `spinhash build`"));
+  const Run uncalibrated = f.run("recognize --db " + f.q(dir.file("format4.shdb")) + " " + f.q(f.query));
+  CHECK(contains(uncalibrated.err,
+                 "format 4; this spinhash reads format 5: rebuild it from its meshes with `spinhash build`"));
   write_bytes(dir.file("empty.shdb"), "");
   const Run empty = f.run("verify " + f.q(dir.file("empty.shdb")));
   CHECK(empty.exit_code == kExitError);
