@@ -4,29 +4,13 @@
 
 #include "recognize/class_envelope.hpp"
 #include "recognize/level_evidence.hpp"
+#include "recognize/rank_by_first.hpp"
 
 namespace spinhash {
 
 uint32_t rank_classes(const Database& db, const Result& r, RankedClass* out) {
-  uint32_t n = 0;
-  for (uint32_t k = 0; k < r.ranking_count; ++k) {
-    const uint32_t c = db.model(r.ranking[k].model).vehicle_class;
-    uint32_t i = 0;
-    while (i < n && out[i].vehicle_class != c) ++i;
-    if (i < n) continue;  // ranked already, by a better model
-    out[n++] = RankedClass{c, r.ranking[k].score, r.ranking[k].model, k};
-  }
-  // Insertion sort of at most kVehicleClassCount: best first, ties by class id.
-  for (uint32_t i = 1; i < n; ++i)
-    for (uint32_t j = i; j > 0; --j) {
-      const RankedClass& a = out[j - 1];
-      const RankedClass& b = out[j];
-      if (a.score > b.score || (a.score == b.score && a.vehicle_class < b.vehicle_class)) break;
-      const RankedClass t = out[j - 1];
-      out[j - 1] = out[j];
-      out[j] = t;
-    }
-  return n;
+  const auto class_of = [&db](uint32_t model) { return db.model(model).vehicle_class; };
+  return rank_by_first_model(r, class_of, &RankedClass::vehicle_class, kVehicleClassCount, out);
 }
 
 bool is_class_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,

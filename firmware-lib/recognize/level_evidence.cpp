@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "recognize/classes.hpp"
+#include "recognize/rank_by_first.hpp"
 #include "recognize/residual_structure.hpp"
 #include "spinhash/vehicle_class.hpp"
 
@@ -57,26 +58,8 @@ float class_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t feat
 }
 
 uint32_t rank_groups(const Database& db, const Result& r, RankedGroup* out) {
-  uint32_t n = 0;
-  for (uint32_t k = 0; k < r.ranking_count; ++k) {
-    const uint32_t g = group_of_class(db.model(r.ranking[k].model).vehicle_class);
-    uint32_t i = 0;
-    while (i < n && out[i].group != g) ++i;
-    if (i < n) continue;  // ranked already, by a better model
-    out[n++] = RankedGroup{g, r.ranking[k].score, r.ranking[k].model, k};
-    if (n == kVehicleGroupCount) break;
-  }
-  // Insertion sort of at most kVehicleGroupCount: best first, ties by group id.
-  for (uint32_t i = 1; i < n; ++i)
-    for (uint32_t j = i; j > 0; --j) {
-      const RankedGroup& a = out[j - 1];
-      const RankedGroup& b = out[j];
-      if (a.score > b.score || (a.score == b.score && a.group < b.group)) break;
-      const RankedGroup t = out[j - 1];
-      out[j - 1] = out[j];
-      out[j] = t;
-    }
-  return n;
+  const auto group_of = [&db](uint32_t model) { return group_of_class(db.model(model).vehicle_class); };
+  return rank_by_first_model(r, group_of, &RankedGroup::group, kVehicleGroupCount, out);
 }
 
 ClassEnvelope group_envelope(const Database& db, uint32_t group) {

@@ -89,6 +89,21 @@ py::object best_pose(const std::vector<RankedModel>& ranking) {
   return pose_matrix(ranking[0].pose);
 }
 
+// The answer levels' attributes, alike on Result and SceneObject.
+template <typename T>
+void def_levels(py::class_<T>& c) {
+  c.def_readonly("group", &T::group,
+                 "the first group's name (the CLI's \"group\"), e.g. 'light'; None without a ranking")
+      .def_readonly("group_ranking", &T::group_ranking,
+                    "[(group name, score, best model's name), ...], best first")
+      .def_readonly("levels", &T::levels,
+                    "{level name: {'confident': bool, 'evidence': float or None}} for 'vehicle', 'group', "
+                    "'class' and 'model' (the CLI's \"levels\")")
+      .def_readonly("level", &T::level,
+                    "the most specific confident level whose coarser levels are confident and consistent: "
+                    "'model', 'class', 'group', 'vehicle' or 'none'");
+}
+
 }  // namespace
 
 ResultCopy copy_result(const Result& r, double time_ms) {
@@ -153,33 +168,25 @@ PySceneObject make_scene_object(const Database& db, const SceneObjectCopy& c) {
 }
 
 void bind_result(py::module_& m) {
-  py::class_<PyResult>(m, "Result", "One recognition: the fields of the CLI's JSON line.")
+  py::class_<PyResult> result(m, "Result", "One recognition: the fields of the CLI's JSON line.");
+  result
       .def_readonly("status", &PyResult::status,
                     "'ok', 'empty_cloud', 'not_enough_features', ... (as the CLI)")
       .def_readonly("error", &PyResult::error, "why, when status is not 'ok'; else None")
       .def_readonly("ranking", &PyResult::ranking, "[(model name, score), ...], best first")
       .def_readonly("pose", &PyResult::pose,
                     "4x4 float64, model frame -> query frame, of the best model; None without one")
-      .def_readonly("confident", &PyResult::confident, "the best model explains enough of the query")
+      .def_readonly("confident", &PyResult::confident,
+                    "the model level's flag: the best model is the scanned one")
       .def_readonly("group_size", &PyResult::group_size,
                     "leading models the scan does not tell apart (within min_margin); 1: the first "
                     "stands alone")
       .def_readonly("vehicle_class", &PyResult::vehicle_class,
                     "the first class's name (the CLI's \"class\"), e.g. 'pickup'; None without a ranking")
       .def_readonly("class_confident", &PyResult::class_confident,
-                    "the first class leads the next by min_margin on enough evidence")
+                    "the class level's flag: the first class is the vehicle's")
       .def_readonly("class_ranking", &PyResult::class_ranking,
                     "[(class name, score, best model's name), ...], best first")
-      .def_readonly("group", &PyResult::group,
-                    "the first group's name (the CLI's \"group\"), e.g. 'light'; None without a ranking")
-      .def_readonly("group_ranking", &PyResult::group_ranking,
-                    "[(group name, score, best model's name), ...], best first")
-      .def_readonly("levels", &PyResult::levels,
-                    "{level name: {'confident': bool, 'evidence': float or None}} for 'vehicle', 'group', "
-                    "'class' and 'model' (the CLI's \"levels\")")
-      .def_readonly("level", &PyResult::level,
-                    "the most specific confident level whose coarser levels are confident and consistent: "
-                    "'model', 'class', 'group', 'vehicle' or 'none'")
       .def_readonly("stats", &PyResult::stats, "the CLI's \"stats\" object as a dict")
       .def_readonly("time_ms", &PyResult::time_ms, "wall time of the recognition, ms")
       .def_property_readonly(
@@ -196,8 +203,10 @@ void bind_result(py::module_& m) {
                ", vehicle_class=" + std::string(py::repr(r.vehicle_class)) +
                ", class_confident=" + (r.class_confident ? "True" : "False") + ")";
       });
-  py::class_<PySceneObject>(m, "SceneObject",
-                            "One object of a tile: the fields of a line of `spinhash scene`.")
+  def_levels(result);
+  py::class_<PySceneObject> object(m, "SceneObject",
+                                   "One object of a tile: the fields of a line of `spinhash scene`.");
+  object
       .def_readonly("kind", &PySceneObject::kind,
                     "'vehicle', 'too small', 'too large', 'not vehicle-shaped', 'unknown'")
       .def_readonly("status", &PySceneObject::status, "status of its recognition ('ok' when not recognised)")
@@ -214,16 +223,6 @@ void bind_result(py::module_& m) {
                     "a confident class whose leader fits the object's size")
       .def_readonly("class_ranking", &PySceneObject::class_ranking,
                     "[(class name, score, best model's name), ...], best first")
-      .def_readonly("group", &PySceneObject::group,
-                    "the first group's name (the CLI's \"group\"), e.g. 'light'; None without a ranking")
-      .def_readonly("group_ranking", &PySceneObject::group_ranking,
-                    "[(group name, score, best model's name), ...], best first")
-      .def_readonly("levels", &PySceneObject::levels,
-                    "{level name: {'confident': bool, 'evidence': float or None}} for 'vehicle', 'group', "
-                    "'class' and 'model' (the CLI's \"levels\")")
-      .def_readonly("level", &PySceneObject::level,
-                    "the most specific confident level whose coarser levels are confident and consistent: "
-                    "'model', 'class', 'group', 'vehicle' or 'none'")
       .def_readonly("ground_gap", &PySceneObject::ground_gap,
                     "best model's box bottom above the terrain under its pose, m, or None")
       .def_readonly("points", &PySceneObject::points, "points in the object")
@@ -237,6 +236,7 @@ void bind_result(py::module_& m) {
                ", confident=" + (o.confident ? "True" : "False") + ", points=" + std::to_string(o.points) +
                ")";
       });
+  def_levels(object);
 }
 
 }  // namespace spinhash::python
