@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "mesh/seeded_random.hpp"
-#include "mesh/vehicle_generator.hpp"
 #include "query_set.hpp"
 #include "scan/scan_simulator.hpp"
 
@@ -79,25 +78,17 @@ ScanDraw draw_scan(const WorldsCondition& c, uint32_t condition, uint64_t base_s
 
 bool scan_object(const host::Mesh& mesh, double ground_z, const ScanDraw& d, ObjectScan* out,
                  std::string* error) {
-  host::ScanOptions opt = host::query_scan_options(d.noise, d.seed);
-  opt.random_pose = true;
-  opt.occlusion = d.occlusion;
-  opt.point_spacing = d.spacing;
-  opt.ground_slope_deg = d.slope_deg;
-  host::Mesh ground;
-  if (d.ground) {
-    const host::Box3 box = mesh.bounding_box();
-    const double half =
-        std::max({std::abs(box.lo.x()), std::abs(box.hi.x()), std::abs(box.lo.y()), std::abs(box.hi.y())}) +
-        kGroundMargin;
-    ground = host::make_ground_patch(half, ground_z);
-    opt.ground = &ground;
-  }
-  host::ScanResult scan = host::simulate_scan(mesh, opt);
-  if (!scan.ok()) {
-    *error = mesh.name + ": scan: " + scan.error;
-    return false;
-  }
+  QueryScan s;
+  s.seed = d.seed;
+  s.noise = d.noise;
+  s.occlusion = d.occlusion;
+  s.spacing = d.spacing;
+  s.slope_deg = d.slope_deg;
+  s.ground = d.ground;
+  s.ground_z = ground_z;
+  s.ground_margin = kGroundMargin;
+  host::ScanResult scan;
+  if (!scan_query(mesh, s, &scan, error)) return false;
   out->object_points = static_cast<uint32_t>(std::count(scan.on_object.begin(), scan.on_object.end(), 1));
   out->xyz = std::move(scan.xyz);
   return true;
