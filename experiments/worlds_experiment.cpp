@@ -15,6 +15,7 @@
 
 #include "config_text.hpp"
 #include "experiments.hpp"
+#include "flags/build_flags.hpp"
 #include "mesh/vehicle_generator.hpp"
 #include "output_dir.hpp"
 #include "pipeline/build_database_file.hpp"
@@ -283,7 +284,7 @@ void add_worlds_experiment(CLI::App* parent, int* exit_code) {
   cmd->add_option("--threads", a->threads, "recognitions in parallel")
       ->check(CLI::Range(1u, kMaxThreads))
       ->capture_default_str();
-  pipeline::add_build_flags(cmd, &a->build);
+  flags::add_build_flags(cmd, &a->build);
   cmd->callback([a, exit_code]() { *exit_code = run_worlds_command(*a); });
 }
 

@@ -24,7 +24,7 @@ echo "== $vehicles procedural vehicles"
 $spinhash generate --count "$vehicles" -o "$out/fleet"
 echo "== database"
 $spinhash build -o "$out/fleet.shdb" "$out/fleet"
-$spinhash info "$out/fleet.shdb" | head -7
+$spinhash info "$out/fleet.shdb" | sed -n 1,7p
 
 echo "== $scans_per_vehicle airborne scans per vehicle (3 views, ${noise} m noise, random pose, UTM offset)"
 seed=1

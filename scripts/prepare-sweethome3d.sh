@@ -32,7 +32,7 @@ if dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok install
 else
   ls "$work/${pkg}"_*.deb >/dev/null 2>&1 || (cd "$work" && apt-get download "$pkg")
   rm -rf "$work/x" && mkdir -p "$work/x"
-  dpkg-deb --fsys-tarfile "$(ls "$work/${pkg}"_*.deb | head -n 1)" |
+  dpkg-deb --fsys-tarfile "$(ls "$work/${pkg}"_*.deb | sed -n 1p)" |
     tar -x -C "$work/x" --wildcards ".$libraries/*.sh3f"
   src=$work/x$libraries
 fi

@@ -21,15 +21,15 @@ mkdir -p "$work"
 # The installed package's base.wz is read in place; else the .deb is
 # downloaded and unpacked.
 if dpkg-query -W -f='${Status}' warzone2100-data 2>/dev/null | grep -q "install ok installed"; then
-  base_wz=$(dpkg -L warzone2100-data | grep '/base\.wz$' | head -n 1)
+  base_wz=$(dpkg -L warzone2100-data | grep '/base\.wz$' | sed -n 1p)
   from="the installed warzone2100-data"
 else
   if ! ls "$work"/warzone2100-data_*.deb >/dev/null 2>&1; then
     (cd "$work" && apt-get download warzone2100-data)
   fi
-  from=$(ls "$work"/warzone2100-data_*.deb | head -n 1)
+  from=$(ls "$work"/warzone2100-data_*.deb | sed -n 1p)
   dpkg-deb -x "$from" "$work/x"
-  base_wz=$(find "$work/x" -name base.wz | head -n 1)
+  base_wz=$(find "$work/x" -name base.wz | sed -n 1p)
 fi
 [[ -n "$base_wz" && -f "$base_wz" ]] || { echo "prepare-warzone: base.wz not found in $from" >&2; exit 1; }
 rm -rf "$work/base"

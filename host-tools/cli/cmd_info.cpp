@@ -138,7 +138,7 @@ int run_info(const InfoArgs& a) {
 void add_info_command(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<InfoArgs>();
   CLI::App* cmd = app.add_subcommand("info", "describe a database blob");
-  cmd->add_option("database", a->path, "database file")->required();
+  cmd->add_option("database", a->path, "database file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--format", a->format, "text, or json: one JSON object on one line")
       ->check(CLI::IsMember({"text", "json"}))
       ->capture_default_str();

@@ -12,6 +12,7 @@
 
 #include "cloud/metric_source.hpp"
 #include "pipeline/object_units.hpp"
+#include "pipeline/spill_folder.hpp"
 #include "spinhash/scene_fields.h"
 
 #include "spinhash/limits.hpp"
@@ -54,15 +55,9 @@ bool finite3(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]
 // points in memory.
 class CellSpill {
  public:
-  CellSpill(double row_depth, double column_width) : row_depth_(row_depth), core_(column_width) {
-    std::string pattern = (fs::temp_directory_path() / "spinhash-scene-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a temporary folder");
-    dir_ = pattern;
-  }
-  ~CellSpill() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
+  CellSpill(double row_depth, double column_width)
+      : row_depth_(row_depth), core_(column_width), dir_(make_spill_folder()) {}
+  ~CellSpill() { remove_spill_folder(dir_.string()); }
   CellSpill(const CellSpill&) = delete;
   CellSpill& operator=(const CellSpill&) = delete;
 

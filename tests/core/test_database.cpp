@@ -9,7 +9,7 @@
 #include <string>
 
 #include "blob/blob_writer.hpp"
-#include "blob/tiny_blob.hpp"
+#include "db/tiny_blob.hpp"
 #include "spinhash/vehicle_class.hpp"
 #include "support/blob_patch.hpp"
 #include "support/golden_files.hpp"

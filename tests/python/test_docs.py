@@ -110,3 +110,15 @@ def test_every_group_is_named_and_every_class_has_its_listed_group():
     assert spinhash.CLASS_GROUPS[spinhash.CLASS_NAMES.index("bus")] == "heavy"
     for attribute in ("GROUP_NAMES", "CLASS_GROUPS"):
         assert f"`spinhash.{attribute}`" in DOC
+
+
+def test_the_readme_python_snippet_reads_files_the_readme_makes():
+    readme = (SOURCE_DIR / "README.md").read_text()
+    snippet = readme[readme.index("From Python"):]
+    snippet = re.findall(r"```python\n(.*?)```", snippet, re.S)[0]
+    read = re.findall(r"(?:read_cloud|Database)\(\"([^\"]+)\"\)", snippet)
+    assert read, "the snippet reads no file"
+    made = set(re.findall(r"\$ build/host-tools/spinhash \w+[^\n]*?-o (\S+)", readme))
+    for name in read:
+        assert name in made, f"README's Python snippet reads {name}, which no README command makes"
+
