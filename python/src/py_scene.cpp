@@ -146,7 +146,8 @@ std::unique_ptr<PySceneRecognizer> make_scene(const std::shared_ptr<PyDatabase>&
 SceneConfig scene_config_from(const py::object& config, const py::kwargs& kwargs) {
   SceneConfig scene;
   RecognizerConfig base;
-  base.ground_clearance = 0.0f;  // the scene's terrain classifier removes the ground (as `spinhash scene`)
+  base.ground.ground_clearance =
+      0.0f;  // the scene's terrain classifier removes the ground (as `spinhash scene`)
   py::kwargs recognizer_kwargs;
   for (auto item : kwargs) {
     const std::string key = py::cast<std::string>(item.first);

@@ -22,16 +22,11 @@ struct WorkspaceThreshold {
   size_t scene_300000;    // SceneConfig{}: a 300 000-point tile, its grids and a default recognizer
   size_t stream_1m;       // StreamConfig{}: windows of 300 000 points, 1 M points buffered
 };
-// Pointer-sized members make 64-bit layouts larger than 32-bit ones.
-// Issue 28: +176 B per recognizer (the class ranking, 11 x 16 B) and +184 B
-// per SceneObject (its class ranking), on either pointer size. Stop 33: +48
-// KiB for the LSH seen set of a sparse scan's fourfold bucket scan
-// (recognize/sparse_search.hpp: 4 096 entries, 8 192 slots of 8 B). Stop
-// 34: +8 B per SceneObject, its statistics' count of tilted poses
-// (max_tilt_deg; 256 objects). Stop 39: its statistics' scan_density, +8 B
-// per SceneObject on 32-bit ABIs (the 8-byte aligned struct pads the
-// float), none on 64-bit, where it fills the padding surface_coverage left.
-constexpr WorkspaceThreshold kThreshold64 = {6451936, 5622016, 31005328, 44621392};
+// Pointer-sized members make 64-bit layouts larger than 32-bit ones. The
+// scene's figures hold a recognizer (its config and workspace) and 256
+// SceneObjects, each with its class ranking and its recognition's
+// statistics, so a statistic or a stage parameter moves them.
+constexpr WorkspaceThreshold kThreshold64 = {6451936, 5622016, 31007696, 44622032};
 constexpr WorkspaceThreshold kThreshold32 = {6451776, 5621856, 31005040, 44621136};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
