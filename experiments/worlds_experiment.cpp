@@ -120,7 +120,7 @@ bool run_job(const WorldSet& set, const WorldsRun& run, const Job& job, uint64_t
     r.ms = sessions[k]->last_ms();
     r.status = res.status;
     r.answer = level_answers(res);
-    r.scan_density = res.stats.scan_density;
+    r.scan_density = res.stats.confidence.scan_density;
     if (r.answer.ranked) r.first = dbs[k]->to_vehicle[r.answer.model];
   }
   return true;
