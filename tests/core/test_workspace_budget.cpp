@@ -19,7 +19,8 @@ namespace {
 struct WorkspaceThreshold {
   size_t default_config;  // RecognizerConfig{}
   size_t points_20000;    // RecognizerConfig{} with max_points = 20000
-  size_t scene_300000;    // SceneConfig{}: a 300 000-point tile, its grids and a default recognizer
+  size_t scene_300000;    // SceneConfig{}: 300 000-point windows, their grids, a default recognizer and
+                          // the stream's buffer the tile API sizes from them (scene_tile.hpp)
   size_t stream_1m;       // StreamConfig{}: windows of 300 000 points, 1 M points buffered
 };
 // Pointer-sized members make 64-bit layouts larger than 32-bit ones.
@@ -31,7 +32,7 @@ struct WorkspaceThreshold {
 // (max_tilt_deg; 256 objects). Stop 39: its statistics' scan_density, +8 B
 // per SceneObject on 32-bit ABIs (the 8-byte aligned struct pads the
 // float), none on 64-bit, where it fills the padding surface_coverage left.
-constexpr WorkspaceThreshold kThreshold64 = {6451936, 5622016, 31005328, 44621392};
+constexpr WorkspaceThreshold kThreshold64 = {6451936, 5622016, 53140832, 44648280};
 constexpr WorkspaceThreshold kThreshold32 = {6451776, 5621856, 31005040, 44621136};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.

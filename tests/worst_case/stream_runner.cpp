@@ -55,8 +55,8 @@ SPINHASH_MARKER(spinhash_bench_recognition_end, 8)
 // them, then each window's heights on it.
 #define SPINHASH_CELLS _ZN8spinhash12TerrainCells3sumERKNS_9PointRingEdd
 #define SPINHASH_TERRAIN \
-  _ZN8spinhash19build_strip_terrainERKNS_11SceneConfigERKNS_12TerrainCellsERKNS_9FrameRectEddRNS_13WindowBuffersEPNS_10SceneStatsE
-#define SPINHASH_HEIGHTS _ZN8spinhash15terrain_heightsERKNS_11TerrainGridEPKfjfPfPh
+  _ZN8spinhash19build_strip_terrainERKNS_11SceneConfigERKNS_12TerrainCellsERKNS_9FrameRectES8_ddRNS_13WindowBuffersEPNS_10SceneStatsE
+#define SPINHASH_HEIGHTS _ZN8spinhash15terrain_heightsERKNS_12TerrainPartsEPKfjfPfPh
 #define SPINHASH_SEGMENT \
   _ZN8spinhash15segment_objectsEPKfS1_PKhjRKNS_13SegmentParamsERNS_11SegmentGridEPNS_11ObjectShapeEPjPNS_12SegmentStatsE
 #define SPINHASH_RECOGNIZE _ZN8spinhash10Recognizer9recognizeEPKfjRKNS_13ObjectTerrainE
@@ -67,8 +67,9 @@ SPINHASH_MARKER(spinhash_bench_recognition_end, 8)
 extern "C" {
 void SPINHASH_REAL(SPINHASH_CELLS)(TerrainCells* self, const PointRing& ring, double from_s, double to_s);
 Status SPINHASH_REAL(SPINHASH_TERRAIN)(const SceneConfig& c, const TerrainCells& cells, const FrameRect& seen,
-                                       double s0, double t0, WindowBuffers& b, SceneStats* st);
-uint32_t SPINHASH_REAL(SPINHASH_HEIGHTS)(const TerrainGrid& grid, const float* xyz, uint32_t n,
+                                       const FrameRect& gathered, double s0, double t0, WindowBuffers& b,
+                                       SceneStats* st);
+uint32_t SPINHASH_REAL(SPINHASH_HEIGHTS)(const TerrainParts& grid, const float* xyz, uint32_t n,
                                          float ground_height, float* height, uint8_t* ground);
 Status SPINHASH_REAL(SPINHASH_SEGMENT)(const float* xyz, const float* height, const uint8_t* ground,
                                        uint32_t n, const SegmentParams& params, SegmentGrid& grid,
@@ -83,14 +84,15 @@ void SPINHASH_WRAP(SPINHASH_CELLS)(TerrainCells* self, const PointRing& ring, do
 }
 
 Status SPINHASH_WRAP(SPINHASH_TERRAIN)(const SceneConfig& c, const TerrainCells& cells, const FrameRect& seen,
-                                       double s0, double t0, WindowBuffers& b, SceneStats* st) {
+                                       const FrameRect& gathered, double s0, double t0, WindowBuffers& b,
+                                       SceneStats* st) {
   spinhash_bench_terrain_begin();
-  const Status s = SPINHASH_REAL(SPINHASH_TERRAIN)(c, cells, seen, s0, t0, b, st);
+  const Status s = SPINHASH_REAL(SPINHASH_TERRAIN)(c, cells, seen, gathered, s0, t0, b, st);
   spinhash_bench_terrain_end();
   return s;
 }
 
-uint32_t SPINHASH_WRAP(SPINHASH_HEIGHTS)(const TerrainGrid& grid, const float* xyz, uint32_t n,
+uint32_t SPINHASH_WRAP(SPINHASH_HEIGHTS)(const TerrainParts& grid, const float* xyz, uint32_t n,
                                          float ground_height, float* height, uint8_t* ground) {
   spinhash_bench_terrain_begin();
   const uint32_t on_ground = SPINHASH_REAL(SPINHASH_HEIGHTS)(grid, xyz, n, ground_height, height, ground);

@@ -1,0 +1,144 @@
+#include "pipeline/tile_stream_order.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <stdexcept>
+
+namespace spinhash::pipeline {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool finite3(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
+
+}  // namespace
+
+AlongTrackOrder::AlongTrackOrder(double heading_deg, double row_depth, double column_width,
+                                 size_t memory_points)
+    : row_depth_(row_depth), column_width_(column_width), memory_points_(memory_points) {
+  if (!(row_depth > 0.0) || !(column_width >= 0.0))
+    throw std::invalid_argument("along-track order: row depth must be > 0 and column width >= 0");
+  const double r = heading_deg * (3.14159265358979323846 / 180.0);  // as the stream's frame
+  ax_ = std::cos(r);
+  ay_ = std::sin(r);
+  for (int a = 0; a < 3; ++a) {
+    min_[a] = INFINITY;
+    max_[a] = -INFINITY;
+  }
+}
+
+AlongTrackOrder::~AlongTrackOrder() {
+  if (dir_.empty()) return;
+  std::error_code ec;
+  fs::remove_all(dir_, ec);
+}
+
+int64_t AlongTrackOrder::column_of(double x, double y) const {
+  if (!(column_width_ > 0.0)) return 0;
+  return static_cast<int64_t>(std::floor((-x * ay_ + y * ax_) / column_width_));
+}
+
+AlongTrackOrder::Cell AlongTrackOrder::cell_of(const double* p) const {
+  const double s = p[0] * ax_ + p[1] * ay_;
+  return {static_cast<int64_t>(std::floor(s / row_depth_)), column_of(p[0], p[1])};
+}
+
+fs::path AlongTrackOrder::path_of(const Cell& c) const {
+  return dir_ / ("r" + std::to_string(c.first) + "c" + std::to_string(c.second) + ".xyz");
+}
+
+void AlongTrackOrder::add(const double* xyz, size_t n) {
+  for (size_t i = 0; i < n; ++i) {
+    const double* p = xyz + 3 * i;
+    if (!finite3(p)) {
+      ++nonfinite_;
+      continue;
+    }
+    const Cell c = cell_of(p);
+    if (last_ == nullptr || c != last_cell_) {
+      last_ = &cells_[c];
+      last_cell_ = c;
+    }
+    last_->xyz.insert(last_->xyz.end(), p, p + 3);
+    ++column_points_[c.second];
+    for (int a = 0; a < 3; ++a) {
+      min_[a] = p[a] < min_[a] ? p[a] : min_[a];
+      max_[a] = p[a] > max_[a] ? p[a] : max_[a];
+    }
+    ++points_;
+    if (++held_ >= memory_points_) spill_all();
+  }
+}
+
+void AlongTrackOrder::spill_all() {
+  if (dir_.empty()) {
+    std::string pattern = (fs::temp_directory_path() / "spinhash-order-XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a temporary folder");
+    dir_ = pattern;
+  }
+  for (auto& [cell, held] : cells_) {
+    if (held.xyz.empty()) continue;
+    const fs::path path = path_of(cell);
+    std::ofstream f(path, std::ios::binary | std::ios::app);
+    f.write(reinterpret_cast<const char*>(held.xyz.data()),
+            static_cast<std::streamsize>(held.xyz.size() * sizeof(double)));
+    if (!f) throw std::runtime_error("cannot write " + path.string());
+    held.spilled = true;
+    held.xyz.clear();
+    held.xyz.shrink_to_fit();
+  }
+  held_ = 0;
+}
+
+AlongTrackOrder::Cursor::Cursor(const AlongTrackOrder& order, int64_t col_lo, int64_t col_hi)
+    : order_(&order), col_lo_(col_lo), col_hi_(col_hi), cell_(order.cells_.begin()) {}
+
+size_t AlongTrackOrder::Cursor::read(double* xyz, size_t max_points) {
+  size_t got = 0;
+  while (got < max_points && cell_ != order_->cells_.end()) {
+    const Cell& cell = cell_->first;
+    const Held& held = cell_->second;
+    if (cell.second < col_lo_ || cell.second > col_hi_) {
+      ++cell_;
+      continue;
+    }
+    if (held.spilled && !opened_) {
+      file_.open(order_->path_of(cell), std::ios::binary);
+      if (!file_) throw std::runtime_error("cannot read " + order_->path_of(cell).string());
+      opened_ = true;
+    }
+    if (file_.is_open()) {
+      file_.read(reinterpret_cast<char*>(xyz + 3 * got),
+                 static_cast<std::streamsize>((max_points - got) * 3 * sizeof(double)));
+      got += static_cast<size_t>(file_.gcount()) / (3 * sizeof(double));
+      if (file_) continue;  // filled
+      file_.close();
+      file_.clear();
+    }
+    const size_t take = std::min(max_points - got, (held.xyz.size() - at_) / 3);
+    std::copy(held.xyz.begin() + static_cast<std::ptrdiff_t>(at_),
+              held.xyz.begin() + static_cast<std::ptrdiff_t>(at_ + 3 * take), xyz + 3 * got);
+    got += take;
+    at_ += 3 * take;
+    if (at_ < held.xyz.size()) continue;  // filled
+    ++cell_;
+    opened_ = false;
+    at_ = 0;
+  }
+  return got;
+}
+
+void AlongTrackOrder::replay(int64_t col_lo, int64_t col_hi, size_t chunk, const ChunkSink& on_chunk) const {
+  Cursor cursor(*this, col_lo, col_hi);
+  std::vector<double> buf(3 * chunk);
+  for (size_t n; (n = cursor.read(buf.data(), chunk)) > 0;) on_chunk(buf.data(), n);
+}
+
+void AlongTrackOrder::replay(size_t chunk, const ChunkSink& on_chunk) const {
+  replay(INT64_MIN, INT64_MAX, chunk, on_chunk);
+}
+
+}  // namespace spinhash::pipeline
