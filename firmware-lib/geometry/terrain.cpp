@@ -35,6 +35,12 @@ void terrain_line_filter(const float* in, float* out, float* line, uint32_t nx, 
   auto value = [identity](float v) { return no_data(v) ? identity : v; };
   for (uint32_t l = 0; l < lines; ++l) {
     const uint32_t base = along_x ? l * nx : l;
+    uint32_t first = 0;  // a line without data stays without (sparse parts have many)
+    while (first < len && no_data(in[base + first * step])) ++first;
+    if (first == len) {
+      for (uint32_t i = 0; i < len; ++i) out[base + i * step] = NAN;
+      continue;
+    }
     float run = identity;
     for (uint32_t i = 0; i < len; ++i) {
       const float v = value(in[base + i * step]);

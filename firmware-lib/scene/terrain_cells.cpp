@@ -42,22 +42,25 @@ void TerrainCells::carve(Arena& arena, double cell_m, double depth, double width
   block_box_ = arena.alloc<int32_t>(4u * kMaxTerrainBlocks);
   block_parent_ = arena.alloc<uint16_t>(kMaxTerrainBlocks);
   part_first_ = arena.alloc<int32_t>(2u * kMaxTerrainParts);
+  cleared = false;  // new slots: cleared whole at the first start
 }
 
 void TerrainCells::start(double t_lo) {
   t_min = t_lo;
   started = false;
   if (lowest == nullptr || span == nullptr) return;
-  const size_t n = static_cast<size_t>(along) * across;
-  for (size_t c = 0; c < n; ++c) {
-    lowest[c] = NAN;
-    band_sum[c] = 0.0f;
-    band_count[c] = 0.0f;
-  }
   for (uint32_t r = 0; r < along; ++r) {
+    const uint32_t first = cleared ? span[2u * r] : 0u, last = cleared ? span[2u * r + 1u] : across - 1u;
+    for (uint32_t it = first; it <= last && it < across; ++it) {
+      const size_t c = static_cast<size_t>(r) * across + it;
+      lowest[c] = NAN;
+      band_sum[c] = 0.0f;
+      band_count[c] = 0.0f;
+    }
     span[2u * r] = across;  // empty: first > last
     span[2u * r + 1u] = 0;
   }
+  cleared = true;
 }
 
 int64_t TerrainCells::index_along(double s) const { return static_cast<int64_t>(std::floor(s / cell)); }

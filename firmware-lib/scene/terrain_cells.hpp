@@ -29,10 +29,12 @@ struct TerrainCells {
   double t_min = 0.0;     // across: where cell 0 starts
   int64_t summed_to = 0;  // cells along below this index are summed (the last `along` of them kept)
   bool started = false;
+  bool cleared = false;  // every slot outside its row's span is empty (after the first start)
 
   // Slots for strips `depth` m deep over `width` m across.
   void carve(Arena& arena, double cell_m, double depth, double width);
-  // Starts a line: every slot empty, cell 0 across at t_lo.
+  // Starts a line: every slot empty (the first time all of them, then the
+  // rows' spans), cell 0 across at t_lo.
   void start(double t_lo);
   int64_t index_along(double s) const;
   // The along-track edge (m) below which every cell is summed.

@@ -157,7 +157,8 @@ TileStreamResult TileStreamer::finish(const Database& db, const ObjectCallback& 
   if (res.status != Status::kOk) return res;
   const double core = scene.window_core;
   const double t0 = config.swath_min, t1 = config.swath_max;
-  std::vector<double> kept;
+  const size_t chunk = options_.chunk_points;
+  std::vector<double> buf(3 * chunk), kept(3 * chunk);
   for (uint32_t band : bands_with_points(order_, plan, core)) {
     double origin[3];
     tile_band_origin(plan, band, origin);
@@ -165,14 +166,15 @@ TileStreamResult TileStreamer::finish(const Database& db, const ObjectCallback& 
     Status status = Status::kOk;
     const auto col_lo = static_cast<int64_t>(std::floor((origin[1] + t0) / core)),
                col_hi = static_cast<int64_t>(std::floor((origin[1] + t1) / core));
-    order_.replay(col_lo, col_hi, options_.chunk_points, [&](const double* xyz, size_t n) {
-      kept.clear();
+    AlongTrackOrder::Cursor rows(order_, col_lo, col_hi);
+    for (size_t n; (n = rows.read(buf.data(), chunk)) > 0;) {
+      size_t taken = 0;
       for (size_t i = 0; i < n; ++i) {
-        const double t = xyz[3 * i + 1] - origin[1];  // across, as the stream's frame has it
-        if (t >= t0 && t < t1) kept.insert(kept.end(), xyz + 3 * i, xyz + 3 * i + 3);
+        const double t = buf[3 * i + 1] - origin[1];  // across, as the stream's frame has it
+        if (t >= t0 && t < t1) std::copy_n(&buf[3 * i], 3, &kept[3 * taken++]);
       }
-      status = worse(status, stream.push(kept.data(), static_cast<uint32_t>(kept.size() / 3)));
-    });
+      status = worse(status, stream.push(kept.data(), static_cast<uint32_t>(taken)));
+    }
     status = worse(status, stream.flush());
     add_stream_stats(res.stats, stream.stats());
     res.status = worse(res.status, status);

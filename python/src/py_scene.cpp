@@ -52,7 +52,8 @@ void set_checked(SceneConfig* c, T SceneConfig::*member, const std::string& key,
   const T v = setting_value(static_cast<T*>(nullptr), key, value);
   SceneConfig probe;
   probe.*member = v;
-  if (!scene_config_valid(probe))
+  const bool sized = key == "max_tile_points" && v == T{0};  // from each tile's density, as the command's
+  if (!sized && !scene_config_valid(probe))
     throw py::value_error(key + " is out of range: " + std::string(py::repr(value)));
   c->*member = v;
 }
