@@ -5,6 +5,8 @@
 //                                               strip) as a format-0 LAZ tile
 //   scene-throughput sparse OUT.laz N SIDE     N points spread at random over
 //                                               SIDE x SIDE m, as LAZ
+//   scene-throughput sparse-tiles DIR T N SIDE T such tiles side by side (a
+//                                               square of them), DIR/tNN.laz
 //   scene-throughput run DB.shdb TILE.laz...   per tile: LAZ decoding alone,
 //                                               then the tile through
 //                                               `spinhash scene`'s path
@@ -175,19 +177,39 @@ int write_raw(const char* raw, const char* out) {
   return 0;
 }
 
-int write_sparse(const char* out, uint32_t n, double side) {
-  std::mt19937 rng(1);
+// n points spread at random over side x side m from (x0, y0), on a gentle slope.
+std::vector<double> sparse_points(uint32_t n, double side, double x0, double y0, uint32_t seed) {
+  std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(0.0, side);
   std::normal_distribution<double> noise(0.0, 2.0);
   std::vector<double> xyz;
   for (uint32_t i = 0; i < n; ++i) {
     const double x = u(rng), y = u(rng);
-    xyz.insert(xyz.end(), {500000.0 + x, 4000000.0 + y, 100.0 + 0.01 * x + noise(rng)});
+    xyz.insert(xyz.end(), {x0 + x, y0 + y, 100.0 + 0.01 * (x0 + x - 500000.0) + noise(rng)});
   }
+  return xyz;
+}
+
+int write_sparse(const char* out, uint32_t n, double side) {
   std::string error;
-  if (!write_laz(out, xyz, &error)) {
+  if (!write_laz(out, sparse_points(n, side, 500000.0, 4000000.0, 1), &error)) {
     std::fprintf(stderr, "scene-throughput: %s\n", error.c_str());
     return 1;
+  }
+  return 0;
+}
+
+int write_sparse_tiles(const std::string& dir, uint32_t tiles, uint32_t n, double side) {
+  const auto across = static_cast<uint32_t>(std::ceil(std::sqrt(static_cast<double>(tiles))));
+  for (uint32_t t = 0; t < tiles; ++t) {
+    char name[32];
+    std::snprintf(name, sizeof name, "/t%02u.laz", t);
+    const double x0 = 500000.0 + side * (t % across), y0 = 4000000.0 + side * (t / across);
+    std::string error;
+    if (!write_laz(dir + name, sparse_points(n, side, x0, y0, t + 1), &error)) {
+      std::fprintf(stderr, "scene-throughput: %s\n", error.c_str());
+      return 1;
+    }
   }
   return 0;
 }
@@ -255,12 +277,16 @@ int main(int argc, char** argv) {
     if (argc == 4 && std::strcmp(argv[1], "laz") == 0) return write_raw(argv[2], argv[3]);
     if (argc == 5 && std::strcmp(argv[1], "sparse") == 0)
       return write_sparse(argv[2], static_cast<uint32_t>(std::stoul(argv[3])), std::stod(argv[4]));
+    if (argc == 6 && std::strcmp(argv[1], "sparse-tiles") == 0)
+      return write_sparse_tiles(argv[2], static_cast<uint32_t>(std::stoul(argv[3])),
+                                static_cast<uint32_t>(std::stoul(argv[4])), std::stod(argv[5]));
     if (argc >= 4 && std::strcmp(argv[1], "run") == 0) return run(argv[2], argc - 3, argv + 3);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "scene-throughput: %s\n", e.what());
     return 1;
   }
   std::fprintf(stderr,
-               "usage: scene-throughput laz RAW.f64 OUT.laz | sparse OUT.laz N SIDE_M | run DB.shdb TILE.laz...\n");
+               "usage: scene-throughput laz RAW.f64 OUT.laz | sparse OUT.laz N SIDE_M | sparse-tiles DIR T N SIDE_M "
+               "| run DB.shdb TILE.laz...\n");
   return 2;
 }

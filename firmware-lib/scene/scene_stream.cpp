@@ -134,8 +134,9 @@ Status run_strip(StreamBuffers& b, int64_t k, uint32_t j0, uint32_t j1) {
 }
 
 // Sums row k's terrain cells, then runs its windows over the buffer, strip
-// by strip.
-Status run_row(StreamBuffers& b, int64_t k) {
+// by strip. Out of line: scripts/instructions-per-point.sh splits the
+// stream's work at it.
+__attribute__((noinline)) Status run_row(StreamBuffers& b, int64_t k) {
   const double core = b.lattice.core, margin = b.lattice.margin;
   b.cells.sum(b.ring, static_cast<double>(k) * core - margin, static_cast<double>(k + 1) * core + margin);
   Status status = Status::kOk;

@@ -125,6 +125,7 @@ TileStreamResult TileStreamer::finish(const Database& db, const ObjectCallback& 
   const auto streamed = std::chrono::steady_clock::now();
   res.stats.points_pushed = added_;
   res.stats.scene.points_nonfinite = static_cast<uint32_t>(std::min<uint64_t>(order_.nonfinite(), 0xFFFFFFFFu));
+  res.stats.points_outside = order_.far();  // beyond 2 000 km of the tile's first point
   if (order_.points() == 0) {
     res.status = Status::kEmptyCloud;
     return res;
@@ -181,6 +182,7 @@ TileStreamResult TileStreamer::finish(const Database& db, const ObjectCallback& 
     ++res.bands;
   }
   res.stats.points_pushed = added_;  // once, though the bands' swaths overlap
+  res.stats.points_outside += order_.far();
   res.stats.scene.points_nonfinite = static_cast<uint32_t>(std::min<uint64_t>(order_.nonfinite(), 0xFFFFFFFFu));
   res.stream_ms = ms_since(streamed);
   return res;

@@ -12,6 +12,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
+constexpr double kStep = 1e-3;          // m: the stream's lattice
+constexpr double kReach = 2000000.0;    // m: 32-bit steps of 1 mm
+constexpr size_t kStepsPerPoint = 3;
+
 bool finite3(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
 }  // namespace
@@ -57,20 +61,43 @@ void AlongTrackOrder::add(const double* xyz, size_t n) {
       ++nonfinite_;
       continue;
     }
-    const Cell c = cell_of(p);
+    if (!origin_set_) {
+      for (int a = 0; a < 3; ++a) origin_[a] = std::floor(p[a]);
+      origin_set_ = true;
+    }
+    int32_t k[3];
+    double q[3];  // the point as it comes back
+    bool near = true;
+    for (int a = 0; a < 3; ++a) {
+      const double d = p[a] - origin_[a];
+      near = near && std::fabs(d) < kReach;
+      k[a] = near ? static_cast<int32_t>(std::lrint(d / kStep)) : 0;  // to the nearest step
+      q[a] = origin_[a] + static_cast<double>(k[a]) * kStep;
+    }
+    if (!near) {
+      ++far_;
+      continue;
+    }
+    const Cell c = cell_of(q);
     if (last_ == nullptr || c != last_cell_) {
       last_ = &cells_[c];
       last_cell_ = c;
     }
-    last_->xyz.insert(last_->xyz.end(), p, p + 3);
-    ++column_points_[c.second];
+    last_->steps.insert(last_->steps.end(), k, k + 3);
+    ++last_->points;
     for (int a = 0; a < 3; ++a) {
-      min_[a] = p[a] < min_[a] ? p[a] : min_[a];
-      max_[a] = p[a] > max_[a] ? p[a] : max_[a];
+      min_[a] = q[a] < min_[a] ? q[a] : min_[a];
+      max_[a] = q[a] > max_[a] ? q[a] : max_[a];
     }
     ++points_;
     if (++held_ >= memory_points_) spill_all();
   }
+}
+
+std::map<int64_t, uint64_t> AlongTrackOrder::columns() const {
+  std::map<int64_t, uint64_t> points;
+  for (const auto& [cell, held] : cells_) points[cell.second] += held.points;
+  return points;
 }
 
 void AlongTrackOrder::spill_all() {
@@ -80,15 +107,15 @@ void AlongTrackOrder::spill_all() {
     dir_ = pattern;
   }
   for (auto& [cell, held] : cells_) {
-    if (held.xyz.empty()) continue;
+    if (held.steps.empty()) continue;
     const fs::path path = path_of(cell);
     std::ofstream f(path, std::ios::binary | std::ios::app);
-    f.write(reinterpret_cast<const char*>(held.xyz.data()),
-            static_cast<std::streamsize>(held.xyz.size() * sizeof(double)));
+    f.write(reinterpret_cast<const char*>(held.steps.data()),
+            static_cast<std::streamsize>(held.steps.size() * sizeof(int32_t)));
     if (!f) throw std::runtime_error("cannot write " + path.string());
     held.spilled = true;
-    held.xyz.clear();
-    held.xyz.shrink_to_fit();
+    held.steps.clear();
+    held.steps.shrink_to_fit();
   }
   held_ = 0;
 }
@@ -98,6 +125,12 @@ AlongTrackOrder::Cursor::Cursor(const AlongTrackOrder& order, int64_t col_lo, in
 
 size_t AlongTrackOrder::Cursor::read(double* xyz, size_t max_points) {
   size_t got = 0;
+  const double* o = order_->origin_;
+  auto put = [&](const int32_t* k, size_t n) {  // n points of steps into xyz
+    for (size_t i = 0; i < n; ++i, ++got)
+      for (size_t a = 0; a < kStepsPerPoint; ++a)
+        xyz[3 * got + a] = o[a] + static_cast<double>(k[kStepsPerPoint * i + a]) * kStep;
+  };
   while (got < max_points && cell_ != order_->cells_.end()) {
     const Cell& cell = cell_->first;
     const Held& held = cell_->second;
@@ -111,19 +144,18 @@ size_t AlongTrackOrder::Cursor::read(double* xyz, size_t max_points) {
       opened_ = true;
     }
     if (file_.is_open()) {
-      file_.read(reinterpret_cast<char*>(xyz + 3 * got),
-                 static_cast<std::streamsize>((max_points - got) * 3 * sizeof(double)));
-      got += static_cast<size_t>(file_.gcount()) / (3 * sizeof(double));
+      buf_.resize(kStepsPerPoint * (max_points - got));
+      file_.read(reinterpret_cast<char*>(buf_.data()),
+                 static_cast<std::streamsize>(buf_.size() * sizeof(int32_t)));
+      put(buf_.data(), static_cast<size_t>(file_.gcount()) / (kStepsPerPoint * sizeof(int32_t)));
       if (file_) continue;  // filled
       file_.close();
       file_.clear();
     }
-    const size_t take = std::min(max_points - got, (held.xyz.size() - at_) / 3);
-    std::copy(held.xyz.begin() + static_cast<std::ptrdiff_t>(at_),
-              held.xyz.begin() + static_cast<std::ptrdiff_t>(at_ + 3 * take), xyz + 3 * got);
-    got += take;
-    at_ += 3 * take;
-    if (at_ < held.xyz.size()) continue;  // filled
+    const size_t take = std::min(max_points - got, (held.steps.size() - at_) / kStepsPerPoint);
+    put(held.steps.data() + at_, take);
+    at_ += kStepsPerPoint * take;
+    if (at_ < held.steps.size()) continue;  // filled
     ++cell_;
     opened_ = false;
     at_ = 0;

@@ -98,7 +98,7 @@ void bind_along_track_order(py::module_& m) {
       "it to the stream's heading, row_depth at most its max_lag); within a row the points keep their order.")
       .def(py::init<double, double, size_t>(), py::arg("heading_deg") = 90.0, py::arg("row_depth") = 16.0,
            py::arg("memory_points") = pipeline::kOrderMemoryPoints,
-           "AlongTrackOrder(heading_deg=90, row_depth=16, memory_points=262144): points beyond memory_points "
+           "AlongTrackOrder(heading_deg=90, row_depth=16, memory_points=524288): points beyond memory_points "
            "go to temporary files, removed with the order")
       .def("push", &PyAlongTrackOrder::push, py::arg("points"),
            "Adds an (N, 3) float64 chunk (non-finite points are counted and left out).")
