@@ -225,7 +225,8 @@ double decode_seconds(const std::string& path, uint64_t* points) {
 }
 
 void row(const char* tile, const char* stage, double seconds, uint64_t points) {
-  std::printf("%s,%s,%.4f,%.0f\n", tile, stage, seconds, seconds > 0.0 ? static_cast<double>(points) / seconds : 0.0);
+  std::printf("%s,%s,%.4f,%.0f\n", tile, stage, seconds,
+              seconds > 0.0 ? static_cast<double>(points) / seconds : 0.0);
 }
 
 int run(const char* db_path, int files, char** paths) {
@@ -247,15 +248,17 @@ int run(const char* db_path, int files, char** paths) {
     uint64_t objects = 0, vehicles = 0;
     const double t0 = thread_seconds();
     auto source = host::open_point_source(path);
-    const pipeline::TileStreamResult r = pipeline::stream_tile(db.db, *source, options, [&](const SceneObject& o) {
-      ++objects;
-      vehicles += o.kind == ObjectKind::kVehicleCandidate ? 1u : 0u;
-    });
+    const pipeline::TileStreamResult r =
+        pipeline::stream_tile(db.db, *source, options, [&](const SceneObject& o) {
+          ++objects;
+          vehicles += o.kind == ObjectKind::kVehicleCandidate ? 1u : 0u;
+        });
     const double total = thread_seconds() - t0;
-    const double rest = total - decode - g_seconds[kTerrain] - g_seconds[kSegmentation] - g_seconds[kRecognition] -
-                        g_seconds[kOrder];
+    const double rest = total - decode - g_seconds[kTerrain] - g_seconds[kSegmentation] -
+                        g_seconds[kRecognition] - g_seconds[kOrder];
     const std::string name = std::filesystem::path(path).filename().string();
-    std::fprintf(stderr, "scene-throughput: %s: %s, %" PRIu64 " points, %" PRIu64 " objects (%" PRIu64
+    std::fprintf(stderr,
+                 "scene-throughput: %s: %s, %" PRIu64 " points, %" PRIu64 " objects (%" PRIu64
                  " vehicle candidates), %" PRIu64 " windows in %u bands\n",
                  name.c_str(), status_name(r.status), points, objects, vehicles, r.stats.windows, r.bands);
     row(name.c_str(), "laz_decoding", decode, points);
@@ -285,8 +288,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "scene-throughput: %s\n", e.what());
     return 1;
   }
-  std::fprintf(stderr,
-               "usage: scene-throughput laz RAW.f64 OUT.laz | sparse OUT.laz N SIDE_M | sparse-tiles DIR T N SIDE_M "
-               "| run DB.shdb TILE.laz...\n");
+  std::fprintf(
+      stderr,
+      "usage: scene-throughput laz RAW.f64 OUT.laz | sparse OUT.laz N SIDE_M | sparse-tiles DIR T N SIDE_M "
+      "| run DB.shdb TILE.laz...\n");
   return 2;
 }

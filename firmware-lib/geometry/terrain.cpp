@@ -153,7 +153,6 @@ void fill_terrain_surface(TerrainGrid& g, uint32_t max_gap) {
   }
 }
 
-
 // The gap fill's reach: ground cells at most this far apart along a row or
 // column are joined (the widest opening, and the snap's extra cells).
 uint32_t gap_cells(const TerrainParams& params) {

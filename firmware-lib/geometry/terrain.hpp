@@ -55,14 +55,14 @@ struct TerrainGrid {
 // a point. Cells of different parts lie farther apart than the filter
 // reaches, so each part's surface is the one its own cells give.
 struct TerrainParts {
-  TerrainGrid whole;             // the carved buffers
-  TerrainGrid* part = nullptr;   // kMaxTerrainParts, carved
+  TerrainGrid whole;            // the carved buffers
+  TerrainGrid* part = nullptr;  // kMaxTerrainParts, carved
   uint32_t count = 0;
   uint32_t cells = 0;  // cells used by the parts, together
   float cell = 0.5f;
-  float x0 = 0.0f, y0 = 0.0f;  // min corner of block (0, 0): a multiple of `cell`
-  float block = 0.0f;          // m: block edge
-  uint32_t bx = 0, by = 0;     // blocks
+  float x0 = 0.0f, y0 = 0.0f;     // min corner of block (0, 0): a multiple of `cell`
+  float block = 0.0f;             // m: block edge
+  uint32_t bx = 0, by = 0;        // blocks
   uint8_t* block_part = nullptr;  // kMaxTerrainBlocks, carved: per block its part, kNoTerrainPart: none
 
   void carve(Arena& arena, uint32_t max_cells);

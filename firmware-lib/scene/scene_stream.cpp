@@ -107,8 +107,9 @@ Status run_strip(StreamBuffers& b, int64_t k, uint32_t j0, uint32_t j1) {
   const WindowOutput out{b.sink, b.sink_context, &b.stats.scene, &b.stats.objects_reported,
                          &b.stats.objects_not_owned};
   const FrameRect strip = strip_rect(b.lattice, k, j0, j1);
-  const Status terrain = build_strip_terrain(b.config.scene, b.cells, strip, strip_gather_rect(b.lattice, k, j0, j1),
-                                             strip.s0, strip.t0, b.window, &b.stats.scene);
+  const Status terrain =
+      build_strip_terrain(b.config.scene, b.cells, strip, strip_gather_rect(b.lattice, k, j0, j1), strip.s0,
+                          strip.t0, b.window, &b.stats.scene);
   if (terrain == Status::kEmptyCloud) return Status::kOk;  // nothing to see here
   Status status = Status::kOk;
   for (uint32_t j = j0; j < j1; ++j) {
@@ -119,8 +120,7 @@ Status run_strip(StreamBuffers& b, int64_t k, uint32_t j0, uint32_t j1) {
     job.s0 = strip.s0;  // the strip's local frame, in which its terrain lies
     job.t0 = strip.t0;
     uint32_t missed = 0;
-    const uint32_t got =
-        gather_window(b.ring, b.lattice.gather_rect(k, j), job, b.window, &missed);
+    const uint32_t got = gather_window(b.ring, b.lattice.gather_rect(k, j), job, b.window, &missed);
     if (got == 0) continue;
     ++b.stats.windows;
     b.stats.scene.windows = saturating_add(b.stats.scene.windows, 1u);
@@ -156,8 +156,7 @@ int64_t complete_before(const StreamBuffers& b, double settled) {
 // the first row that gathers one (at most to `end`): the work follows the
 // points, whatever the area between them.
 Status run_or_skip(StreamBuffers& b, int64_t end) {
-  const int64_t first =
-      b.gather_min_s < kUnbounded ? first_row_gathering(b.lattice, b.gather_min_s) : end;
+  const int64_t first = b.gather_min_s < kUnbounded ? first_row_gathering(b.lattice, b.gather_min_s) : end;
   Status status = Status::kOk;
   if (first > b.next_row) {
     b.next_row = first < end ? first : end;
@@ -214,7 +213,8 @@ Status hold_jump(StreamBuffers& b, const double* stz) {
   for (int a = 0; a < 3; ++a) b.pending[3u * b.pending_count + a] = stz[a];
   if (++b.pending_count < b.config.jump_confirm_points) return Status::kOk;
   Status status = Status::kOk;
-  for (uint32_t i = 0; i < b.pending_count; ++i) status = worse_scene_status(status, take(b, b.pending + 3u * i));
+  for (uint32_t i = 0; i < b.pending_count; ++i)
+    status = worse_scene_status(status, take(b, b.pending + 3u * i));
   b.pending_count = 0;
   return status;
 }
@@ -299,7 +299,8 @@ Status SceneStream::push(const double* xyz, uint32_t n) noexcept {
     return Status::kStreamFlushed;
   }
   Status status = Status::kOk;
-  for (uint32_t i = 0; i < n; ++i) status = worse_scene_status(status, push_one(b, xyz + 3u * static_cast<size_t>(i)));
+  for (uint32_t i = 0; i < n; ++i)
+    status = worse_scene_status(status, push_one(b, xyz + 3u * static_cast<size_t>(i)));
   b.stats.points_pushed += n;
   return status;
 }

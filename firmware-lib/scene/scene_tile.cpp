@@ -13,7 +13,8 @@ uint32_t scene_grid_cells(double w, double h, float cell) noexcept {
 }
 
 void fit_tile_grids(SceneConfig* scene) noexcept {
-  const double core = static_cast<double>(scene->window_core), margin = static_cast<double>(scene->window_margin);
+  const double core = static_cast<double>(scene->window_core),
+               margin = static_cast<double>(scene->window_margin);
   const double band = static_cast<double>(scene->band_columns) * core;
   const double gathered = core + 2.0 * static_cast<double>(scene->object_margin);
   const uint32_t terrain = scene_grid_cells(band + 2.0 * margin, core + 2.0 * margin, scene->terrain_cell);
@@ -25,7 +26,8 @@ void fit_tile_grids(SceneConfig* scene) noexcept {
 StreamConfig tile_stream_config(const SceneConfig& scene, uint32_t max_buffered_points) noexcept {
   StreamConfig c;
   c.scene = scene;
-  const double core = static_cast<double>(scene.window_core), margin = static_cast<double>(scene.window_margin);
+  const double core = static_cast<double>(scene.window_core),
+               margin = static_cast<double>(scene.window_margin);
   const double object_margin = static_cast<double>(scene.object_margin);
   const double band = static_cast<double>(scene.band_columns) * core;
   c.origin_given = true;  // each band's, by SceneStream::reset
@@ -74,7 +76,8 @@ void tile_band_origin(const TilePlan& plan, uint32_t b, double* origin) noexcept
 
 uint32_t tile_band_gathering(const TilePlan& plan, double y) noexcept {
   // Band b gathers [b w - m, (b + 1) w + m) from the origin.
-  const double b = std::floor((y - plan.origin[1] - plan.object_margin - plan.band_width) / plan.band_width) + 1.0;
+  const double b =
+      std::floor((y - plan.origin[1] - plan.object_margin - plan.band_width) / plan.band_width) + 1.0;
   if (!(b < static_cast<double>(plan.bands))) return plan.bands;  // beyond the last, or NaN
   return b < 0.0 ? 0u : static_cast<uint32_t>(b);
 }

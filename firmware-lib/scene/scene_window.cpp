@@ -316,7 +316,8 @@ uint32_t gather_window(const PointRing& ring, const FrameRect& seen, const Windo
 }
 
 Status build_strip_terrain(const SceneConfig& c, const TerrainCells& cells, const FrameRect& seen,
-                           const FrameRect& gathered, double s0, double t0, WindowBuffers& b, SceneStats* st) {
+                           const FrameRect& gathered, double s0, double t0, WindowBuffers& b,
+                           SceneStats* st) {
   const double om = static_cast<double>(c.object_margin);
   const FrameRect needed{gathered.s0 - om, gathered.s1 + om, gathered.t0 - om, gathered.t1 + om};
   const Status s = cells.fill(seen, needed, s0, t0, terrain_reach_cells(scene_terrain_params(c)), b.terrain);

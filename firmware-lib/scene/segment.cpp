@@ -39,7 +39,8 @@ uint32_t coord(float v, float v0, float cell, uint32_t count) {
 // The cell of a point above ground: its cell of the whole footprint, less
 // the grid's offset (the points above ground lie within [ox, ox + nx)).
 uint32_t cell_of(const SegmentGrid& g, const float* p) {
-  return (coord(p[1], g.y0, g.cell, g.frame_ny) - g.oy) * g.nx + (coord(p[0], g.x0, g.cell, g.frame_nx) - g.ox);
+  return (coord(p[1], g.y0, g.cell, g.frame_ny) - g.oy) * g.nx +
+         (coord(p[0], g.x0, g.cell, g.frame_nx) - g.ox);
 }
 
 uint32_t height_bin(float h, float bin) {
@@ -225,8 +226,7 @@ Status segment_objects(const float* xyz, const float* height, const uint8_t* gro
   for (uint32_t i = 0; i < n; ++i) {
     label[i] = kNoObject;
     if (ground[i]) continue;
-    const uint32_t id =
-        g.object[find_root(g.parent, slot_of(g, xyz + 3u * i, height[i], params))];
+    const uint32_t id = g.object[find_root(g.parent, slot_of(g, xyz + 3u * i, height[i], params))];
     if (id == kNoObject) continue;
     label[i] = id;
     ObjectShape& o = objects[id];

@@ -23,8 +23,8 @@ struct SegmentParams {
   float split_height = 3.8f;  // m above terrain: low layer at or below, high layer above
   uint32_t min_points = 30;   // smaller components are fragments
   uint32_t max_objects = 256;
-  float column_bin = 0.25f;         // m: height bins of a cell's column (kSegmentColumnBins of them)
-  uint32_t layer_gap_bins = 4;      // empty bins that part a column (< kSegmentColumnBins)
+  float column_bin = 0.25f;     // m: height bins of a cell's column (kSegmentColumnBins of them)
+  uint32_t layer_gap_bins = 4;  // empty bins that part a column (< kSegmentColumnBins)
 };
 
 struct SegmentGrid {

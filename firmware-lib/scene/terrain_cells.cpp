@@ -229,7 +229,8 @@ Status TerrainCells::fill(const FrameRect& rect, const FrameRect& needed, double
       const uint8_t p = parts.block_part[(rj / b) * bi + ri / b];
       if (p == kNoTerrainPart) continue;  // not needed
       terrain_put_cell(parts.part[p], ri - static_cast<uint32_t>(part_first_[2u * p]),
-                       rj - static_cast<uint32_t>(part_first_[2u * p + 1u]), lowest[c], band_sum[c], band_count[c]);
+                       rj - static_cast<uint32_t>(part_first_[2u * p + 1u]), lowest[c], band_sum[c],
+                       band_count[c]);
     }
   }
   return Status::kOk;

@@ -51,8 +51,8 @@ SceneResult SceneSession::flush() {
   r.stats = last_.stats.scene;
   r.stats.objects_dropped += dropped;
   r.stats.workspace_used = last_.workspace_bytes;
-  r.points_lost =
-      last_.stats.points_outside + last_.stats.points_late + last_.stats.points_glitch + last_.stats.points_overflow;
+  r.points_lost = last_.stats.points_outside + last_.stats.points_late + last_.stats.points_glitch +
+                  last_.stats.points_overflow;
   return r;
 }
 

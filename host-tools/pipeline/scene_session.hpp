@@ -26,7 +26,7 @@ class SceneSession {
   // push then flush.
   SceneResult recognize(const std::vector<double>& xyz);
   const TileStreamResult& last() const { return last_; }  // the stream's account of the last tile
-  double last_ms() const { return last_ms_; }              // wall time of the last flush (push included)
+  double last_ms() const { return last_ms_; }             // wall time of the last flush (push included)
   size_t workspace_bytes() const { return last_.workspace_bytes; }
 
  private:

@@ -36,15 +36,16 @@ void size_from_density(const AlongTrackOrder& order, const TileStreamOptions& o,
   const double density = static_cast<double>(order.points()) / (width * length) * kDensitySafety;
   const double gathered = core + 2.0 * o.scene.object_margin;
   if (scene->max_tile_points == 0)
-    scene->max_tile_points =
-        static_cast<uint32_t>(std::clamp<double>(density * gathered * gathered, kMinWindowPoints, kMaxWindowPoints));
+    scene->max_tile_points = static_cast<uint32_t>(
+        std::clamp<double>(density * gathered * gathered, kMinWindowPoints, kMaxWindowPoints));
   const StreamConfig derived = tile_stream_config(*scene, 0);  // the buffer at a window's density
   const double window = static_cast<double>(scene->max_tile_points);
   const double per_window = static_cast<double>(derived.max_buffered_points) / window;
-  const uint64_t want = o.max_buffered_points > 0
-                            ? o.max_buffered_points
-                            : static_cast<uint64_t>(std::clamp<double>(density * gathered * gathered * per_window,
-                                                                      kMinBufferedPoints, kMaxBufferedPoints));
+  const uint64_t want =
+      o.max_buffered_points > 0
+          ? o.max_buffered_points
+          : static_cast<uint64_t>(std::clamp<double>(density * gathered * gathered * per_window,
+                                                     kMinBufferedPoints, kMaxBufferedPoints));
   *buffered = static_cast<uint32_t>(std::min<uint64_t>(want, kMaxBufferedPoints));
 }
 
@@ -124,7 +125,8 @@ TileStreamResult TileStreamer::finish(const Database& db, const ObjectCallback& 
   res.read_ms = ms_since(start_);
   const auto streamed = std::chrono::steady_clock::now();
   res.stats.points_pushed = added_;
-  res.stats.scene.points_nonfinite = static_cast<uint32_t>(std::min<uint64_t>(order_.nonfinite(), 0xFFFFFFFFu));
+  res.stats.scene.points_nonfinite =
+      static_cast<uint32_t>(std::min<uint64_t>(order_.nonfinite(), 0xFFFFFFFFu));
   res.stats.points_outside = order_.far();  // beyond 2 000 km of the tile's first point
   if (order_.points() == 0) {
     res.status = Status::kEmptyCloud;
@@ -183,7 +185,8 @@ TileStreamResult TileStreamer::finish(const Database& db, const ObjectCallback& 
   }
   res.stats.points_pushed = added_;  // once, though the bands' swaths overlap
   res.stats.points_outside += order_.far();
-  res.stats.scene.points_nonfinite = static_cast<uint32_t>(std::min<uint64_t>(order_.nonfinite(), 0xFFFFFFFFu));
+  res.stats.scene.points_nonfinite =
+      static_cast<uint32_t>(std::min<uint64_t>(order_.nonfinite(), 0xFFFFFFFFu));
   res.stream_ms = ms_since(streamed);
   return res;
 }

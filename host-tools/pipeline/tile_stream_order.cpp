@@ -12,8 +12,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kStep = 1e-3;          // m: the stream's lattice
-constexpr double kReach = 2000000.0;    // m: 32-bit steps of 1 mm
+constexpr double kStep = 1e-3;        // m: the stream's lattice
+constexpr double kReach = 2000000.0;  // m: 32-bit steps of 1 mm
 constexpr size_t kStepsPerPoint = 3;
 
 bool finite3(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }

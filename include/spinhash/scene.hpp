@@ -86,9 +86,9 @@ struct SceneConfig {
   float max_clearance = 1.2f;                   // m: lowest point above the terrain; higher floats (crowns)
   float max_size_mismatch = 0.15f;              // confident only if the object's length and width are
                                                 // within this share of the best model's bounding box
-  float class_size_factor = 2.0f;  // a confident class: its leader's box within this many times
-                                   // max_size_mismatch (members of a class differ by decimetres,
-                                   // classes by metres)
+  float class_size_factor = 2.0f;               // a confident class: its leader's box within this many times
+                                                // max_size_mismatch (members of a class differ by decimetres,
+                                                // classes by metres)
   // Confident only if the best model, under its pose, does not sink into the
   // terrain by more than this (m; SceneObject::ground_gap): a look-alike
   // taller than the scanned vehicle, posed to fit its roof, does (a bus

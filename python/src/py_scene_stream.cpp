@@ -154,7 +154,8 @@ std::unique_ptr<PySceneStream> make_stream(const std::shared_ptr<PyDatabase>& db
       rest[item.first] = item.second;
     }
   c.scene = scene_config_from(config, rest);
-  if (c.scene.max_tile_points == 0) c.scene.max_tile_points = SceneConfig{}.max_tile_points;  // a fixed window
+  if (c.scene.max_tile_points == 0)
+    c.scene.max_tile_points = SceneConfig{}.max_tile_points;  // a fixed window
   if (!stream_config_valid(c))
     throw py::value_error("SceneStream: invalid settings (see stream_config_valid)");
   return std::make_unique<PySceneStream>(db, c);

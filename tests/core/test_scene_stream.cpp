@@ -351,13 +351,16 @@ TEST_CASE("stream: points pushed out of order are dropped with kPointsLate, neve
   CHECK(run.stream.stats().points_late <= n / 2);
 }
 
-TEST_CASE("stream: work follows the points: two patches 5 km apart (78 rows of cores) run their windows, not the rows between") {
+TEST_CASE(
+    "stream: work follows the points: two patches 5 km apart (78 rows of cores) run their windows, not the "
+    "rows between") {
   ToyDatabase toy;
   REQUIRE(make_toy_database(&toy));
   std::vector<double> xyz = strip_points();
   const size_t n = xyz.size() / 3;
   std::vector<double> both = xyz;
-  for (size_t i = 0; i < n; ++i) both.insert(both.end(), {xyz[3 * i], xyz[3 * i + 1] + 4992.0, xyz[3 * i + 2]});
+  for (size_t i = 0; i < n; ++i)
+    both.insert(both.end(), {xyz[3 * i], xyz[3 * i + 1] + 4992.0, xyz[3 * i + 2]});
   StreamConfig c = strip_config();
   c.max_jump = 10000.0f;  // the gap is data, not a glitch
   StreamRun one(&toy.db, c), two(&toy.db, c);

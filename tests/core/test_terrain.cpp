@@ -113,7 +113,8 @@ TEST_CASE("terrain: parts follow the points: far-apart patches are filtered each
   for (size_t i = 1; i < far.size(); i += 3) far[i] += 3000.0;
   both.insert(both.end(), far.begin(), far.end());
   both.insert(both.end(), {5.0, 1500.0, 3.0});
-  const StreamTerrain alone_near = stream_terrain(near, TerrainParams{}), alone_far = stream_terrain(far, TerrainParams{});
+  const StreamTerrain alone_near = stream_terrain(near, TerrainParams{}),
+                      alone_far = stream_terrain(far, TerrainParams{});
   const StreamTerrain together = stream_terrain(both, TerrainParams{});
   REQUIRE(together.status == Status::kOk);
   CHECK(together.parts == 3u);
@@ -121,7 +122,8 @@ TEST_CASE("terrain: parts follow the points: far-apart patches are filtered each
   const size_t n = near.size() / 3;
   bool same = true;
   for (size_t i = 0; i < n; ++i)
-    same = same && together.height[i] == alone_near.height[i] && together.height[n + i] == alone_far.height[i];
+    same =
+        same && together.height[i] == alone_near.height[i] && together.height[n + i] == alone_far.height[i];
   CHECK(same);
   CHECK(together.ground.back() == 1u);  // the lone point is its own ground
 }

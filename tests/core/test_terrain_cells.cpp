@@ -80,7 +80,8 @@ void grid_from_points(const PointRing& ring, const FrameRect& rect, double t_min
     if (!rect.holds(p[0], p[1])) continue;
     local->insert(local->end(),
                   {static_cast<float>(p[0] - s0), static_cast<float>(p[1] - t0), static_cast<float>(p[2])});
-    const Cell c{static_cast<int64_t>(std::floor(p[0] / kCell)), static_cast<int64_t>(std::floor((p[1] - t_min) / kCell))};
+    const Cell c{static_cast<int64_t>(std::floor(p[0] / kCell)),
+                 static_cast<int64_t>(std::floor((p[1] - t_min) / kCell))};
     points.push_back({c, static_cast<float>(p[2])});
     Sums& sums = cells[c];
     if (std::isnan(sums.lowest) || points.back().second < sums.lowest) sums.lowest = points.back().second;
@@ -97,14 +98,15 @@ void grid_from_points(const PointRing& ring, const FrameRect& rect, double t_min
     lo[1] = std::min(lo[1], c.second), hi[1] = std::max(hi[1], c.second);
   }
   REQUIRE(terrain_parts_begin(g, kCell, 0.0f, 0.0f, 1u << 20, 1, 1));
-  const uint8_t part = terrain_add_part(g, static_cast<float>(static_cast<double>(lo[0]) * kCell - s0),
-                                        static_cast<float>(t_min + static_cast<double>(lo[1]) * kCell - t0),
-                                        static_cast<uint32_t>(hi[0] - lo[0] + 1), static_cast<uint32_t>(hi[1] - lo[1] + 1));
+  const uint8_t part =
+      terrain_add_part(g, static_cast<float>(static_cast<double>(lo[0]) * kCell - s0),
+                       static_cast<float>(t_min + static_cast<double>(lo[1]) * kCell - t0),
+                       static_cast<uint32_t>(hi[0] - lo[0] + 1), static_cast<uint32_t>(hi[1] - lo[1] + 1));
   REQUIRE(part == 0u);
   g.block_part[0] = part;
   for (const auto& [c, sums] : cells)
-    terrain_put_cell(g.part[0], static_cast<uint32_t>(c.first - lo[0]), static_cast<uint32_t>(c.second - lo[1]),
-                     sums.lowest, sums.sum, sums.count);
+    terrain_put_cell(g.part[0], static_cast<uint32_t>(c.first - lo[0]),
+                     static_cast<uint32_t>(c.second - lo[1]), sums.lowest, sums.sum, sums.count);
   terrain_finish(g, TerrainParams{});
 }
 
@@ -181,8 +183,9 @@ TEST_CASE("terrain cells: a strip without points is kEmptyCloud, a grid too smal
   const uint32_t reach = terrain_reach_cells(TerrainParams{});
   const uint32_t full = c.grid.whole.max_cells;
   c.grid.whole.max_cells = 1000;
-  CHECK(c.cells.fill(FrameRect{-kMargin, kRow + kMargin, -70.0, 70.0}, FrameRect{-kMargin, kRow + kMargin, -70.0, 70.0}, -kMargin, -70.0, reach, c.grid) ==
-        Status::kTileTooLarge);
+  CHECK(c.cells.fill(FrameRect{-kMargin, kRow + kMargin, -70.0, 70.0},
+                     FrameRect{-kMargin, kRow + kMargin, -70.0, 70.0}, -kMargin, -70.0, reach,
+                     c.grid) == Status::kTileTooLarge);
   c.grid.whole.max_cells = full;
   c.cells.sum(c.ring, 200.0 - kMargin, 200.0 + kRow + kMargin);  // along the track, beyond the tile
   const FrameRect beyond{200.0 - kMargin, 200.0 + kRow + kMargin, -70.0, 70.0};

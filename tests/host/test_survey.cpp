@@ -272,7 +272,9 @@ TEST_CASE("survey plan: ownership by half-open core, thin gaps to the nearest ti
   REQUIRE(areas.size() == 2u);
   CHECK(self == 1u);
   CHECK(areas[0].max[0] == 39.99);
-  auto owner = [&](double x, double y) { return spinhash::owner_of(areas.data(), 2, x, y, survey::kGapTolerance); };
+  auto owner = [&](double x, double y) {
+    return spinhash::owner_of(areas.data(), 2, x, y, survey::kGapTolerance);
+  };
   CHECK(owner(10, 10) == 0u);
   CHECK(owner(39.995, 10) == 0u);  // in the gap, nearer a
   CHECK(owner(40.005, 10) == 1u);  // in the gap, nearer b

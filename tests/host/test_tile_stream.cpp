@@ -93,10 +93,12 @@ TEST_CASE("tile stream: no point of a real tile is lost at its edges") {
     const uint64_t count = source->header().point_count;
     pipeline::TileStreamOptions options;
     options.scene.max_tile_points = 0;
-    const pipeline::TileStreamResult r = pipeline::stream_tile(db.db, *source, options, [](const SceneObject&) {});
+    const pipeline::TileStreamResult r =
+        pipeline::stream_tile(db.db, *source, options, [](const SceneObject&) {});
     CHECK(r.status == Status::kOk);
     CHECK(r.points_read == count);
-    CHECK(r.stats.points_outside + r.stats.points_late + r.stats.points_glitch + r.stats.points_overflow == 0u);
+    CHECK(r.stats.points_outside + r.stats.points_late + r.stats.points_glitch + r.stats.points_overflow ==
+          0u);
     CHECK(r.stats.scene.points_in == count);  // each point once, by the window that owns it
   }
 }
@@ -113,7 +115,8 @@ TEST_CASE("tile stream: a text tile's picture is an even sample of bounded size,
   pipeline::TileStreamOptions options;
   options.scene.max_tile_points = 0;
   options.picture_points = 1000;
-  const pipeline::TileStreamResult r = pipeline::stream_tile(db.db, *source, options, [](const SceneObject&) {});
+  const pipeline::TileStreamResult r =
+      pipeline::stream_tile(db.db, *source, options, [](const SceneObject&) {});
   CHECK(r.points_read == 60000u);
   const size_t kept = r.picture_xyz.size() / 3;
   CHECK(kept >= 1000u);
@@ -129,10 +132,12 @@ TEST_CASE("tile stream: a text tile's picture is an even sample of bounded size,
 
 TEST_CASE("tile stream: chunks of any size and order give the whole tile's objects") {
   TempDir dir("tile-stream-chunks");
-  const std::string fleet = dir.file("fleet"), db_path = dir.file("fleet.shdb"), scene = dir.file("scene.las");
+  const std::string fleet = dir.file("fleet"), db_path = dir.file("fleet.shdb"),
+                    scene = dir.file("scene.las");
   REQUIRE(run_spinhash(dir, "generate --count 4 -o " + shell_quoted(fleet)).exit_code == 0);
-  REQUIRE(run_spinhash(dir, "build --quiet -o " + shell_quoted(db_path) + " " + shell_quoted(fleet)).exit_code ==
-          0);
+  REQUIRE(
+      run_spinhash(dir, "build --quiet -o " + shell_quoted(db_path) + " " + shell_quoted(fleet)).exit_code ==
+      0);
   const CliRun s = run_spinhash(dir, "scan-scene " + shell_quoted(fleet) + " -o " + shell_quoted(scene) +
                                          " --size 70 --vehicles 6 --trees 2 --seed 7");
   REQUIRE_MESSAGE(s.exit_code == 0, s.err);
@@ -206,14 +211,15 @@ TEST_CASE("tile stream: a survey's tile reports what owner_of gives it, and coun
   std::vector<Seen> reported;
   pipeline::TileStreamer tile(options);
   tile.add(xyz.data(), xyz.size() / 3);
-  const pipeline::TileStreamResult r = tile.finish(db.db, [&](const SceneObject& o) { reported.push_back(seen(o)); });
+  const pipeline::TileStreamResult r =
+      tile.finish(db.db, [&](const SceneObject& o) { reported.push_back(seen(o)); });
   CHECK(r.status == Status::kOk);
   REQUIRE(reported.size() == 1u);
   CHECK(reported[0].center[0] == doctest::Approx(10.0).epsilon(0.05));
   CHECK(r.objects_not_owned == 1u);
   CHECK(r.objects_in_holes == 0u);
-  CHECK(owner_of(options.owners.data(), 2, 30.0, 5.0, 0.0) == 0u);   // an edge: the area that starts there
-  CHECK(owner_of(options.owners.data(), 2, 60.5, 5.0, 1.0) == 0u);   // a gap: the nearest within tolerance
+  CHECK(owner_of(options.owners.data(), 2, 30.0, 5.0, 0.0) == 0u);  // an edge: the area that starts there
+  CHECK(owner_of(options.owners.data(), 2, 60.5, 5.0, 1.0) == 0u);  // a gap: the nearest within tolerance
   CHECK(owner_of(options.owners.data(), 2, 70.0, 5.0, 1.0) == kNoOwner);  // a hole
 }
 

@@ -8,7 +8,8 @@
 namespace spinhash {
 namespace test {
 
-StreamTerrain stream_terrain(const std::vector<double>& xyz, const TerrainParams& params, uint32_t max_cells) {
+StreamTerrain stream_terrain(const std::vector<double>& xyz, const TerrainParams& params,
+                             uint32_t max_cells) {
   StreamTerrain r;
   const uint32_t n = static_cast<uint32_t>(xyz.size() / 3);
   if (!terrain_params_valid(params)) {
@@ -57,7 +58,8 @@ StreamTerrain stream_terrain(const std::vector<double>& xyz, const TerrainParams
   }
   r.height.resize(n);
   r.ground.resize(n);
-  r.points_ground = terrain_heights(parts, r.local.data(), n, params.ground_height, r.height.data(), r.ground.data());
+  r.points_ground =
+      terrain_heights(parts, r.local.data(), n, params.ground_height, r.height.data(), r.ground.data());
   for (uint32_t i = 0; i < n; ++i)
     r.surface_at_points.push_back(terrain_height_at(parts, r.local[3 * i], r.local[3 * i + 1]));
   return r;

@@ -19,9 +19,9 @@ struct StreamTerrain {
   std::vector<float> height;
   std::vector<uint8_t> ground;
   uint32_t points_ground = 0;
-  uint32_t cells = 0;    // in the parts, together
+  uint32_t cells = 0;  // in the parts, together
   uint32_t parts = 0;
-  uint32_t windows = 0;  // PMF windows run
+  uint32_t windows = 0;                  // PMF windows run
   std::vector<float> surface_at_points;  // the terrain under each point
 };
 
