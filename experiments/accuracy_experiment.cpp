@@ -152,7 +152,9 @@ int run_accuracy(const AccuracyArgs& a) {
 void add_accuracy_experiment(CLI::App* parent, int* exit_code) {
   auto a = std::make_shared<AccuracyArgs>();
   CLI::App* cmd = parent->add_subcommand("accuracy", "Figure 9: P(correct model in the top k) against k");
-  cmd->add_option("--out", a->out, "output folder (CSV, plots, summary.md)")->required();
+  a->out = default_output_dir("accuracy");
+  cmd->add_option("--out", a->out,
+                  "output folder (CSV, plots, summary.md); default out/accuracy (git ignores out/)");
   cmd->add_option("--models", a->models, "procedural vehicles (with --meshes: use at most this many)")
       ->check(CLI::Range(2u, host::kMaxFleetSize))
       ->each([a](const std::string&) { a->models_given = true; })

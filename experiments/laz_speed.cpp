@@ -1,6 +1,6 @@
 // spinhash-experiment laz-speed: how fast our LAZ decoder turns files into
 // raw point records, and into x y z through the chunked PointSource, in
-// points per second on one core, with the process's peak RSS. The issue's
+// points per second on one core, with the process's peak RSS. The
 // yardstick: the reference LASzip library decodes format-0 tiles at about
 // 4 M points/s on this machine. Times are the process's CPU time (the
 // machine is shared; wall time would count other processes), and the

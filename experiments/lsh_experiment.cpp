@@ -155,7 +155,9 @@ void add_lsh_experiment(CLI::App* parent, int* exit_code) {
   auto a = std::make_shared<LshArgs>();
   CLI::App* cmd =
       parent->add_subcommand("lsh", "eq. 2 against measured collisions; recall of the W candidates");
-  cmd->add_option("--out", a->out, "output folder (CSV, plots, summary.md)")->required();
+  a->out = default_output_dir("lsh");
+  cmd->add_option("--out", a->out,
+                  "output folder (CSV, plots, summary.md); default out/lsh (git ignores out/)");
   cmd->add_option("--models", a->models, "procedural vehicles in the database")
       ->check(CLI::Range(2u, host::kMaxFleetSize))
       ->capture_default_str();

@@ -6,6 +6,8 @@
 
 namespace spinhash::experiment {
 
+std::string default_output_dir(const std::string& experiment) { return "out/" + experiment; }
+
 bool make_output_dir(const std::string& dir, std::string* error) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);

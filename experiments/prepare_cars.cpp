@@ -1,5 +1,5 @@
 // spinhash-experiment prepare-cars --torcs DIR --trigger DIR -o OUT: an
-// independent test world of real car meshes (issue 28), never tuned on:
+// independent test world of real car meshes, never tuned on:
 // TORCS' 17 car bodies (Debian's torcs-data, AC3D .acc, loaded y up by
 // Assimp) and Trigger Rally's 3 distinct bodies (trigger-rally-data, OBJ in
 // centimetres, wheels placed from the .vehicle file; its 9 vehicles are 3

@@ -155,7 +155,9 @@ void add_scaling_experiment(CLI::App* parent, int* exit_code) {
   auto a = std::make_shared<ScalingArgs>();
   CLI::App* cmd =
       parent->add_subcommand("scaling", "Figure 10: time and hypotheses per query against database size");
-  cmd->add_option("--out", a->out, "output folder (CSV, plots, summary.md)")->required();
+  a->out = default_output_dir("scaling");
+  cmd->add_option("--out", a->out,
+                  "output folder (CSV, plots, summary.md); default out/scaling (git ignores out/)");
   cmd->add_option("--sizes", a->sizes, "database sizes (models; the smallest holds every query's model)")
       ->delimiter(',')
       ->check(CLI::Range(2u, host::kMaxFleetSize))

@@ -201,7 +201,9 @@ void add_scene_experiment(CLI::App* parent, int* exit_code) {
   CLI::App* cmd = parent->add_subcommand(
       "scene",
       "simulated tiles through the scene recognizer: recall, top-1, false alarms vs slope, spacing, noise");
-  cmd->add_option("--out", a->out, "output folder (CSV, plots, summary.md)")->required();
+  a->out = default_output_dir("scene");
+  cmd->add_option("--out", a->out,
+                  "output folder (CSV, plots, summary.md); default out/scene (git ignores out/)");
   cmd->add_option("--tiles", a->tiles, "tiles per condition")
       ->check(CLI::Range(1u, kMaxTiles))
       ->capture_default_str();

@@ -1,5 +1,5 @@
 // scene: CSVs (per condition, per vehicle, per false alarm, per tile), plots
-// against each swept variable, and summary.md with the targets.
+// against each swept variable, and summary.md with the scene's targets.
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -15,7 +15,7 @@
 namespace spinhash::experiment {
 namespace {
 
-// The targets, on tiles with slopes up to kTargetMaxSlope at the
+// The scene's targets, on tiles with slopes up to kTargetMaxSlope at the
 // reference spacing and noise.
 constexpr double kTargetRecall = 0.95;
 constexpr double kTargetTop1 = 0.90;
@@ -165,7 +165,7 @@ void targets_section(const SceneRun& run, std::ostringstream& md) {
            c.noise == run.reference.noise;
   };
   const Totals t = totals(run, in_target);
-  md << "## The issue's targets\n\nTiles with slopes up to " << kTargetMaxSlope << " degrees at spacing "
+  md << "## Targets\n\nTiles with slopes up to " << kTargetMaxSlope << " degrees at spacing "
      << run.reference.spacing << " m and noise " << run.reference.noise << " m: " << t.tiles << " tiles, "
      << t.vehicles << " database vehicles.\n\n| measure | target | measured | |\n|---|---|---|---|\n"
      << "| found | >= " << pct(kTargetRecall) << "% | " << pct(t.rate(t.found)) << "% (" << t.found << ") | "

@@ -263,7 +263,8 @@ void add_stream_experiment(CLI::App* parent, int* exit_code) {
       "stream",
       "simulated flight lines through the SceneStream: recall, top-1, false alarms, duplicates, "
       "points/s vs density");
-  cmd->add_option("--out", a->out, "output folder (CSV, summary.md)")->required();
+  a->out = default_output_dir("stream");
+  cmd->add_option("--out", a->out, "output folder (CSV, summary.md); default out/stream (git ignores out/)");
   cmd->add_option("--length", a->length, "line length, m")
       ->check(CLI::Range(100.0, 20000.0))
       ->capture_default_str();

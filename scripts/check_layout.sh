@@ -6,7 +6,12 @@
 #     private core header (a path that exists under firmware-lib/): it uses
 #     include/spinhash/ and include/spinhash/internal/;
 #  3. host-tools never depends on experiments/;
-#  4. every C/C++ file is as .clang-format lays it out.
+#  4. every C/C++ file is as .clang-format lays it out;
+#  5. no tracked file tells the project's development history: no issue or
+#     stop numbers (the word, a space or not, and a number), no citations of
+#     the results' tuning rounds (results.md or "section" with a number and
+#     a letter); say why, not when (git keeps the when);
+#  6. no tracked file is over 1 MB (results and data stay out of the tree).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
@@ -43,5 +48,21 @@ if command -v clang-format >/dev/null; then
 else
   echo "check_layout: clang-format missing (scripts/install-deps.sh installs it)"; status=1
 fi
-[[ $status -eq 0 ]] && echo "check_layout: includes stay in their modules; every file is formatted"
+# A number followed by a decimal point and a digit is a measure ("the scan
+# stops" a decimal number of metres "short"), not a number of a stop.
+history='\b([Ss]top|[Ii]ssue)s? [0-9]{1,3}\b(?!\.[0-9])|[Ss]top[0-9]{2}|[Ii]ssue[0-9]{2}'
+rounds='results\.md[,:]?( section| §)? ?[0-9]{1,2}[a-z]?\b|\b[Ss]ections? [0-9]{1,2}[a-z]\b'
+told=$( (git grep -InP "$history|$rounds" -- . ; git ls-files | grep -P "$history" | sed 's/$/: (the name)/') || true)
+if [[ -n "$told" ]]; then
+  echo "check_layout: development history in the tree (issue or stop numbers, results-round citations):"
+  echo "$told" | cut -c1-200; status=1
+fi
+
+max_bytes=1000000
+large=$(git ls-files -z | xargs -0 -r stat -c '%s %n' -- 2>/dev/null | awk -v max=$max_bytes '$1 > max' || true)
+if [[ -n "$large" ]]; then
+  echo "check_layout: tracked files over $max_bytes bytes (bytes, path):"; echo "$large"; status=1
+fi
+
+[[ $status -eq 0 ]] && echo "check_layout: includes stay in their modules; every file is formatted; no history; no file over 1 MB"
 exit $status

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Class flags of two builds on the same scans (docs/results.md 11e).
+"""Class flags of two builds on the same scans (docs/results.md, "Sparse scans and classes").
 
   scripts/class_flag_compare.py run --spinhash BIN --set DIR --out FILE.jsonl [--db DB] [-- EXTRA FLAGS]
   scripts/class_flag_compare.py table BEFORE.jsonl AFTER.jsonl
@@ -7,7 +7,8 @@
 DIR is a folder scripts/sparse_unknowns.py wrote (rows.jsonl, scans/,
 db.shdb): `run` recognizes its scans again and keeps each row's truth;
 `table` prints, per condition and density band, the class right first and
-the class-confident answers, right and wrong, before -> after (Markdown).
+the class-confident answers, right and wrong, of the first build against the
+second (Markdown).
 """
 import argparse, collections, json, os, subprocess, sys
 from concurrent.futures import ThreadPoolExecutor

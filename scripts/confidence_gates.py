@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Which confidence gate withholds right answers (docs/results.md 11b).
+"""Which confidence gate withholds right answers (docs/results.md, "Real cars").
 
 Scans every mesh of the given folders (3 views, 0.10 m, random pose, seeds
 1-5) clean, with 10 cm noise and 20 % occlusion, and with a 5-degree ground

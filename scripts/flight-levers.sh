@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 29's flight trade-off: for each configuration of the recognizer, the
+# The flight trade-off: for each configuration of the recognizer, the
 # aarch64 instructions per query (the instruction benchmark's queries under
 # qemu-aarch64 with scripts/qemu/insn_count.c, as instructions-per-query.sh
 # --target) beside its accuracy on the experiments' query sets, so that
@@ -17,7 +17,7 @@
 # the fleet, and run through `spinhash-experiment accuracy --set ...`:
 #   fleet     56 models, 2 queries per model, 0.05 and 0.10 m: clean (no
 #             noise, no occlusion) and 10 cm noise + 20 % occlusion with and
-#             without 5-degree ground (as section 11b's fleet rows)
+#             without 5-degree ground (the real cars' conditions)
 #   families  the look-alike families: 3 queries per model, 5 cm noise, no
 #             occlusion, 0.05 and 0.10 m, one run per --family-seeds seed
 #   procedural1000  the first 1 000 fleet members, 100 queries from the
@@ -31,15 +31,15 @@
 # worst), right first per set (the fleet's clean and noisy rows over both
 # spacings, the families per spacing), confident answers that are right
 # (fleet and families) and that are wrong (every set),
-# and right-first answers gained and lost against `before` (the default
-# before section 9q) on the same
-# queries (every set both ran).
+# and right-first answers gained and lost against `before` (the reference
+# configuration of the FILE) on the same
+# queries (every set both ran). DIR defaults to out/flight-levers (ignored by git).
 set -euo pipefail
 
 usage() { sed -n '2,36p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
 root=$(cd "$(dirname "$0")/.." && pwd)
-configs="" sizes="56" sets="fleet,families" seeds="1,2,3" out="flight-levers" only=""
+configs="" sizes="56" sets="fleet,families" seeds="1,2,3" out="out/flight-levers" only=""
 target_build="$root/build-cross-aarch64"
 spinhash="$root/build/host-tools/spinhash" experiment="$root/build/experiments/spinhash-experiment"
 while [[ $# -gt 0 ]]; do

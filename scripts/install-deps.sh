@@ -4,7 +4,7 @@
 # and QEMU (needed by scripts/test.sh for the onboard checks), --cars to add
 # the independent car meshes of scripts/prepare-cars.sh (torcs-data and
 # trigger-rally-data: 450 MB to download, 650 MB installed; not in CI's
-# default path: only the experiments of docs/results.md 11b read them).
+# default path: only the real-car experiments of docs/results.md read them).
 set -euo pipefail
 
 packages=(build-essential cmake doctest-dev libeigen3-dev libassimp-dev libembree-dev

@@ -15,13 +15,14 @@
 # object boxes, ownership and size gates (split on the host: rest_buffer,
 # rest_gather, rest_objects). --preset: the recognizer's preset
 # (include/spinhash/presets.hpp; the strip and every other field as
-# default). Writes DIR/instructions-per-point.csv and prints a Markdown table.
+# default). Writes DIR/instructions-per-point.csv (DIR: out/instructions-per-point
+# unless given; git ignores out/) and prints a Markdown table.
 set -euo pipefail
 
-usage() { sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
 root=$(cd "$(dirname "$0")/.." && pwd)
-side=100 out="instructions-per-point-out" host_build="$root/build" target="" target_build="" preset=default
+side=100 out="out/instructions-per-point" host_build="$root/build" target="" target_build="" preset=default
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --side) side="$2"; shift 2 ;;

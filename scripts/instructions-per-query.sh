@@ -16,12 +16,12 @@
 # same default config) under qemu-user with scripts/qemu/insn_count.c, a TCG
 # plugin that counts the instructions of the recognition (Debian ships no
 # libinsn.so); it must rank the same model first. Writes DIR/instructions.csv
-# and prints a Markdown table of the means.
+# (DIR: out/instructions unless given; git ignores out/) and prints a Markdown table of the means.
 set -euo pipefail
 
 usage() { sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
-sizes="56,1000" queries=3 modes="bran,sran,sind" sran_large=1 out="instructions-out"
+sizes="56,1000" queries=3 modes="bran,sran,sind" sran_large=1 out="out/instructions"
 sran_large_from=100
 noise=0.05 spacing=0.05
 root=$(cd "$(dirname "$0")/.." && pwd)

@@ -11,7 +11,7 @@
 # Stages: features (FeatureExtractor::extract), lsh (LshSearcher::search),
 # verification (verify_pose, hypotheses and finalisation alike, with its
 # nearest-feature lookups), rest (the total less those: doublets, poses,
-# ranking, refinement's least squares). Writes DIR/stages.csv and prints,
+# ranking, refinement's least squares). Writes DIR/stages.csv (out/stages) and prints,
 # per size and stage, the median and the worst query (Markdown). --check
 # compares them with the `stage.<size>.<stage>.median` and `.worst` rows of
 # docs/budgets.md (scripts/budgets.sh) and fails over budget. --reuse keeps
@@ -20,7 +20,7 @@ set -euo pipefail
 
 usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
-sizes="17,56,1000" queries=3 spacings="0.05,0.10" out="stages-out" jobs=2 check=0 reuse=""
+sizes="17,56,1000" queries=3 spacings="0.05,0.10" out="out/stages" jobs=2 check=0 reuse=""
 noise=0.05
 root=$(cd "$(dirname "$0")/.." && pwd)
 spinhash="${SPINHASH:-}"

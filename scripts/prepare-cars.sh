@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# An independent test world of real car meshes (issue 28), never tuned on:
+# An independent test world of real car meshes, never tuned on:
 # downloads Debian's torcs-data (333 MB: 17 TORCS car bodies, AC3D) and
 # trigger-rally-data (119 MB: 3 distinct Trigger Rally bodies, OBJ) with
 # apt-get download (game content under the GPL and other free licences:

@@ -66,8 +66,9 @@ void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
            preset_from_name(name.c_str(), &preset);
            apply_preset(preset, c);
          },
-         "a named configuration (include/spinhash/presets.hpp): default, or flight (issue 29's flight "
-         "budget, docs/results.md 9q); the flags below override its fields")
+         "a named configuration (include/spinhash/presets.hpp): default, or flight (about a third of "
+         "the default's instructions per query, at a measured loss of accuracy: docs/results.md); the "
+         "flags below override its fields")
       ->check(CLI::IsMember({"default", "flight"}));
 #define SPINHASH_ADD_FLAG(kind, name, lo, hi, flag, help) \
   if (*(flag) != '\0') add_##kind(cmd, &c->name, lo, hi, flag, help);

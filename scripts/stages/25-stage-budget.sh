@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Flight cost (issue 29, docs/budgets.md "Instructions per stage"): BRAN's
+# Flight cost (docs/budgets.md "Instructions per stage"): BRAN's
 # instructions per query by stage (features, LSH search, verification, the
 # rest) at 17, 56 and 1 000 procedural models, median and worst of the
 # instruction benchmark's queries at 0.05 and 0.10 m, against the

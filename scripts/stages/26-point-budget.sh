@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Work per point of the scene stream (issue 30, docs/budgets.md "Work per
+# Work per point of the scene stream (docs/budgets.md "Work per
 # point"): instructions per input point by stage on the stream runner's
 # 100 m strip (callgrind, x86-64 host Release build in ./build), against the
 # `point.*` budgets. Checked like the other instruction budgets: a changed

@@ -1,17 +1,39 @@
 // Smoke test of `spinhash-experiment accuracy` (the experiments themselves
-// are too slow for CI): a 4-model run end to end, its CSVs and summary.
-#include "geometry_test_support.hpp"
-
+// are too slow for CI): a 4-model run end to end, its CSVs and summary. CSV
+// columns are read by name (csv_columns.hpp).
 #include <doctest/doctest.h>
 
 #include <cstdlib>
 #include <sstream>
 #include <string>
 
+#include "csv_columns.hpp"
+#include "geometry_test_support.hpp"
+
 namespace {
 
+using spinhash::host::test::CsvColumns;
 using spinhash::host::test::read_bytes;
 using spinhash::host::test::TempDir;
+
+// BRAN's rows of an accuracy run's per_query.csv, and those whose
+// surface_coverage is a whole unoccluded top's (over 0.8, at most 1) and
+// whose scan_density is a 0.05 m scan's (hundreds of points per m^2 of the
+// model's top). SIND's rows carry 0 for both: no pose.
+struct BranRows {
+  size_t rows = 0, covered = 0, dense = 0;
+};
+BranRows bran_rows(const CsvColumns& per_query) {
+  BranRows r;
+  for (size_t i = 0; i < per_query.rows(); ++i) {
+    if (per_query.cell(i, "mode") != "bran") continue;
+    const double coverage = per_query.number(i, "surface_coverage");
+    r.rows += 1;
+    r.covered += coverage > 0.8 && coverage <= 1.0 ? 1u : 0u;
+    r.dense += per_query.number(i, "scan_density") > 100.0 ? 1u : 0u;
+  }
+  return r;
+}
 
 size_t count_lines(const std::string& text) {
   size_t n = 0;
@@ -41,29 +63,37 @@ TEST_CASE("experiment accuracy runs end to end on a tiny fleet") {
   const std::string curves = read_bytes(out + "/accuracy.csv");
   CHECK(curves.rfind("mode,noise,occlusion,ground,spacing,k,p_correct_within_k,queries\n", 0) == 0);
   CHECK(count_lines(curves) == 1u + 2u * 3u);  // header + 2 modes x k = 1..3
-  const std::string per_query = read_bytes(out + "/per_query.csv");
-  CHECK(count_lines(per_query) == 1u + 2u * 4u);  // header + 2 modes x 4 queries
-  // The last two columns: the share of the first model's upward surface that
-  // the unoccluded scan shows under BRAN's pose, and the scan's points per m^2
-  // of that model's top (both 0 for SIND: no pose).
-  CHECK(per_query.find(",class_lead,surface_coverage,scan_density\n") != std::string::npos);
-  size_t covered = 0, dense = 0;
-  for (size_t at = per_query.find("\nbran,"); at != std::string::npos;
-       at = per_query.find("\nbran,", at + 1)) {
-    const size_t end = per_query.find('\n', at + 1);
-    const size_t density_from = per_query.rfind(',', end) + 1;
-    const size_t coverage_from = per_query.rfind(',', density_from - 2) + 1;
-    const double coverage =
-        std::atof(per_query.substr(coverage_from, density_from - 1 - coverage_from).c_str());
-    const double density = std::atof(per_query.substr(density_from, end - density_from).c_str());
-    covered += coverage > 0.8 && coverage <= 1.0 ? 1u : 0u;
-    dense += density > 100.0 ? 1u : 0u;  // the experiment's 0.05 m spacing: hundreds per m^2
-  }
-  CHECK(covered == 4u);
-  CHECK(dense == 4u);
+  const CsvColumns per_query(read_bytes(out + "/per_query.csv"));
+  CHECK(per_query.rows() == 2u * 4u);  // 2 modes x 4 queries
+  // The share of the first model's upward surface that the unoccluded scan
+  // shows under BRAN's pose, and the scan's points per m^2 of that model's top.
+  REQUIRE(per_query.has("surface_coverage"));
+  REQUIRE(per_query.has("scan_density"));
+  const BranRows bran = bran_rows(per_query);
+  CHECK(bran.rows == 4u);
+  CHECK(bran.covered == 4u);
+  CHECK(bran.dense == 4u);
   const std::string summary = read_bytes(out + "/summary.md");
   CHECK(summary.find("# Accuracy") != std::string::npos);
   CHECK(summary.find("| noise 5 cm, occlusion 0% | BRAN |") != std::string::npos);
+}
+
+TEST_CASE("the per-query checks read columns by name: moved columns pass, swapped values fail") {
+  const std::string header = "mode,name,rank,surface_coverage,scan_density\n";
+  const BranRows right = bran_rows(CsvColumns(header + "bran,van-00,1,0.97,912\nsind,van-00,1,0,0\n"));
+  CHECK(right.rows == 1u);
+  CHECK(right.covered == 1u);
+  CHECK(right.dense == 1u);
+  // The same values with the two columns in the other order: the same reading.
+  const BranRows moved =
+      bran_rows(CsvColumns("mode,name,rank,scan_density,surface_coverage\nbran,van-00,1,912,0.97\n"));
+  CHECK(moved.covered == 1u);
+  CHECK(moved.dense == 1u);
+  // The density written where the coverage belongs and the other way round
+  // (an experiment that writes its columns in the wrong order): both fail.
+  const BranRows swapped = bran_rows(CsvColumns(header + "bran,van-00,1,912,0.97\n"));
+  CHECK(swapped.covered == 0u);
+  CHECK(swapped.dense == 0u);
 }
 
 TEST_CASE("experiment accuracy: look-alike copies in the database, a sparser scan, calibration") {
@@ -74,19 +104,22 @@ TEST_CASE("experiment accuracy: look-alike copies in the database, a sparser sca
                           "--noise 0.05 --occlusion 0 --spacing 0.1 --modes bran --max-k 3 --out '" +
                           out + "' 2> '" + dir.file("stderr.txt") + "'";
   REQUIRE(std::system(cmd.c_str()) == 0);
-  const std::string per_query = read_bytes(out + "/per_query.csv");
-  CHECK(count_lines(per_query) == 1u + 3u);  // queries scan the 3 originals only
-  CHECK(per_query.find(",0.1,") != std::string::npos);
+  const CsvColumns per_query(read_bytes(out + "/per_query.csv"));
+  REQUIRE(per_query.rows() == 3u);  // queries scan the 3 originals only
+  for (size_t i = 0; i < per_query.rows(); ++i) CHECK(per_query.cell(i, "spacing") == "0.1");
   const std::string summary = read_bytes(out + "/summary.md");
   CHECK(summary.find("each with 5 look-alike copies") != std::string::npos);
   CHECK(summary.find("18 models") != std::string::npos);  // 3 originals + 15 copies in the plot title's count
   CHECK(summary.find("spacing 10 cm") != std::string::npos);
   CHECK(summary.find("## Confidence") != std::string::npos);
-  const std::string calibration = read_bytes(out + "/calibration.csv");
-  CHECK(calibration.rfind("mode,condition,queries,right_first,confident,confident_right,precision,recall,",
-                          0) == 0);
-  CHECK(count_lines(calibration) == 1u + 2u);  // all conditions + the one condition
-  CHECK(calibration.find("bran,all,3,") != std::string::npos);
+  const CsvColumns calibration(read_bytes(out + "/calibration.csv"));
+  for (const char* column :
+       {"mode", "condition", "queries", "right_first", "confident", "confident_right", "precision", "recall"})
+    CHECK(calibration.has(column));
+  REQUIRE(calibration.rows() == 2u);  // all conditions + the one condition
+  CHECK(calibration.cell(0, "mode") == "bran");
+  CHECK(calibration.cell(0, "condition") == "all");
+  CHECK(calibration.cell(0, "queries") == "3");
 }
 
 TEST_CASE("experiment scene runs end to end on tiny tiles and scores them against their truth") {
@@ -95,27 +128,30 @@ TEST_CASE("experiment scene runs end to end on tiny tiles and scores them agains
   const std::string cmd =
       scene_command(dir, out, "--models 6 --vehicles 2 --unknown-vehicles 1 --slopes 0,10");
   REQUIRE(std::system(cmd.c_str()) == 0);
-  const std::string scene = read_bytes(out + "/scene.csv");
-  CHECK(scene.rfind("sweep,slope_deg,spacing,noise,tiles,vehicles,found,recall,top1,", 0) == 0);
-  CHECK(count_lines(scene) == 1u + 2u + 1u + 1u);  // header + 2 slopes + 1 spacing + 1 noise
-  CHECK(scene.find("\nslope,10,0.15,0.05,1,2,") != std::string::npos);
-  CHECK(scene.find("\nnoise,0,0.15,0.05,1,2,") !=
-        std::string::npos);  // the reference, run once, in every sweep
+  const CsvColumns scene(read_bytes(out + "/scene.csv"));
+  REQUIRE(scene.rows() == 2u + 1u + 1u);  // 2 slopes + 1 spacing + 1 noise
+  // Each sweep's rows, the reference (slope 0) in every sweep: sweep, slope, spacing, noise, tiles, vehicles.
+  std::string rows;
+  for (size_t i = 0; i < scene.rows(); ++i)
+    for (const char* column : {"sweep", "slope_deg", "spacing", "noise", "tiles", "vehicles"})
+      rows += scene.cell(i, column) + (std::string(column) == "vehicles" ? "\n" : " ");
+  CHECK(rows ==
+        "slope 0 0.15 0.05 1 2\nslope 10 0.15 0.05 1 2\nspacing 0 0.15 0.05 1 2\nnoise 0 0.15 0.05 1 2\n");
   // Two database vehicles and one unknown per tile, in 2 conditions (the reference is run once).
-  const std::string per_object = read_bytes(out + "/per_object.csv");
-  CHECK(count_lines(per_object) == 1u + 2u * 3u);
-  CHECK(per_object.find(",unknown_vehicle,") != std::string::npos);
+  const CsvColumns per_object(read_bytes(out + "/per_object.csv"));
+  CHECK(per_object.rows() == 2u * 3u);
   // The pair is side by side; on these easy tiles both database vehicles are found.
-  size_t found = 0;
-  for (size_t at = 0; (at = per_object.find(",vehicle,", at)) != std::string::npos; ++at) {
-    const size_t line_end = per_object.find('\n', at);
-    const std::string line = per_object.substr(at, line_end - at);
-    CHECK(line.find(",1,") != std::string::npos);  // side_by_side
-    // kind,model,side_by_side,under_tree,points,found: the 5th field after kind
-    size_t field = 0, pos = 0;
-    for (; field < 5 && pos != std::string::npos; ++field) pos = line.find(',', pos + 1);
-    found += line.compare(pos + 1, 2, "1,") == 0 ? 1u : 0u;
+  size_t vehicles = 0, unknown = 0, found = 0;
+  for (size_t i = 0; i < per_object.rows(); ++i) {
+    const std::string kind = per_object.cell(i, "kind");
+    unknown += kind == "unknown_vehicle" ? 1u : 0u;
+    if (kind != "vehicle") continue;
+    vehicles += 1;
+    CHECK(per_object.cell(i, "side_by_side") == "1");
+    found += per_object.cell(i, "found") == "1" ? 1u : 0u;
   }
+  CHECK(vehicles == 4u);
+  CHECK(unknown == 2u);
   CHECK(found == 4u);
   // Confident right answers on database vehicles are never false alarms.
   const std::string alarms = read_bytes(out + "/false_alarms.csv");
@@ -123,7 +159,7 @@ TEST_CASE("experiment scene runs end to end on tiny tiles and scores them agains
   CHECK(alarms.find(",vehicle,") == std::string::npos);
   const std::string summary = read_bytes(out + "/summary.md");
   CHECK(summary.find("# Scene: simulated airborne tiles") != std::string::npos);
-  CHECK(summary.find("## The issue's targets") != std::string::npos);
+  CHECK(summary.find("## Targets") != std::string::npos);
   CHECK(summary.find("| found | >= 95% | 100% (4) | **met** |") != std::string::npos);
 }
 

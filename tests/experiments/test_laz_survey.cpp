@@ -1,5 +1,5 @@
-// The same survey tiles as LAS and as LAZ give the same detections (issue
-// 32): a generated 80 m scene cut into 2 x 2 LAS tiles, each written again
+// The same survey tiles as LAS and as LAZ give the same detections: a
+// generated 80 m scene cut into 2 x 2 LAS tiles, each written again
 // as LAZ by the benchmark writer (`spinhash-experiment laz-speed
 // --write-format0-tile`, the only LAZ writer here; format 0 keeps x, y, z
 // as the integers of the LAS twin), then `spinhash survey` on both folders.

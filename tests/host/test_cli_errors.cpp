@@ -278,10 +278,10 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
 
 namespace {
 
-// Offsets of single bytes whose change Database::open refused only from
-// issue 29 on: every byte between the section table and the first payload
-// (where the 5 accepted corruptions of the issue lay), the first padding
-// byte after each payload that has one, and reserved fields.
+// Offsets of single bytes that Database::open refuses by its zero checks
+// (docs/blob-format.md, "Alignment and padding"): every byte between the
+// section table and the first payload, the first padding byte after each
+// payload that has one, and reserved fields.
 std::vector<size_t> zero_fill_offsets(const std::string& blob) {
   using spinhash::blob::Header;
   using spinhash::blob::SectionEntry;

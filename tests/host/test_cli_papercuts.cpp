@@ -1,4 +1,4 @@
-// The command line as a new user meets it (issue 10): clouds from stdin,
+// The command line as a new user meets it: clouds from stdin,
 // machine-readable info and verify, a version on every JSON line, valid JSON
 // whatever the file names, builds that name every unreadable mesh, and the
 // overlay and picture of one answer. Runs the built binary on two generated

@@ -20,6 +20,7 @@
 #include "cli_runner.hpp"
 #include "cloud/cloud_reader.hpp"
 #include "cloud/las_writer.hpp"
+#include "csv_columns.hpp"
 #include "pipeline/database_file.hpp"
 #include "survey/footprint.hpp"
 #include "survey/gpkg_writer.hpp"
@@ -37,7 +38,7 @@ constexpr useconds_t kKillPollMicroseconds = 10000;  // 10 ms between polls
 
 // scan-scene's default offset: the scene's centre, where the tiles meet.
 constexpr double kCentreX = 512000.0, kCentreY = 5400000.0;
-constexpr double kSameCentre = 0.01;  // m: the "centre within 1 cm"
+constexpr double kSameCentre = 0.01;  // m: a tile's object is the whole scene's to the centimetre
 
 struct Detection {
   std::string model;
@@ -69,18 +70,14 @@ std::vector<Detection> vehicles(const std::string& jsonl) {
 
 // Truth vehicles whose footprint a cut crosses.
 int vehicles_across_cuts(const std::string& truth_csv) {
-  std::istringstream in(read_bytes(truth_csv));
-  std::string line;
-  std::getline(in, line);
+  const spinhash::host::test::CsvColumns truth(read_bytes(truth_csv));
+  REQUIRE(truth.has("length"));
   int n = 0;
-  while (std::getline(in, line)) {
-    std::vector<std::string> f;
-    std::istringstream ls(line);
-    for (std::string cell; std::getline(ls, cell, ',');) f.push_back(cell);
-    if (f[0] != "vehicle") continue;
-    const double half = 0.5 * std::atof(f[5].c_str());
-    n += std::fabs(std::atof(f[2].c_str()) - kCentreX) < half ||
-         std::fabs(std::atof(f[3].c_str()) - kCentreY) < half;
+  for (size_t i = 0; i < truth.rows(); ++i) {
+    if (truth.cell(i, "kind") != "vehicle") continue;
+    const double half = 0.5 * truth.number(i, "length");
+    n += std::fabs(truth.number(i, "center_x") - kCentreX) < half ||
+         std::fabs(truth.number(i, "center_y") - kCentreY) < half;
   }
   return n;
 }

@@ -125,7 +125,7 @@ namespace {
 constexpr double kDefaultSide = 100.0;       // m
 constexpr double kSpacing = 0.1;             // m between ground points
 constexpr float kVehicleSpacing = 0.1f;      // m between vehicle surface points
-constexpr double kGroundPerVehicle = 300.0;  // m2 (issue 30's stated density)
+constexpr double kGroundPerVehicle = 300.0;  // m2 of ground per vehicle: the budget's density
 constexpr double kMinSeparation = 8.0;       // m between vehicle centres: none touch
 constexpr double kEdgeClearance = 4.0;       // m: vehicles lie inside the strip
 constexpr double kSlopeDeg = 4.0;
