@@ -3,31 +3,12 @@
 #include <cmath>
 
 #include "geometry/xy_frame.hpp"
+#include "util/union_find.hpp"
 
 namespace spinhash {
 namespace {
 
 constexpr uint32_t kLayers = 2;  // low (vehicles, walls, trunks) and high (crowns, roofs)
-
-uint32_t find_root(uint32_t* parent, uint32_t c) {
-  // Path halving: each step at least halves the depth, so the loop ends
-  // within the forest's size; bounded by the cell count.
-  while (parent[c] != c) {
-    parent[c] = parent[parent[c]];
-    c = parent[c];
-  }
-  return c;
-}
-
-void unite(uint32_t* parent, uint32_t a, uint32_t b) {
-  a = find_root(parent, a);
-  b = find_root(parent, b);
-  if (a == b) return;
-  if (a < b)
-    parent[b] = a;  // the smaller index wins: labels do not depend on visiting order
-  else
-    parent[a] = b;
-}
 
 uint32_t coord(float v, float v0, float cell, uint32_t count) {
   const float c = (v - v0) / cell;
@@ -141,8 +122,8 @@ bool fit_frame(const float* xyz, const uint8_t* ground, uint32_t n, float cell, 
   float lo[2], hi[2];
   xy_bounds(xyz, n, lo, hi);
   g.cell = cell;
-  g.x0 = std::floor(lo[0] / cell) * cell;
-  g.y0 = std::floor(lo[1] / cell) * cell;
+  g.x0 = snap_down(lo[0], cell);
+  g.y0 = snap_down(lo[1], cell);
   const float fx = (hi[0] - g.x0) / cell + 1.0f, fy = (hi[1] - g.y0) / cell + 1.0f;
   if (!(fx < 4.0e9f && fy < 4.0e9f)) {
     g.nx = 1;  // not empty: refused

@@ -2,29 +2,13 @@
 
 #include <cmath>
 
+#include "util/union_find.hpp"
+
 namespace spinhash {
 
 namespace {
 
 constexpr uint16_t kNoBlock = 0xFFFFu;
-
-uint16_t block_root(uint16_t* parent, uint16_t b) {
-  // Path halving: each step at least halves the depth; bounded by the blocks.
-  while (parent[b] != b) {
-    parent[b] = parent[parent[b]];
-    b = parent[b];
-  }
-  return b;
-}
-
-void unite_blocks(uint16_t* parent, uint16_t a, uint16_t b) {
-  a = block_root(parent, a);
-  b = block_root(parent, b);
-  if (a < b)
-    parent[b] = a;  // the smaller index wins: parts in block order
-  else if (b < a)
-    parent[a] = b;
-}
 
 uint32_t ceil_div(uint32_t a, uint32_t b) { return (a + b - 1u) / b; }
 
@@ -78,18 +62,21 @@ uint32_t* TerrainCells::span_of(int64_t i) const {
 
 namespace {
 
-// Calls f(i, it, z) for each ring point in cells [i0, i1) along and within
-// the slots across, in the ring's (arrival) order.
+// Calls f(row, it, z) for each ring point in cells [i0, i1) along and
+// within the slots across (row: its slot row along), in the ring's
+// (arrival) order.
 template <class F>
 void for_cell_points(const TerrainCells& tc, const PointRing& ring, int64_t i0, int64_t i1, F&& f) {
   const double s0 = static_cast<double>(i0) * tc.cell, s1 = static_cast<double>(i1) * tc.cell;
+  const int64_t a = static_cast<int64_t>(tc.along);
   for (uint32_t k = 0; k < ring.count; ++k) {
     double p[3];
     ring.get(k, p);
     if (p[0] < s0 || p[0] >= s1) continue;
     const double t = std::floor((p[1] - tc.t_min) / tc.cell);
     if (t < 0.0 || t >= static_cast<double>(tc.across)) continue;
-    f(tc.index_along(p[0]), static_cast<uint32_t>(t), static_cast<float>(p[2]));
+    const int64_t i = tc.index_along(p[0]);
+    f(static_cast<uint32_t>(((i % a) + a) % a), static_cast<uint32_t>(t), static_cast<float>(p[2]));
   }
 }
 
@@ -102,8 +89,9 @@ void TerrainCells::sum(const PointRing& ring, double from_s, double to_s) {
   if (i1 - i0 > static_cast<int64_t>(along)) i0 = i1 - static_cast<int64_t>(along);  // older cells are gone
   for (int64_t i = i0; i < i1; ++i) {  // the slot row's cells of an older index, emptied
     uint32_t* sp = span_of(i);
+    const uint32_t base = slot(i, 0);
     for (uint32_t it = sp[0]; it <= sp[1] && it < across; ++it) {
-      const uint32_t c = slot(i, it);
+      const uint32_t c = base + it;
       lowest[c] = NAN;
       band_sum[c] = 0.0f;
       band_count[c] = 0.0f;
@@ -111,14 +99,14 @@ void TerrainCells::sum(const PointRing& ring, double from_s, double to_s) {
     sp[0] = across;
     sp[1] = 0;
   }
-  for_cell_points(*this, ring, i0, i1, [&](int64_t i, uint32_t it, float z) {
-    terrain_lowest(lowest[slot(i, it)], z);
-    uint32_t* sp = span_of(i);
+  for_cell_points(*this, ring, i0, i1, [&](uint32_t row, uint32_t it, float z) {
+    terrain_lowest(lowest[row * across + it], z);
+    uint32_t* sp = span + 2u * row;
     sp[0] = it < sp[0] ? it : sp[0];
     sp[1] = it > sp[1] ? it : sp[1];
   });
-  for_cell_points(*this, ring, i0, i1, [&](int64_t i, uint32_t it, float z) {
-    const uint32_t c = slot(i, it);
+  for_cell_points(*this, ring, i0, i1, [&](uint32_t row, uint32_t it, float z) {
+    const uint32_t c = row * across + it;
     terrain_low_band(lowest[c], z, low_band, band_sum[c], band_count[c]);
   });
   if (!started || i1 > summed_to) summed_to = i1;
@@ -176,12 +164,12 @@ Status TerrainCells::fill(const FrameRect& rect, const FrameRect& needed, double
           if (nx < 0 || nx >= static_cast<int32_t>(bi) || ny >= static_cast<int32_t>(bj)) continue;
           const uint32_t m = static_cast<uint32_t>(ny) * bi + static_cast<uint32_t>(nx);
           if (block_parent_[m] != kNoBlock)
-            unite_blocks(block_parent_, static_cast<uint16_t>(k), static_cast<uint16_t>(m));
+            unite<uint16_t>(block_parent_, static_cast<uint16_t>(k), static_cast<uint16_t>(m));
         }
     }
   for (uint32_t k = 0; k < bi * bj; ++k) {  // each part's footprint into its root's box
     if (block_parent_[k] == kNoBlock) continue;
-    const uint16_t r = block_root(block_parent_, static_cast<uint16_t>(k));
+    const uint16_t r = find_root<uint16_t>(block_parent_, static_cast<uint16_t>(k));
     if (r == k) continue;
     int32_t *into = block_box_ + 4u * r, *box = block_box_ + 4u * k;
     into[0] = box[0] < into[0] ? box[0] : into[0];
@@ -199,7 +187,7 @@ Status TerrainCells::fill(const FrameRect& rect, const FrameRect& needed, double
                            static_cast<float>(t_min + static_cast<double>(j0) * cell - t0), b, bi, bj))
     return Status::kTileTooLarge;
   for (uint32_t k = 0; k < bi * bj; ++k) {  // a part per root, in block order
-    if (block_parent_[k] == kNoBlock || block_root(block_parent_, static_cast<uint16_t>(k)) != k) continue;
+    if (block_parent_[k] == kNoBlock || find_root<uint16_t>(block_parent_, static_cast<uint16_t>(k)) != k) continue;
     const int32_t* box = block_box_ + 4u * k;
     if (static_cast<double>(box[1]) < n_i0 || static_cast<double>(box[0]) > n_i1 ||
         static_cast<double>(box[3]) < n_j0 || static_cast<double>(box[2]) > n_j1)
@@ -218,7 +206,7 @@ Status TerrainCells::fill(const FrameRect& rect, const FrameRect& needed, double
   if (parts.count == 0) return Status::kEmptyCloud;
   for (uint32_t k = 0; k < bi * bj; ++k)
     if (block_parent_[k] != kNoBlock)
-      parts.block_part[k] = parts.block_part[block_root(block_parent_, static_cast<uint16_t>(k))];
+      parts.block_part[k] = parts.block_part[find_root<uint16_t>(block_parent_, static_cast<uint16_t>(k))];
   for (int64_t i = i0; i < i1; ++i) {
     const uint32_t* sp = span_of(i);
     const uint32_t f = sp[0] > j0 ? sp[0] : j0, l = sp[1] + 1u < j1 ? sp[1] + 1u : j1;

@@ -96,7 +96,7 @@ TEST_CASE("terrain: heights above the terrain on a 15 degree slope (car roof, bu
 TEST_CASE("terrain: a footprint needing more cells than the grid holds is kTileTooLarge") {
   const Tile tile = sample_tile(0.0);
   // 49.2 x 49.2 cells, and up to one more each way where the grid's origin
-  // snaps down to the cell lattice (geometry/xy_frame.hpp).
+  // snaps down to the cell lattice.
   CHECK(classify(tile, TerrainParams{}, 2000).status == Status::kTileTooLarge);
   CHECK(classify(tile, TerrainParams{}, 2601).status == Status::kOk);
   TerrainParams bad;
@@ -130,7 +130,7 @@ TEST_CASE("terrain: parts follow the points: far-apart patches are filtered each
 
 namespace {
 
-// The direct scan the opening used before: 2r + 1 cells per output cell.
+// The direct scan, the opening's definition: 2r + 1 cells per output cell.
 void direct_line_filter(const std::vector<float>& in, std::vector<float>& out, uint32_t nx, uint32_t ny,
                         uint32_t r, bool along_x, bool erode) {
   const uint32_t lines = along_x ? ny : nx, len = along_x ? nx : ny, step = along_x ? 1u : nx;

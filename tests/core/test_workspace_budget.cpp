@@ -23,15 +23,8 @@ struct WorkspaceThreshold {
                           // the stream's buffer the tile API sizes from them (scene_tile.hpp)
   size_t stream_1m;       // StreamConfig{}: windows of 300 000 points, 1 M points buffered
 };
-// Pointer-sized members make 64-bit layouts larger than 32-bit ones.
-// Issue 28: +176 B per recognizer (the class ranking, 11 x 16 B) and +184 B
-// per SceneObject (its class ranking), on either pointer size. Stop 33: +48
-// KiB for the LSH seen set of a sparse scan's fourfold bucket scan
-// (recognize/sparse_search.hpp: 4 096 entries, 8 192 slots of 8 B). Stop
-// 34: +8 B per SceneObject, its statistics' count of tilted poses
-// (max_tilt_deg; 256 objects). Stop 39: its statistics' scan_density, +8 B
-// per SceneObject on 32-bit ABIs (the 8-byte aligned struct pads the
-// float), none on 64-bit, where it fills the padding surface_coverage left.
+// Pointer-sized members make 64-bit layouts larger than 32-bit ones, and a
+// SceneObject's 8-byte aligned statistics pad differently on 32-bit ABIs.
 constexpr WorkspaceThreshold kThreshold64 = {6451936, 5622016, 53140832, 44648280};
 constexpr WorkspaceThreshold kThreshold32 = {6451776, 5621856, 31005040, 44621136};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
