@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "util/floor_int.hpp"
 #include "util/union_find.hpp"
 
 namespace spinhash {
@@ -47,7 +48,7 @@ void TerrainCells::start(double t_lo) {
   cleared = true;
 }
 
-int64_t TerrainCells::index_along(double s) const { return static_cast<int64_t>(std::floor(s / cell)); }
+int64_t TerrainCells::index_along(double s) const { return floor_to_int64(s / cell); }
 
 uint32_t TerrainCells::slot(int64_t i, uint32_t it) const {
   const int64_t a = static_cast<int64_t>(along);
@@ -73,8 +74,8 @@ void for_cell_points(const TerrainCells& tc, const PointRing& ring, int64_t i0, 
     double p[3];
     ring.get(k, p);
     if (p[0] < s0 || p[0] >= s1) continue;
-    const double t = std::floor((p[1] - tc.t_min) / tc.cell);
-    if (t < 0.0 || t >= static_cast<double>(tc.across)) continue;
+    const int64_t t = floor_to_int64((p[1] - tc.t_min) / tc.cell);
+    if (t < 0 || t >= static_cast<int64_t>(tc.across)) continue;
     const int64_t i = tc.index_along(p[0]);
     f(static_cast<uint32_t>(((i % a) + a) % a), static_cast<uint32_t>(t), static_cast<float>(p[2]));
   }
@@ -187,7 +188,8 @@ Status TerrainCells::fill(const FrameRect& rect, const FrameRect& needed, double
                            static_cast<float>(t_min + static_cast<double>(j0) * cell - t0), b, bi, bj))
     return Status::kTileTooLarge;
   for (uint32_t k = 0; k < bi * bj; ++k) {  // a part per root, in block order
-    if (block_parent_[k] == kNoBlock || find_root<uint16_t>(block_parent_, static_cast<uint16_t>(k)) != k) continue;
+    if (block_parent_[k] == kNoBlock || find_root<uint16_t>(block_parent_, static_cast<uint16_t>(k)) != k)
+      continue;
     const int32_t* box = block_box_ + 4u * k;
     if (static_cast<double>(box[1]) < n_i0 || static_cast<double>(box[0]) > n_i1 ||
         static_cast<double>(box[3]) < n_j0 || static_cast<double>(box[2]) > n_j1)

@@ -18,6 +18,16 @@ constexpr size_t kStepsPerPoint = 3;
 
 bool finite3(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
+// floor as an integer, for |v| < 2^62: the truncation, one less where it
+// rounded up (std::floor is a call on x86-64's baseline, and this runs per point).
+int64_t floor_int(double v) {
+  const auto t = static_cast<int64_t>(v);
+  return static_cast<double>(t) > v ? t - 1 : t;
+}
+
+// The nearest step (halves away from zero), for |v| < 2^31.
+int32_t nearest_step(double v) { return static_cast<int32_t>(v >= 0.0 ? v + 0.5 : v - 0.5); }
+
 }  // namespace
 
 AlongTrackOrder::AlongTrackOrder(double heading_deg, double row_depth, double column_width,
@@ -42,12 +52,12 @@ AlongTrackOrder::~AlongTrackOrder() {
 
 int64_t AlongTrackOrder::column_of(double x, double y) const {
   if (!(column_width_ > 0.0)) return 0;
-  return static_cast<int64_t>(std::floor((-x * ay_ + y * ax_) / column_width_));
+  return floor_int((-x * ay_ + y * ax_) / column_width_);
 }
 
 AlongTrackOrder::Cell AlongTrackOrder::cell_of(const double* p) const {
   const double s = p[0] * ax_ + p[1] * ay_;
-  return {static_cast<int64_t>(std::floor(s / row_depth_)), column_of(p[0], p[1])};
+  return {floor_int(s / row_depth_), column_of(p[0], p[1])};
 }
 
 fs::path AlongTrackOrder::path_of(const Cell& c) const {
@@ -71,7 +81,7 @@ void AlongTrackOrder::add(const double* xyz, size_t n) {
     for (int a = 0; a < 3; ++a) {
       const double d = p[a] - origin_[a];
       near = near && std::fabs(d) < kReach;
-      k[a] = near ? static_cast<int32_t>(std::lrint(d / kStep)) : 0;  // to the nearest step
+      k[a] = near ? nearest_step(d / kStep) : 0;
       q[a] = origin_[a] + static_cast<double>(k[a]) * kStep;
     }
     if (!near) {
