@@ -7,7 +7,7 @@
 #include "csv_table.hpp"
 #include "gnuplot.hpp"
 #include "output_dir.hpp"
-#include "pipeline/recognizer_flags.hpp"
+#include "pipeline/mode_name.hpp"
 #include "plot_styles.hpp"
 #include "spinhash/vehicle_class.hpp"
 #include "stats.hpp"

@@ -8,7 +8,7 @@
 
 #include "accuracy_data.hpp"
 #include "csv_table.hpp"
-#include "pipeline/recognizer_flags.hpp"
+#include "pipeline/mode_name.hpp"
 #include "plot_styles.hpp"
 
 namespace spinhash::experiment {

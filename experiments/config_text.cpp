@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "pipeline/recognizer_flags.hpp"
+#include "pipeline/mode_name.hpp"
 #include "spinhash/config_fields.h"
 
 namespace spinhash::experiment {

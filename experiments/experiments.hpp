@@ -21,6 +21,8 @@ void add_stream_experiment(CLI::App* parent, int* exit_code);
 void add_prepare_warzone(CLI::App* parent, int* exit_code);
 // TORCS and Trigger Rally car bodies to OBJ meshes in class folders.
 void add_prepare_cars(CLI::App* parent, int* exit_code);
+// Sweet Home 3D's furniture-library vehicles to OBJ meshes in class folders.
+void add_prepare_sweethome3d(CLI::App* parent, int* exit_code);
 
 // laz-speed: LAS/LAZ decoding speed and peak memory (laz_speed.cpp).
 void add_laz_speed(CLI::App* parent, int* exit_code);

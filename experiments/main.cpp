@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   spinhash::experiment::add_stream_experiment(&app, &exit_code);
   spinhash::experiment::add_prepare_warzone(&app, &exit_code);
   spinhash::experiment::add_prepare_cars(&app, &exit_code);
+  spinhash::experiment::add_prepare_sweethome3d(&app, &exit_code);
   spinhash::experiment::add_laz_speed(&app, &exit_code);
   try {
     app.parse(argc, argv);

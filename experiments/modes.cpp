@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "pipeline/recognizer_flags.hpp"
+#include "pipeline/mode_name.hpp"
 
 namespace spinhash::experiment {
 

@@ -18,9 +18,9 @@
 #include "csv_table.hpp"
 #include "experiments.hpp"
 #include "mesh/mesh_loader.hpp"
-#include "mesh/mesh_writer.hpp"
 #include "output_dir.hpp"
 #include "pipeline/exit_codes.hpp"
+#include "world_mesh.hpp"
 
 namespace spinhash::experiment {
 namespace {
@@ -50,25 +50,12 @@ struct PrepareArgs {
   std::string out;
 };
 
-// Ground at z = 0, footprint centred on the origin.
-void settle(host::Mesh* m) {
-  const host::Box3 b = m->bounding_box();
-  Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
-  t.topRightCorner<3, 1>() = Eigen::Vector3d(-b.center().x(), -b.center().y(), -b.lo.z());
-  m->apply_transform(t);
-}
-
-Eigen::Matrix4d rotation(const Eigen::Matrix3d& r) {
-  Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
-  t.topLeftCorner<3, 3>() = r;
-  return t;
-}
-
 // Assimp reads AC3D y up: a quarter turn about x puts its y on z.
 bool load_torcs(const std::string& dir, const CarEntry& c, host::Mesh* m, std::string* error) {
   if (!host::load_mesh((fs::path(dir) / c.name / (std::string(c.name) + ".acc")).string(), m, error))
     return false;
-  m->apply_transform(rotation(Eigen::AngleAxisd(0.5 * M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix()));
+  m->apply_transform(
+      linear_transform(Eigen::AngleAxisd(0.5 * M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix()));
   return true;
 }
 
@@ -141,17 +128,18 @@ bool load_trigger(const std::string& dir, const CarEntry& c, host::Mesh* m, std:
       !host::load_mesh((base / (std::string(c.name) + ".obj")).string(), m, error) ||
       !host::load_mesh((base / (std::string(c.name) + "_wheel.obj")).string(), &wheel, error))
     return false;
-  m->apply_transform(rotation(Eigen::Matrix3d::Identity() * scale));
+  m->apply_transform(linear_transform(Eigen::Matrix3d::Identity() * scale));
   const host::Box3 wb = wheel.bounding_box();
   const double wheel_radius = 0.5 * std::max(wb.size().y(), wb.size().z());
   for (const WheelSpec& w : wheels) {
     host::Mesh one = wheel;
-    Eigen::Matrix4d t = rotation(Eigen::Matrix3d::Identity() * (w.radius / wheel_radius));
+    Eigen::Matrix4d t = linear_transform(Eigen::Matrix3d::Identity() * (w.radius / wheel_radius));
     t.topRightCorner<3, 1>() = w.pos - wb.center() * (w.radius / wheel_radius);
     one.apply_transform(t);
     m->append(one);
   }
-  m->apply_transform(rotation(Eigen::AngleAxisd(-0.5 * M_PI, Eigen::Vector3d::UnitZ()).toRotationMatrix()));
+  m->apply_transform(
+      linear_transform(Eigen::AngleAxisd(-0.5 * M_PI, Eigen::Vector3d::UnitZ()).toRotationMatrix()));
   return true;
 }
 
@@ -159,17 +147,12 @@ bool write_one(const std::string& out, const CarEntry& c, const std::string& sou
                CsvTable* catalog, std::string* error) {
   settle(m);
   m->name = c.name;
-  const std::string dir = out + "/" + c.klass;
-  if (!make_output_dir(dir, error) || !host::write_obj(dir + "/" + c.name + ".obj", *m, error)) return false;
-  const Eigen::Vector3d size = m->bounding_box().size();
-  catalog->add({c.name, c.klass, source, std::to_string(m->triangle_count()), num(size.x(), 3),
-                num(size.y(), 3), num(size.z(), 3)});
-  return true;
+  return write_in_class_folder(out, c.klass, source, *m, catalog, error);
 }
 
 int run_prepare(const PrepareArgs& a) {
   std::string error;
-  CsvTable catalog({"name", "class", "source", "triangles", "length_m", "width_m", "height_m"});
+  CsvTable catalog(catalog_header());
   uint32_t written = 0;
   bool ok = make_output_dir(a.out, &error);
   for (const CarEntry& c : kTorcsCars) {

@@ -3,8 +3,10 @@
 // it) to OBJ meshes Assimp reads, in the generator's frame (metres, x
 // forward, z up, ground at z = 0, centred): OUT/vehicles (body + propulsion
 // assembled, and the one-piece vehicles), OUT/structures and OUT/features
-// (map features: trees, rocks, wrecks, ruins), plus OUT/catalog.csv. The
-// data is GPL game content: never commit it.
+// (map features: trees, rocks, wrecks, ruins), plus OUT/catalog.csv (the
+// vehicles' classes; empty for structures and features, not vehicles) and
+// OUT/vehicle-classes.txt, the vehicles' classes as a `spinhash build
+// --classes` manifest. The data is GPL game content: never commit it.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +19,7 @@
 #include "output_dir.hpp"
 #include "pipeline/exit_codes.hpp"
 #include "warzone_catalog.hpp"
+#include "world_mesh.hpp"
 
 namespace spinhash::experiment {
 namespace {
@@ -37,14 +40,6 @@ struct Tally {
   uint32_t skipped = 0;
 };
 
-// Ground at z = 0, footprint centred on the origin.
-void settle(host::Mesh* m) {
-  host::Box3 b = m->bounding_box();
-  Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
-  t.topRightCorner<3, 1>() = Eigen::Vector3d(-b.center().x(), -b.center().y(), -b.lo.z());
-  m->apply_transform(t);
-}
-
 bool load_parts(const std::string& base, const std::vector<std::string>& parts, host::Mesh* out,
                 std::string* error) {
   for (const std::string& p : parts) {
@@ -61,27 +56,27 @@ bool load_parts(const std::string& base, const std::vector<std::string>& parts, 
   return true;
 }
 
-bool write_one(const std::string& dir, const std::string& kind, host::Mesh& m, CsvTable* catalog,
-               std::string* error) {
+bool write_one(const std::string& dir, const std::string& klass, const std::string& kind, host::Mesh& m,
+               CsvTable* catalog, std::string* error) {
   const std::string path = (fs::path(dir) / (m.name + ".obj")).string();
   if (!host::write_obj(path, m, error)) return false;
-  const Eigen::Vector3d size = m.bounding_box().size();
-  catalog->add({m.name, kind, std::to_string(m.triangle_count()), num(size.x(), 3), num(size.y(), 3),
-                num(size.z(), 3)});
+  catalog->add(catalog_row(m, klass, "warzone-" + kind));
   return true;
 }
 
 bool prepare_vehicles(const PrepareArgs& a, CsvTable* catalog, Tally* tally, std::string* error) {
   const std::string out = a.out + "/vehicles";
   if (!make_output_dir(out, error)) return false;
+  std::string manifest = "# MODEL_NAME CLASS: spinhash build --classes (Warzone 2100 vehicles)\n";
   for (const WarzoneVehicle& v : warzone_vehicles()) {
     host::Mesh m;
     if (!load_parts(a.base, v.parts, &m, error)) return false;
     m.name = v.name;
-    if (!write_one(out, "vehicle", m, catalog, error)) return false;
+    if (!write_one(out, v.klass, "vehicle", m, catalog, error)) return false;
+    manifest += v.name + " " + v.klass + "\n";
     ++tally->written;
   }
-  return true;
+  return write_text(a.out + "/vehicle-classes.txt", manifest, error);
 }
 
 // Every one-piece model of base/subdir that stands at least kMinObjectHeight
@@ -112,7 +107,7 @@ bool prepare_directory(const PrepareArgs& a, const char* subdir, const std::stri
       continue;
     }
     m.name = prefix + stem;
-    if (!write_one(out, kind, m, catalog, error)) return false;
+    if (!write_one(out, "", kind, m, catalog, error)) return false;
     ++tally->written;
   }
   return true;
@@ -120,7 +115,7 @@ bool prepare_directory(const PrepareArgs& a, const char* subdir, const std::stri
 
 int run_prepare(const PrepareArgs& a) {
   std::string error;
-  CsvTable catalog({"name", "kind", "triangles", "length_m", "width_m", "height_m"});
+  CsvTable catalog(catalog_header());
   Tally tally;
   const bool ok = prepare_vehicles(a, &catalog, &tally, &error) &&
                   (!a.structures || prepare_directory(a, kWarzoneStructureDir, "structure", "wzs-", &catalog,

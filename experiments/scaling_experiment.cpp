@@ -16,8 +16,8 @@
 #include "modes.hpp"
 #include "output_dir.hpp"
 #include "pipeline/exit_codes.hpp"
+#include "pipeline/mode_name.hpp"
 #include "pipeline/progress.hpp"
-#include "pipeline/recognizer_flags.hpp"
 #include "scaling_data.hpp"
 #include "spinhash/limits.hpp"
 

@@ -23,8 +23,14 @@ const BodyClass kBodyClasses[] = {
 constexpr const char* kBody7 = "drmbod07";
 constexpr const char* kBody7Hover = "prmhov2";
 
+struct OnePiece {
+  const char* stem;
+  const char* klass;
+};
 // One-piece vehicles of the scavenger faction.
-const char* const kOnePiece[] = {"exjeep", "exjeeprk", "exbuggy", "exbugrk", "extrike", "exschool", "exfire"};
+const OnePiece kOnePiece[] = {{"exjeep", "suv"},    {"exjeeprk", "suv"},  {"exbuggy", "other"},
+                              {"exbugrk", "other"}, {"extrike", "other"}, {"exschool", "bus"},
+                              {"exfire", "truck"}};
 
 std::string pie(const char* dir, const std::string& stem) { return std::string(dir) + stem + ".pie"; }
 
@@ -34,16 +40,22 @@ std::vector<WarzoneVehicle> warzone_vehicles() {
   std::vector<WarzoneVehicle> out;
   for (const BodyClass& c : kBodyClasses)
     for (const char* body : c.bodies) {
-      const std::pair<const char*, const char*> props[] = {
-          {"wheels", c.wheels},
-          {"halftracks", c.half_tracks},
-          {"tracks", c.tracks},
-          {"hover", std::string(body) == kBody7 ? kBody7Hover : c.hover}};
-      for (const auto& p : props)
-        out.push_back(
-            {"wz-" + std::string(body) + "-" + p.first, {pie(kBodyDir, body), pie(kPropDir, p.second)}});
+      struct Propulsion {
+        const char* name;
+        const char* part;
+        const char* klass;
+      };
+      const Propulsion props[] = {{"wheels", c.wheels, "apc"},
+                                  {"halftracks", c.half_tracks, "tracked"},
+                                  {"tracks", c.tracks, "tracked"},
+                                  {"hover", std::string(body) == kBody7 ? kBody7Hover : c.hover, "other"}};
+      for (const Propulsion& p : props)
+        out.push_back({"wz-" + std::string(body) + "-" + p.name,
+                       {pie(kBodyDir, body), pie(kPropDir, p.part)},
+                       p.klass});
     }
-  for (const char* stem : kOnePiece) out.push_back({"wz-" + std::string(stem), {pie(kBodyDir, stem)}});
+  for (const OnePiece& v : kOnePiece)
+    out.push_back({"wz-" + std::string(v.stem), {pie(kBodyDir, v.stem)}, v.klass});
   return out;
 }
 

@@ -12,10 +12,16 @@ namespace spinhash::experiment {
 struct WarzoneVehicle {
   std::string name;                // e.g. "wz-drlbod01-tracks"
   std::vector<std::string> parts;  // paths under the base.wz root
+  std::string klass;               // vehicle class (include/spinhash/vehicle_classes.h)
 };
 
 // Droid bodies x ground propulsion (wheels, half-tracks, tracks, hover),
 // plus the one-piece "Babas" vehicles (jeep, buggy, trike, bus, fire truck).
+// Classes: the armoured droid bodies are wheeled APCs on wheels and tracked
+// vehicles on tracks or half-tracks (their rear runs on tracks); on hover
+// they are "other" (a hovercraft is no class of the list). The jeeps are
+// SUVs, the buggies and the trike "other", the school bus a bus and the
+// fire engine a truck.
 std::vector<WarzoneVehicle> warzone_vehicles();
 
 // Directories of the structures and of the map features (trees, rocks,

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "blob/blob_writer.hpp"
-#include "blob/tiny_blob.hpp"
+#include "db/tiny_blob.hpp"
 #include "support/toy_database.hpp"
 
 using namespace spinhash;

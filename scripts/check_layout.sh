@@ -5,7 +5,9 @@
 #  2. host code (host-tools, experiments, python, fuzz, examples) includes no
 #     private core header (a path that exists under firmware-lib/): it uses
 #     include/spinhash/ and include/spinhash/internal/;
-#  3. host-tools never depends on experiments/;
+#  3. host-tools never depends on experiments/; the pipeline every front end
+#     shares has no CLI11 (the flags live in host-tools/flags/); blob/ (the
+#     blob format) includes nothing of db/ (the database builder);
 #  4. every C/C++ file is as .clang-format lays it out;
 #  5. no tracked file tells the project's development history: no issue or
 #     stop numbers (the word, a space or not, and a number), no citations of
@@ -38,11 +40,20 @@ if [[ -n "$reverse" ]]; then
   echo "check_layout: host-tools depends on experiments/:"; echo "$reverse"; status=1
 fi
 
+cli11=$(grep -nE '^\s*#\s*include\s+<CLI/' $(git ls-files 'host-tools/pipeline/*' | grep -E '\.(cpp|hpp)$') || true)
+if [[ -n "$cli11" ]]; then
+  echo "check_layout: the pipeline includes CLI11 (flags belong in host-tools/flags/):"; echo "$cli11"; status=1
+fi
+blob_db=$(grep -nE '^\s*#\s*include\s+"db/' $(git ls-files 'host-tools/blob/*' | grep -E '\.(cpp|hpp)$') || true)
+if [[ -n "$blob_db" ]]; then
+  echo "check_layout: blob/ includes db/:"; echo "$blob_db"; status=1
+fi
+
 if command -v clang-format >/dev/null; then
   if ! clang-format --dry-run --Werror $sources 2>/tmp/check_layout_format.txt; then
     echo "check_layout: files not laid out as .clang-format says (clang-format -i FILE):"
     grep -oE '^[^ :]+\.(c|h|cpp|hpp):[0-9]+:[0-9]+: (error|warning)' /tmp/check_layout_format.txt |
-      cut -d: -f1 | sort -u | head -40
+      cut -d: -f1 | sort -u | sed -n 1,40p
     status=1
   fi
 else

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Set-up and demo on built-in data: installs what is missing (Debian 12),
-# builds, generates 56 procedural look-alike vehicles (7 families), compiles
+# builds, generates 56 procedural look-alike vehicles (8 families), compiles
 # them into a database, simulates airborne 3-view scans of every vehicle
 # (5 cm noise, random pose, georeferenced) and recognises them with batch
 # RANSAC, then prints accuracy and time; ends with a small survey of 4 adjacent
@@ -24,7 +24,7 @@ echo "== $vehicles procedural vehicles"
 $spinhash generate --count "$vehicles" -o "$out/fleet"
 echo "== database"
 $spinhash build -o "$out/fleet.shdb" "$out/fleet"
-$spinhash info "$out/fleet.shdb" | head -7
+$spinhash info "$out/fleet.shdb" | sed -n 1,7p
 
 echo "== $scans_per_vehicle airborne scans per vehicle (3 views, ${noise} m noise, random pose, UTM offset)"
 seed=1

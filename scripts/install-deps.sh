@@ -10,6 +10,7 @@ set -euo pipefail
 packages=(build-essential cmake doctest-dev libeigen3-dev libassimp-dev libembree-dev
           libcli11-dev gnuplot-nox
           libproj-dev libgdal-dev proj-bin gdal-bin  # the survey: GeoJSON in WGS 84, the GeoPackage (ogrinfo in the tests)
+          zlib1g-dev  # the pictures' PNG compression
           pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest  # the Python module (python/)
           python3-dask python3-distributed python3-geopandas  # spinhash.survey on Dask (python/spinhash/survey.py)
           clang-format  # the layout check (scripts/check_layout.sh)

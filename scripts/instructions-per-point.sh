@@ -57,7 +57,7 @@ declare -A host
 host[total]=$(awk '/^(summary|totals):/ {print $2; exit}' "$cg")
 annotated=$(callgrind_annotate --inclusive=yes --threshold=100 "$cg")
 inclusive() {  # "  1,234 (12.3%)  file:function [object]": the first line naming the function
-  grep -F "$1" <<< "$annotated" | grep -v '__wrap_' | head -1 | awk '{gsub(",", "", $1); print $1}'
+  grep -F "$1" <<< "$annotated" | grep -v '__wrap_' | sed -n 1p | awk '{gsub(",", "", $1); print $1}'
 }
 for s in cells strip_terrain heights segmentation recognition; do host[$s]=$(inclusive "${functions[$s]}"); done
 host[terrain]=$(( host[cells] + host[strip_terrain] + host[heights] ))  # cell sums, strip grids, window heights

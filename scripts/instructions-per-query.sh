@@ -102,7 +102,7 @@ for size in "${size_list[@]}"; do
     for ((q = 0; q < n; q++)); do
       json=$("$spinhash" recognize --db "$db" --mode "$mode" --top 1 "$out/q$q.ply")
       ms=$(grep -o '"time_ms":[0-9.e+]*' <<< "$json" | cut -d: -f2)
-      hyp=$(grep -o '"hypotheses":[0-9]*' <<< "$json" | head -1 | cut -d: -f2)
+      hyp=$(grep -o '"hypotheses":[0-9]*' <<< "$json" | sed -n 1p | cut -d: -f2)
       top=$(grep -o '"ranking":\[{"model":"[^"]*"' <<< "$json" | sed 's/.*"model":"//; s/"$//')
       cg="$out/callgrind.$size.$mode.$q"
       echo "instructions-per-query: $size models, $mode, query $q (callgrind)" >&2

@@ -63,7 +63,7 @@ count_stages() {  # DB PLY CGFILE
   local total top
   total=$(awk '/^(summary|totals):/ {print $2; exit}' "$cg")
   callgrind_annotate --inclusive=yes --threshold=100 "$cg" 2>/dev/null > "$cg.txt"
-  incl() { grep -F "$1" "$cg.txt" | head -1 | awk '{gsub(",", "", $1); print $1 + 0}'; }
+  incl() { grep -F "$1" "$cg.txt" | sed -n 1p | awk '{gsub(",", "", $1); print $1 + 0}'; }
   top=$(grep -o '"ranking":\[{"model":"[^"]*"' "$cg.json" | sed 's/.*"model":"//; s/"$//')
   echo "$total $(incl 'FeatureExtractor::extract(') $(incl 'LshSearcher::search(') $(incl 'spinhash::verify_pose(') ${top:-none}"
 }

@@ -33,7 +33,7 @@ unpack() {
   fi
   ls "$work/${pkg}"_*.deb >/dev/null 2>&1 || (cd "$work" && apt-get download "$pkg" >&2)
   rm -rf "$dir" && mkdir -p "$dir"
-  dpkg-deb --fsys-tarfile "$(ls "$work/${pkg}"_*.deb | head -n 1)" | tar -x -C "$dir" --wildcards "$pattern"
+  dpkg-deb --fsys-tarfile "$(ls "$work/${pkg}"_*.deb | sed -n 1p)" | tar -x -C "$dir" --wildcards "$pattern"
   echo "$dir"
 }
 torcs=$(unpack torcs-data torcs './usr/share/games/torcs/cars/*')

@@ -20,9 +20,9 @@ mkdir -p "$work"
 if ! ls "$work"/warzone2100-data_*.deb >/dev/null 2>&1; then
   (cd "$work" && apt-get download warzone2100-data)
 fi
-deb=$(ls "$work"/warzone2100-data_*.deb | head -n 1)
+deb=$(ls "$work"/warzone2100-data_*.deb | sed -n 1p)
 dpkg-deb -x "$deb" "$work/x"
-base_wz=$(find "$work/x" -name base.wz | head -n 1)
+base_wz=$(find "$work/x" -name base.wz | sed -n 1p)
 [[ -n "$base_wz" ]] || { echo "prepare-warzone: base.wz not found in $deb" >&2; exit 1; }
 rm -rf "$work/base"
 unzip -q "$base_wz" -d "$work/base"

@@ -126,6 +126,12 @@ const char* spinhash_class_name(uint32_t vehicle_class) SPINHASH_NOEXCEPT {
   return vehicle_class_name(vehicle_class);
 }
 
+uint32_t spinhash_class_group(uint32_t vehicle_class) SPINHASH_NOEXCEPT {
+  return static_cast<uint32_t>(vehicle_group_of(vehicle_class));
+}
+
+const char* spinhash_group_name(uint32_t group) SPINHASH_NOEXCEPT { return vehicle_group_name(group); }
+
 spinhash_status spinhash_recognizer_init(spinhash_recognizer* rec, const spinhash_database* db,
                                          const spinhash_config* config, void* workspace,
                                          size_t workspace_bytes) SPINHASH_NOEXCEPT {

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -81,19 +82,15 @@ bool fill_temporary(int fd, const void* data, size_t size, mode_t mode) {
   return ::close(f.release()) == 0;
 }
 
-}  // namespace
-
-bool read_file(const std::string& path, AlignedBytes* out, std::string* error) {
-  *out = AlignedBytes();
-  error->clear();
-  Fd f;
-  f.fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (f.fd < 0) {
+// Opens a regular file no larger than max_bytes; its size in *size.
+bool open_regular(const std::string& path, uint64_t max_bytes, Fd* f, uint64_t* size, std::string* error) {
+  f->fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (f->fd < 0) {
     *error = describe("cannot open", path, errno);
     return false;
   }
   struct stat st {};
-  if (::fstat(f.fd, &st) != 0) {
+  if (::fstat(f->fd, &st) != 0) {
     *error = describe("cannot stat", path, errno);
     return false;
   }
@@ -101,11 +98,43 @@ bool read_file(const std::string& path, AlignedBytes* out, std::string* error) {
     *error = "'" + path + "' is not a regular file";
     return false;
   }
-  const uint64_t size = static_cast<uint64_t>(st.st_size);
-  if (size > SIZE_MAX) {
-    *error = "'" + path + "' is too large for this machine";
+  *size = static_cast<uint64_t>(st.st_size);
+  if (*size > max_bytes || *size > SIZE_MAX) {
+    *error = "'" + path + "' is larger than the limit of " +
+             std::to_string(std::min<uint64_t>(max_bytes, SIZE_MAX)) + " bytes";
     return false;
   }
+  return true;
+}
+
+// All of standard input, up to max_bytes.
+bool read_stdin(uint64_t max_bytes, std::string* out, std::string* error) {
+  constexpr size_t kChunk = size_t{1} << 16;
+  char chunk[kChunk];
+  for (;;) {
+    const ssize_t n = ::read(STDIN_FILENO, chunk, kChunk);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      *error = describe("cannot read", "standard input", errno);
+      return false;
+    }
+    if (n == 0) return true;
+    if (out->size() + static_cast<size_t>(n) > max_bytes) {
+      *error = "standard input is larger than the limit of " + std::to_string(max_bytes) + " bytes";
+      return false;
+    }
+    out->append(chunk, static_cast<size_t>(n));
+  }
+}
+
+}  // namespace
+
+bool read_file(const std::string& path, AlignedBytes* out, std::string* error) {
+  *out = AlignedBytes();
+  error->clear();
+  Fd f;
+  uint64_t size = 0;
+  if (!open_regular(path, UINT64_MAX, &f, &size, error)) return false;
   AlignedBytes bytes(static_cast<size_t>(size));
   if (!read_all(f.fd, bytes.data(), bytes.size())) {
     *error = describe("cannot read", path, errno != 0 ? errno : EIO);
@@ -113,6 +142,25 @@ bool read_file(const std::string& path, AlignedBytes* out, std::string* error) {
   }
   *out = std::move(bytes);
   return true;
+}
+
+bool read_file(const std::string& path, uint64_t max_bytes, std::string* out, std::string* error) {
+  out->clear();
+  error->clear();
+  bool ok = false;
+  if (path == kStdinPath) {
+    ok = read_stdin(max_bytes, out, error);
+  } else {
+    Fd f;
+    uint64_t size = 0;
+    if (open_regular(path, max_bytes, &f, &size, error)) {
+      out->resize(static_cast<size_t>(size));
+      ok = read_all(f.fd, reinterpret_cast<uint8_t*>(out->data()), out->size());
+      if (!ok) *error = describe("cannot read", path, errno != 0 ? errno : EIO);
+    }
+  }
+  if (!ok) out->clear();
+  return ok;
 }
 
 bool write_file_atomically(const std::string& path, const std::vector<uint8_t>& bytes, std::string* error) {

@@ -1,5 +1,7 @@
-// Whole-file reads into 64-byte-aligned memory and crash-safe replacement of
-// a file (POSIX: the blob tools run on Linux hosts and Linux targets).
+// Whole-file reads (the one reader of whole files on the host: databases,
+// clouds from standard input, meshes, stored survey results) and
+// crash-safe replacement of a file (POSIX: the blob tools run on Linux
+// hosts and Linux targets).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -10,8 +12,15 @@
 namespace spinhash {
 namespace host {
 
-// Reads the whole regular file. On failure *out is emptied and *error says why.
+// The path that means standard input.
+constexpr const char* kStdinPath = "-";
+
+// Reads the whole regular file into 64-byte-aligned memory (Database::open
+// requires it). On failure *out is emptied and *error says why.
 bool read_file(const std::string& path, AlignedBytes* out, std::string* error);
+// Reads the whole regular file, or all of standard input for "-", up to
+// max_bytes. On failure *out is emptied and *error says why, naming the file.
+bool read_file(const std::string& path, uint64_t max_bytes, std::string* out, std::string* error);
 
 // Writes to a temporary file next to `path`, flushes it to disk, then renames
 // it over `path`: readers see the old file or the new one, never a mix. On

@@ -2,13 +2,30 @@
 #include <cstdio>
 
 #include "cli/commands.hpp"
-#include "cloud/cloud_reader.hpp"
+#include "cloud/crs_resolve.hpp"
 
 namespace spinhash::cli {
 
 void refuse_repeated_stdin(const std::vector<std::string>& clouds) {
   if (std::count(clouds.begin(), clouds.end(), host::kStdinPath) > 1)
     throw CLI::ValidationError("clouds", "'-' (stdin) named more than once: stdin can be read only once");
+}
+
+void add_work_crs_option(CLI::App* cmd, host::WorkCrs* work) {
+  cmd->add_option_function<std::string>(
+         "--work-crs",
+         [work](const std::string& text) {
+           std::string error;
+           if (!host::crs_from_user(text, &work->crs, &error))
+             throw CLI::ValidationError("--work-crs", error);
+           if (work->crs.units.geographic)
+             throw CLI::ValidationError("--work-crs",
+                                        text + " is in degrees: name a projected CRS (metres or feet)");
+           work->named = true;
+         },
+         "a projected CRS to work in (EPSG:n, WKT or PROJ string): files in another CRS, or in degrees, are "
+         "reprojected into it; outputs are in it")
+      ->type_name("CRS");
 }
 
 void print_error(const char* command, const std::string& message) {

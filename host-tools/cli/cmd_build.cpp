@@ -3,11 +3,12 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "flags/build_flags.hpp"
 #include "pipeline/build_database_file.hpp"
 
 namespace spinhash::cli {
 
-using pipeline::add_build_flags;
+using flags::add_build_flags;
 using pipeline::build_database_file;
 using pipeline::BuildSettings;
 using pipeline::BuildSummary;

@@ -56,12 +56,12 @@ void print_params(const Database& db, uint64_t bytes) {
 
 void print_text(const Database& db, uint64_t bytes) {
   print_params(db, bytes);
-  std::printf("%-24s %-12s %8s  %s\n", "model", "class", "features", "extent x y z (m)");
+  std::printf("%-24s %-12s %-9s %8s  %s\n", "model", "class", "group", "features", "extent x y z (m)");
   for (uint32_t m = 0; m < db.model_count(); ++m) {
     const blob::ModelRecord& r = db.model(m);
-    std::printf("%-24s %-12s %8u  %.2f %.2f %.2f\n", model_name(db, m).c_str(),
-                vehicle_class_name(r.vehicle_class), r.feature_count,
-                static_cast<double>(r.bbox_max[0] - r.bbox_min[0]),
+    std::printf("%-24s %-12s %-9s %8u  %.2f %.2f %.2f\n", model_name(db, m).c_str(),
+                vehicle_class_name(r.vehicle_class), vehicle_group_name(vehicle_group_of(r.vehicle_class)),
+                r.feature_count, static_cast<double>(r.bbox_max[0] - r.bbox_min[0]),
                 static_cast<double>(r.bbox_max[1] - r.bbox_min[1]),
                 static_cast<double>(r.bbox_max[2] - r.bbox_min[2]));
   }
@@ -79,6 +79,7 @@ std::string model_list_json(const Database& db) {
     models.push_back(json_object(
         {json_member(k::kName, json_string(model_name(db, m))),
          json_member(k::kClass, json_string(vehicle_class_name(r.vehicle_class))),
+         json_member(k::kGroup, json_string(vehicle_group_name(vehicle_group_of(r.vehicle_class)))),
          json_member(k::kFeatures, num(r.feature_count)),
          json_member(k::kExtent, json_array(std::vector<std::string>{num(r.bbox_max[0] - r.bbox_min[0]),
                                                                      num(r.bbox_max[1] - r.bbox_min[1]),
@@ -137,7 +138,7 @@ int run_info(const InfoArgs& a) {
 void add_info_command(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<InfoArgs>();
   CLI::App* cmd = app.add_subcommand("info", "describe a database blob");
-  cmd->add_option("database", a->path, "database file")->required();
+  cmd->add_option("database", a->path, "database file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--format", a->format, "text, or json: one JSON object on one line")
       ->check(CLI::IsMember({"text", "json"}))
       ->capture_default_str();

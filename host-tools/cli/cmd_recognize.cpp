@@ -10,43 +10,21 @@
 #include "cli/commands.hpp"
 #include "cli/json_line.hpp"
 #include "cli/result_json.hpp"
-#include "cloud/cloud_reader.hpp"
-#include "cloud/crs_units.hpp"
 #include "cloud/metric_source.hpp"
-#include "cloud/point_source.hpp"
+#include "flags/recognizer_flags.hpp"
 #include "pipeline/answer_overlay.hpp"
 #include "pipeline/database_file.hpp"
+#include "pipeline/json_line.hpp"
 #include "pipeline/object_units.hpp"
 #include "pipeline/recognition_session.hpp"
-#include "pipeline/recognizer_flags.hpp"
 
 namespace spinhash::cli {
 
-using pipeline::add_recognizer_flags;
+using flags::add_recognizer_flags;
 using pipeline::DatabaseFile;
 using pipeline::load_database;
 using pipeline::RecognitionSession;
 namespace {
-
-// The query file's CRS as its header declares it (unknown for none,
-// standard input, or a header that cannot be read again).
-host::Crs query_crs(const std::string& path) {
-  if (path == host::kStdinPath) return {};
-  try {
-    return host::read_cloud_header(path).crs;
-  } catch (const std::exception&) {
-    return {};
-  }
-}
-
-// The query in metres (cloud/crs_units.hpp); notes on stderr.
-host::AxisUnits to_metres(const std::string& name, const host::Crs& crs, std::vector<double>* xyz) {
-  const host::AxisUnits units = host::axis_units(crs);
-  for (const std::string& w : units.messages())
-    std::fprintf(stderr, "spinhash recognize: %s: units: %s\n", name.c_str(), w.c_str());
-  host::scale_to_metres(units, xyz->data(), xyz->size() / 3);
-  return units;
-}
 
 struct RecognizeArgs {
   std::string db_path;
@@ -54,8 +32,22 @@ struct RecognizeArgs {
   uint32_t top = 0;         // 0: every model that got a score
   std::string overlay_out;  // FILE.ply: the query and the posed model, coloured
   std::string picture_out;  // FILE.png: the same, top-down and side-on
+  host::WorkCrs work;       // --work-crs: the CRS to work in (else each file's own)
   RecognizerConfig config;
 };
+
+// The query in metres of the CRS worked in, through the reading door
+// (cloud/metric_source.hpp), which opens the file once; notes on stderr.
+std::vector<double> read_query(const RecognizeArgs& a, const std::string& path, host::Crs* crs,
+                               host::AxisUnits* units) {
+  std::unique_ptr<host::MetricSource> source = host::open_metric_source(path, a.work);
+  const host::ToMetres& to_metres = source->to_metres();
+  for (const std::string& note : to_metres.notes())
+    std::fprintf(stderr, "spinhash recognize: %s: %s\n", host::cloud_name(path).c_str(), note.c_str());
+  *crs = to_metres.work_crs();
+  *units = to_metres.units();
+  return host::read_all_points(*source);
+}
 
 // FILE.ext for one query; FILE-NAME.ext for each of several.
 std::string output_for(const std::string& file, const std::string& query_name, size_t queries) {
@@ -103,16 +95,18 @@ int run_recognize(const RecognizeArgs& a) {
   for (const std::string& q : a.queries) {
     const std::string name = host::cloud_name(q);
     std::vector<double> xyz;
-    if (!host::read_cloud(q, &xyz, &error)) {
+    host::Crs crs;
+    host::AxisUnits units;
+    try {
+      xyz = read_query(a, q, &crs, &units);
+    } catch (const std::exception& e) {
       // An unreadable file still gets its line, so readers can pair lines with queries.
-      std::printf("{\"query\":%s,\"status\":\"unreadable\",\"error\":%s,\"ranking\":[],\"pose\":null,%s}\n",
-                  json_string(name).c_str(), json_string(error).c_str(), json_version_member().c_str());
-      std::fprintf(stderr, "spinhash recognize: %s\n", error.c_str());  // the reader names the file
+      std::printf("%s\n", pipeline::unreadable_json("query", name, e.what()).c_str());
+      std::fflush(stdout);
+      std::fprintf(stderr, "spinhash recognize: %s\n", e.what());  // the reader names the file
       exit_code = kExitCheckFailed;
       continue;
     }
-    const host::Crs crs = query_crs(q);
-    const host::AxisUnits units = to_metres(name, crs, &xyz);
     Result r = session.recognize(xyz);
     std::vector<RankedModel> ranking;
     const Result out = pipeline::in_file_units(r, units, &ranking);
@@ -134,8 +128,9 @@ int run_recognize(const RecognizeArgs& a) {
 void add_recognize_command(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<RecognizeArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "recognize", "recognise point clouds (PLY, LAS or text; '-': stdin) against a database");
-  cmd->add_option("--db", a->db_path, "database file")->required();
+      "recognize",
+      "recognise point clouds (LAS, LAZ, COPC, PLY or x y z text; '-': stdin) against a database");
+  cmd->add_option("--db", a->db_path, "database file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--top", a->top, "models listed per query (default: all that got a score)");
   cmd->add_option(
          "--overlay-out", a->overlay_out,
@@ -146,6 +141,7 @@ void add_recognize_command(CLI::App& app, int* exit_code) {
                   "PNG of the same, top-down and side-on, titled with the model and its confidence; "
                   "several queries: FILE-NAME.png each")
       ->check(extension_check(".png"));
+  add_work_crs_option(cmd, &a->work);
   cmd->add_option("queries", a->queries, "point cloud files ('-': stdin)")->required();
   add_recognizer_flags(cmd, &a->config);
   cmd->callback([a, exit_code]() {

@@ -64,7 +64,7 @@ int run_scan(ScanArgs& a) {
 void add_scan_command(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<ScanArgs>();
   host::ScanOptions& o = a->options;
-  CLI::App* cmd = app.add_subcommand("scan", "simulate an airborne lidar scan of a mesh (PLY out)");
+  CLI::App* cmd = app.add_subcommand("scan", "simulate an airborne lidar scan of a mesh (PLY or LAS out)");
   cmd->add_option("mesh", a->mesh, "mesh file")->required();
   cmd->add_option("-o,--output", a->output, "point cloud to write: .ply or .las (ground classified 2)")
       ->required();

@@ -8,16 +8,18 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "cloud/cloud_reader.hpp"
-#include "cloud/point_source.hpp"
+#include "cloud/metric_source.hpp"
+#include "flags/recognizer_flags.hpp"
+#include "flags/scene_flags.hpp"
 #include "pipeline/database_file.hpp"
+#include "pipeline/json_line.hpp"
 #include "pipeline/object_box.hpp"
 #include "pipeline/object_json.hpp"
+#include "pipeline/object_units.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/recognition_session.hpp"
-#include "pipeline/recognizer_flags.hpp"
-#include "pipeline/scene_flags.hpp"
 #include "pipeline/scene_session.hpp"
+#include "pipeline/spill_folder.hpp"
 #include "pipeline/tile_stream.hpp"
 #include "render/tile_picture.hpp"
 
@@ -32,6 +34,7 @@ struct SceneArgs {
   std::string db_path;
   std::vector<std::string> tiles;
   std::string picture_dir;  // a top-down PNG per tile, when given
+  host::WorkCrs work;       // --work-crs: the CRS to work in (else each file's own)
   SceneConfig config;
 };
 
@@ -56,45 +59,53 @@ std::string lost_text(const StreamStats& st) {
   return s;
 }
 
-// One tile through the stream: JSON lines as objects come, stats on stderr.
+// One tile through the stream, in metres of the CRS worked in (the file's
+// own, or --work-crs): JSON lines as objects come, back in that CRS's
+// units; stats on stderr. An unreadable tile gets its line too.
 int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& path) {
   const std::string name = host::cloud_name(path);
-  pipeline::TileStreamOptions options;
+  pipeline::TileStreamOptions options;  // units: metres, as the door hands them
   options.scene = a.config;
   options.picture_points = a.picture_dir.empty() ? 0u : kPicturePoints;
   std::vector<host::PictureBox> boxes;
   uint32_t index = 0, confident = 0;
-  std::string crs;  // the file's CRS on every line (empty: it declares none)
+  std::string crs;  // the CRS worked in, on every line (empty: none declared)
+  host::AxisUnits units;
   const auto start = std::chrono::steady_clock::now();
-  const pipeline::ObjectCallback print = [&](const SceneObject& o) {
+  const pipeline::ObjectCallback print = [&](const SceneObject& metres) {
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::vector<RankedModel> ranking;
+    const SceneObject o = pipeline::in_file_units(metres, units, &ranking);
     std::printf("%s\n", pipeline::object_json(name, index++, file.db, o, crs, ms).c_str());
-    if (!a.picture_dir.empty()) boxes.push_back(pipeline::object_box(file.db, o, options.units.horizontal));
+    if (!a.picture_dir.empty()) boxes.push_back(pipeline::object_box(file.db, metres));
     confident += o.confident ? 1u : 0u;
   };
   pipeline::TileStreamResult r;
   try {
-    std::unique_ptr<host::PointSource> source = host::open_point_source(path);
-    if (source->header().crs.known()) crs = source->header().crs.describe();
-    for (const std::string& w : source->header().crs.warnings)
-      std::fprintf(stderr, "spinhash scene: %s: CRS: %s\n", name.c_str(), w.c_str());
-    options.units = host::axis_units(source->header().crs);
-    for (const std::string& w : options.units.messages())
-      std::fprintf(stderr, "spinhash scene: %s: units: %s\n", name.c_str(), w.c_str());
+    std::unique_ptr<host::MetricSource> source = host::open_metric_source(path, a.work);
+    const host::ToMetres& to_metres = source->to_metres();
+    if (to_metres.work_crs().known()) crs = to_metres.work_crs().describe();
+    units = to_metres.units();
+    for (const std::string& note : to_metres.notes())
+      std::fprintf(stderr, "spinhash scene: %s: %s\n", name.c_str(), note.c_str());
     r = pipeline::stream_tile(file.db, *source, options, print);
   } catch (const std::exception& e) {
+    std::fflush(stdout);  // the objects already reported stay; the tile's status line follows them
+    std::printf("%s\n", pipeline::unreadable_json("tile", name, e.what()).c_str());
     std::fflush(stdout);
     std::fprintf(stderr, "spinhash scene: %s\n", e.what());  // the reader names the file
     return kExitCheckFailed;
   }
   std::fflush(stdout);
   const std::string lost = lost_text(r.stats);
+  const std::string crs_text = crs.empty() ? "unknown (the file's own coordinates, taken as metres)"
+                                           : crs + " (" + units.short_text() + ")";
   std::fprintf(
       stderr,
       "spinhash scene: %s: %s; CRS %s; %s; %llu windows in %u bands, workspace %.1f MB; read %.1f ms, "
       "stream %.1f ms%s%s\n",
-      name.c_str(), status_name(r.status), crs.empty() ? "unknown (the file's own coordinates)" : crs.c_str(),
+      name.c_str(), status_name(r.status), crs_text.c_str(),
       pipeline::scene_stats_text(r.stats.scene).c_str(), static_cast<unsigned long long>(r.stats.windows),
       r.bands, r.workspace_bytes / 1e6, r.read_ms, r.stream_ms,
       lost.empty() ? "" : "; not answered: ", lost.c_str());
@@ -108,6 +119,7 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
 }
 
 int run_scene(const SceneArgs& a) {
+  pipeline::report_stale_spill_folders("scene");
   DatabaseFile file;
   std::string error;
   if (!pipeline::load_database(a.db_path, &file, &error)) {
@@ -131,14 +143,16 @@ void add_scene_command(CLI::App& app, int* exit_code) {
   a->config.recognizer.ground_clearance = 0.0f;  // the scene's terrain classifier removes the ground
   a->config.max_tile_points = 0;                 // sized per tile from its density (tile_stream.hpp)
   CLI::App* cmd = app.add_subcommand(
-      "scene", "find and recognise every vehicle in airborne lidar tiles (LAS, PLY or x y z text, z up)");
-  cmd->add_option("--db", a->db_path, "database file")->required();
-  pipeline::add_scene_flags(cmd, &a->config);  // --top, --window-core, --max-window-points, ...
+      "scene",
+      "find and recognise every vehicle in airborne lidar tiles (LAS, LAZ, COPC, PLY or x y z text, z up)");
+  cmd->add_option("--db", a->db_path, "database file")->required()->check(CLI::ExistingFile);
+  flags::add_scene_flags(cmd, &a->config);  // --top, --window-core, --max-window-points, ...
   cmd->add_option("--picture-out", a->picture_dir,
                   "folder for a top-down PNG per tile: objects outlined and labelled (green: confident)")
       ->check(CLI::ExistingDirectory);
+  add_work_crs_option(cmd, &a->work);
   cmd->add_option("tiles", a->tiles, "point cloud files ('-': stdin)")->required();
-  pipeline::add_recognizer_flags(cmd, &a->config.recognizer);
+  flags::add_recognizer_flags(cmd, &a->config.recognizer);
   cmd->callback([a, exit_code]() {
     refuse_repeated_stdin(a->tiles);
     *exit_code = run_scene(*a);

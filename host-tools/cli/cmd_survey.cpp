@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "pipeline/scene_flags.hpp"
+#include "flags/scene_flags.hpp"
 #include "survey/survey_runner.hpp"
 
 namespace spinhash::cli {
@@ -18,7 +18,7 @@ void add_survey_command(CLI::App& app, int* exit_code) {
   CLI::App* cmd = app.add_subcommand(
       "survey",
       "every vehicle of a survey of adjacent tiles, on all cores, with GIS outputs (docs/survey.md)");
-  cmd->add_option("--db", o->db_path, "database file")->required();
+  cmd->add_option("--db", o->db_path, "database file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--out", o->out_dir, "output folder (made if missing)")->required();
   cmd->add_option("--jobs", o->jobs, "tiles processed at once (default: every core)")
       ->check(CLI::Range(1u, 1024u));
@@ -28,8 +28,11 @@ void add_survey_command(CLI::App& app, int* exit_code) {
       ->check(CLI::Range(survey::kMinBuffer, survey::kMaxBuffer));
   cmd->add_flag("--resume", o->resume, "keep the tiles a previous run in DIR finished (same inputs)");
   cmd->add_flag("--quiet", o->quiet, "no progress line");
-  pipeline::add_scene_flags(cmd, &o->scene, {"--top", "--max-objects"});
-  cmd->add_option("tiles", *tiles, "tiles (LAS, LAZ, PLY, x y z text) or folders of them")->required();
+  add_work_crs_option(cmd, &o->work);
+  flags::add_scene_flags(cmd, &o->scene, {"--top", "--max-objects"});
+  cmd->add_option("tiles", *tiles, "tiles (LAS, LAZ, COPC, PLY, x y z text) or folders of them")
+      ->required()
+      ->check(CLI::ExistingPath);  // planned before any runs: a missing one is a usage error
   cmd->callback([o, tiles, exit_code]() { *exit_code = survey::run_survey(*o, *tiles); });
 }
 

@@ -8,16 +8,17 @@
 #include "cli/json_line.hpp"
 #include "cli/report_keys.hpp"
 #include "cli/result_json.hpp"
+#include "flags/recognizer_flags.hpp"
 #include "pipeline/database_file.hpp"
+#include "pipeline/mode_name.hpp"
 #include "pipeline/model_sources.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/recognition_session.hpp"
-#include "pipeline/recognizer_flags.hpp"
 #include "scan/scan_simulator.hpp"
 
 namespace spinhash::cli {
 
-using pipeline::add_recognizer_flags;
+using flags::add_recognizer_flags;
 using pipeline::DatabaseFile;
 using pipeline::load_database;
 using pipeline::load_model_meshes;
@@ -146,7 +147,7 @@ int run_verify(const VerifyArgs& a) {
 void add_verify_command(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<VerifyArgs>();
   CLI::App* cmd = app.add_subcommand("verify", "check a database's integrity and self-recognition");
-  cmd->add_option("database", a->db_path, "database file")->required();
+  cmd->add_option("database", a->db_path, "database file")->required()->check(CLI::ExistingFile);
   cmd->add_option("meshes", a->meshes, "the model meshes, to recognise each from its own scans");
   cmd->add_option("--queries", a->queries, "scans per model")
       ->check(CLI::Range(1u, 100u))

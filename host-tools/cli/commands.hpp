@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cloud/metric_source.hpp"
 #include "pipeline/exit_codes.hpp"
 
 namespace spinhash::cli {
@@ -17,6 +18,11 @@ using pipeline::kExitOk;
 // Clouds named on a command line may include "-" (stdin) once: a second is a
 // usage error (CLI::ValidationError, exit 2), as stdin can be read only once.
 void refuse_repeated_stdin(const std::vector<std::string>& clouds);
+
+// --work-crs CRS: a projected CRS to work in (EPSG:n, a WKT or a PROJ
+// string); files in another CRS, or in degrees, are reprojected into it. A
+// CRS PROJ does not read, or one in degrees, is a usage error (exit 2).
+void add_work_crs_option(CLI::App* cmd, host::WorkCrs* work);
 
 // A message of one or more lines on stderr, each as "spinhash COMMAND: line".
 void print_error(const char* command, const std::string& message);

@@ -36,15 +36,16 @@ constexpr const char* kField = "nearest_field";  // object: cell, reach, slots, 
 constexpr const char* kReach = "reach";
 constexpr const char* kSlots = "slots";
 constexpr const char* kEntries = "entries";
-constexpr const char* kModelList = "model_list";  // [{name, class, features, extent}]
+constexpr const char* kModelList = "model_list";  // [{name, class, group, features, extent}]
 constexpr const char* kName = "name";
 constexpr const char* kClass = "class";  // the model's vehicle class (vehicle_classes.h)
+constexpr const char* kGroup = "group";  // its class's group (vehicle_classes.h)
 constexpr const char* kExtent = "extent";
 constexpr const char* kAll[] = {
     kFormat, kBytes,        kBytesPerFeature, kFingerprint, kModels, kFeatures,     kSpinImages,   kBins,
     kRadius, kSupportAngle, kQuantScale,      kSampling,    kVoxel,  kNormalRadius, kBasisSpacing, kLsh,
     kTables, kBits,         kBuckets,         kDc,          kGrid,   kCell,         kOffsets,      kField,
-    kReach,  kSlots,        kEntries,         kModelList,   kName,   kClass,        kExtent};
+    kReach,  kSlots,        kEntries,         kModelList,   kName,   kClass,        kGroup,        kExtent};
 }  // namespace info_keys
 
 namespace verify_keys {

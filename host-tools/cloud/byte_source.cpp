@@ -5,12 +5,12 @@
 #include <filesystem>
 #include <system_error>
 
-#include "cloud/point_source.hpp"
+#include "cloud/cloud_error.hpp"
 
 namespace spinhash::host {
 namespace {
 
-class MemorySource final : public ByteSource {
+class MemorySource : public ByteSource {
  public:
   explicit MemorySource(const std::string& bytes) : bytes_(bytes) {}
   uint64_t size() const override { return bytes_.size(); }
@@ -23,6 +23,16 @@ class MemorySource final : public ByteSource {
 
  private:
   const std::string& bytes_;
+};
+
+// Keeps its bytes; the base reads them.
+class OwnedMemorySource final : public MemorySource {
+ public:
+  explicit OwnedMemorySource(std::unique_ptr<std::string> bytes)
+      : MemorySource(*bytes), owned_(std::move(bytes)) {}
+
+ private:
+  std::unique_ptr<std::string> owned_;
 };
 
 class FileSource final : public ByteSource {
@@ -52,6 +62,10 @@ class FileSource final : public ByteSource {
 
 std::unique_ptr<ByteSource> memory_source(const std::string& bytes) {
   return std::make_unique<MemorySource>(bytes);
+}
+
+std::unique_ptr<ByteSource> owned_memory_source(std::string bytes) {
+  return std::make_unique<OwnedMemorySource>(std::make_unique<std::string>(std::move(bytes)));
 }
 
 std::unique_ptr<ByteSource> file_source(const std::string& path) {

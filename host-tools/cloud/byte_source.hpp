@@ -14,7 +14,7 @@ class ByteSource {
  public:
   virtual ~ByteSource() = default;
   virtual uint64_t size() const = 0;
-  // Reads exactly n bytes at offset; throws CloudError ("<name>: ...") when
+  // Reads exactly n bytes at offset; throws CloudError (cloud/cloud_error.hpp) when
   // they are not all in the file.
   virtual void read_at(uint64_t offset, void* out, size_t n) = 0;
   // True when [offset, offset + n) lies inside the data.
@@ -23,6 +23,8 @@ class ByteSource {
 
 // Over bytes the caller keeps alive.
 std::unique_ptr<ByteSource> memory_source(const std::string& bytes);
+// Over bytes it keeps (standard input, read whole).
+std::unique_ptr<ByteSource> owned_memory_source(std::string bytes);
 // Over a regular file; throws CloudError when it cannot be opened.
 std::unique_ptr<ByteSource> file_source(const std::string& path);
 

@@ -5,8 +5,10 @@
 // VerticalCSTypeGeoKey (4096) for the vertical one; ProjLinearUnitsGeoKey
 // (3076) and VerticalUnitsGeoKey (4099) for the units (a user-defined
 // projection in feet still says so). 32767 means user-defined: no EPSG
-// code, a warning. A malformed directory gives
-// warnings and whatever its valid keys say, never an error.
+// code, a warning; then the WKT record (LASF_Projection 2112, or liblas's
+// copy) describes the CRS when the file has one, as autzen's does. A
+// malformed directory gives warnings and whatever its valid keys say, never
+// an error. The CRS comes back resolved through PROJ (cloud/crs_resolve.hpp).
 #pragma once
 
 #include <vector>

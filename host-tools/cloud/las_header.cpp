@@ -4,7 +4,7 @@
 #include <cstring>
 #include <string>
 
-#include "cloud/point_source.hpp"
+#include "cloud/cloud_error.hpp"
 
 namespace spinhash::host {
 namespace {

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cstring>
 
+#include "cloud/cloud_error.hpp"
 #include "cloud/las_crs.hpp"
 #include "cloud/laz/laszip_vlr.hpp"
 #include "cloud/laz/laz_decoder.hpp"
-#include "cloud/point_source.hpp"
 
 namespace spinhash::host {
 namespace {

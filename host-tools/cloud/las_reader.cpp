@@ -2,8 +2,8 @@
 
 #include <exception>
 
+#include "cloud/cloud_error.hpp"
 #include "cloud/las_points.hpp"
-#include "cloud/point_source.hpp"
 
 namespace spinhash::host {
 namespace {

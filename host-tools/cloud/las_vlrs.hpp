@@ -18,6 +18,9 @@ constexpr uint16_t kGeoKeyDirectoryRecord = 34735;
 constexpr uint16_t kGeoDoubleParamsRecord = 34736;
 constexpr uint16_t kGeoAsciiParamsRecord = 34737;
 constexpr uint16_t kOgcWktRecord = 2112;
+// liblas and PDAL's older writers also store the WKT under this user id
+// (same record id): read when the file's GeoKeys do not name the CRS.
+constexpr const char* kLiblasUserId = "liblas";
 // An extended VLR payload above this is not loaded (waveforms, COPC
 // hierarchies): its header is listed, its bytes skipped.
 constexpr uint64_t kMaxLoadedVlrBytes = uint64_t{1} << 20;

@@ -1,17 +1,19 @@
-// LAS and LAZ are read in chunks through LasRecordReader (a LAZ chunk is
-// decoded at a time), text a line at a time through a 64 KiB window, binary
-// PLY of one vertex element of scalars (what scanners and `spinhash scan`
-// write) in chunks of records. Other PLY (ascii, faces) still goes through
-// read_cloud whole, as do files whose sizes do not add up (read_cloud then
-// names what is wrong).
+// Every source reads a ByteSource (a file, or bytes in memory for standard
+// input and fuzzing). LAS and LAZ are read in chunks through LasRecordReader
+// (a LAZ chunk is decoded at a time), text a line at a time through a 64 KiB
+// window, binary PLY of one vertex element of scalars (what scanners and
+// `spinhash scan` write) in chunks of records. Other PLY (ascii, faces) and
+// PLY whose sizes do not add up are parsed whole (the parser then names
+// what is wrong).
 #include "cloud/point_source.hpp"
 
 #include <algorithm>
-#include <cstdio>
+#include <cctype>
+#include <filesystem>
 #include <vector>
 
+#include "blob/file_io.hpp"
 #include "cloud/byte_source.hpp"
-#include "cloud/cloud_reader.hpp"
 #include "cloud/format_sniff.hpp"
 #include "cloud/las_points.hpp"
 #include "cloud/ply_body.hpp"
@@ -60,8 +62,8 @@ CloudHeader las_cloud_header(const LasRecordReader& r) {
 
 class LasSource final : public PointSource {
  public:
-  LasSource(std::string name, std::unique_ptr<std::string> owned, std::unique_ptr<ByteSource> src)
-      : name_(std::move(name)), owned_(std::move(owned)), reader_(named(std::move(src))) {
+  LasSource(std::string name, std::unique_ptr<ByteSource> src)
+      : name_(std::move(name)), reader_(named(std::move(src))) {
     header_ = las_cloud_header(*reader_);
     batch_ = las_batch_records(reader_->header());
     records_.resize(batch_ * reader_->header().record_length);
@@ -101,7 +103,6 @@ class LasSource final : public PointSource {
   }
 
   std::string name_;
-  std::unique_ptr<std::string> owned_;  // stdin's bytes
   std::unique_ptr<LasRecordReader> reader_;
   CloudHeader header_;
   std::vector<uint8_t> records_;
@@ -114,7 +115,8 @@ constexpr size_t kMaxTextLine = size_t{1} << 20;
 
 class TextSource final : public PointSource {
  public:
-  explicit TextSource(std::string path) : path_(std::move(path)), src_(file_source(path_)) {
+  TextSource(std::string name, std::unique_ptr<ByteSource> src)
+      : path_(std::move(name)), src_(std::move(src)) {
     header_.format = "text";
     const std::string head = window(0);
     if (head.find('\0') != std::string::npos) fail(kTextBinaryMessage);
@@ -175,9 +177,8 @@ class PlySource final : public PointSource {
  public:
   static constexpr size_t kBatchBytes = size_t{1} << 20;
 
-  // nullptr when the file is not of that simple kind.
-  static std::unique_ptr<PlySource> open(const std::string& path) {
-    auto src = file_source(path);
+  // nullptr (src untouched) when the file is not of that simple kind.
+  static std::unique_ptr<PlySource> open(std::unique_ptr<ByteSource>& src) {
     std::string head(static_cast<size_t>(std::min<uint64_t>(src->size(), ply::kMaxHeaderBytes)), '\0');
     if (!head.empty()) src->read_at(0, head.data(), head.size());
     ply::Header h;
@@ -186,7 +187,9 @@ class PlySource final : public PointSource {
         h.elements[0].name != "vertex")
       return nullptr;
     auto s = std::unique_ptr<PlySource>(new PlySource(std::move(src), h));
-    return s->usable() ? std::move(s) : nullptr;
+    if (s->usable()) return s;
+    src = std::move(s->src_);
+    return nullptr;
   }
   const CloudHeader& header() const override { return header_; }
   size_t read(double* xyz, size_t max_points) override {
@@ -248,63 +251,93 @@ class PlySource final : public PointSource {
   CloudHeader header_;
 };
 
-std::string file_head(const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (f == nullptr) return "";
-  char buf[kSniffBytes];
-  const size_t n = std::fread(buf, 1, sizeof buf, f);
-  std::fclose(f);
-  return std::string(buf, n);
+std::string head_of(ByteSource& src) {
+  std::string head(static_cast<size_t>(std::min<uint64_t>(src.size(), kSniffBytes)), '\0');
+  if (!head.empty()) src.read_at(0, head.data(), head.size());
+  return head;
 }
 
-std::unique_ptr<PointSource> whole_cloud(const std::string& path, const std::string& format) {
+// A PLY the chunked reader does not take, parsed whole.
+std::unique_ptr<PointSource> whole_ply(const std::string& name, ByteSource& src) {
+  if (src.size() > kMaxCloudFileBytes)
+    throw CloudError(name + ": larger than the limit of " + std::to_string(kMaxCloudFileBytes) + " bytes");
+  std::string bytes(static_cast<size_t>(src.size()), '\0');
+  if (!bytes.empty()) src.read_at(0, bytes.data(), bytes.size());
+  ply::Header header;
   std::vector<double> xyz;
   std::string error;
-  if (!read_cloud(path, &xyz, &error)) throw CloudError(error);
+  if (!ply::parse_header(bytes, &header, &error) || !ply::read_body(bytes, header, &xyz, &error))
+    throw CloudError(name + ": " + error);
   CloudHeader h;
-  h.format = format;
+  h.format = "ply";
   h.count_known = true;
   h.point_count = xyz.size() / 3u;
   return std::make_unique<WholeCloudSource>(std::move(h), std::move(xyz));
 }
 
-std::unique_ptr<PointSource> open_stdin() {
-  auto bytes = std::make_unique<std::string>();
-  std::string error;
-  char chunk[1 << 16];
-  for (size_t got; (got = std::fread(chunk, 1, sizeof chunk, stdin)) > 0;) {
-    if (bytes->size() + got > kMaxCloudFileBytes) throw CloudError(std::string(kStdinName) + " is too large");
-    bytes->append(chunk, got);
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+// A file whose name promises a format its content does not have: refused
+// rather than read as text (a download that saved an error page as .laz).
+void check_named_format(const std::string& name, const std::string& path, const std::string& head,
+                        SniffedFormat sniffed) {
+  const std::string ext = lower_extension(path);
+  const bool las_name = ext == ".las" || ext == ".laz";
+  if ((las_name && sniffed != SniffedFormat::kLas) || (ext == ".ply" && sniffed != SniffedFormat::kPly)) {
+    const bool text = head.find('\0') == std::string::npos;
+    throw CloudError(name + ": named " + ext + " but not " + (las_name ? "LAS/LAZ" : "PLY") +
+                     ": it does not start with " +
+                     (las_name ? "the signature \"LASF\"" : "the line \"ply\"") +
+                     (text ? " (it holds text: an error page or a listing saved under this name?)" : ""));
   }
-  if (is_las(*bytes)) {
-    auto src = memory_source(*bytes);
-    return std::make_unique<LasSource>(kStdinName, std::move(bytes), std::move(src));
+}
+
+std::unique_ptr<PointSource> open_source(const std::string& name, const std::string& path,
+                                         std::unique_ptr<ByteSource> src) {
+  const std::string head = head_of(*src);
+  const SniffedFormat sniffed = sniff_cloud_format(head);
+  if (sniffed == SniffedFormat::kForeign)
+    throw CloudError(name + ": not a point cloud this reader takes: " + foreign_cloud_format(head));
+  check_named_format(name, path, head, sniffed);
+  switch (sniffed) {
+    case SniffedFormat::kLas: return std::make_unique<LasSource>(name, std::move(src));
+    case SniffedFormat::kPly: {
+      if (auto ply = PlySource::open(src)) return ply;
+      return whole_ply(name, *src);
+    }
+    default: return std::make_unique<TextSource>(name, std::move(src));
   }
-  std::vector<double> xyz;
-  if (!parse_cloud(*bytes, &xyz, &error)) throw CloudError(std::string(kStdinName) + ": " + error);
-  CloudHeader h;
-  h.format = is_ply(*bytes) ? "ply" : "text";
-  h.count_known = true;
-  h.point_count = xyz.size() / 3u;
-  return std::make_unique<WholeCloudSource>(std::move(h), std::move(xyz));
 }
 
 }  // namespace
 
+std::string cloud_name(const std::string& path) {
+  return path == kStdinPath ? kStdinName : std::filesystem::path(path).stem().string();
+}
+
 std::unique_ptr<PointSource> open_point_source(const std::string& path) {
-  if (path == kStdinPath) return open_stdin();
-  const std::string head = file_head(path);
-  switch (sniff_cloud_format(head)) {
-    case SniffedFormat::kLas: return std::make_unique<LasSource>(path, nullptr, file_source(path));
-    case SniffedFormat::kPly: {
-      if (auto ply = PlySource::open(path)) return ply;
-      return whole_cloud(path, "ply");
-    }
-    case SniffedFormat::kText: return std::make_unique<TextSource>(path);
-    default: return whole_cloud(path, "text");  // read_cloud names foreign formats
-  }
+  if (path != kStdinPath) return open_source(path, path, file_source(path));
+  std::string bytes, error;
+  if (!read_file(kStdinPath, kMaxCloudFileBytes, &bytes, &error)) throw CloudError(error);
+  return open_point_source_bytes(std::move(bytes), kStdinName);
+}
+
+std::unique_ptr<PointSource> open_point_source_bytes(std::string bytes, const std::string& name) {
+  return open_source(name, "", owned_memory_source(std::move(bytes)));
 }
 
 CloudHeader read_cloud_header(const std::string& path) { return open_point_source(path)->header(); }
+
+std::vector<double> read_all_points(PointSource& source) {
+  std::vector<double> xyz;
+  std::vector<double> chunk(3 * kDefaultChunkPoints);
+  for (size_t got; (got = source.read(chunk.data(), kDefaultChunkPoints)) > 0;)
+    xyz.insert(xyz.end(), chunk.begin(), chunk.begin() + static_cast<long>(3 * got));
+  return xyz;
+}
 
 }  // namespace spinhash::host

@@ -1,19 +1,26 @@
 // Point clouds read in chunks of bounded size: the one door through which
-// `scene`, `recognize`, the survey and Python read files, so that memory
-// never grows with the file. A header (bounds, count, format, CRS) can be
-// read without any point: the survey's catalogue is built from headers.
+// `scene`, `recognize`, the survey, Python and the experiments read files,
+// so that memory never grows with the file (standard input is read whole
+// first: it cannot be read twice). A header (bounds, count, format, CRS) can
+// be read without any point: the survey's catalogue is built from headers.
+// Every failure is a CloudError (cloud/cloud_error.hpp) naming the file.
+// Whole-file reads are helpers on top (cloud/cloud_reader.hpp); the door in
+// metres, with the CRS's units or a reprojection, is cloud/metric_source.hpp.
 //
-// Formats: LAS 1.0-1.4, LAZ (our own decoder, cloud/laz/), PLY and text.
-// Sniffing of compressed and foreign formats lives in one place
-// (cloud/format_sniff.hpp).
+// Formats, told by their content (cloud/format_sniff.hpp): LAS 1.0-1.4, LAZ
+// and COPC (our own decoder, cloud/laz/), PLY and x y z text. A file named
+// .las, .laz or .ply whose content is not of that format is refused, as are
+// compressed and foreign formats (with how to convert them).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "blob/file_io.hpp"  // kStdinPath
+#include "cloud/cloud_error.hpp"
 #include "cloud/crs.hpp"
 
 namespace spinhash::host {
@@ -32,13 +39,6 @@ struct CloudHeader {
   Crs crs;
 };
 
-// Malformed or unreadable input, with a message naming the file and what is
-// wrong. Everything already handed out stays valid.
-class CloudError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 class PointSource {
  public:
   virtual ~PointSource() = default;
@@ -50,10 +50,22 @@ class PointSource {
   virtual size_t read(double* xyz, size_t max_points) = 0;
 };
 
+// Largest cloud read whole into memory (standard input, bytes given).
+constexpr uint64_t kMaxCloudFileBytes = 4ull << 30;
+
+// The name of a cloud in JSON and messages: the file stem, or "stdin" for "-".
+constexpr const char* kStdinName = "stdin";
+std::string cloud_name(const std::string& path);
+
 // Opens `path` ("-": standard input) and reads its header. Throws CloudError.
 std::unique_ptr<PointSource> open_point_source(const std::string& path);
+// The same over bytes in memory (fuzzing, embedded data); name in messages.
+std::unique_ptr<PointSource> open_point_source_bytes(std::string bytes, const std::string& name);
 
 // The header alone (LAS/LAZ: without touching the points). Throws CloudError.
 CloudHeader read_cloud_header(const std::string& path);
+
+// Every point left in the source (x y z triples). Throws CloudError.
+std::vector<double> read_all_points(PointSource& source);
 
 }  // namespace spinhash::host

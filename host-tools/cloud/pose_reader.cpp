@@ -1,5 +1,7 @@
 #include "cloud/cloud_reader.hpp"
 
+#include "blob/file_io.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <exception>
@@ -60,7 +62,7 @@ bool read_pose(const std::string& path, Eigen::Matrix4d* pose, std::string* erro
   }
   try {
     std::string text;
-    if (!read_file_bytes(path, kMaxPoseFileBytes, &text, error)) return false;
+    if (!read_file(path, kMaxPoseFileBytes, &text, error)) return false;
     Eigen::Matrix4d parsed;
     std::string why;
     if (!parse_pose(text, &parsed, &why)) {

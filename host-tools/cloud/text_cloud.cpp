@@ -52,15 +52,6 @@ bool header_columns(const std::vector<std::string_view>& fields, std::size_t col
 }
 
 // Next line at *pos without its line end; false at the end of the text.
-bool next_line(const std::string& text, std::size_t* pos, std::string_view* line) {
-  if (*pos >= text.size()) return false;
-  std::size_t end = text.find('\n', *pos);
-  if (end == std::string::npos) end = text.size();
-  *line = std::string_view(text).substr(*pos, end - *pos);
-  *pos = end + 1;
-  return true;
-}
-
 bool blank(std::string_view line) { return line.find_first_not_of(" \t\r\v\f") == std::string_view::npos; }
 
 }  // namespace
@@ -96,27 +87,6 @@ bool TextCloudParser::line(std::string_view line, double point[kAxes], bool* has
     if (!text::parse_field(fields_[column_[a]], sep, &point[a], &why)) return fail(error, number_, why);
   }
   *has_point = true;
-  return true;
-}
-
-bool read_text_cloud(const std::string& text, std::vector<double>* xyz, std::string* error) {
-  xyz->clear();
-  if (text.find('\0') != std::string::npos) {
-    if (error) *error = kTextBinaryMessage;
-    return false;
-  }
-  TextCloudParser parser;
-  std::string_view line;
-  for (std::size_t pos = 0; next_line(text, &pos, &line);) {
-    double point[kAxes];
-    bool has_point = false;
-    if (!parser.line(line, point, &has_point, error)) return false;
-    if (has_point) xyz->insert(xyz->end(), point, point + kAxes);
-  }
-  if (xyz->empty()) {
-    if (error) *error = kTextEmptyMessage;
-    return false;
-  }
   return true;
 }
 

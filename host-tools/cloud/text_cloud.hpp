@@ -14,9 +14,7 @@
 
 namespace spinhash::host {
 
-bool read_text_cloud(const std::string& text, std::vector<double>* xyz, std::string* error);
-
-// The same rules a line at a time, for reading a file in chunks.
+// The rules a line at a time (cloud/point_source.cpp reads files in chunks).
 class TextCloudParser {
  public:
   // Takes the next line (without its '\n'). True when it was read: *has_point

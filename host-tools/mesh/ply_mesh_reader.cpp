@@ -5,7 +5,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "cloud/cloud_reader.hpp"
+#include "blob/file_io.hpp"
 #include "cloud/ply_body.hpp"
 #include "cloud/ply_header.hpp"
 
@@ -60,7 +60,7 @@ bool add_faces(const std::vector<double>& xyz, const std::vector<double>& faces,
 bool read_ply_mesh(const std::string& path, Mesh* out, std::string* error) {
   try {
     std::string bytes, why;
-    if (!read_file_bytes(path, kMaxMeshFileBytes, &bytes, error)) return false;
+    if (!read_file(path, kMaxMeshFileBytes, &bytes, error)) return false;
     ply::Header header;
     std::vector<double> xyz, faces;
     Mesh mesh;

@@ -19,7 +19,8 @@ void add_wheel_pairs(Mesh* mesh, const VehicleSpec& spec, const std::vector<doub
 std::vector<double> axle_group(double center_x, uint32_t count, double spacing);
 
 void build_sedan(const VehicleSpec& spec, Mesh* mesh);
-void build_van(const VehicleSpec& spec, Mesh* mesh);
+// Vans, MPVs and SUVs: a bonnet and one tall cabin to the tail.
+void build_two_box(const VehicleSpec& spec, Mesh* mesh);
 void build_pickup(const VehicleSpec& spec, Mesh* mesh);
 void build_truck(const VehicleSpec& spec, Mesh* mesh);
 void build_bus(const VehicleSpec& spec, Mesh* mesh);

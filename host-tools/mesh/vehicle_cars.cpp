@@ -1,5 +1,6 @@
-// Passenger-car families: sedan, van/SUV, pickup. All share a lower body
-// (bumpers, bonnet, boot) and a greenhouse cabin with a sloped windscreen.
+// Passenger-car families: sedan, the two-box bodies (vans, MPVs, SUVs) and
+// pickups. All share a lower body (bumpers, bonnet, boot) and a greenhouse
+// cabin with a sloped windscreen.
 #include "mesh/vehicle_builders.hpp"
 #include "mesh/vehicle_parts.hpp"
 
@@ -30,6 +31,8 @@ constexpr double kRailHeight = 0.06;
 constexpr double kRailLengthFraction = 0.85;
 constexpr double kCrossBarWidth = 0.05;
 constexpr double kCrossBarSpread = 0.6;  // bars at +-this fraction of the rail half length
+// The rack's top above the roof: the spec's height is the rack's top.
+constexpr double kRackRise = kRailHeight + kCrossBarWidth;
 // Mirrors (m): size and position relative to the windscreen base.
 constexpr double kMirrorLength = 0.10;
 constexpr double kMirrorReach = 0.18;
@@ -39,13 +42,16 @@ constexpr double kMirrorLift = 0.10;
 constexpr double kSpoilerLength = 0.16;
 constexpr double kSpoilerHeight = 0.09;
 constexpr double kSpoilerSideInset = 0.10;
-// Van spare wheel on the tailgate.
+// Off-roader spare wheel on the tailgate.
 constexpr double kSpareWheelLift = 0.25;
 constexpr double kSpareWheelGap = 0.01;
 // Pickup bed.
 constexpr double kBedDepth = 0.45;
 constexpr double kBedWall = 0.06;
 constexpr double kBedCoverThickness = 0.04;
+// Pickup canopy (hardtop): narrower than the bed, just below the cab roof.
+constexpr double kCanopyInset = 0.04;
+constexpr double kCanopyBelowRoof = 0.04;
 
 // Side profile of the lower body between x_rear and x_front; with a
 // rounded tail the rear is chamfered like a bumper, else it is a flat wall
@@ -132,6 +138,9 @@ void add_mirrors(Mesh* mesh, const VehicleSpec& s, double x_windscreen) {
   }
 }
 
+// The roof under its rack, if any: the spec's height is the overall height.
+double roof_height(const VehicleSpec& s) { return s.roof_rack ? s.height - kRackRise : s.height; }
+
 std::vector<double> car_axles(const VehicleSpec& s) {
   return {s.axle_shift - 0.5 * s.axle_spacing, s.axle_shift + 0.5 * s.axle_spacing};
 }
@@ -144,7 +153,7 @@ void build_sedan(const VehicleSpec& s, Mesh* mesh) {
   const double windscreen = front - s.front_length;
   add_lower_body(mesh, s, rear, front, windscreen, true);
   const Cabin cabin =
-      fit_cabin({rear + s.rear_length, windscreen, s.height, s.windscreen_run, s.rear_window_run});
+      fit_cabin({rear + s.rear_length, windscreen, roof_height(s), s.windscreen_run, s.rear_window_run});
   add_cabin(mesh, s, cabin);
   add_mirrors(mesh, s, windscreen);
   add_wheel_pairs(mesh, s, car_axles(s), kCarWheelInset);
@@ -156,13 +165,13 @@ void build_sedan(const VehicleSpec& s, Mesh* mesh) {
   }
 }
 
-void build_van(const VehicleSpec& s, Mesh* mesh) {
+void build_two_box(const VehicleSpec& s, Mesh* mesh) {
   const double front = 0.5 * s.length;
   const double rear = -front;
   const double windscreen = front - s.front_length;
   add_lower_body(mesh, s, rear, front, windscreen, true);
   const Cabin cabin =
-      fit_cabin({rear + kTailSetback, windscreen, s.height, s.windscreen_run, s.rear_window_run});
+      fit_cabin({rear + kTailSetback, windscreen, roof_height(s), s.windscreen_run, s.rear_window_run});
   add_cabin(mesh, s, cabin);
   add_mirrors(mesh, s, windscreen);
   add_wheel_pairs(mesh, s, car_axles(s), kCarWheelInset);
@@ -180,7 +189,7 @@ void build_pickup(const VehicleSpec& s, Mesh* mesh) {
   const double windscreen = front - s.front_length;
   const double bed_front = windscreen - s.cabin_length;
   add_lower_body(mesh, s, bed_front, front, windscreen, false);
-  const Cabin cabin = fit_cabin({bed_front, windscreen, s.height, s.windscreen_run, s.rear_window_run});
+  const Cabin cabin = fit_cabin({bed_front, windscreen, roof_height(s), s.windscreen_run, s.rear_window_run});
   add_cabin(mesh, s, cabin);
   add_mirrors(mesh, s, windscreen);
   add_wheel_pairs(mesh, s, car_axles(s), kCarWheelInset);
@@ -200,6 +209,11 @@ void build_pickup(const VehicleSpec& s, Mesh* mesh) {
   add_box(mesh, {rear, -hw, s.ground_clearance + kBumperHeight}, {rear + kBedWall, hw, s.belt_height});
   if (s.bed_cover) {
     add_box(mesh, {rear, -hw, s.belt_height - kOverlap}, {bed_end, hw, s.belt_height + kBedCoverThickness});
+  }
+  if (s.canopy) {
+    const double hw_canopy = hw - kCanopyInset;
+    add_box(mesh, {rear, -hw_canopy, s.belt_height - kOverlap},
+            {bed_end, hw_canopy, cabin.z_roof - kCanopyBelowRoof});
   }
 }
 

@@ -1,4 +1,4 @@
-// Family names, the shared wheel helpers, and fleet assembly.
+// The shared wheel helpers, and fleet assembly.
 #include "mesh/vehicle_generator.hpp"
 
 #include "mesh/vehicle_builders.hpp"
@@ -7,13 +7,6 @@
 #include <algorithm>
 
 namespace spinhash::host {
-namespace {
-
-constexpr const char* kFamilyNames[kFamilyCount] = {"sedan",  "van", "truck", "tracked",
-                                                    "pickup", "bus", "apc"};
-
-}  // namespace
-
 namespace vehicle {
 
 void add_wheel_pairs(Mesh* mesh, const VehicleSpec& spec, const std::vector<double>& axle_x, double inset) {
@@ -36,27 +29,13 @@ std::vector<double> axle_group(double center_x, uint32_t count, double spacing) 
 
 }  // namespace vehicle
 
-const char* family_name(Family family) {
-  const auto id = static_cast<uint32_t>(family);
-  return id < kFamilyCount ? kFamilyNames[id] : "unknown";
-}
-
-bool parse_family(const std::string& name, Family* family) {
-  for (uint32_t id = 0; id < kFamilyCount; ++id) {
-    if (name == kFamilyNames[id]) {
-      if (family) *family = static_cast<Family>(id);
-      return true;
-    }
-  }
-  return false;
-}
-
 Mesh build_vehicle(const VehicleSpec& spec) {
   Mesh mesh;
   mesh.name = spec.name;
   switch (spec.family) {
     case Family::kSedan: vehicle::build_sedan(spec, &mesh); break;
-    case Family::kVan: vehicle::build_van(spec, &mesh); break;
+    case Family::kVan:
+    case Family::kSuv: vehicle::build_two_box(spec, &mesh); break;
     case Family::kTruck: vehicle::build_truck(spec, &mesh); break;
     case Family::kTracked: vehicle::build_tracked(spec, &mesh); break;
     case Family::kPickup: vehicle::build_pickup(spec, &mesh); break;

@@ -1,5 +1,6 @@
-// Heavy families: truck (cab + cargo box or flatbed), bus, tracked vehicle
-// (hull, tracks, turret, barrel) and wheeled APC (boat hull, 3-4 axles).
+// Heavy families: truck (cab + cargo box, flatbed, tipper body or a tractor
+// unit's fifth wheel), bus, tracked vehicle (hull, tracks, turret, barrel)
+// and wheeled APC (boat hull, 2-4 axles).
 #include "mesh/vehicle_builders.hpp"
 #include "mesh/vehicle_parts.hpp"
 
@@ -14,7 +15,6 @@ constexpr double kRoofNarrowing = 0.05;
 
 // Truck (m).
 constexpr double kTruckWheelInset = 0.02;
-constexpr double kTruckRearOverhang = 1.30;
 constexpr double kFrontAxleInCab = 0.55;  // fraction of the cab length
 constexpr double kChassisHalfWidth = 0.55;
 constexpr double kChassisDepth = 0.30;
@@ -27,6 +27,12 @@ constexpr double kFuelTankRadius = 0.28;
 constexpr double kFuelTankLength = 1.0;
 constexpr double kFuelTankInset = 0.40;
 constexpr uint32_t kTankSegments = 12;
+constexpr double kTipperFloor = 0.12;          // tipper body floor thickness
+constexpr double kTipperWall = 0.08;           // its side walls, tailgate and headboard
+constexpr double kTipperHeadboardRise = 0.15;  // the headboard stands above the sides
+constexpr double kFifthWheelLength = 0.9;      // tractor unit coupling plate
+constexpr double kFifthWheelHalfWidth = 0.45;
+constexpr double kFifthWheelHeight = 0.18;
 
 // Bus (m).
 constexpr double kBusNoseDrop = 0.35;
@@ -35,7 +41,7 @@ constexpr double kBusTailSetback = 0.15;
 constexpr double kBusWheelInset = 0.03;
 constexpr double kAcUnitHalfLength = 1.0;
 constexpr double kAcUnitHalfWidth = 0.8;
-constexpr double kAcUnitHeight = 0.25;
+constexpr double kAcUnitHeight = 0.25;  // the spec's height is the unit's top
 
 // Tracked vehicle (m).
 constexpr double kTrackLengthFraction = 0.96;
@@ -98,17 +104,34 @@ void build_truck(const VehicleSpec& s, Mesh* mesh) {
   add_profile_prism(mesh, {{cab_rear, cl, hw},
                            {front, cl, hw},
                            {front, s.belt_height, hw},
-                           {front - s.windscreen_run, s.height, hw - kRoofNarrowing},
-                           {cab_rear, s.height, hw - kRoofNarrowing}});
+                           {front - s.windscreen_run, s.cab_height, hw - kRoofNarrowing},
+                           {cab_rear, s.cab_height, hw - kRoofNarrowing}});
   add_box(mesh, {rear + kOverlap, -kChassisHalfWidth, cl},
           {cab_rear + kOverlap, kChassisHalfWidth, cl + kChassisDepth});
 
-  // Load area over the wheels.
+  // Frame over the wheels, then the load on it.
   const double deck = std::max(cl + kChassisDepth, 2.0 * s.wheel_radius + kDeckAboveWheels);
   const double load_front = cab_rear - kCabGap;
   add_box(mesh, {rear, -kChassisHalfWidth, cl + kChassisDepth - kOverlap},
           {load_front, kChassisHalfWidth, deck + kOverlap});
-  if (s.flatbed) {
+  if (s.style == BodyStyle::kTractorUnit) {
+    const double x = rear + s.rear_length + 0.5 * kFifthWheelLength;
+    add_box(mesh, {x - 0.5 * kFifthWheelLength, -kFifthWheelHalfWidth, deck},
+            {x + 0.5 * kFifthWheelLength, kFifthWheelHalfWidth, deck + kFifthWheelHeight});
+  } else if (s.style == BodyStyle::kTipper) {
+    // Open body: floor, side walls, tailgate and a taller headboard.
+    const double top = s.rear_height - kTipperHeadboardRise;
+    const double floor_top = deck + kTipperFloor;
+    add_box(mesh, {rear, -hw, deck}, {load_front, hw, floor_top});
+    for (double side : {-1.0, 1.0}) {
+      const double y_outer = side * hw;
+      const double y_inner = side * (hw - kTipperWall);
+      add_box(mesh, {rear, std::min(y_outer, y_inner), floor_top - kOverlap},
+              {load_front, std::max(y_outer, y_inner), top});
+    }
+    add_box(mesh, {rear, -hw, floor_top - kOverlap}, {rear + kTipperWall, hw, top});
+    add_box(mesh, {load_front - kTipperWall, -hw, floor_top - kOverlap}, {load_front, hw, s.rear_height});
+  } else if (s.flatbed) {
     add_box(mesh, {rear, -hw, deck}, {load_front, hw, deck + kFlatbedThickness});
     add_box(mesh, {load_front - kHeadboardThickness, -hw, deck + kFlatbedThickness - kOverlap},
             {load_front, hw, deck + kHeadboardHeight});
@@ -118,7 +141,7 @@ void build_truck(const VehicleSpec& s, Mesh* mesh) {
 
   const double front_axle = front - kFrontAxleInCab * s.front_length;
   const uint32_t rear_axles = s.axles > 1 ? s.axles - 1 : 1;
-  const double rear_center = rear + kTruckRearOverhang + 0.5 * (rear_axles - 1) * s.axle_spacing;
+  const double rear_center = rear + s.rear_length + 0.5 * (rear_axles - 1) * s.axle_spacing;
   std::vector<double> axles = axle_group(rear_center, rear_axles, s.axle_spacing);
   axles.push_back(front_axle);
   add_wheel_pairs(mesh, s, axles, kTruckWheelInset);
@@ -139,19 +162,20 @@ void build_bus(const VehicleSpec& s, Mesh* mesh) {
   const double hw = 0.5 * s.width;
   const double cl = s.ground_clearance;
   const double hw_roof = hw - kRoofNarrowing;
+  const double roof = s.roof_rack ? s.height - kAcUnitHeight : s.height;
   add_profile_prism(mesh, {{rear, cl, hw},
                            {front, cl, hw},
-                           {front, s.height - kBusNoseDrop, hw},
-                           {front - s.windscreen_run, s.height, hw_roof},
-                           {rear + kBusTailSetback, s.height, hw_roof},
-                           {rear, s.height - kBusTailDrop, hw}});
+                           {front, roof - kBusNoseDrop, hw},
+                           {front - s.windscreen_run, roof, hw_roof},
+                           {rear + kBusTailSetback, roof, hw_roof},
+                           {rear, roof - kBusTailDrop, hw}});
   const uint32_t rear_axles = s.axles > 1 ? s.axles - 1 : 1;
   std::vector<double> axles = axle_group(rear + s.rear_length, rear_axles, s.axle_spacing);
   axles.push_back(front - s.front_length);
   add_wheel_pairs(mesh, s, axles, kBusWheelInset);
   if (s.roof_rack) {
-    add_box(mesh, {-kAcUnitHalfLength, -kAcUnitHalfWidth, s.height - kOverlap},
-            {kAcUnitHalfLength, kAcUnitHalfWidth, s.height + kAcUnitHeight});
+    add_box(mesh, {-kAcUnitHalfLength, -kAcUnitHalfWidth, roof - kOverlap},
+            {kAcUnitHalfLength, kAcUnitHalfWidth, s.height});
   }
 }
 
@@ -204,15 +228,17 @@ void build_apc(const VehicleSpec& s, Mesh* mesh) {
   const double top = s.belt_height;
   const double hw_bottom = hw - kApcBottomNarrowing;
   const double hw_top = hw - kApcTopNarrowing;
-  add_profile_prism(mesh, {{rear + kApcRearUndercut, cl, hw_bottom},
+  // The rear door stands out of the hull's back: the hull ends inside the length.
+  const double back = rear + kDoorThickness;
+  add_profile_prism(mesh, {{back + kApcRearUndercut, cl, hw_bottom},
                            {front - kApcLowerGlacisFraction * s.front_length, cl, hw_bottom},
                            {front, cl + kApcNoseHeight, hw - kApcNoseNarrowing},
                            {front - s.front_length, top, hw_top},
-                           {rear, top, hw_top},
-                           {rear, cl + kApcRearUndercut, hw_bottom}});
+                           {back, top, hw_top},
+                           {back, cl + kApcRearUndercut, hw_bottom}});
   add_wheel_pairs(mesh, s, axle_group(s.axle_shift, s.axles, s.axle_spacing), 0.0);
-  add_box(mesh, {rear - kDoorThickness, -kDoorHalfWidth, cl + kDoorBottomLift},
-          {rear + kOverlap, kDoorHalfWidth, top - kDoorTopDrop});
+  add_box(mesh, {rear, -kDoorHalfWidth, cl + kDoorBottomLift},
+          {back + kOverlap, kDoorHalfWidth, top - kDoorTopDrop});
   if (s.turret) add_turret(mesh, s, top, kApcTurretTopScale, kApcBarrelRadius);
 }
 

@@ -17,59 +17,6 @@ void report_progress(uint32_t done, uint32_t /*total*/, void* user) {
 
 }  // namespace
 
-void add_build_flags(CLI::App* cmd, BuildSettings* s) {
-  FeatureParams& f = s->options.features;
-  cmd->add_option("--radius", f.support_radius, "spin image support radius R, m")->capture_default_str();
-  cmd->add_option("--bins", f.bins_alpha, "spin image bins per axis (bins x bins)")
-      ->check(CLI::Range(1u, kMaxSpinBinsPerAxis))
-      ->each([f_ptr = &f](const std::string&) { f_ptr->bins_beta = f_ptr->bins_alpha; })
-      ->capture_default_str();
-  cmd->add_option("--support-angle", f.support_angle_deg, "support angle, degrees (>= 180: off)")
-      ->capture_default_str();
-  cmd->add_option("--voxel", f.cloud_voxel, "density-equalising voxel, m")->capture_default_str();
-  cmd->add_option("--normal-radius", f.normal_radius, "PCA normal radius, m")->capture_default_str();
-  cmd->add_option("--basis-spacing", f.basis_spacing, "basis point spacing, m")->capture_default_str();
-  cmd->add_option("--lsh-tables", s->options.lsh_tables, "L, LSH tables")
-      ->check(CLI::Range(1u, kMaxLshTables))
-      ->capture_default_str();
-  cmd->add_option("--lsh-bits", s->options.lsh_bits, "K, bits per LSH key")
-      ->check(CLI::Range(1u, kMaxLshBits))
-      ->capture_default_str();
-  cmd->add_option("--grid-cell", s->options.grid_cell, "cell of the per-model feature grids, m")
-      ->check(CLI::Range(0.05, 10.0))
-      ->capture_default_str();
-  cmd->add_option("--field-cell", s->options.field.cell,
-                  "voxel of the nearest-feature field, m (0: no field; a smaller blob, slower verification)")
-      ->check(CLI::Range(0.0, 10.0))
-      ->capture_default_str();
-  cmd->add_option("--field-reach", s->options.field.reach,
-                  "the largest Delta_max the field answers for, m (a larger one searches the grid)")
-      ->check(CLI::Range(0.0, 10.0))
-      ->capture_default_str();
-  cmd->add_option("--field-slots", s->options.field.slots, "model features per field voxel")
-      ->check(CLI::Range(1u, kMaxFieldSlots))
-      ->capture_default_str();
-  cmd->add_option("--lsh-range-quantile", s->options.lsh_range_quantile,
-                  "quantile of each dimension used as its LSH range C_i")
-      ->check(CLI::Range(0.5, 1.0))
-      ->capture_default_str();
-  cmd->add_option("--seed", s->options.seed, "LSH sampling seed")->capture_default_str();
-  cmd->add_option("--scan-spacing", s->scan_spacing, "model scan ray spacing at the object, m")
-      ->check(CLI::Range(0.005, 1.0))
-      ->capture_default_str();
-  std::map<std::string, host::ByteOrder> orders{{"native", host::ByteOrder::kNative},
-                                                {"little", host::ByteOrder::kLittle},
-                                                {"big", host::ByteOrder::kBig}};
-  cmd->add_option("--byte-order", s->byte_order, "byte order of the target that reads the blob")
-      ->transform(CLI::CheckedTransformer(orders, CLI::ignore_case));
-  cmd->add_option(
-         "--classes", s->class_manifest,
-         "manifest of 'MODEL_NAME CLASS' lines; without it a model's class is its folder's name or "
-         "its name's first word when that is a class (pickup/x.obj, sedan-03.obj), else unclassified")
-      ->check(CLI::ExistingFile);
-  cmd->add_flag("--quiet", s->quiet, "no progress on stderr");
-}
-
 bool build_database_file(const std::vector<ModelMesh>& meshes, const BuildSettings& s,
                          const std::string& out_path, BuildSummary* summary, std::string* error) {
   auto start = std::chrono::steady_clock::now();

@@ -1,7 +1,6 @@
 // Meshes -> model clouds -> database content -> blob file, written atomically.
 // Shared by `build` and `experiment`.
 #pragma once
-#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
@@ -18,9 +17,6 @@ struct BuildSettings {
   std::string class_manifest;  // "MODEL_NAME CLASS" lines (model_classes.hpp); "": folders and names
   bool quiet = false;
 };
-
-// The feature, LSH and scan flags of `build` (also used by `experiment`).
-void add_build_flags(CLI::App* cmd, BuildSettings* s);
 
 struct BuildSummary {
   uint32_t models = 0;

@@ -90,4 +90,10 @@ std::string json_array(const std::vector<std::string>& raw_values) {
 
 std::string json_version_member() { return "\"version\":" + json_string(version()); }
 
+std::string unreadable_json(const char* key, const std::string& name, const std::string& error) {
+  return json_object({json_member(key, json_string(name)), json_member("status", json_string("unreadable")),
+                      json_member("error", json_string(error)), json_member("ranking", "[]"),
+                      json_member("pose", "null"), json_version_member()});
+}
+
 }  // namespace spinhash::pipeline

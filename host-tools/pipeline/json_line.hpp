@@ -17,5 +17,9 @@ std::string json_object(std::initializer_list<std::string> members);
 std::string json_array(const std::vector<std::string>& raw_values);
 // `"version":"X.Y.Z"` (pipeline/version.hpp): the last member of every JSON line.
 std::string json_version_member();
+// The line of a file that cannot be read, the same for `recognize` (key
+// "query") and `scene` (key "tile"), so that readers pair lines with files:
+// {KEY:NAME,"status":"unreadable","error":WHY,"ranking":[],"pose":null,"version":..}.
+std::string unreadable_json(const char* key, const std::string& name, const std::string& error);
 
 }  // namespace spinhash::pipeline

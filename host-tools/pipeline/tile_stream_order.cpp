@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
+
+#include "pipeline/spill_folder.hpp"
 
 namespace spinhash::pipeline {
 
@@ -45,9 +46,7 @@ AlongTrackOrder::AlongTrackOrder(double heading_deg, double row_depth, double co
 }
 
 AlongTrackOrder::~AlongTrackOrder() {
-  if (dir_.empty()) return;
-  std::error_code ec;
-  fs::remove_all(dir_, ec);
+  if (!dir_.empty()) remove_spill_folder(dir_.string());
 }
 
 int64_t AlongTrackOrder::column_of(double x, double y) const {
@@ -111,11 +110,7 @@ std::map<int64_t, uint64_t> AlongTrackOrder::columns() const {
 }
 
 void AlongTrackOrder::spill_all() {
-  if (dir_.empty()) {
-    std::string pattern = (fs::temp_directory_path() / "spinhash-order-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a temporary folder");
-    dir_ = pattern;
-  }
+  if (dir_.empty()) dir_ = make_spill_folder();
   for (auto& [cell, held] : cells_) {
     if (held.steps.empty()) continue;
     const fs::path path = path_of(cell);

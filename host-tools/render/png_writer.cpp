@@ -1,11 +1,15 @@
 #include "render/png_writer.hpp"
 
+#include <zlib.h>
+
 #include "blob/file_io.hpp"
 
 namespace spinhash::host {
 namespace {
 
-constexpr uint32_t kStoredBlockMax = 65535;  // bytes in one stored deflate block
+// zlib's default: pictures of flat colours and sparse dots shrink some
+// hundredfold, at a few tens of ms for the largest.
+constexpr int kCompressionLevel = Z_DEFAULT_COMPRESSION;
 constexpr uint8_t kColourTypeRgb = 2;
 constexpr uint8_t kBitDepth = 8;
 
@@ -21,44 +25,21 @@ void chunk(std::string* out, const char type[4], const std::string& data) {
   put_be32(out, png_crc32(reinterpret_cast<const uint8_t*>(body.data()), body.size()));
 }
 
-// zlib stream of stored blocks over `raw`.
-std::string zlib_stored(const std::string& raw) {
-  std::string z = "\x78\x01";  // deflate, 32 KiB window, no dictionary, check bits
-  size_t at = 0;
-  do {
-    const size_t n = raw.size() - at < kStoredBlockMax ? raw.size() - at : kStoredBlockMax;
-    const bool last = at + n == raw.size();
-    z.push_back(static_cast<char>(last ? 1 : 0));  // BFINAL, BTYPE = 00 (stored)
-    z.push_back(static_cast<char>(n & 0xFFu));
-    z.push_back(static_cast<char>((n >> 8) & 0xFFu));
-    z.push_back(static_cast<char>(~n & 0xFFu));
-    z.push_back(static_cast<char>((~n >> 8) & 0xFFu));
-    z.append(raw, at, n);
-    at += n;
-  } while (at < raw.size());
-  put_be32(&z, adler32(reinterpret_cast<const uint8_t*>(raw.data()), raw.size()));
+// The zlib stream of `raw` (deflate); empty when zlib fails.
+std::string zlib_deflate(const std::string& raw) {
+  uLongf size = compressBound(static_cast<uLong>(raw.size()));
+  std::string z(static_cast<size_t>(size), '\0');
+  if (compress2(reinterpret_cast<Bytef*>(z.data()), &size, reinterpret_cast<const Bytef*>(raw.data()),
+                static_cast<uLong>(raw.size()), kCompressionLevel) != Z_OK)
+    return "";
+  z.resize(static_cast<size_t>(size));
   return z;
 }
 
 }  // namespace
 
 uint32_t png_crc32(const uint8_t* data, size_t n, uint32_t crc) {
-  crc = ~crc;
-  for (size_t i = 0; i < n; ++i) {
-    crc ^= data[i];
-    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-  }
-  return ~crc;
-}
-
-uint32_t adler32(const uint8_t* data, size_t n) {
-  constexpr uint32_t kMod = 65521;
-  uint32_t a = 1, b = 0;
-  for (size_t i = 0; i < n; ++i) {
-    a = (a + data[i]) % kMod;
-    b = (b + a) % kMod;
-  }
-  return (b << 16) | a;
+  return static_cast<uint32_t>(crc32(crc, data, static_cast<uInt>(n)));
 }
 
 std::string png_bytes(uint32_t width, uint32_t height, const std::vector<uint8_t>& rgb) {
@@ -77,7 +58,9 @@ std::string png_bytes(uint32_t width, uint32_t height, const std::vector<uint8_t
   put_be32(&ihdr, height);
   ihdr += {static_cast<char>(kBitDepth), static_cast<char>(kColourTypeRgb), 0, 0, 0};  // no interlace
   chunk(&png, "IHDR", ihdr);
-  chunk(&png, "IDAT", zlib_stored(raw));
+  const std::string idat = zlib_deflate(raw);
+  if (idat.empty()) return "";
+  chunk(&png, "IDAT", idat);
   chunk(&png, "IEND", "");
   return png;
 }

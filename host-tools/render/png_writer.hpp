@@ -1,7 +1,6 @@
-// PNG files from an RGB image, with no library: the image data go in
-// uncompressed ("stored") deflate blocks inside one zlib stream, which every
-// PNG reader accepts. Files are larger than compressed ones, which does not
-// matter for the tile and overlay pictures they carry.
+// PNG files from an RGB image: the scanlines (filter none) deflated by zlib
+// (Debian's zlib1g), which keeps pictures of flat colours small (an empty
+// survey's overview is a few kilobytes).
 #pragma once
 
 #include <cstdint>
@@ -20,8 +19,7 @@ std::string png_bytes(uint32_t width, uint32_t height, const std::vector<uint8_t
 bool write_png(const std::string& path, uint32_t width, uint32_t height, const std::vector<uint8_t>& rgb,
                std::string* error);
 
-// CRC-32 (ISO-HDLC, as PNG chunks use) and Adler-32 (zlib), exposed for tests.
+// CRC-32 (ISO-HDLC, as PNG chunks use; zlib's), exposed for tests.
 uint32_t png_crc32(const uint8_t* data, size_t n, uint32_t crc = 0);
-uint32_t adler32(const uint8_t* data, size_t n);
 
 }  // namespace spinhash::host

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "render/canvas.hpp"
+#include "render/font3x5.hpp"
 #include "util/angles.hpp"
 
 namespace spinhash::host {
@@ -13,6 +14,8 @@ namespace {
 constexpr int kMarginPx = 20, kTitleBandPx = 28, kLegendBandPx = 34;
 constexpr int kLabelScale = 1, kTitleScale = 2;  // font pixels per glyph pixel
 constexpr int kLabelGapPx = 2;                   // between a label and its vehicle
+constexpr int kTileLabelInsetPx = 3;             // a tile's name from its edges, and between stacked names
+constexpr int kMinPictureWidthPx = 640;          // room for the legend
 constexpr double kScaleBarFraction = 0.2;        // of the picture's width, rounded down to 1-2-5 m
 constexpr Rgb kBackground{250, 250, 247}, kText{30, 30, 30}, kTileLine{170, 170, 170}, kClutter{60, 120, 230};
 constexpr Rgb kConfidentFill{40, 170, 70}, kConfidentEdge{10, 80, 30};
@@ -28,6 +31,49 @@ struct PixelRect {
   int x0, y0, x1, y1;  // inclusive
   bool overlaps(const PixelRect& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
 };
+
+Frame frame_of(const std::vector<SurveyPictureTile>& tiles, int* w, int* h) {
+  double lo[2] = {tiles[0].min[0], tiles[0].min[1]}, hi[2] = {tiles[0].max[0], tiles[0].max[1]};
+  for (const SurveyPictureTile& t : tiles)
+    for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], t.min[a]), hi[a] = std::max(hi[a], t.max[a]);
+  Frame f;
+  f.x0 = lo[0], f.y1 = hi[1];
+  f.ppm =
+      std::min(kSurveyMaxPixelsPerMetre, kSurveyPictureSide / std::max({hi[0] - lo[0], hi[1] - lo[1], 1.0}));
+  *w = std::max(static_cast<int>((hi[0] - lo[0]) * f.ppm) + 2 * kMarginPx + 1, kMinPictureWidthPx);
+  *h = static_cast<int>((hi[1] - lo[1]) * f.ppm) + kTitleBandPx + kLegendBandPx + 1;
+  return f;
+}
+
+// Each tile's name inside its top-left corner, or lower down its left edge
+// (a line at a time), or inside its other corners, wherever it meets no
+// name placed before: tiles that overlap, or share a corner, keep legible
+// names. Empty (x1 < x0) when no place is free.
+std::vector<PixelRect> tile_label_places(const Frame& f, const std::vector<SurveyPictureTile>& tiles) {
+  std::vector<PixelRect> placed;
+  const int h = kGlyphHeight * kLabelScale;
+  for (const SurveyPictureTile& t : tiles) {
+    const int w = Canvas::text_width(t.name, kLabelScale);
+    const PixelRect tile{f.px(t.min[0]), f.py(t.max[1]), f.px(t.max[0]), f.py(t.min[1])};
+    std::vector<PixelRect> options;
+    for (int y = tile.y0 + kTileLabelInsetPx; y + h <= tile.y1 - kTileLabelInsetPx;
+         y += h + kTileLabelInsetPx)
+      options.push_back({tile.x0 + kTileLabelInsetPx, y, tile.x0 + kTileLabelInsetPx + w - 1, y + h - 1});
+    options.push_back({tile.x1 - kTileLabelInsetPx - w + 1, tile.y0 + kTileLabelInsetPx,
+                       tile.x1 - kTileLabelInsetPx, tile.y0 + kTileLabelInsetPx + h - 1});
+    options.push_back({tile.x1 - kTileLabelInsetPx - w + 1, tile.y1 - kTileLabelInsetPx - h + 1,
+                       tile.x1 - kTileLabelInsetPx, tile.y1 - kTileLabelInsetPx});
+    PixelRect chosen{0, 0, -1, -1};
+    for (const PixelRect& o : options)
+      if (std::none_of(placed.begin(), placed.end(),
+                       [&](const PixelRect& p) { return p.x1 >= p.x0 && p.overlaps(o); })) {
+        chosen = o;
+        break;
+      }
+    placed.push_back(chosen);
+  }
+  return placed;
+}
 
 using Quad = std::array<std::array<int, 2>, 4>;
 
@@ -117,6 +163,15 @@ void scale_bar(Canvas* c, const Frame& f, int width_px, int y) {
 
 }  // namespace
 
+std::vector<std::array<int, 4>> survey_tile_labels(const std::vector<SurveyPictureTile>& tiles) {
+  std::vector<std::array<int, 4>> out;
+  if (tiles.empty()) return out;
+  int w = 0, h = 0;
+  for (const PixelRect& r : tile_label_places(frame_of(tiles, &w, &h), tiles))
+    out.push_back({r.x0, r.y0, r.x1, r.y1});
+  return out;
+}
+
 bool write_survey_picture(const std::string& path, const std::vector<SurveyPictureTile>& tiles,
                           const std::vector<PictureBox>& boxes, const std::string& title,
                           std::string* error) {
@@ -124,23 +179,18 @@ bool write_survey_picture(const std::string& path, const std::vector<SurveyPictu
     *error = path + ": no tile to draw";
     return false;
   }
-  double lo[2] = {tiles[0].min[0], tiles[0].min[1]}, hi[2] = {tiles[0].max[0], tiles[0].max[1]};
-  for (const SurveyPictureTile& t : tiles)
-    for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], t.min[a]), hi[a] = std::max(hi[a], t.max[a]);
-  Frame f;
-  f.x0 = lo[0], f.y1 = hi[1];
-  f.ppm =
-      std::min(kSurveyMaxPixelsPerMetre, kSurveyPictureSide / std::max({hi[0] - lo[0], hi[1] - lo[1], 1.0}));
-  const int w = static_cast<int>((hi[0] - lo[0]) * f.ppm) + 2 * kMarginPx + 1;
-  const int h = static_cast<int>((hi[1] - lo[1]) * f.ppm) + kTitleBandPx + kLegendBandPx + 1;
-  Canvas c(static_cast<uint32_t>(std::max(w, 640)), static_cast<uint32_t>(h), kBackground);
-  for (const SurveyPictureTile& t : tiles) {
+  int w = 0, h = 0;
+  const Frame f = frame_of(tiles, &w, &h);
+  Canvas c(static_cast<uint32_t>(w), static_cast<uint32_t>(h), kBackground);
+  const std::vector<PixelRect> names = tile_label_places(f, tiles);
+  for (size_t i = 0; i < tiles.size(); ++i) {
+    const SurveyPictureTile& t = tiles[i];
     const Quad q{{{f.px(t.min[0]), f.py(t.max[1])},
                   {f.px(t.max[0]), f.py(t.max[1])},
                   {f.px(t.max[0]), f.py(t.min[1])},
                   {f.px(t.min[0]), f.py(t.min[1])}}};
     outline(&c, q, kTileLine);
-    c.text(q[0][0] + 3, q[0][1] + 3, t.name, kLabelScale, kTileLine);
+    if (names[i].x1 >= names[i].x0) c.text(names[i].x0, names[i].y0, t.name, kLabelScale, kTileLine);
   }
   for (const PictureBox& b : boxes)  // clutter first, as outlines, so that vehicles lie on top
     if (b.style == BoxStyle::kNotVehicle) outline(&c, corners(f, b), kClutter);

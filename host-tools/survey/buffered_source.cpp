@@ -1,8 +1,22 @@
 #include "survey/buffered_source.hpp"
 
+#include "survey/survey_outputs.hpp"
+
 namespace spinhash::survey {
 
-BufferedSource::BufferedSource(const SurveyTask& task) : task_(task) {
+template <class F>
+auto BufferedSource::neighbour_named(F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const host::CloudError& e) {
+    if (next_ <= 1) throw;  // the tile itself: its own message
+    // The tile is refused for its neighbour: say so, and which.
+    throw host::CloudError("refused for its neighbour " + path_now() +
+                           ", which cannot be read: " + without_path(e.what(), path_now()));
+  }
+}
+
+BufferedSource::BufferedSource(const SurveyTask& task) : task_(task), work_(task.work()) {
   header_.format = "survey";
   header_.count_known = false;
   open_next();
@@ -11,14 +25,21 @@ BufferedSource::BufferedSource(const SurveyTask& task) : task_(task) {
 bool BufferedSource::open_next() {
   current_.reset();
   if (next_ > task_.neighbours.size()) return false;
-  const std::string& path = next_ == 0 ? task_.tile.path : task_.neighbours[next_ - 1].path;
   ++next_;
-  current_ = host::open_point_source(path);
+  current_ = neighbour_named([&] { return host::open_metric_source(path_now(), work_); });
   if (next_ == 1) header_.crs = current_->header().crs;
   return true;
 }
 
+const std::string& BufferedSource::path_now() const {
+  return next_ <= 1 ? task_.tile.path : task_.neighbours[next_ - 2].path;
+}
+
 size_t BufferedSource::read(double* xyz, size_t max_points) {
+  return neighbour_named([&] { return read_any(xyz, max_points); });
+}
+
+size_t BufferedSource::read_any(double* xyz, size_t max_points) {
   while (current_) {
     if (next_ == 1) {  // the tile itself: every point
       const size_t got = current_->read(xyz, max_points);

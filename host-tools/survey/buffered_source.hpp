@@ -1,12 +1,14 @@
-// A tile with its neighbours' buffer as one point source: the tile's points,
-// then each neighbour's points inside the seen rectangle, neighbours in
-// path order, each opened only while it is read (memory: one reader's chunk).
+// A tile with its neighbours' buffer as one point source, in metres of the
+// survey's CRS (cloud/metric_source.hpp: each file scaled by its own units,
+// or reprojected): the tile's points, then each neighbour's points inside
+// the seen rectangle, neighbours in path order, each opened only while it
+// is read (memory: one reader's chunk).
 #pragma once
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "cloud/point_source.hpp"
+#include "cloud/metric_source.hpp"
 #include "survey/task.hpp"
 
 namespace spinhash::survey {
@@ -15,7 +17,8 @@ class BufferedSource final : public host::PointSource {
  public:
   explicit BufferedSource(const SurveyTask& task);
   const host::CloudHeader& header() const override { return header_; }
-  // Throws host::CloudError naming the file (the tile or a neighbour).
+  // Throws host::CloudError naming the file: the tile's own error, or
+  // "refused for its neighbour PATH, which cannot be read: ...".
   size_t read(double* xyz, size_t max_points) override;
 
   uint64_t tile_points() const { return tile_points_; }
@@ -23,8 +26,13 @@ class BufferedSource final : public host::PointSource {
 
  private:
   bool open_next();
+  size_t read_any(double* xyz, size_t max_points);
+  const std::string& path_now() const;  // the file being read
+  template <class F>
+  auto neighbour_named(F&& f) -> decltype(f());
 
   const SurveyTask& task_;
+  host::WorkCrs work_;
   host::CloudHeader header_;
   std::unique_ptr<host::PointSource> current_;
   size_t next_ = 0;  // 0: the tile; k: neighbour k - 1

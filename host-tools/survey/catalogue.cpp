@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <map>
 
-#include "cloud/cloud_reader.hpp"
+#include "cloud/crs_match.hpp"
 
 namespace spinhash::survey {
 namespace {
@@ -18,10 +18,11 @@ bool cloud_extension(const fs::path& p) {
   return ext == ".las" || ext == ".laz" || ext == ".ply" || ext == ".txt" || ext == ".xyz" || ext == ".csv";
 }
 
-// Bounds from the points, for headers without them (PLY, text).
-void bounds_from_points(CatalogueTile& t) {
+// Bounds from the points (in metres of the work CRS), for headers without
+// them (PLY, text).
+void bounds_from_points(CatalogueTile& t, const host::WorkCrs& work) {
   constexpr size_t kChunk = host::kDefaultChunkPoints;
-  std::unique_ptr<host::PointSource> source = host::open_point_source(t.path);
+  std::unique_ptr<host::PointSource> source = host::open_metric_source(t.path, work);
   std::vector<double> xyz(3 * kChunk);
   double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
   uint64_t n = 0;
@@ -39,8 +40,18 @@ void bounds_from_points(CatalogueTile& t) {
   t.bounds_from_points = true;
 }
 
-bool same_crs(const host::Crs& a, const host::Crs& b) {
-  return a.proj_definition() == b.proj_definition() && a.vertical_epsg == b.vertical_epsg;
+// The header's bounds in metres of the work CRS.
+void metric_bounds(CatalogueTile& t, const host::WorkCrs& work) {
+  if (!t.header.bounds_known) return bounds_from_points(t, work);
+  const host::ToMetres to_metres(t.name, t.header.crs, work);
+  double lo[3], hi[3];
+  to_metres.bounds(t.header.min, t.header.max, lo, hi);
+  std::copy(lo, lo + 3, t.header.min);
+  std::copy(hi, hi + 3, t.header.max);
+}
+
+std::string crs_of(const CatalogueTile& t) {
+  return t.header.crs.describe() + " (" + t.header.crs.units.short_text() + ")";
 }
 
 }  // namespace
@@ -78,7 +89,6 @@ Catalogue read_catalogue(const std::vector<std::string>& sorted_paths) {
     t.name = host::cloud_name(path);
     try {
       t.header = host::read_cloud_header(path);
-      if (!t.header.bounds_known) bounds_from_points(t);
     } catch (const std::exception& e) {
       t.error = e.what();
     }
@@ -87,8 +97,9 @@ Catalogue read_catalogue(const std::vector<std::string>& sorted_paths) {
   return c;
 }
 
-bool check_catalogue(Catalogue& catalogue, std::string* error) {
-  catalogue.crs = host::Crs{};
+bool check_catalogue(Catalogue& catalogue, const host::WorkCrs& work, std::string* error) {
+  catalogue.crs = work.crs;
+  catalogue.crs_named = work.named;
   catalogue.notes.clear();
   std::map<std::string, std::string> names;
   const CatalogueTile* first_known = nullptr;
@@ -99,20 +110,38 @@ bool check_catalogue(Catalogue& catalogue, std::string* error) {
       return false;
     }
     if (!t.error.empty() || !t.header.crs.known()) continue;
-    if (first_known == nullptr) {
-      first_known = &t;
-    } else if (!same_crs(first_known->header.crs, t.header.crs)) {
-      *error = "the tiles do not share a CRS: " + first_known->path + " is " +
-               first_known->header.crs.describe() + ", " + t.path + " is " + t.header.crs.describe() +
-               " (reproject them to one CRS first)";
+    if (!work.named && t.header.crs.units.geographic) {
+      *error = t.path + " is in " + t.header.crs.describe() +
+               ", a geographic CRS: " + t.header.crs.units.describe();
       return false;
     }
+    if (first_known == nullptr) {
+      first_known = &t;
+    } else if (!work.named && !host::same_crs(first_known->header.crs, t.header.crs)) {
+      *error = "the tiles do not share a CRS: " + first_known->path + " is " + crs_of(*first_known) + ", " +
+               t.path + " is " + crs_of(t) +
+               " (reproject them to one CRS, or name one to work in: --work-crs EPSG:n)";
+      return false;
+    } else if (!work.named && first_known->header.crs.describe() != t.header.crs.describe()) {
+      catalogue.notes.push_back(t.name + " declares " + t.header.crs.describe() + ", the same CRS as " +
+                                first_known->header.crs.describe());
+    }
   }
-  if (first_known != nullptr) catalogue.crs = first_known->header.crs;
-  for (const CatalogueTile& t : catalogue.tiles)
-    if (t.error.empty() && !t.header.crs.known() && first_known != nullptr)
+  if (!work.named && first_known != nullptr) catalogue.crs = first_known->header.crs;
+  for (CatalogueTile& t : catalogue.tiles) {
+    if (!t.error.empty()) continue;
+    if (!t.header.crs.known() && catalogue.crs.known())
       catalogue.notes.push_back(t.name + " declares no CRS: assumed to be in " + catalogue.crs.describe());
-  if (first_known == nullptr && !catalogue.tiles.empty())
+    else if (work.named && t.header.crs.known() && !host::same_crs(t.header.crs, work.crs))
+      catalogue.notes.push_back(t.name + " reprojected from " + t.header.crs.describe() + " to " +
+                                work.crs.describe());
+    try {
+      metric_bounds(t, catalogue.work());
+    } catch (const std::exception& e) {
+      t.error = e.what();
+    }
+  }
+  if (!catalogue.crs.known() && !catalogue.tiles.empty())
     catalogue.notes.push_back("no tile declares a CRS: outputs are in the tiles' own coordinates");
   return true;
 }

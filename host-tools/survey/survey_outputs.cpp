@@ -37,6 +37,16 @@ std::string geojson(const Catalogue& c, const std::vector<TileResult>& done) {
   return s + "\n]}\n";
 }
 
+// The units of the outputs' coordinates (the survey CRS's; metres when unknown).
+std::string units_json(const host::AxisUnits& u) {
+  if (u.geographic)
+    return "{\"horizontal\":\"degree\",\"horizontal_m\":null,\"vertical\":null,\"vertical_m\":null}";
+  return "{\"horizontal\":" + json_string(u.horizontal_name) +
+         ",\"horizontal_m\":" + json_number(u.horizontal, 15) +
+         ",\"vertical\":" + json_string(u.vertical_name) + ",\"vertical_m\":" + json_number(u.vertical, 15) +
+         "}";
+}
+
 std::string models_json(const std::map<std::string, ModelCount>& models) {
   std::string s = "{";
   for (const auto& kv : models)
@@ -86,8 +96,9 @@ std::string survey_json(const Catalogue& c, const std::vector<TileResult>& done,
   for (const std::string& n : c.notes) notes += (notes.empty() ? "" : ",") + json_string(n);
   return "{\"version\":" + json_string(pipeline::version()) + ",\"database\":" + json_string(rep.database) +
          ",\"buffer_m\":" + json_number(rep.buffer) + ",\"jobs\":" + std::to_string(rep.jobs) +
-         ",\"crs\":" + json_string(c.crs.describe()) + ",\"geometry\":" + json_string(geometry_note(c)) +
-         ",\"notes\":[" + notes + "],\"tiles_total\":" + std::to_string(rep.tiles_total) +
+         ",\"crs\":" + json_string(c.crs.describe()) + ",\"crs_units\":" + units_json(c.crs.units) +
+         ",\"geometry\":" + json_string(geometry_note(c)) + ",\"notes\":[" + notes +
+         "],\"tiles_total\":" + std::to_string(rep.tiles_total) +
          ",\"tiles_done\":" + std::to_string(done.size()) +
          ",\"tiles_resumed\":" + std::to_string(rep.tiles_resumed) +
          ",\"tiles_refused\":" + std::to_string(rep.refused.size()) +
@@ -119,16 +130,31 @@ bool write_overview(const std::string& path, const Catalogue& c, const std::vect
 
 }  // namespace
 
+std::string without_path(const std::string& reason, const std::string& path) {
+  const std::string prefix = path + ": ";
+  return reason.compare(0, prefix.size(), prefix) == 0 ? reason.substr(prefix.size()) : reason;
+}
+
+Refusal refusal(const std::string& tile, const std::string& path, const std::string& reason) {
+  return {tile, path, without_path(reason, path)};
+}
+
 bool write_survey_outputs(const std::string& dir, const Catalogue& catalogue,
                           const std::vector<TileResult>& done, const SurveyReport& report,
                           std::string* error) {
   std::string lines;
   for (const TileResult& r : done)
     for (const std::string& l : r.lines) lines += l + "\n";
-  const std::string geo = dir + "/detections.geojson";
+  std::vector<std::string> features;
+  std::vector<Column> columns;
+  for (const TileResult& r : done) {
+    features.insert(features.end(), r.features.begin(), r.features.end());
+    if (columns.empty()) columns = r.columns;
+  }
   return write_text(dir + "/detections.jsonl", lines, error) &&
-         write_text(geo, geojson(catalogue, done), error) &&
-         write_geopackage(geo, dir + "/detections.gpkg", catalogue.crs.proj_definition(), error) &&
+         write_text(dir + "/detections.geojson", geojson(catalogue, done), error) &&
+         write_geopackage(features, columns, dir + "/detections.gpkg", catalogue.crs.proj_definition(),
+                          error) &&
          write_overview(dir + "/overview.png", catalogue, done, error) &&
          write_text(dir + "/survey.json", survey_json(catalogue, done, report), error);
 }

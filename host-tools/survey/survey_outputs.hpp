@@ -15,6 +15,12 @@ struct Refusal {
   std::string tile, path, reason;
 };
 
+// A refusal whose reason does not repeat the path (readers' messages begin
+// with it): "LAZ: chunk 2: ...", not "/x/a.laz: LAZ: chunk 2: ...".
+Refusal refusal(const std::string& tile, const std::string& path, const std::string& reason);
+// The reason without a leading "path: ".
+std::string without_path(const std::string& reason, const std::string& path);
+
 struct SurveyReport {
   std::string database;
   double buffer = 0;

@@ -4,10 +4,23 @@
 
 namespace spinhash::survey {
 
-SurveyProgress::SurveyProgress(uint32_t total, uint32_t already, bool quiet)
+std::string rate_text(double r) {
+  char b[48];
+  if (r >= 1e6)
+    std::snprintf(b, sizeof b, "%.2f M points/s", r / 1e6);
+  else if (r >= 1e3)
+    std::snprintf(b, sizeof b, "%.1f k points/s", r / 1e3);
+  else
+    std::snprintf(b, sizeof b, "%.0f points/s", r);
+  return b;
+}
+
+SurveyProgress::SurveyProgress(uint32_t total, uint32_t kept, uint32_t refused, bool quiet)
     : total_(total),
-      done_(already),
-      already_(already),
+      done_(kept + refused),
+      already_(kept + refused),
+      kept_(kept),
+      refused_(refused),
       quiet_(quiet),
       start_(std::chrono::steady_clock::now()),
       last_(start_) {}
@@ -22,8 +35,12 @@ void SurveyProgress::tile_done(uint64_t points) {
   const double secs = std::chrono::duration<double>(now - start_).count();
   const uint32_t run = done_ - already_;
   const double eta = run > 0 ? secs / run * (total_ - done_) : 0.0;
-  std::fprintf(stderr, "[survey] %u/%u tiles, %.2f M points/s, %.1f s, ETA %.0f s\n", done_, total_,
-               secs > 0 ? static_cast<double>(points_) / secs / 1e6 : 0.0, secs, eta);
+  std::string counted;
+  if (kept_ > 0) counted += std::to_string(kept_) + " kept";
+  if (refused_ > 0) counted += (counted.empty() ? "" : ", ") + std::to_string(refused_) + " refused";
+  std::fprintf(stderr, "[survey] %u/%u tiles%s, %s, %.1f s, ETA %.0f s\n", done_, total_,
+               counted.empty() ? "" : (" (" + counted + ")").c_str(),
+               rate_text(secs > 0 ? static_cast<double>(points_) / secs : 0.0).c_str(), secs, eta);
 }
 
 }  // namespace spinhash::survey

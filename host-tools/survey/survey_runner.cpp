@@ -7,15 +7,16 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
-#include <sstream>
 #include <thread>
 
 #include "blob/file_io.hpp"
 #include "pipeline/database_file.hpp"
 #include "pipeline/exit_codes.hpp"
 #include "pipeline/json_line.hpp"
+#include "pipeline/spill_folder.hpp"
 #include "pipeline/version.hpp"
 #include "survey/footprint.hpp"
+#include "survey/interrupt_cleanup.hpp"
 #include "survey/survey_progress.hpp"
 #include "survey/tile_run.hpp"
 
@@ -54,23 +55,18 @@ void remove_results(const std::string& folder) {
 std::string settings_key(const SurveyOptions& o) {
   return "spinhash=" + std::string(pipeline::version()) + ";db=" + file_digest(o.db_path) +
          ";top=" + std::to_string(o.scene.top_n) + ";max_objects=" + std::to_string(o.scene.max_objects) +
-         ";max_window_points=" + std::to_string(o.scene.max_tile_points);
+         ";max_window_points=" + std::to_string(o.scene.max_tile_points) +
+         ";work_crs=" + escape_line(o.work.named ? o.work.crs.proj_definition() : "");
 }
 
-bool read_text(const std::string& path, std::string* text) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream s;
-  s << in.rdbuf();
-  *text = s.str();
-  return true;
-}
+// A stored result is a few lines per object: far below this.
+constexpr uint64_t kMaxResultBytes = uint64_t{1} << 30;
 
 // The stored result of a task, when it exists and was made from the same inputs.
 bool load_result(const std::string& out_dir, const SurveyTask& task, TileResult* r) {
   std::string text, error;
-  return read_text(result_path(out_dir, task.tile.name), &text) && parse_result_text(text, r, &error) &&
-         r->key == task.key;
+  return host::read_file(result_path(out_dir, task.tile.name), kMaxResultBytes, &text, &error) &&
+         parse_result_text(text, r, &error) && r->key == task.key;
 }
 
 std::string manifest_json(const PreparedSurvey& s, const std::vector<bool>& done) {
@@ -116,9 +112,9 @@ bool prepare_survey(const SurveyOptions& options, const std::vector<std::string>
   std::vector<std::string> paths;
   if (!expand_tile_arguments(args, &paths, error)) return false;
   s.catalogue = read_catalogue(paths);
-  if (!check_catalogue(s.catalogue, error)) return false;
+  if (!check_catalogue(s.catalogue, options.work, error)) return false;
   for (const CatalogueTile& t : s.catalogue.tiles)
-    if (!t.error.empty()) s.refused.push_back({t.name, t.path, t.error});
+    if (!t.error.empty()) s.refused.push_back(refusal(t.name, t.path, t.error));
   std::error_code ec;
   const std::string results = options.out_dir + "/" + kResultsFolder;
   fs::create_directories(results, ec);
@@ -177,6 +173,8 @@ int finish_survey(const PreparedSurvey& s, const std::vector<Refusal>& failed, d
 
 int run_survey(const SurveyOptions& options, const std::vector<std::string>& args) {
   const auto t0 = std::chrono::steady_clock::now();
+  const InterruptCleanup cleanup("survey");  // before any worker thread
+  pipeline::report_stale_spill_folders("survey");
   PreparedSurvey s;
   std::string error;
   pipeline::DatabaseFile db;
@@ -187,8 +185,15 @@ int run_survey(const SurveyOptions& options, const std::vector<std::string>& arg
   std::vector<size_t> todo;
   for (size_t i = 0; i < s.tasks.size(); ++i)
     if (!s.done[i]) todo.push_back(i);
-  SurveyProgress progress(static_cast<uint32_t>(s.tasks.size()),
-                          static_cast<uint32_t>(s.tasks.size() - todo.size()), options.quiet);
+  std::string kept;
+  for (size_t i = 0; i < s.tasks.size(); ++i)
+    if (s.done[i]) kept += (kept.empty() ? "" : ", ") + s.tasks[i].tile.name;
+  if (!kept.empty())
+    std::fprintf(stderr, "spinhash survey: kept %zu tile%s a previous run finished: %s\n",
+                 s.tasks.size() - todo.size(), s.tasks.size() - todo.size() == 1 ? "" : "s", kept.c_str());
+  SurveyProgress progress(static_cast<uint32_t>(s.catalogue.tiles.size()),
+                          static_cast<uint32_t>(s.tasks.size() - todo.size()),
+                          static_cast<uint32_t>(s.refused.size()), options.quiet);
   std::vector<Refusal> failed;
   std::mutex failed_mutex;
   std::atomic<size_t> next{0};
@@ -206,8 +211,8 @@ int run_survey(const SurveyOptions& options, const std::vector<std::string>& arg
         why = e.what();
       }
       std::lock_guard<std::mutex> lock(failed_mutex);
-      failed.push_back({task.tile.name, task.tile.path, why});
-      std::fprintf(stderr, "spinhash survey: %s: %s\n", task.tile.name.c_str(), why.c_str());
+      failed.push_back(refusal(task.tile.name, task.tile.path, why));
+      std::fprintf(stderr, "spinhash survey: %s: %s\n", task.tile.path.c_str(), failed.back().reason.c_str());
       progress.tile_done(0);
     }
   };

@@ -20,6 +20,7 @@ struct SurveyOptions {
   double buffer = kDefaultBuffer;
   bool resume = false;
   bool quiet = false;  // no progress line
+  host::WorkCrs work;  // --work-crs: the CRS to work in (else the tiles' shared CRS)
   SceneConfig scene;
 };
 

@@ -5,8 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
 
-#include "cloud/cloud_reader.hpp"
+#include "cloud/crs_resolve.hpp"
 #include "cloud/crs_units.hpp"
 
 namespace spinhash::survey {
@@ -61,25 +62,39 @@ bool Rect::intersects(const Rect& o) const {
 std::vector<SurveyTask> plan_survey(const Catalogue& catalogue, double buffer, const std::string& settings) {
   std::vector<SurveyTask> tasks;
   const host::AxisUnits units = host::axis_units(catalogue.crs);
+  const double grow = std::max(buffer, 2.0 * kGapTolerance);  // m, as the bounds
   for (size_t i = 0; i < catalogue.tiles.size(); ++i) {
     const CatalogueTile& t = catalogue.tiles[i];
     if (!t.error.empty()) continue;
     SurveyTask task;
     task.index = static_cast<uint32_t>(i);
     task.tile = {t.path, t.name, core_of(t)};
-    task.seen = task.tile.core.grown(std::max(buffer / units.horizontal, 2.0 * kGapTolerance));  // buffer: m
+    task.seen = task.tile.core.grown(grow);
     for (size_t j = 0; j < catalogue.tiles.size(); ++j) {
       const CatalogueTile& n = catalogue.tiles[j];
       if (j != i && n.error.empty() && core_of(n).intersects(task.seen))
         task.neighbours.push_back({n.path, n.name, core_of(n)});
     }
     task.crs = catalogue.crs.proj_definition();
+    task.crs_named = catalogue.crs_named;
     task.crs_name = catalogue.crs.describe();
     task.units = units;
     task.key = task_key(task, buffer, settings);
     tasks.push_back(std::move(task));
   }
   return tasks;
+}
+
+host::WorkCrs SurveyTask::work() const {
+  host::WorkCrs w;
+  w.named = crs_named;
+  if (!crs.empty()) {
+    std::string error;
+    if (!host::crs_from_user(crs, &w.crs, &error)) throw std::runtime_error("survey task: " + error);
+    w.crs.source.clear();  // the survey's CRS, not one the user typed (unless named)
+  }
+  w.crs.units = units;  // as the catalogue resolved them (GeoKeys' unit codes are not in the definition)
+  return w;
 }
 
 std::string escape_line(const std::string& s) {
@@ -116,7 +131,8 @@ std::string task_text(const SurveyTask& t) {
   for (const TaskTile& n : t.neighbours)
     s += "neighbour " + rect_text(n.core) + " " + escape_line(n.path) + "\n";
   s += "seen " + rect_text(t.seen) + "\n";
-  s += "crs " + escape_line(t.crs) + "\ncrs_name " + escape_line(t.crs_name) + "\n";
+  s += "crs " + escape_line(t.crs) + "\ncrs_named " + (t.crs_named ? "1" : "0") + "\ncrs_name " +
+       escape_line(t.crs_name) + "\n";
   s += "units " + num(t.units.horizontal) + " " + num(t.units.vertical) + " " +
        (t.units.geographic ? "1" : "0") + "\n";
   return s + "key " + escape_line(t.key) + "\nend\n";
@@ -150,6 +166,8 @@ bool parse_task_text(const std::string& text, SurveyTask* task, std::string* err
       ls >> t.seen.min[0] >> t.seen.min[1] >> t.seen.max[0] >> t.seen.max[1];
     else if (word == "crs")
       t.crs = rest(ls);
+    else if (word == "crs_named")
+      ls >> t.crs_named;
     else if (word == "crs_name")
       t.crs_name = rest(ls);
     else if (word == "units")

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "cloud/crs_units.hpp"
+#include "cloud/metric_source.hpp"
 #include "survey/catalogue.hpp"
 
 namespace spinhash::survey {
@@ -43,15 +43,21 @@ struct TaskTile {
   Rect core;
 };
 
+// Rectangles are in metres of the survey's CRS (cloud/metric_source.hpp),
+// as the tiles' points are read.
 struct SurveyTask {
   uint32_t index = 0;  // in the catalogue (sorted paths)
   TaskTile tile;
   std::vector<TaskTile> neighbours;  // path order; bounds within the seen rectangle
   Rect seen;                         // core grown by the buffer
   std::string crs;                   // the survey CRS's PROJ definition ("": unknown)
+  bool crs_named = false;            // the user named it: tiles in other CRSs are reprojected into it
   std::string crs_name;              // "EPSG:25832", "unknown"
-  host::AxisUnits units;             // of the survey CRS (name and notes not carried to workers)
-  std::string key;                   // the inputs the result depends on (resume reuses equal keys only)
+  host::AxisUnits units;  // of the survey CRS: outputs go back to them (name and notes not carried)
+  std::string key;        // the inputs the result depends on (resume reuses equal keys only)
+
+  // The survey's CRS as the reading door takes it (resolved through PROJ).
+  host::WorkCrs work() const;
 };
 
 // One task per tile whose header was read. settings: the database's digest

@@ -41,6 +41,8 @@ std::string result_text(const TileResult& r) {
   for (const auto& kv : r.models)
     s += "model " + std::to_string(kv.second.candidates) + " " + std::to_string(kv.second.confident) + " " +
          escape_line(kv.first) + "\n";
+  for (const Column& c : r.columns)
+    s += "column " + std::string(1, static_cast<char>(c.type)) + " " + c.name + "\n";
   for (const std::string& l : r.lines) s += "line " + l + "\n";  // JSON: no raw newline
   for (const std::string& f : r.features) s += "feature " + f + "\n";
   for (const host::PictureBox& b : r.boxes)
@@ -92,6 +94,10 @@ bool parse_result_text(const std::string& text, TileResult* out, std::string* er
       ModelCount m;
       ls >> m.candidates >> m.confident;
       r.models[unescape_line(rest(ls))] = m;
+    } else if (w == "column") {
+      char type = 's';
+      ls >> type;
+      r.columns.push_back({rest(ls), static_cast<ColumnType>(type)});
     } else if (w == "line")
       r.lines.push_back(rest(ls));
     else if (w == "feature")

@@ -17,6 +17,14 @@ struct ModelCount {
   uint32_t confident = 0;
 };
 
+// A column of the detections' GeoPackage: a member of the JSON lines and
+// the type its values take (survey/gpkg_writer.hpp).
+enum class ColumnType : char { kString = 's', kJson = 'j', kInteger = 'i', kReal = 'r', kBoolean = 'b' };
+struct Column {
+  std::string name;
+  ColumnType type = ColumnType::kString;
+};
+
 struct TileResult {
   uint32_t index = 0;
   std::string name, path, key;
@@ -30,6 +38,7 @@ struct TileResult {
   std::vector<std::string> lines;       // detections.jsonl, one per object
   std::vector<std::string> features;    // detections.geojson, one per vehicle candidate
   std::vector<host::PictureBox> boxes;  // overview.png, one per object
+  std::vector<Column> columns;          // the members of a detection, typed (the same for every tile)
 };
 
 std::string result_text(const TileResult& r);

@@ -7,6 +7,7 @@
 #include "pipeline/json_line.hpp"
 #include "pipeline/object_box.hpp"
 #include "pipeline/object_json.hpp"
+#include "pipeline/object_units.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/status_word.hpp"
 #include "pipeline/tile_stream.hpp"
@@ -22,6 +23,7 @@ using pipeline::json_string;
 // The survey's members: the scene's, then the CRS, the native footprint and
 // the version. The JSON line, the GeoJSON properties and the GeoPackage's
 // columns all come from this one list.
+// o in the survey CRS's units (pipeline/object_units.hpp).
 std::vector<pipeline::JsonMember> survey_members(const SurveyTask& task, uint32_t k, const Database& db,
                                                  const SceneObject& o) {
   std::vector<pipeline::JsonMember> m = pipeline::object_members(task.tile.name, k, db, o);
@@ -38,6 +40,32 @@ std::string feature_json(const std::vector<pipeline::JsonMember>& members, const
       to_wgs84 ? ring_json(to_wgs84->transform(native), kLonLatDigits) : ring_json(native, kNativeDigits);
   return "{\"type\":\"Feature\",\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[" + ring +
          "]},\"properties\":" + pipeline::members_json(members) + "}";
+}
+
+// A detection with every member set and every real number fractional, so
+// that its members' JSON shows each one's type.
+SceneObject typed_example(RankedModel* ranked) {
+  ranked->score = 0.5f;
+  ranked->has_pose = true;
+  SceneObject o{};
+  o.kind = ObjectKind::kVehicleCandidate;
+  o.ranking = ranked;
+  o.ranking_count = 1;
+  o.class_count = 1;
+  o.classes[0].score = 0.5f;
+  o.ground_gap = 0.25f;
+  o.heading_deg = 12.5f;
+  o.points = 7;
+  o.group_size = 1;
+  for (int a = 0; a < 3; ++a) o.center[a] = 0.5, o.extent[a] = 1.5f;
+  return o;
+}
+
+ColumnType type_of(const std::string& raw) {
+  if (raw.empty() || raw[0] == '"') return ColumnType::kString;
+  if (raw[0] == '[' || raw[0] == '{') return ColumnType::kJson;
+  if (raw == "true" || raw == "false") return ColumnType::kBoolean;
+  return raw.find_first_of(".eE") == std::string::npos ? ColumnType::kInteger : ColumnType::kReal;
 }
 
 void count(TileResult& r, const Database& db, const SceneObject& o) {
@@ -70,20 +98,24 @@ TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfi
   const auto t0 = std::chrono::steady_clock::now();
   TileResult r;
   r.index = task.index, r.name = task.tile.name, r.path = task.tile.path, r.key = task.key;
+  RankedModel ranked{};
+  for (const pipeline::JsonMember& m : survey_members(task, 0, db, typed_example(&ranked)))
+    r.columns.push_back({m.key, type_of(m.value)});
   std::unique_ptr<ToWgs84> to_wgs84 = task.crs.empty() ? nullptr : std::make_unique<ToWgs84>(task.crs);
   BufferedSource source(task);
   pipeline::TileStreamOptions options;
   options.scene = scene;
-  options.units = task.units;
-  options.owners = owner_areas(task, &options.self);
+  options.owners = owner_areas(task, &options.self);  // metres, as the door hands the points
   options.owner_tolerance = kGapTolerance;
-  const pipeline::ObjectCallback keep = [&](const SceneObject& o) {  // the tile's own
+  const pipeline::ObjectCallback keep = [&](const SceneObject& metres) {  // the tile's own
+    std::vector<RankedModel> ranking;
+    const SceneObject o = pipeline::in_file_units(metres, task.units, &ranking);
     const auto members = survey_members(task, static_cast<uint32_t>(r.lines.size()), db, o);
     r.lines.push_back(pipeline::members_json(members));
     if (o.kind == ObjectKind::kVehicleCandidate)
       r.features.push_back(feature_json(members, o, task.units.horizontal, to_wgs84.get()));
     count(r, db, o);
-    r.boxes.push_back(pipeline::object_box(db, o, task.units.horizontal));
+    r.boxes.push_back(pipeline::object_box(db, metres));  // the overview is drawn in metres
   };
   const pipeline::TileStreamResult s = pipeline::stream_tile(db, source, options, keep);
   r.status = pipeline::status_word(s.status);

@@ -152,6 +152,11 @@ const char* spinhash_database_model_name(const spinhash_database* db, uint32_t i
 uint32_t spinhash_database_model_class(const spinhash_database* db, uint32_t index) SPINHASH_NOEXCEPT;
 /* Name of class id `vehicle_class` ("sedan", ...); "unknown" outside the list. */
 const char* spinhash_class_name(uint32_t vehicle_class) SPINHASH_NOEXCEPT;
+/* Group id (SPINHASH_VEHICLE_GROUPS, vehicle_classes.h) of class id
+ * `vehicle_class`: the class list's group column; 0 ("none") outside the list. */
+uint32_t spinhash_class_group(uint32_t vehicle_class) SPINHASH_NOEXCEPT;
+/* Name of group id `group` ("light", ...); "unknown" outside the list. */
+const char* spinhash_group_name(uint32_t group) SPINHASH_NOEXCEPT;
 
 /* Carves every buffer from the workspace; the database must outlive rec. */
 spinhash_status spinhash_recognizer_init(spinhash_recognizer* rec, const spinhash_database* db,

@@ -1,5 +1,6 @@
-// Vehicle classes (vehicle_classes.h is the list): the level an answer can
-// give when the scan does not tell one model from another.
+// Vehicle classes and their groups (vehicle_classes.h is the list): the
+// levels an answer can give when the scan does not tell one model from
+// another. The hierarchy: vehicle, then group, then class, then model.
 #pragma once
 #include <cstdint>
 
@@ -8,15 +9,34 @@
 namespace spinhash {
 
 enum class VehicleClass : uint8_t {
-#define SPINHASH_CLASS_ENUM(id, Name, name, help) k##Name = id,
+#define SPINHASH_CLASS_ENUM(id, Name, name, group, help) k##Name = id,
   SPINHASH_VEHICLE_CLASSES(SPINHASH_CLASS_ENUM)
 #undef SPINHASH_CLASS_ENUM
 };
 constexpr uint32_t kVehicleClassCount = SPINHASH_CLASS_COUNT;
 
+enum class VehicleGroup : uint8_t {
+#define SPINHASH_GROUP_ENUM(id, Name, name, help) k##Name = id,
+  SPINHASH_VEHICLE_GROUPS(SPINHASH_GROUP_ENUM)
+#undef SPINHASH_GROUP_ENUM
+};
+constexpr uint32_t kVehicleGroupCount = SPINHASH_GROUP_COUNT;
+
 // "sedan", ...; "unknown" for an id outside the list.
 const char* vehicle_class_name(uint32_t id) noexcept;
 // The class named `name` (bytewise, lower case), or false.
 bool parse_vehicle_class(const char* name, VehicleClass* out) noexcept;
+
+// The group a class belongs to (its column of vehicle_classes.h);
+// VehicleGroup::kNone for an id outside the list.
+VehicleGroup vehicle_group_of(VehicleClass vehicle_class) noexcept;
+VehicleGroup vehicle_group_of(uint32_t class_id) noexcept;
+// "light", ...; "unknown" for an id outside the list.
+const char* vehicle_group_name(uint32_t id) noexcept;
+inline const char* vehicle_group_name(VehicleGroup group) noexcept {
+  return vehicle_group_name(static_cast<uint32_t>(group));
+}
+// The group named `name` (bytewise, lower case), or false.
+bool parse_vehicle_group(const char* name, VehicleGroup* out) noexcept;
 
 }  // namespace spinhash

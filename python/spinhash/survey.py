@@ -1,21 +1,22 @@
 """A whole survey of adjacent tiles on Dask: one task per tile, with its
 neighbours' buffer, each object reported by the tile that owns it; the same
-outputs as ``spinhash survey`` (docs/survey.md).
+outputs as `spinhash survey` (docs/survey.md).
 
     python3 -m spinhash.survey --db DB.shdb --out DIR [--workers N | --scheduler tcp://HOST:8786] TILE...
 
 Paths travel to the workers, points do not: every worker reads its tiles
 itself (they must be readable at the same paths there) and opens the
 database once. The client stores each tile's result in DIR/tile-results/ as it
-comes (atomically), so an interrupted run loses nothing; ``resume=True``
-skips the tiles done. The outputs (detections.jsonl, detections.geojson,
-detections.gpkg, survey.json) are written by the same C++ code as the CLI's.
+comes (atomically), whether or not the progress line is shown, so an
+interrupted run loses nothing; `resume=True` skips the tiles done. The
+outputs (detections.jsonl, detections.geojson, detections.gpkg, survey.json)
+are written by the same C++ code as the CLI's.
 """
 import argparse
-import contextlib
 import json
 import os
 import sys
+import time
 import uuid
 import warnings
 
@@ -35,7 +36,10 @@ def _database(path):
     return db
 
 
-def run_tile(db_path, task, top_n=5, max_objects=256):
+DEFAULT_TOP_N, DEFAULT_MAX_OBJECTS = 5, 256  # as `spinhash survey`'s --top and --max-objects
+
+
+def run_tile(db_path, task, top_n=DEFAULT_TOP_N, max_objects=DEFAULT_MAX_OBJECTS):
     """One tile's task on a worker: its result as text (stored by the client)."""
     return _spinhash._survey_run_task(_database(db_path), task, top_n, max_objects)
 
@@ -47,28 +51,48 @@ def _local_client(workers):
     return Client(cluster)
 
 
-def _collect(client, survey, futures, names, show_progress):
-    """Stores each result as it comes; (name, path, reason) of the tiles that failed for good."""
-    from distributed import as_completed, progress
-    if show_progress and futures:
-        with contextlib.redirect_stdout(sys.stderr):  # progress on stderr, as the CLI's
-            progress(futures, notebook=False)
-        print(file=sys.stderr)
+def _progress_line(done, total, resumed, start):
+    """The CLI's progress line ([survey] k/n tiles, ...), on stderr."""
+    secs = time.monotonic() - start
+    ran = done - resumed
+    eta = secs / ran * (total - done) if ran > 0 else 0.0
+    print(f"[survey] {done}/{total} tiles, {secs:.1f} s, ETA {eta:.0f} s", file=sys.stderr, flush=True)
+
+
+def _collect(survey, futures, names, show_progress):
+    """Stores each result as it comes (and, when shown, says so on stderr);
+    (name, path, reason) of the tiles that failed for good."""
+    from distributed import as_completed
+    total, resumed = survey.tiles_planned, survey.tiles_planned - len(futures)
+    start = time.monotonic()
     failed = []
-    for future in as_completed(futures):
+    for done, future in enumerate(as_completed(futures), start=resumed + 1):
         name, path = names[future.key]
         try:
             survey.store(future.result())
         except Exception as error:  # noqa: BLE001  (an unreadable tile, a worker lost too often)
             failed.append((name, path, f"{type(error).__name__}: {error}"))
+        if show_progress:
+            _progress_line(done, total, resumed, start)
     return sorted(failed, key=lambda f: f[1])
 
 
-def run(db_path, tiles, out_dir, client=None, *, workers=None, buffer=DEFAULT_BUFFER, resume=False, top_n=5,
-        max_objects=256, retries=DEFAULT_RETRIES, progress=True, geodataframe=True):
+def _workers(client):
+    try:
+        return len(client.scheduler_info().get("workers", {}))
+    except Exception:  # noqa: BLE001  (a client that cannot say: recorded as 0)
+        return 0
+
+
+def run(db_path, tiles, out_dir, client=None, *, workers=None, buffer=DEFAULT_BUFFER, resume=False,
+        top_n=DEFAULT_TOP_N, max_objects=DEFAULT_MAX_OBJECTS, retries=DEFAULT_RETRIES, progress=True,
+        geodataframe=True, work_crs=None):
     """Runs the survey of `tiles` (files or folders) into `out_dir`.
 
     client: a distributed.Client (None: a local cluster of `workers` processes).
+    work_crs: a projected CRS to work in ("EPSG:32610", a WKT or a PROJ
+    string), as the CLI's --work-crs: tiles in other CRSs, or in degrees,
+    are reprojected into it. progress: a line per tile on stderr.
     Returns the detections as a geopandas GeoDataFrame with the CRS set (the
     tiles' CRS; a local engineering CRS when they declare none), with
     ``attrs["survey"]`` (survey.json) and ``attrs["exit_status"]`` (0, or 3
@@ -79,7 +103,10 @@ def run(db_path, tiles, out_dir, client=None, *, workers=None, buffer=DEFAULT_BU
     out_dir = os.path.abspath(out_dir)
     os.makedirs(out_dir, exist_ok=True)
     survey = _spinhash._survey_prepare(db_path, [os.path.abspath(t) for t in tiles], out_dir, buffer, resume,
-                                       top_n, max_objects)
+                                       top_n, max_objects, work_crs or "")
+    if survey.kept:
+        print(f"spinhash.survey: kept {len(survey.kept)} tiles a previous run finished: {', '.join(survey.kept)}",
+              file=sys.stderr)
     own_client = client is None
     if own_client:
         client = _local_client(workers)
@@ -91,13 +118,14 @@ def run(db_path, tiles, out_dir, client=None, *, workers=None, buffer=DEFAULT_BU
             names[key] = (name, path)
             futures.append(client.submit(run_tile, db_path, task, top_n, max_objects, key=key, retries=retries,
                                          pure=False))
-        failed = _collect(client, survey, futures, names, progress)
+        workers_used = _workers(client)
+        failed = _collect(survey, futures, names, progress)
     finally:
         if own_client:
             cluster = client.cluster
             client.close()
             cluster.close()
-    status = survey.finish(failed)
+    status = survey.finish(failed, workers_used)
     for name, path, reason in failed + list(survey.refused):
         warnings.warn(f"spinhash.survey: {path}: {reason}", RuntimeWarning, stacklevel=2)
     if not geodataframe:
@@ -115,7 +143,8 @@ def _geodataframe(out_dir, status):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(prog="python3 -m spinhash.survey", description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(prog="python3 -m spinhash.survey",
+                                     description=" ".join(__doc__.split("\n\n")[0].split()))
     parser.add_argument("--db", required=True, help="database file (readable by every worker at this path)")
     parser.add_argument("--out", required=True, help="output folder, on the client")
     where = parser.add_mutually_exclusive_group()
@@ -124,7 +153,11 @@ def main(argv=None):
     parser.add_argument("--buffer", type=float, default=DEFAULT_BUFFER, help="m of the neighbours' points (40)")
     parser.add_argument("--resume", action="store_true", help="keep the tiles a previous run in OUT finished")
     parser.add_argument("--retries", type=int, default=DEFAULT_RETRIES, help="tries again for a failed task")
-    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    parser.add_argument("--top", type=int, default=DEFAULT_TOP_N, help="models ranked per vehicle (5)")
+    parser.add_argument("--max-objects", type=int, default=DEFAULT_MAX_OBJECTS,
+                        help="objects reported per window at most (256)")
+    parser.add_argument("--work-crs", help="a projected CRS to work in (EPSG:n, WKT or PROJ string)")
+    parser.add_argument("--quiet", action="store_true", help="no progress line")
     parser.add_argument("tiles", nargs="+", help="tiles (LAS, LAZ, PLY, text) or folders of them")
     args = parser.parse_args(argv)
     if args.workers is not None and args.workers < 1:
@@ -137,7 +170,8 @@ def main(argv=None):
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             frame = run(args.db, args.tiles, args.out, client, workers=args.workers, buffer=args.buffer,
-                        resume=args.resume, retries=args.retries, progress=not args.quiet)
+                        resume=args.resume, retries=args.retries, progress=not args.quiet, top_n=args.top,
+                        max_objects=args.max_objects, work_crs=args.work_crs)
     except (ValueError, OSError, RuntimeError) as error:
         print(f"spinhash.survey: {error}", file=sys.stderr)
         return EXIT_ERROR

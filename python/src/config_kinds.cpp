@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "pipeline/recognizer_flags.hpp"
+#include "pipeline/mode_name.hpp"
 
 namespace py = pybind11;
 

@@ -16,6 +16,16 @@ PYBIND11_MODULE(_spinhash, m) {
   for (uint32_t id = 0; id < spinhash::kVehicleClassCount; ++id)
     classes.append(spinhash::vehicle_class_name(id));
   m.attr("CLASS_NAMES") = pybind11::tuple(classes);
+  // Every group, in id order, and each class's group (CLASS_GROUPS[i] is the
+  // group of CLASS_NAMES[i]): the group column of vehicle_classes.h.
+  pybind11::list groups;
+  for (uint32_t id = 0; id < spinhash::kVehicleGroupCount; ++id)
+    groups.append(spinhash::vehicle_group_name(id));
+  m.attr("GROUP_NAMES") = pybind11::tuple(groups);
+  pybind11::list class_groups;
+  for (uint32_t id = 0; id < spinhash::kVehicleClassCount; ++id)
+    class_groups.append(spinhash::vehicle_group_name(spinhash::vehicle_group_of(id)));
+  m.attr("CLASS_GROUPS") = pybind11::tuple(class_groups);
   // Every status (spinhash/status_list.h): its word (the `status` of results
   // and objects) -> (code, message).
   pybind11::dict statuses;

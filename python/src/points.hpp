@@ -9,9 +9,11 @@
 
 namespace spinhash::python {
 
-// The rows of an (N, 3) float64 array, any strides. TypeError for anything
-// that is not a float64 numpy array, ValueError for another shape; NaN rows
-// pass through (the core drops and counts them).
+// The rows of an (N, 3) float64 or float32 array, any strides (float32
+// widened, with a UserWarning when its coordinates are too large for
+// float32 to hold to a centimetre). TypeError for anything that is not such
+// a numpy array, ValueError for another shape; NaN rows pass through (the
+// core drops and counts them).
 std::vector<double> points_from_array(pybind11::handle points);
 
 // An (N, 3) float64 array of xyz (3 per point).

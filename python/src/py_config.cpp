@@ -4,7 +4,7 @@
 
 #include "bindings.hpp"
 #include "config_kinds.hpp"
-#include "pipeline/recognizer_flags.hpp"  // mode_name
+#include "pipeline/mode_name.hpp"
 #include "spinhash/config_fields.h"
 #include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"

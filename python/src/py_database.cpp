@@ -49,7 +49,7 @@ py::list model_names(const PyDatabase& d) {
   return names;
 }
 
-// One dict per model: name, feature count and bounding-box extent (as `spinhash info` prints).
+// One dict per model: name, class, group, feature count and bounding-box extent (as `spinhash info` prints).
 py::list models(const PyDatabase& d) {
   py::list out;
   for (uint32_t m = 0; m < d.file.db.model_count(); ++m) {
@@ -57,6 +57,7 @@ py::list models(const PyDatabase& d) {
     py::dict model;
     model["name"] = pipeline::model_name(d.file.db, m);
     model["class"] = vehicle_class_name(r.vehicle_class);
+    model["group"] = vehicle_group_name(vehicle_group_of(r.vehicle_class));
     model["features"] = r.feature_count;
     model["extent"] = py::make_tuple(static_cast<double>(r.bbox_max[0] - r.bbox_min[0]),
                                      static_cast<double>(r.bbox_max[1] - r.bbox_min[1]),

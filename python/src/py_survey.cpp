@@ -6,12 +6,15 @@
 
 #include <chrono>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
 #include "bindings.hpp"
+#include "cloud/crs_resolve.hpp"
 #include "cloud/point_source.hpp"
 #include "pipeline/exit_codes.hpp"
+#include "pipeline/spill_folder.hpp"
 #include "py_database.hpp"
 #include "spinhash/limits.hpp"
 #include "survey/survey_runner.hpp"
@@ -53,9 +56,10 @@ class PySurvey {
     if (!survey::store_result(s_.options.out_dir, r, &error)) throw std::runtime_error(error);
   }
 
-  int finish(const std::vector<std::tuple<std::string, std::string, std::string>>& failed) const {
+  int finish(const std::vector<std::tuple<std::string, std::string, std::string>>& failed, unsigned workers) {
+    s_.options.jobs = workers;  // survey.json records the workers that ran the tasks
     std::vector<survey::Refusal> f;
-    for (const auto& t : failed) f.push_back({std::get<0>(t), std::get<1>(t), std::get<2>(t)});
+    for (const auto& t : failed) f.push_back(survey::refusal(std::get<0>(t), std::get<1>(t), std::get<2>(t)));
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     std::string error;
     const int code = survey::finish_survey(s_, f, wall, &error);
@@ -64,6 +68,14 @@ class PySurvey {
   }
 
   size_t tiles() const { return s_.catalogue.tiles.size(); }
+  size_t tiles_planned() const { return s_.tasks.size(); }
+  // The tiles a previous run finished with the same inputs (resume), kept.
+  std::vector<std::string> kept() const {
+    std::vector<std::string> v;
+    for (size_t i = 0; i < s_.tasks.size(); ++i)
+      if (s_.done[i]) v.push_back(s_.tasks[i].tile.name);
+    return v;
+  }
   std::string crs() const { return s_.catalogue.crs.proj_definition(); }
   std::vector<std::tuple<std::string, std::string, std::string>> refused() const {
     std::vector<std::tuple<std::string, std::string, std::string>> v;
@@ -78,12 +90,21 @@ class PySurvey {
 
 std::unique_ptr<PySurvey> prepare(const std::string& db_path, const std::vector<std::string>& tiles,
                                   const std::string& out_dir, double buffer, bool resume, uint32_t top_n,
-                                  uint32_t max_objects) {
+                                  uint32_t max_objects, const std::string& work_crs) {
   if (!(buffer >= survey::kMinBuffer && buffer <= survey::kMaxBuffer))
     throw py::value_error("buffer must be in [0, 1000] m");
   survey::SurveyOptions o;
   o.db_path = db_path, o.out_dir = out_dir, o.buffer = buffer, o.resume = resume;
   o.scene = survey_scene(top_n, max_objects);
+  if (!work_crs.empty()) {
+    std::string error;
+    if (!host::crs_from_user(work_crs, &o.work.crs, &error)) throw py::value_error("work_crs: " + error);
+    if (o.work.crs.units.geographic)
+      throw py::value_error("work_crs: " + work_crs +
+                            " is in degrees: name a projected CRS (metres or feet)");
+    o.work.named = true;
+  }
+  pipeline::report_stale_spill_folders("survey");  // what killed workers on this machine left
   survey::PreparedSurvey s;
   std::string error;
   if (!survey::prepare_survey(o, tiles, &s, &error)) throw py::value_error("survey: " + error);
@@ -94,6 +115,8 @@ std::string run_task(const std::shared_ptr<PyDatabase>& db, const std::string& t
                      uint32_t max_objects) {
   if (!db) throw py::type_error("survey_run_task needs a spinhash.Database");
   const SceneConfig scene = survey_scene(top_n, max_objects);
+  static std::once_flag swept;  // a worker's first task: what killed workers of this machine left
+  std::call_once(swept, [] { pipeline::remove_stale_spill_folders(); });
   survey::SurveyTask task;
   std::string error;
   if (!survey::parse_task_text(task_text, &task, &error)) throw py::value_error("survey task: " + error);
@@ -113,15 +136,18 @@ void bind_survey(py::module_& m) {
   py::class_<PySurvey>(m, "_Survey", "a prepared survey (spinhash.survey drives it)")
       .def("pending", &PySurvey::pending, "(name, path, task) of each tile left to run, in path order")
       .def("store", &PySurvey::store, py::arg("result"), "stores a tile's result atomically in OUT/tiles/")
-      .def("finish", &PySurvey::finish, py::arg("failed"),
+      .def("finish", &PySurvey::finish, py::arg("failed"), py::arg("workers") = 0u,
            "writes the outputs from the stored results; the exit status of `spinhash survey`")
       .def_property_readonly("tiles", &PySurvey::tiles)
+      .def_property_readonly("tiles_planned", &PySurvey::tiles_planned,
+                             "tiles with a task (readable headers)")
+      .def_property_readonly("kept", &PySurvey::kept, "tiles a previous run finished, kept (resume)")
       .def_property_readonly("crs", &PySurvey::crs, "the tiles' PROJ definition ('' when unknown)")
       .def_property_readonly("refused", &PySurvey::refused,
                              "(name, path, reason) of tiles whose header failed");
   m.def("_survey_prepare", &prepare, py::arg("db_path"), py::arg("tiles"), py::arg("out_dir"),
         py::arg("buffer") = survey::kDefaultBuffer, py::arg("resume") = false, py::arg("top_n") = 5u,
-        py::arg("max_objects") = 256u);
+        py::arg("max_objects") = 256u, py::arg("work_crs") = "");
   m.def("_survey_run_task", &run_task, py::arg("db"), py::arg("task"), py::arg("top_n") = 5u,
         py::arg("max_objects") = 256u,
         "one survey task (its tile with the neighbours' buffer): the tile's result as text. OSError when the "

@@ -106,6 +106,10 @@ TEST_CASE("C API: the golden blob opens, recognises in float and double, and nam
   CHECK(std::strcmp(spinhash_class_name(spinhash_database_model_class(&db, 0)), "sedan") == 0);
   CHECK(spinhash_database_model_class(&db, 6) == SPINHASH_CLASS_COUNT);
   CHECK(std::strcmp(spinhash_class_name(SPINHASH_CLASS_COUNT), "unknown") == 0);
+  CHECK(std::strcmp(spinhash_group_name(spinhash_class_group(1u)), "light") == 0);     // a sedan
+  CHECK(std::strcmp(spinhash_group_name(spinhash_class_group(6u)), "armoured") == 0);  // tracked
+  CHECK(spinhash_class_group(SPINHASH_CLASS_COUNT) == 0u);
+  CHECK(std::strcmp(spinhash_group_name(SPINHASH_GROUP_COUNT), "unknown") == 0);
   REQUIRE(r32.class_ranking_count >= 2u);
   CHECK(r32.class_ranking_count <= SPINHASH_CLASS_COUNT);
   CHECK(r64.class_confident == r32.class_confident);

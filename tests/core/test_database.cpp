@@ -9,17 +9,22 @@
 #include <string>
 
 #include "blob/blob_writer.hpp"
-#include "blob/tiny_blob.hpp"
+#include "db/tiny_blob.hpp"
 #include "spinhash/vehicle_class.hpp"
 #include "support/blob_patch.hpp"
 #include "support/golden_files.hpp"
 
 using spinhash::Database;
 using spinhash::kVehicleClassCount;
+using spinhash::kVehicleGroupCount;
 using spinhash::parse_vehicle_class;
+using spinhash::parse_vehicle_group;
 using spinhash::Status;
 using spinhash::vehicle_class_name;
+using spinhash::vehicle_group_name;
+using spinhash::vehicle_group_of;
 using spinhash::VehicleClass;
+using spinhash::VehicleGroup;
 using spinhash::test::BlobPatch;
 namespace blob = spinhash::blob;
 namespace host = spinhash::host;
@@ -446,6 +451,33 @@ TEST_CASE("class names: every id has a name that parses back to it; others do no
   CHECK_FALSE(parse_vehicle_class("", nullptr));
   CHECK_FALSE(parse_vehicle_class(nullptr, nullptr));
   CHECK(parse_vehicle_class("apc", nullptr));
+}
+
+TEST_CASE("class groups: every class has a group of the list, and the group is the class list's column") {
+  for (uint32_t id = 0; id < kVehicleGroupCount; ++id) {
+    VehicleGroup g = VehicleGroup::kNone;
+    CHECK(parse_vehicle_group(vehicle_group_name(id), &g));
+    CHECK(static_cast<uint32_t>(g) == id);
+  }
+  CHECK(std::string(vehicle_group_name(kVehicleGroupCount)) == "unknown");
+  CHECK_FALSE(parse_vehicle_group("Light", nullptr));
+  CHECK_FALSE(parse_vehicle_group(nullptr, nullptr));
+  for (uint32_t id = 0; id < kVehicleClassCount; ++id)
+    CHECK(static_cast<uint32_t>(vehicle_group_of(id)) < kVehicleGroupCount);
+  // The hierarchy the answers climb: cars, SUVs, vans and pickups are light;
+  // lorries and buses heavy; tracked and wheeled armoured vehicles armoured.
+  for (VehicleClass c : {VehicleClass::kSedan, VehicleClass::kSuv, VehicleClass::kVan, VehicleClass::kPickup,
+                         VehicleClass::kCar})
+    CHECK(vehicle_group_of(c) == VehicleGroup::kLight);
+  for (VehicleClass c : {VehicleClass::kTruck, VehicleClass::kBus})
+    CHECK(vehicle_group_of(c) == VehicleGroup::kHeavy);
+  for (VehicleClass c : {VehicleClass::kTracked, VehicleClass::kApc})
+    CHECK(vehicle_group_of(c) == VehicleGroup::kArmoured);
+  // "other" spans every size and "unclassified" says nothing: no group.
+  CHECK(vehicle_group_of(VehicleClass::kOther) == VehicleGroup::kNone);
+  CHECK(vehicle_group_of(VehicleClass::kUnclassified) == VehicleGroup::kNone);
+  CHECK(vehicle_group_of(kVehicleClassCount) == VehicleGroup::kNone);
+  CHECK(std::string(vehicle_group_name(vehicle_group_of(VehicleClass::kApc))) == "armoured");
 }
 
 // A named corruption of a fresh blob; check_corruptions reseals each and

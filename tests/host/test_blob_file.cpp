@@ -16,7 +16,7 @@
 
 #include "blob/blob_writer.hpp"
 #include "blob/file_io.hpp"
-#include "blob/tiny_blob.hpp"
+#include "db/tiny_blob.hpp"
 #include "spinhash/database.hpp"
 
 namespace host = spinhash::host;

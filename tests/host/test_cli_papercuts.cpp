@@ -15,6 +15,7 @@
 #include "cli_runner.hpp"
 #include "cloud/cloud_reader.hpp"
 #include "cloud/ply_header.hpp"
+#include "cloud_test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace spinhash::host::test;
@@ -191,7 +192,7 @@ struct Overlay {
 Overlay read_overlay(const std::string& path) {
   Overlay o;
   std::string bytes, error;
-  REQUIRE_MESSAGE(spinhash::host::read_file_bytes(path, 1u << 28, &bytes, &error), error);
+  REQUIRE_MESSAGE(spinhash::host::read_file(path, 1u << 28, &bytes, &error), error);
   spinhash::host::ply::Header h;
   REQUIRE_MESSAGE(spinhash::host::ply::parse_header(bytes, &h, &error), error);
   REQUIRE(h.format == spinhash::host::ply::Format::kBinaryLittleEndian);
@@ -222,7 +223,7 @@ TEST_CASE("recognize --overlay-out and --picture-out show the posed model over t
   REQUIRE(r.exit_code == kExitOk);
   std::vector<double> query;
   std::string error;
-  REQUIRE(spinhash::host::read_cloud(f.query, &query, &error));
+  REQUIRE(spinhash::host::test::try_read_cloud(f.query, &query, &error));
   const Overlay o = read_overlay(overlay);
   const size_t n = o.colour.size(), nq = query.size() / 3;
   REQUIRE(n > nq + 50);  // the query and the model's stored points
@@ -243,7 +244,7 @@ TEST_CASE("recognize --overlay-out and --picture-out show the posed model over t
   }
   CHECK(close > model_points / 3);  // the query sees 3 sides: about half the model's surface
   std::string png;
-  REQUIRE(spinhash::host::read_file_bytes(picture, 1u << 26, &png, &error));
+  REQUIRE(spinhash::host::read_file(picture, 1u << 26, &png, &error));
   CHECK(png.rfind("\x89PNG\r\n\x1a\n", 0) == 0);
   CHECK(png.size() > 10000);
 

@@ -10,6 +10,7 @@
 
 #include "cli_runner.hpp"
 #include "cloud/cloud_reader.hpp"
+#include "cloud_test_support.hpp"
 
 using namespace spinhash::host::test;
 
@@ -110,7 +111,7 @@ TEST_CASE("scan writes LAS by the extension, ground classified, and recognize re
   INFO(scan.err);
   REQUIRE(scan.exit_code == 0);
   std::string bytes, error;
-  REQUIRE(spinhash::host::read_file_bytes(query, spinhash::host::kMaxCloudFileBytes, &bytes, &error));
+  REQUIRE(spinhash::host::read_file(query, spinhash::host::kMaxCloudFileBytes, &bytes, &error));
   CHECK(bytes.rfind("LASF", 0) == 0);  // LAS, not a PLY under a .las name
   CliRun r = run_spinhash(p.dir, "recognize --top 2 --db " + shell_quoted(p.db) + " " + shell_quoted(query));
   INFO(r.err);
@@ -153,7 +154,7 @@ TEST_CASE("scene finds the scanned vehicle on sloped ground, with a georeference
   }
   CHECK(vehicles == 1);
   std::string png, error;
-  REQUIRE(spinhash::host::read_file_bytes(pictures + "/tile-7.png", 1u << 24, &png, &error));
+  REQUIRE(spinhash::host::read_file(pictures + "/tile-7.png", 1u << 24, &png, &error));
   CHECK(png.rfind("\x89PNG\r\n\x1a\n", 0) == 0);
   CHECK(png.size() > 1000);
 }

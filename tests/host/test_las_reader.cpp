@@ -15,6 +15,7 @@
 #include "cloud/cloud_reader.hpp"
 #include "cloud/las_reader.hpp"
 #include "cloud/las_writer.hpp"
+#include "cloud_test_support.hpp"
 
 using namespace spinhash::host;
 
@@ -55,7 +56,7 @@ const Sample kSamplesExpected[] = {
 
 std::string load(const std::string& rel) {
   std::string bytes, error;
-  REQUIRE_MESSAGE(read_file_bytes(kSamples + "/" + rel, kMaxCloudFileBytes, &bytes, &error), error);
+  REQUIRE_MESSAGE(spinhash::host::read_file(kSamples + "/" + rel, kMaxCloudFileBytes, &bytes, &error), error);
   return bytes;
 }
 
@@ -118,14 +119,14 @@ TEST_CASE("a LAS file that declares more points than it holds is refused, not ze
   CHECK(error.find("truncated") != std::string::npos);
   CHECK(las.xyz.empty());
   std::vector<double> xyz;
-  CHECK_FALSE(read_cloud(kSamples + "/versions/1.2-no-points.las", &xyz, &error));
+  CHECK_FALSE(spinhash::host::test::try_read_cloud(kSamples + "/versions/1.2-no-points.las", &xyz, &error));
 }
 
 TEST_CASE("read_cloud takes LAS by its signature") {
   if (!samples_present()) return;
   std::vector<double> xyz;
   std::string error;
-  REQUIRE_MESSAGE(read_cloud(kSamples + "/sample_c.las", &xyz, &error), error);
+  REQUIRE_MESSAGE(spinhash::host::test::try_read_cloud(kSamples + "/sample_c.las", &xyz, &error), error);
   CHECK(xyz.size() == 3u * 14408u);
 }
 
@@ -187,7 +188,7 @@ TEST_CASE("compressed and foreign formats are named, with how to convert them") 
   for (const Foreign& f : foreign) {
     std::vector<double> xyz;
     std::string error;
-    CHECK_FALSE(parse_cloud(f.bytes, &xyz, &error));
+    CHECK_FALSE(spinhash::host::test::try_read_cloud_bytes(f.bytes, &xyz, &error));
     CHECK(error.find(f.names) != std::string::npos);
     CHECK(error.find("first") != std::string::npos);  // "convert/decompress ... first"
   }
@@ -195,7 +196,7 @@ TEST_CASE("compressed and foreign formats are named, with how to convert them") 
   laz[104] = static_cast<char>(0x83);
   std::vector<double> xyz;
   std::string error;
-  CHECK_FALSE(parse_cloud(laz, &xyz, &error));
+  CHECK_FALSE(spinhash::host::test::try_read_cloud_bytes(laz, &xyz, &error));
   CHECK(error.find("LAZ") != std::string::npos);
   CHECK(error.find("laszip") != std::string::npos);
 }

@@ -27,7 +27,7 @@ namespace {
 constexpr double kPi = 3.141592653589793;
 
 const std::vector<sh::Mesh>& fleet() {
-  static const std::vector<sh::Mesh> f = sh::generate_fleet(7, 1);  // one of each family
+  static const std::vector<sh::Mesh> f = sh::generate_fleet(sh::kFamilyCount, 1);  // one of each family
   return f;
 }
 
@@ -310,7 +310,7 @@ TEST_CASE("scan-scene: on a steep slope crowded with trees no crown comes down o
 TEST_CASE("scan-scene: every kind is there and no two footprints intersect (crowns may overhang)") {
   sh::SceneOptions o;
   o.unknown_vehicles = 2;
-  const std::vector<sh::Mesh> unknown = sh::generate_fleet(7, 99);
+  const std::vector<sh::Mesh> unknown = sh::generate_fleet(sh::kFamilyCount, 99);
   for (uint64_t seed = 1; seed <= 5; ++seed) {
     o.seed = seed;
     const sh::SceneScan s = sh::simulate_scene(fleet(), unknown, o);

@@ -19,7 +19,9 @@
 
 #include "cli_runner.hpp"
 #include "cloud/cloud_reader.hpp"
+#include "cloud/crs_resolve.hpp"
 #include "cloud/las_writer.hpp"
+#include "cloud_test_support.hpp"
 #include "csv_columns.hpp"
 #include "pipeline/database_file.hpp"
 #include "survey/footprint.hpp"
@@ -32,6 +34,12 @@ using namespace spinhash::host::test;
 namespace survey = spinhash::survey;
 
 namespace {
+
+spinhash::host::Crs epsg_crs(uint32_t code) {
+  spinhash::host::Crs c;
+  c.horizontal_epsg = code;
+  return spinhash::host::resolved(c);
+}
 
 constexpr int kKillWaitSteps = 6000;                 // polls for the first stored tile: 60 s at most
 constexpr useconds_t kKillPollMicroseconds = 10000;  // 10 ms between polls
@@ -85,7 +93,7 @@ int vehicles_across_cuts(const std::string& truth_csv) {
 void write_tiles(const std::string& scene, const std::string& dir) {
   std::vector<double> xyz;
   std::string error;
-  REQUIRE_MESSAGE(spinhash::host::read_cloud(scene, &xyz, &error), error);
+  REQUIRE_MESSAGE(spinhash::host::test::try_read_cloud(scene, &xyz, &error), error);
   std::vector<double> parts[4];
   for (size_t i = 0; i < xyz.size(); i += 3) {
     std::vector<double>& part = parts[2 * (xyz[i] >= kCentreX) + (xyz[i + 1] >= kCentreY)];
@@ -243,12 +251,12 @@ TEST_CASE("survey: bad input has a clear message and exit status") {
   const CliRun missing = run_spinhash(s.dir, "survey --quiet --db " + shell_quoted(s.db) + " --out " +
                                                  shell_quoted(s.dir.file("bad")) + " " +
                                                  shell_quoted(s.dir.file("no-such-tile.las")));
-  CHECK(missing.exit_code == 1);
-  CHECK(contains(missing.err, "no such file"));
+  CHECK(missing.exit_code == 2);  // a usage error: docs/cli.md's rule
+  CHECK(contains(missing.err, "no-such-tile.las"));
   const CliRun no_db =
       run_spinhash(s.dir, "survey --quiet --db " + shell_quoted(s.dir.file("none.shdb")) + " --out " +
                               shell_quoted(s.dir.file("bad")) + " " + shell_quoted(s.tiles));
-  CHECK(no_db.exit_code == 1);
+  CHECK(no_db.exit_code == 2);
   CHECK(run_spinhash(s.dir, "survey --db x --out y --jobs 0 z").exit_code == 2);
   // A fresh run clears only its own stored results: --out over the folder
   // that holds the input tiles (DIR/tiles) leaves them alone.
@@ -317,7 +325,7 @@ TEST_CASE(
   std::string error;
   REQUIRE_MESSAGE(spinhash::pipeline::load_database(s.db, &db, &error), error);
   survey::Catalogue cat = survey::read_catalogue({s.tiles + "/t00.las", s.tiles + "/t01.las"});
-  REQUIRE(survey::check_catalogue(cat, &error));
+  REQUIRE(survey::check_catalogue(cat, {}, &error));
   std::vector<survey::SurveyTask> tasks = survey::plan_survey(cat, survey::kDefaultBuffer, "test");
   REQUIRE(tasks.size() == 2);
   tasks[0].crs = "EPSG:32633", tasks[0].crs_name = "EPSG:32633";  // as the LAS readers set it
@@ -332,18 +340,18 @@ TEST_CASE(
   CHECK(contains(f, "\"crs\":\"EPSG:32633\""));
   const std::string geo = s.dir.file("crs.geojson"), gpkg = s.dir.file("crs.gpkg");
   write_bytes(geo, "{\"type\":\"FeatureCollection\",\"features\":[" + f + "]}");
-  REQUIRE_MESSAGE(survey::write_geopackage(geo, gpkg, "EPSG:32633", &error), error);
+  REQUIRE_MESSAGE(survey::write_geopackage({f}, r.columns, gpkg, "EPSG:32633", &error), error);
   if (std::system("command -v ogrinfo > /dev/null") == 0)
     CHECK(std::system(
               ("ogrinfo -so " + shell_quoted(gpkg) + " detections | grep -q 'UTM zone 33N'").c_str()) == 0);
 
   survey::Catalogue mixed = cat;
-  mixed.tiles[0].header.crs.horizontal_epsg = 32633;
-  REQUIRE(survey::check_catalogue(mixed, &error));
+  mixed.tiles[0].header.crs = epsg_crs(32633);
+  REQUIRE(survey::check_catalogue(mixed, {}, &error));
   CHECK(mixed.crs.describe() == "EPSG:32633");
   REQUIRE(mixed.notes.size() == 1);  // t01 declares none: assumed to be in it, and said so
   CHECK(contains(mixed.notes[0], "t01"));
-  mixed.tiles[1].header.crs.horizontal_epsg = 25833;
-  CHECK_FALSE(survey::check_catalogue(mixed, &error));
+  mixed.tiles[1].header.crs = epsg_crs(25833);
+  CHECK_FALSE(survey::check_catalogue(mixed, {}, &error));
   CHECK(contains(error, "do not share a CRS"));
 }

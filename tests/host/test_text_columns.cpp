@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cloud/cloud_reader.hpp"
+#include "cloud_test_support.hpp"
 
 namespace {
 
@@ -15,7 +16,7 @@ std::vector<double> parsed(const std::string& text) {
   std::vector<double> xyz;
   std::string error;
   CAPTURE(text);
-  CHECK_MESSAGE(spinhash::host::parse_cloud(text, &xyz, &error), error);
+  CHECK_MESSAGE(spinhash::host::test::try_read_cloud_bytes(text, &xyz, &error), error);
   return xyz;
 }
 
@@ -23,7 +24,7 @@ void check_refused(const std::string& text, const std::string& words) {
   std::vector<double> xyz = {1.0};
   std::string error;
   CAPTURE(text);
-  CHECK_FALSE(spinhash::host::parse_cloud(text, &xyz, &error));
+  CHECK_FALSE(spinhash::host::test::try_read_cloud_bytes(text, &xyz, &error));
   CHECK(xyz.empty());
   CHECK_MESSAGE(error.find(words) != std::string::npos, error);
 }

@@ -3,6 +3,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -98,15 +99,15 @@ TEST_CASE("mesh helpers: append shifts indices, mirroring keeps the winding outw
 }
 
 TEST_CASE("fleets are deterministic and cycle through the families") {
-  const std::vector<sh::Mesh> first = sh::generate_fleet(14, kSeed);
-  const std::vector<sh::Mesh> again = sh::generate_fleet(14, kSeed);
-  REQUIRE(first.size() == 14);
+  const std::vector<sh::Mesh> first = sh::generate_fleet(2 * sh::kFamilyCount, kSeed);
+  const std::vector<sh::Mesh> again = sh::generate_fleet(2 * sh::kFamilyCount, kSeed);
+  REQUIRE(first.size() == 2 * sh::kFamilyCount);
   for (std::size_t i = 0; i < first.size(); ++i) {
     CHECK(first[i].name == again[i].name);
     CHECK(first[i].vertices == again[i].vertices);
     CHECK(first[i].triangles == again[i].triangles);
   }
-  const std::vector<sh::Mesh> other = sh::generate_fleet(14, kSeed + 1);
+  const std::vector<sh::Mesh> other = sh::generate_fleet(2 * sh::kFamilyCount, kSeed + 1);
   CHECK(other[0].vertices != first[0].vertices);
 
   const std::vector<sh::Mesh> four = sh::generate_fleet(4, kSeed);
@@ -114,7 +115,8 @@ TEST_CASE("fleets are deterministic and cycle through the families") {
   CHECK(four[1].name == "van-00");
   CHECK(four[2].name == "truck-00");
   CHECK(four[3].name == "tracked-00");
-  CHECK(first[7].name == "sedan-01");
+  CHECK(first[7].name == "suv-00");
+  CHECK(first[8].name == "sedan-01");
 
   std::set<std::string> names;
   for (const sh::VehicleSpec& spec : sh::fleet_specs(300, kSeed)) names.insert(spec.name);
@@ -143,32 +145,109 @@ TEST_CASE("every generated vehicle is a valid closed solid standing on z = 0") {
     const sh::Box3 box = mesh.bounding_box();
     CHECK(std::abs(box.lo.z()) < 1e-3);        // wheels or tracks touch the ground
     CHECK(std::abs(box.center().y()) < 1e-4);  // left-right symmetric
-    if (!spec.barrel && !spec.spare_wheel) CHECK(std::abs(box.center().x()) < 0.15);
-    CHECK(box.size().z() == doctest::Approx(spec.height).epsilon(0.12));
-    CHECK(box.size().z() < 4.0);
+    if (!spec.barrel && !spec.spare_wheel) {
+      CHECK(std::abs(box.center().x()) < 0.15);
+      CHECK(box.size().x() == doctest::Approx(spec.length).epsilon(1e-6));
+    }
+    // The spec's height is the overall height: roof rack, cargo box, turret.
+    CHECK(std::abs(box.size().z() - spec.height) < 1e-6);
+    // Mirrors reach out past the body (published widths exclude them).
+    CHECK(box.size().y() >= spec.width - 1e-6);
+    CHECK(box.size().y() <= spec.width + 0.25);
+    CHECK(box.size().z() < 3.8);  // below the scene's layer split (SceneConfig::layer_split_height)
   }
 }
 
-TEST_CASE("family dimensions stay in their ranges and members differ") {
-  for (uint32_t i = 0; i < 20; ++i) {
-    const sh::Box3 sedan = sh::generate_vehicle(sh::Family::kSedan, i, kSeed).bounding_box();
-    CHECK(sedan.size().x() >= 3.8 - 1e-6);
-    CHECK(sedan.size().x() <= 5.2 + 1e-6);
-    const sh::Box3 truck = sh::generate_vehicle(sh::Family::kTruck, i, kSeed).bounding_box();
-    CHECK(truck.size().x() >= 6.0 - 1e-6);
-    CHECK(truck.size().x() <= 8.0 + 1e-6);
+TEST_CASE("every member's dimensions are in its body style's real-world ranges") {
+  const auto in = [](double v, const sh::DimensionRange& r) { return v >= r.lo - 1e-9 && v <= r.hi + 1e-9; };
+  for (const sh::VehicleSpec& spec : sh::fleet_specs(30 * sh::kFamilyCount, kSeed)) {
+    const sh::BodyStyleInfo& style = sh::body_style_info(spec.style);
+    CAPTURE(spec.name);
+    CAPTURE(std::string(style.name));
+    CHECK(style.family == spec.family);
+    CHECK(in(spec.length, style.length));
+    CHECK(in(spec.width, style.width));
+    CHECK(in(spec.height, style.height));
+    CHECK(spec.belt_height <= spec.height);  // equal: a hull without turret or casemate
+    CHECK(spec.ground_clearance < spec.belt_height);
   }
-  // Look-alikes: same layout, but any two of ten members differ by at
-  // least 5 cm in some overall dimension.
-  for (uint32_t family = 0; family < sh::kFamilyCount; ++family) {
-    std::vector<sh::Box3> boxes;
-    for (uint32_t i = 0; i < 10; ++i) {
-      boxes.push_back(sh::generate_vehicle(static_cast<sh::Family>(family), i, kSeed).bounding_box());
+}
+
+TEST_CASE(
+    "body styles: each family's slots fill its cycle, and any cycle of members holds each style in its "
+    "share") {
+  std::map<sh::Family, uint32_t> slots;
+  for (uint32_t id = 0; id < sh::kBodyStyleCount; ++id) {
+    const sh::BodyStyleInfo& style = sh::body_style_info(static_cast<sh::BodyStyle>(id));
+    CHECK(static_cast<uint32_t>(style.style) == id);
+    CHECK(style.slots > 0u);
+    CHECK(style.length.lo < style.length.hi);
+    CHECK(style.width.lo < style.width.hi);
+    CHECK(style.height.lo < style.height.hi);
+    slots[style.family] += style.slots;
+  }
+  CHECK(slots.size() == sh::kFamilyCount);
+  for (const auto& [family, total] : slots) CHECK(total == sh::kStyleCycle);
+  for (uint64_t seed : {kSeed, uint64_t{1}, uint64_t{2}}) {
+    for (uint32_t id = 0; id < sh::kBodyStyleCount; ++id) {
+      const sh::BodyStyleInfo& style = sh::body_style_info(static_cast<sh::BodyStyle>(id));
+      for (uint32_t first : {0u, 7u}) {
+        uint32_t held = 0;
+        for (uint32_t i = first; i < first + sh::kStyleCycle; ++i)
+          held += sh::make_vehicle_spec(style.family, i, seed).style == style.style ? 1u : 0u;
+        CAPTURE(std::string(style.name));
+        CHECK(held == style.slots);
+      }
     }
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-      for (std::size_t j = i + 1; j < boxes.size(); ++j) {
-        CAPTURE(family);
-        CHECK((boxes[i].size() - boxes[j].size()).cwiseAbs().maxCoeff() > 0.05);
+  }
+}
+
+TEST_CASE("the fleet's classes overlap where real ones do") {
+  // Published dimensions: the tallest hatchbacks (1.55 m) stand above the
+  // lowest crossovers (1.53 m), the tallest SUVs and off-roaders (1.97 m)
+  // above the lowest MPVs (1.62 m) and pickups, high-roof vans (2.8 m) above
+  // light lorries' cabs, and long vans (7 m) outreach short lorries (5 m).
+  const auto range = [](sh::Family family, double sh::DimensionRange::*end,
+                        sh::DimensionRange sh::BodyStyleInfo::*dim) {
+    double best = (end == &sh::DimensionRange::lo) ? 1e9 : -1e9;
+    for (uint32_t id = 0; id < sh::kBodyStyleCount; ++id) {
+      const sh::BodyStyleInfo& s = sh::body_style_info(static_cast<sh::BodyStyle>(id));
+      if (s.family != family) continue;
+      const double v = (s.*dim).*end;
+      best = (end == &sh::DimensionRange::lo) ? std::min(best, v) : std::max(best, v);
+    }
+    return best;
+  };
+  const auto lo = &sh::DimensionRange::lo;
+  const auto hi = &sh::DimensionRange::hi;
+  const auto height = &sh::BodyStyleInfo::height;
+  const auto length = &sh::BodyStyleInfo::length;
+  CHECK(range(sh::Family::kSedan, hi, height) > range(sh::Family::kSuv, lo, height));
+  CHECK(range(sh::Family::kSuv, hi, height) > range(sh::Family::kVan, lo, height));
+  CHECK(range(sh::Family::kSuv, hi, height) > range(sh::Family::kPickup, lo, height));
+  CHECK(range(sh::Family::kVan, hi, height) > range(sh::Family::kTruck, lo, height));
+  CHECK(range(sh::Family::kVan, hi, length) > range(sh::Family::kTruck, lo, length));
+  CHECK(range(sh::Family::kTruck, hi, length) > range(sh::Family::kBus, lo, length));
+  CHECK(range(sh::Family::kApc, hi, height) > range(sh::Family::kTracked, lo, height));
+}
+
+TEST_CASE("members of a family differ") {
+  // Look-alikes: same layout, but any two of ten members of a style differ
+  // by at least 5 cm in some overall dimension (members of two styles
+  // differ in layout).
+  for (uint32_t family = 0; family < sh::kFamilyCount; ++family) {
+    std::vector<sh::VehicleSpec> specs;
+    for (uint32_t i = 0; i < 10; ++i)
+      specs.push_back(sh::make_vehicle_spec(static_cast<sh::Family>(family), i, kSeed));
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+      for (std::size_t j = i + 1; j < specs.size(); ++j) {
+        if (specs[i].style != specs[j].style) continue;
+        CAPTURE(specs[i].name);
+        CAPTURE(specs[j].name);
+        const double apart =
+            std::max({std::abs(specs[i].length - specs[j].length), std::abs(specs[i].width - specs[j].width),
+                      std::abs(specs[i].height - specs[j].height)});
+        CHECK(apart > 0.05);
       }
     }
   }

@@ -13,10 +13,9 @@ def recognizer(fleet):
 
 
 @pytest.mark.parametrize("points, message", [
-    ([[0.0, 0.0, 0.0]] * 10, "points must be a numpy array of shape \\(N, 3\\), dtype float64; got list"),
-    (np.zeros((10, 3), np.float32), "points must have dtype float64, got float32"),
-    (np.zeros((10, 3), np.int64), "points must have dtype float64, got int64"),
-    (np.zeros((10, 3), np.dtype(">f8")), "points must have dtype float64, got >f8"),
+    ([[0.0, 0.0, 0.0]] * 10, "points must be a numpy array of shape \\(N, 3\\), dtype float64 or float32; got list"),
+    (np.zeros((10, 3), np.int64), "points must have dtype float64 or float32, got int64"),
+    (np.zeros((10, 3), np.dtype(">f8")), "points must have dtype float64 or float32, got >f8"),
 ])
 def test_wrong_types_are_type_errors(recognizer, points, message):
     with pytest.raises(TypeError, match=message):
@@ -42,7 +41,8 @@ def test_strided_and_fortran_arrays_give_the_contiguous_answer(recognizer, truck
 
 
 def test_nan_rows_are_dropped_and_counted_as_the_cli_does(fleet, recognizer, truck_query, tmp_path):
-    points = spinhash.read_cloud(truck_query)
+    # Within the recognizer's max_points, so that every row is read and counted.
+    points = spinhash.read_cloud(truck_query)[: spinhash.Config().max_points]
     points[::7] = np.nan
     points[3::7, 2] = np.inf
     text = tmp_path / "holes.xyz"
@@ -105,3 +105,25 @@ def test_a_recognizer_keeps_its_database_alive(fleet, truck_query):
     gc.collect()
     assert rec.recognize(spinhash.read_cloud(truck_query)).model == "truck-00"
     assert len(rec.db) == 6
+
+
+def test_float32_clouds_are_read_and_warned_where_float32_cannot_hold_the_coordinates(fleet):
+    points = spinhash.read_cloud(fleet.scan("sedan-00", "f32.ply", "--seed", 3))  # local coordinates
+    recognizer = spinhash.Recognizer(spinhash.Database(fleet.db))
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # small coordinates: float32 holds them, nothing to say
+        small = recognizer.recognize(points.astype(np.float32))
+    assert small.model == recognizer.recognize(points.astype(np.float32).astype(np.float64)).model
+    utm = points + np.array([500000.0, 4000000.0, 100.0])
+    with pytest.warns(UserWarning, match="float32 points: coordinates up to .* steps of"):
+        recognizer.recognize(utm.astype(np.float32))
+
+
+def test_a_python_without_numpy_fails_at_import_with_a_clear_message():
+    import subprocess
+    import sys
+    code = "import sys; sys.modules['numpy'] = None\ntry:\n    import spinhash\nexcept ImportError as e:\n    print(e)\n"
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert "spinhash needs numpy" in done.stdout, done.stdout + done.stderr
+

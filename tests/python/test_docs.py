@@ -94,3 +94,31 @@ def test_the_class_level_is_documented_and_every_class_named():
     listed = re.findall(r'C\((\d+), \w+, "([a-z]+)"', header)
     assert [int(i) for i, _ in listed] == list(range(len(listed)))
     assert spinhash.CLASS_NAMES == tuple(name for _, name in listed)
+
+
+def test_every_group_is_named_and_every_class_has_its_listed_group():
+    """GROUP_NAMES is vehicle_classes.h's group list in id order; CLASS_GROUPS its class list's group column."""
+    header = (SOURCE_DIR / "include" / "spinhash" / "vehicle_classes.h").read_text()
+    groups = re.findall(r'G\((\d+), (\w+), "([a-z]+)"', header)
+    assert [int(i) for i, _, _ in groups] == list(range(len(groups)))
+    assert spinhash.GROUP_NAMES == tuple(name for _, _, name in groups)
+    group_name = {symbol: name for _, symbol, name in groups}
+    classes = re.findall(r'C\((\d+), \w+, "[a-z]+", (\w+),', header)
+    assert spinhash.CLASS_GROUPS == tuple(group_name[symbol] for _, symbol in classes)
+    assert len(spinhash.CLASS_GROUPS) == len(spinhash.CLASS_NAMES)
+    assert spinhash.CLASS_GROUPS[spinhash.CLASS_NAMES.index("suv")] == "light"
+    assert spinhash.CLASS_GROUPS[spinhash.CLASS_NAMES.index("bus")] == "heavy"
+    for attribute in ("GROUP_NAMES", "CLASS_GROUPS"):
+        assert f"`spinhash.{attribute}`" in DOC
+
+
+def test_the_readme_python_snippet_reads_files_the_readme_makes():
+    readme = (SOURCE_DIR / "README.md").read_text()
+    snippet = readme[readme.index("From Python"):]
+    snippet = re.findall(r"```python\n(.*?)```", snippet, re.S)[0]
+    read = re.findall(r"(?:read_cloud|Database)\(\"([^\"]+)\"\)", snippet)
+    assert read, "the snippet reads no file"
+    made = set(re.findall(r"\$ build/host-tools/spinhash \w+[^\n]*?-o (\S+)", readme))
+    for name in read:
+        assert name in made, f"README's Python snippet reads {name}, which no README command makes"
+

@@ -31,7 +31,7 @@ def test_the_header_and_crs_come_without_the_points():
     assert h["format"] == "laz" and h["point_count"] == 1247 and h["las_point_format"] == 1
     assert h["crs"]["epsg"] == 6580 and h["crs"]["vertical_epsg"] == 5703
     wkt = spinhash.read_cloud_header(LAZ / "crs" / "file_with_both_wkt_and_geotiff_vlrs.las")["crs"]
-    assert wkt["source"] == "wkt" and wkt["name"] == "WKT: NAD83_2011_Nebraska_ft"
+    assert wkt["source"] == "wkt" and wkt["name"] == "NAD83_2011_Nebraska_ft"
     us_foot = 1200 / 3937  # the WKT's unit: US survey feet, metres per unit for x y and z
     assert wkt["metres_per_unit"] == pytest.approx((us_foot, us_foot)) and wkt["unit_notes"]
     assert h["crs"]["metres_per_unit"] == (1.0, 1.0) and h["crs"]["unit_notes"] == []
@@ -55,3 +55,18 @@ def test_broken_laz_raises_naming_the_problem():
         spinhash.read_cloud(LAZ / "broken" / "broken_compressor.laz")
     with pytest.raises(ValueError, match="coder 15"):
         list(spinhash.iter_cloud(LAZ / "broken" / "broken_coder.laz"))
+
+
+def test_units_and_reprojection_through_the_reading_door():
+    autzen = LAZ / "twins" / "autzen_trim.laz"
+    crs = spinhash.read_cloud_header(autzen)["crs"]
+    assert crs["name"] == "NAD_1983_HARN_Lambert_Conformal_Conic" and crs["units"] == ("foot", "foot")
+    feet, metres = spinhash.read_cloud(autzen), spinhash.read_cloud(autzen, metres=True)
+    np.testing.assert_allclose(metres, feet * 0.3048, rtol=1e-12)
+    with pytest.raises(ValueError, match="degrees"):
+        spinhash.read_cloud(LAZ / "crs" / "epsg_4326.las", metres=True)
+    utm = spinhash.read_cloud(LAZ / "crs" / "epsg_4326.las", work_crs="EPSG:32615")
+    assert utm[:, 0].min() == pytest.approx(339337, abs=50) and utm[:, 1].min() == pytest.approx(3434860, abs=100)
+    chunks = np.concatenate(list(spinhash.iter_cloud(autzen, 4096, metres=True)))
+    np.testing.assert_array_equal(chunks, metres)
+

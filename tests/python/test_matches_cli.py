@@ -88,6 +88,7 @@ def test_database_describes_itself_as_info_does(fleet):
     text = run_cli("info", fleet.db)
     for model in db.models:
         assert model["name"] in text and model["features"] > 0
+        assert model["group"] == spinhash.CLASS_GROUPS[spinhash.CLASS_NAMES.index(model["class"])]
         assert all(e > 0.5 for e in model["extent"])
     assert f"models        {db.info['models']}" in text
     assert f"features      {db.info['features']}" in text

@@ -161,3 +161,49 @@ def test_the_package_keeps_the_extension_s_names():
     assert spinhash.Database is spinhash._spinhash.Database
     assert spinhash.__version__ == spinhash._spinhash.__version__
     assert callable(survey.run) and sys.modules["spinhash.survey"] is survey
+
+
+def test_results_are_stored_as_they_come_with_the_progress_line_on(fleet, tiles, tmp_path, monkeypatch, capfd):
+    """The default mode (progress shown): three tiles' results are stored while
+    the fourth still runs, so an interruption then keeps them."""
+    from distributed import Client
+    release = threading.Event()
+    real = survey._spinhash._survey_run_task
+
+    def held(db, task, top_n, max_objects):
+        if any(line.startswith("tile ") and line.endswith("t11.xyz") for line in task.splitlines()):
+            release.wait(STARTUP_S * 2)  # the last tile waits until the others are stored
+        return real(db, task, top_n, max_objects)
+
+    monkeypatch.setattr(survey._spinhash, "_survey_run_task", held)
+    out = tmp_path / "dask"
+    client = Client(processes=False, n_workers=2, threads_per_worker=1, dashboard_address=None)
+    try:
+        runner = threading.Thread(target=lambda: survey.run(str(fleet.db), [str(tiles)], str(out), client,
+                                                            progress=True, geodataframe=False))
+        runner.start()
+        results = out / "tile-results"
+        deadline = time.monotonic() + STARTUP_S
+        while time.monotonic() < deadline and len(list(results.glob("*.result"))) < 3:
+            time.sleep(0.1)
+        stored = sorted(p.name for p in results.glob("*.result"))
+        release.set()
+        runner.join(timeout=300)
+        assert not runner.is_alive()
+    finally:
+        client.close()
+    assert stored == ["t00.result", "t01.result", "t10.result"]
+    report = json.loads((out / "survey.json").read_text())
+    assert report["jobs"] == 2  # the workers that ran the tasks
+    err = capfd.readouterr().err
+    assert "[survey] 4/4 tiles" in err  # on stderr
+
+
+def test_the_command_line_matches_the_cli_s_options_and_help_is_plain_text(capsys):
+    with pytest.raises(SystemExit):
+        survey.main(["--help"])
+    text = capsys.readouterr().out
+    assert "``" not in text
+    for option in ("--top", "--max-objects", "--work-crs", "--quiet"):
+        assert option in text
+

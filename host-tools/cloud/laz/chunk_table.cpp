@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
+#include "cloud/cloud_error.hpp"
 #include "cloud/laz/integer_decompressor.hpp"
-#include "cloud/point_source.hpp"
 
 namespace spinhash::host::laz {
 namespace {

@@ -1,6 +1,6 @@
 #include "cloud/laz/gps_time_codec.hpp"
 
-#include "cloud/point_source.hpp"
+#include "cloud/cloud_error.hpp"
 
 namespace spinhash::host::laz {
 namespace {

@@ -1,6 +1,6 @@
 #include "cloud/laz/item_codec.hpp"
 
-#include "cloud/point_source.hpp"
+#include "cloud/cloud_error.hpp"
 
 namespace spinhash::host::laz {
 

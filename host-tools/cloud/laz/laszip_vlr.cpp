@@ -1,6 +1,6 @@
 #include "cloud/laz/laszip_vlr.hpp"
 
-#include "cloud/point_source.hpp"
+#include "cloud/cloud_error.hpp"
 
 namespace spinhash::host::laz {
 namespace {

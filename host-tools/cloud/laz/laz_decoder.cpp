@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "cloud/point_source.hpp"
+#include "cloud/cloud_error.hpp"
 
 namespace spinhash::host::laz {
 namespace {

@@ -1,11 +1,11 @@
-#include "pipeline/scene_flags.hpp"
+#include "flags/scene_flags.hpp"
 
 #include <algorithm>
 
 #include "spinhash/limits.hpp"
 #include "spinhash/scene_fields.h"
 
-namespace spinhash::pipeline {
+namespace spinhash::flags {
 namespace {
 
 // One registration per kind of SPINHASH_SCENE_CONFIG_FIELDS. A default of 0
@@ -36,4 +36,4 @@ void add_scene_flags(CLI::App* cmd, SceneConfig* c, const std::vector<std::strin
 #undef SPINHASH_ADD_SCENE_FLAG
 }
 
-}  // namespace spinhash::pipeline
+}  // namespace spinhash::flags

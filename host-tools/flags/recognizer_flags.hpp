@@ -4,9 +4,8 @@
 
 #include "spinhash/config.hpp"
 
-namespace spinhash::pipeline {
+namespace spinhash::flags {
 
 void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* cfg);
-const char* mode_name(Mode m);
 
-}  // namespace spinhash::pipeline
+}  // namespace spinhash::flags

@@ -1,4 +1,4 @@
-#include "blob/tiny_blob.hpp"
+#include "db/tiny_blob.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,20 +1,18 @@
-#include "pipeline/recognizer_flags.hpp"
+#include "flags/recognizer_flags.hpp"
 
 #include <map>
 #include <string>
 
+#include "pipeline/mode_name.hpp"
 #include "spinhash/config_fields.h"
 #include "spinhash/limits.hpp"
 #include "spinhash/presets.hpp"
 
-namespace spinhash::pipeline {
-namespace {
+namespace spinhash::flags {
 
-const std::map<std::string, Mode>& mode_names() {
-  static const std::map<std::string, Mode> names{
-      {"bran", Mode::kBran}, {"sran", Mode::kSran}, {"sind", Mode::kSind}};
-  return names;
-}
+using pipeline::mode_name;
+using pipeline::mode_names;
+namespace {
 
 // One registration per kind of SPINHASH_CONFIG_FIELDS.
 // By name: a transformer over the enum would print its raw bytes in --help.
@@ -51,12 +49,6 @@ void add_VEC3D(CLI::App*, double (*)[3], int, int, const char*, const char*) {} 
 
 }  // namespace
 
-const char* mode_name(Mode m) {
-  for (const auto& [name, mode] : mode_names())
-    if (mode == m) return name.c_str();
-  return "?";
-}
-
 void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
   // First, so that its callback runs before the fields' flags, which override it.
   cmd->add_option_function<std::string>(
@@ -84,4 +76,4 @@ void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
       ->expected(3);
 }
 
-}  // namespace spinhash::pipeline
+}  // namespace spinhash::flags

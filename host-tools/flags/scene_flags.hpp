@@ -9,9 +9,9 @@
 
 #include "spinhash/scene.hpp"
 
-namespace spinhash::pipeline {
+namespace spinhash::flags {
 
 // Every flagged field, or only those whose flag is in `only` when given.
 void add_scene_flags(CLI::App* cmd, SceneConfig* cfg, const std::vector<std::string>& only = {});
 
-}  // namespace spinhash::pipeline
+}  // namespace spinhash::flags
