@@ -144,8 +144,7 @@ TEST_CASE("tile stream: chunks of any size and order give the whole tile's objec
   pipeline::DatabaseFile db;
   std::string error;
   REQUIRE_MESSAGE(pipeline::load_database(db_path, &db, &error), error);
-  std::vector<double> xyz;
-  REQUIRE_MESSAGE(read_cloud(scene, &xyz, &error), error);
+  const std::vector<double> xyz = read_cloud(scene);
   const size_t n = xyz.size() / 3;
 
   SceneConfig config;
