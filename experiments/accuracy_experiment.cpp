@@ -5,6 +5,7 @@
 
 #include "accuracy_data.hpp"
 #include "bran_knobs.hpp"
+#include "config/mode_name.hpp"
 #include "config_text.hpp"
 #include "experiments.hpp"
 #include "lookalikes.hpp"
@@ -14,7 +15,6 @@
 #include "modes.hpp"
 #include "output_dir.hpp"
 #include "pipeline/exit_codes.hpp"
-#include "pipeline/mode_name.hpp"
 #include "pipeline/progress.hpp"
 #include "scan/scan_simulator.hpp"
 #include "spinhash/limits.hpp"
@@ -43,7 +43,7 @@ struct AccuracyArgs {
   uint64_t fleet_seed = 1;  // procedural vehicles
   uint32_t max_k = 10;
   BranKnobs bran;
-  float ground_clearance = RecognizerConfig{}.ground_clearance;
+  float ground_clearance = GroundParams{}.ground_clearance;
   bool models_given = false;
 };
 
@@ -56,7 +56,7 @@ bool open_sessions(const Database& db, const AccuracyArgs& a, const std::vector<
     RecognizerConfig cfg;  // library defaults (but the BRAN knobs): the experiment measures them
     cfg.mode = m;
     a.bran.apply(&cfg);
-    cfg.ground_clearance = keep_ground ? 0.0f : a.ground_clearance;
+    cfg.ground.ground_clearance = keep_ground ? 0.0f : a.ground_clearance;
     out->push_back(std::make_unique<pipeline::RecognitionSession>());
     if (!out->back()->init(&db, cfg, error)) return false;
   }

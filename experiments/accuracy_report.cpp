@@ -4,10 +4,10 @@
 #include <sstream>
 
 #include "accuracy_data.hpp"
+#include "config/mode_name.hpp"
 #include "csv_table.hpp"
 #include "gnuplot.hpp"
 #include "output_dir.hpp"
-#include "pipeline/mode_name.hpp"
 #include "plot_styles.hpp"
 #include "spinhash/vehicle_class.hpp"
 #include "stats.hpp"
@@ -111,7 +111,7 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
   for (const AccuracyRecord& r : run.records) {
     const QueryCondition& c = run.conditions[r.condition];
     const Outcome& o = r.outcome;
-    per_query.add({pipeline::mode_name(run.modes[r.mode]),
+    per_query.add({host::mode_name(run.modes[r.mode]),
                    num(c.noise),
                    num(c.occlusion),
                    ground_name(c.ground),
@@ -148,8 +148,8 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
   CsvTable timing({"mode", "noise", "occlusion", "ground", "spacing", "queries", "not_ok", "budget_exhausted",
                    "median_ms", "mean_ms", "median_hypotheses", "mean_hypotheses", "mean_points"});
   std::vector<std::string> wide_header{"condition"};
-  for (Mode m : run.modes) wide_header.push_back(std::string(pipeline::mode_name(m)) + "_median_ms");
-  for (Mode m : run.modes) wide_header.push_back(std::string(pipeline::mode_name(m)) + "_mean_hypotheses");
+  for (Mode m : run.modes) wide_header.push_back(std::string(host::mode_name(m)) + "_median_ms");
+  for (Mode m : run.modes) wide_header.push_back(std::string(host::mode_name(m)) + "_mean_hypotheses");
   CsvTable timing_wide(wide_header);
   for (uint32_t c = 0; c < run.conditions.size(); ++c) {
     const QueryCondition& cond = run.conditions[c];
@@ -162,8 +162,8 @@ bool write_csvs(const AccuracyRun& run, std::string* error) {
       per_mode.push_back(topk_curve(run, c, m));
       std::vector<const AccuracyRecord*> rs = select(run, c, m);
       ModeSummary s = summarise(rs);
-      std::vector<std::string> cond_cols{pipeline::mode_name(run.modes[m]), num(cond.noise),
-                                         num(cond.occlusion), ground_name(cond.ground), num(cond.spacing)};
+      std::vector<std::string> cond_cols{host::mode_name(run.modes[m]), num(cond.noise), num(cond.occlusion),
+                                         ground_name(cond.ground), num(cond.spacing)};
       for (uint32_t k = 1; k <= run.max_k; ++k) {
         std::vector<std::string> row = cond_cols;
         row.insert(row.end(), {std::to_string(k), num(per_mode.back()[k - 1]), std::to_string(rs.size())});
@@ -327,7 +327,7 @@ std::string ground_section(const AccuracyRun& run) {
   if (scanned)
     s << " -> with a ground square reaching " << run.ground_margin
       << " m beyond the vehicle scanned too (the recognizer's default level-ground removal, ground_clearance "
-      << RecognizerConfig{}.ground_clearance << " m)";
+      << GroundParams{}.ground_clearance << " m)";
   if (kept) s << " -> the same scans with the ground removal off (what a pipeline without it sees)";
   s << ":\n\n| noise, occlusion |";
   for (Mode m : run.modes) s << " " << mode_title(m) << " |";

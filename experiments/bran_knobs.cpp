@@ -1,37 +1,30 @@
 #include "bran_knobs.hpp"
 
-#include "config/config_assign.hpp"
+#include "flags/recognizer_flags.hpp"
 #include "spinhash/limits.hpp"
 
 namespace spinhash::experiment {
 
 void BranKnobs::apply(RecognizerConfig* cfg) const {
-  cfg->max_bucket_scan = max_bucket_scan;
+  cfg->candidates.max_bucket_scan = max_bucket_scan;
   cfg->max_features = max_features;
-  cfg->transfer_models = transfer_models;
-  cfg->stop_miss_probability = stop_miss_probability;
-  cfg->min_hypotheses = min_hypotheses;
-  cfg->focus_models = focus_models;
-  cfg->lookalike_box_l1 = lookalike_box_l1;
+  cfg->transfer.transfer_models = transfer_models;
+  cfg->draws.stop_miss_probability = stop_miss_probability;
+  cfg->draws.min_hypotheses = min_hypotheses;
+  cfg->focus.focus_models = focus_models;
+  cfg->draws.lookalike_box_l1 = lookalike_box_l1;
   apply_settings(settings, cfg);
 }
 
 void apply_settings(const std::vector<std::string>& settings, RecognizerConfig* cfg) {
-  std::string error;
-  for (const std::string& s : settings)
-    if (!host::assign_config_field(s, cfg, &error)) throw CLI::ValidationError("--set", error);
+  flags::apply_settings(settings, cfg);
 }
 
 void add_set_option(CLI::App* cmd, std::vector<std::string>* settings) {
-  cmd->add_option(
-         "--set", *settings,
-         "FIELD=VALUE: any recognizer field by its name in include/spinhash/config.hpp, applied after "
-         "the other flags (repeatable)")
-      ->check([](const std::string& s) {
-        RecognizerConfig probe;
-        std::string error;
-        return host::assign_config_field(s, &probe, &error) ? std::string() : error;
-      });
+  cmd->add_option("--set", *settings,
+                  "STAGE.FIELD=VALUE: any stage parameter (docs/api.md lists them), or a top-level field by "
+                  "its name; applied after the other flags (repeatable)")
+      ->check(flags::check_setting);
 }
 
 void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs) {
@@ -58,7 +51,7 @@ void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs) {
       ->capture_default_str();
   cmd->add_option("--max-bucket-scan", knobs->max_bucket_scan,
                   "LSH entries scanned per query feature (BRAN, SIND)")
-      ->check(CLI::Range(1u, 1u << 24))
+      ->check(CLI::Range(1u, kMaxBucketScan))
       ->capture_default_str();
   cmd->add_option("--max-features", knobs->max_features,
                   "query features kept, evenly thinned above (all modes)")

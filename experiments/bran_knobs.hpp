@@ -2,8 +2,8 @@
 // --stop-miss-probability, --min-hypotheses, --focus-models, --lookalike-box), so one run can compare them
 // with the paper's BRAN; the LSH scan bound (--max-bucket-scan) that sets
 // the index's cost; the query features kept (--max-features) that set a
-// large vehicle's; any other field by name (--set FIELD=VALUE: levers swept
-// without a flag of their own, scripts/flight-levers.sh).
+// large vehicle's; any other field by its key (--set STAGE.FIELD=VALUE:
+// levers swept without a flag of their own, scripts/flight-levers.sh).
 #pragma once
 #include <CLI/CLI.hpp>
 #include <string>
@@ -14,20 +14,20 @@
 namespace spinhash::experiment {
 
 struct BranKnobs {
-  uint32_t transfer_models = RecognizerConfig{}.transfer_models;
-  float stop_miss_probability = RecognizerConfig{}.stop_miss_probability;
-  uint32_t min_hypotheses = RecognizerConfig{}.min_hypotheses;
-  uint32_t focus_models = RecognizerConfig{}.focus_models;
-  float lookalike_box_l1 = RecognizerConfig{}.lookalike_box_l1;
-  uint32_t max_bucket_scan = RecognizerConfig{}.max_bucket_scan;
+  uint32_t transfer_models = TransferParams{}.transfer_models;
+  float stop_miss_probability = DrawsParams{}.stop_miss_probability;
+  uint32_t min_hypotheses = DrawsParams{}.min_hypotheses;
+  uint32_t focus_models = FocusParams{}.focus_models;
+  float lookalike_box_l1 = DrawsParams{}.lookalike_box_l1;
+  uint32_t max_bucket_scan = CandidatesParams{}.max_bucket_scan;
   uint32_t max_features = RecognizerConfig{}.max_features;
-  std::vector<std::string> settings;  // --set FIELD=VALUE, any field, applied last
+  std::vector<std::string> settings;  // --set KEY=VALUE, any field, applied last
   void apply(RecognizerConfig* cfg) const;
 };
 
 void add_bran_knobs(CLI::App* cmd, BranKnobs* knobs);
 
-// --set FIELD=VALUE (repeatable) alone, for experiments without the knobs
+// --set KEY=VALUE (repeatable) alone, for experiments without the knobs
 // above (scene); apply_settings() assigns them in order.
 void add_set_option(CLI::App* cmd, std::vector<std::string>* settings);
 void apply_settings(const std::vector<std::string>& settings, RecognizerConfig* cfg);

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "accuracy_data.hpp"
+#include "config/mode_name.hpp"
 #include "csv_table.hpp"
-#include "pipeline/mode_name.hpp"
 #include "plot_styles.hpp"
 
 namespace spinhash::experiment {
@@ -96,11 +96,11 @@ bool write_calibration_csv(const AccuracyRun& run, std::string* error) {
   for (int c = -1; c < static_cast<int>(run.conditions.size()); ++c)
     for (uint32_t m = 0; m < run.modes.size(); ++m) {
       const Tally x = tally(run, c, m);
-      t.add({pipeline::mode_name(run.modes[m]),
-             c < 0 ? "all" : run.conditions[static_cast<size_t>(c)].label(), std::to_string(x.queries),
-             std::to_string(x.right), std::to_string(x.confident), std::to_string(x.confident_right),
-             num(x.precision()), num(x.recall()), std::to_string(x.wrong_lookalike), std::to_string(x.unsure),
-             std::to_string(x.unsure_in_group), num(x.mean_group())});
+      t.add({host::mode_name(run.modes[m]), c < 0 ? "all" : run.conditions[static_cast<size_t>(c)].label(),
+             std::to_string(x.queries), std::to_string(x.right), std::to_string(x.confident),
+             std::to_string(x.confident_right), num(x.precision()), num(x.recall()),
+             std::to_string(x.wrong_lookalike), std::to_string(x.unsure), std::to_string(x.unsure_in_group),
+             num(x.mean_group())});
     }
   return t.write(run.out_dir + "/calibration.csv", error);
 }

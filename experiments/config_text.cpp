@@ -2,8 +2,7 @@
 
 #include <sstream>
 
-#include "pipeline/mode_name.hpp"
-#include "spinhash/config_fields.h"
+#include "config/config_text.hpp"
 
 namespace spinhash::experiment {
 
@@ -19,31 +18,8 @@ std::string database_text(const MemoryDatabase& m) {
   return s.str();
 }
 
-namespace {
-
-void put(std::ostringstream& s, Mode v) { s << pipeline::mode_name(v); }
-void put(std::ostringstream& s, bool v) { s << (v ? "on" : "off"); }
-void put(std::ostringstream& s, uint32_t v) { s << v; }
-void put(std::ostringstream& s, uint64_t v) { s << v; }
-void put(std::ostringstream& s, float v) { s << v; }
-void put(std::ostringstream& s, const double (&v)[3]) { s << v[0] << " " << v[1] << " " << v[2]; }
-
-}  // namespace
-
-// Every field of SPINHASH_CONFIG_FIELDS but the mode (the experiments list
-// their modes), as "name value; ...".
-std::string recognizer_text(const RecognizerConfig& c) {
-  std::ostringstream s;
-  const char* sep = "";
-#define SPINHASH_PUT_FIELD(kind, name, lo, hi, flag, help) \
-  if (std::string(#name) != "mode") {                      \
-    s << sep << #name << " ";                              \
-    put(s, c.name);                                        \
-    sep = "; ";                                            \
-  }
-  SPINHASH_CONFIG_FIELDS(SPINHASH_PUT_FIELD)
-#undef SPINHASH_PUT_FIELD
-  return s.str();
-}
+// Every field of the field lists but the mode (the experiments list their
+// modes), as "key value; ...".
+std::string recognizer_text(const RecognizerConfig& c) { return host::config_text(c, false); }
 
 }  // namespace spinhash::experiment

@@ -96,9 +96,9 @@ int run_lsh(const LshArgs& a) {
       "procedural fleet of " + std::to_string(a.models) + " (seed " + std::to_string(a.fleet_seed) + ")";
   const host::BuildOptions build;  // library defaults
   const RecognizerConfig cfg;
-  run.top_w = cfg.top_w;
-  run.max_bucket_scan = cfg.max_bucket_scan;
-  run.delta = cfg.delta;
+  run.top_w = cfg.candidates.top_w;
+  run.max_bucket_scan = cfg.candidates.max_bucket_scan;
+  run.delta = cfg.draws.delta;
   std::vector<pipeline::ModelMesh> meshes = generated_models(a.models, a.fleet_seed);
   std::vector<host::ModelCloud> clouds;
   std::unique_ptr<MemoryDatabase> mdb;

@@ -75,12 +75,12 @@ void measure_recall(const Database& db, const RecognizerConfig& cfg, const std::
                     LshConfigResult* r) {
   Arena counter;
   LshSearcher sizing;
-  sizing.carve(counter, cfg.max_bucket_scan);
+  sizing.carve(counter, cfg.candidates.max_bucket_scan);
   host::AlignedBytes buffer(counter.used());
   Arena arena(buffer.data(), buffer.size());
   LshSearcher searcher;
-  searcher.carve(arena, cfg.max_bucket_scan);
-  const uint32_t w = std::min(cfg.top_w, kMaxCandidates);
+  searcher.carve(arena, cfg.candidates.max_bucket_scan);
+  const uint32_t w = std::min(cfg.candidates.top_w, kMaxCandidates);
   std::vector<Candidate> cand(w);
   uint64_t nn = 0, match = 0, ncand = 0, scanned = 0, truncated = 0;
   double topw = 0.0, share = 0.0, seconds = 0.0;
@@ -171,8 +171,8 @@ bool probe_features(const MemoryDatabase& mdb, const RecognizerConfig& cfg, cons
                   pf.spin.data());
     pf.position = {mf.positions[3u * f], mf.positions[3u * f + 1u], mf.positions[3u * f + 2u]};
     pf.model = q.model;
-    pf.correct = correct_features(db, q.model, q.true_pose, pf.position, cfg.delta);
-    exhaustive_answer(db, cfg.top_w, &pf);
+    pf.correct = correct_features(db, q.model, q.true_pose, pf.position, cfg.draws.delta);
+    exhaustive_answer(db, cfg.candidates.top_w, &pf);
     out->push_back(std::move(pf));
   }
   return true;

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "pipeline/mode_name.hpp"
+#include "config/mode_name.hpp"
 
 namespace spinhash::experiment {
 
@@ -10,8 +10,7 @@ bool parse_modes(const std::vector<std::string>& names, std::vector<Mode>* out, 
   const Mode all[] = {Mode::kBran, Mode::kSran, Mode::kSind};
   out->clear();
   for (const std::string& n : names) {
-    auto it =
-        std::find_if(std::begin(all), std::end(all), [&](Mode m) { return n == pipeline::mode_name(m); });
+    auto it = std::find_if(std::begin(all), std::end(all), [&](Mode m) { return n == host::mode_name(m); });
     if (it == std::end(all)) {
       *error = "unknown mode '" + n + "' (bran, sran, sind)";
       return false;

@@ -24,14 +24,14 @@ Outcome recognise(pipeline::RecognitionSession& session, const Query& q) {
   Outcome o;
   o.status = r.status;
   o.ms = session.last_ms();
-  o.hypotheses = r.stats.hypotheses;
-  o.features = r.stats.features;
+  o.hypotheses = r.stats.draws.hypotheses;
+  o.features = r.stats.extract.features;
   o.confident = r.confident;
   o.group_size = r.group_size;
-  o.budget_exhausted = r.stats.budget_exhausted;
-  o.trials = r.stats.trials;
-  o.surface_coverage = r.stats.surface_coverage;
-  o.scan_density = r.stats.scan_density;
+  o.budget_exhausted = r.stats.draws.budget_exhausted;
+  o.trials = r.stats.draws.trials;
+  o.surface_coverage = r.stats.confidence.surface_coverage;
+  o.scan_density = r.stats.confidence.scan_density;
   if (r.status != Status::kOk) return o;
   o.ranked = r.ranking_count;
   if (r.ranking_count > 0) {

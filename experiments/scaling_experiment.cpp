@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "bran_knobs.hpp"
+#include "config/mode_name.hpp"
 #include "config_text.hpp"
 #include "experiments.hpp"
 #include "lookalikes.hpp"
@@ -16,7 +17,6 @@
 #include "modes.hpp"
 #include "output_dir.hpp"
 #include "pipeline/exit_codes.hpp"
-#include "pipeline/mode_name.hpp"
 #include "pipeline/progress.hpp"
 #include "scaling_data.hpp"
 #include "spinhash/limits.hpp"
@@ -83,7 +83,7 @@ bool measure_size(const ScalingArgs& a, const std::vector<host::ModelCloud>& all
     if (!session.init(&mdb->db, cfg, error)) return false;
     run->recognizer = recognizer_text(session.config());
     const uint32_t n = queries_for(a, cfg.mode, size);
-    pipeline::Progress progress(std::to_string(size) + " models, " + pipeline::mode_name(cfg.mode), n);
+    pipeline::Progress progress(std::to_string(size) + " models, " + host::mode_name(cfg.mode), n);
     for (uint32_t j = 0; j < n; ++j) {
       run->records.push_back(
           ScalingRecord{size_index, m, j, queries[j].model, recognise(session, queries[j])});

@@ -4,10 +4,10 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "config/mode_name.hpp"
 #include "csv_table.hpp"
 #include "gnuplot.hpp"
 #include "output_dir.hpp"
-#include "pipeline/mode_name.hpp"
 #include "plot_styles.hpp"
 #include "scaling_data.hpp"
 #include "stats.hpp"
@@ -69,7 +69,7 @@ bool write_csvs(const ScalingRun& run, std::string* error) {
   CsvTable per_query({"models", "mode", "query", "model", "status", "rank", "ms", "hypotheses", "features",
                       "budget_exhausted", "confident", "group_size"});
   for (const ScalingRecord& r : run.records)
-    per_query.add({std::to_string(run.builds[r.size].models), pipeline::mode_name(run.modes[r.mode]),
+    per_query.add({std::to_string(run.builds[r.size].models), host::mode_name(run.modes[r.mode]),
                    std::to_string(r.query), std::to_string(r.model), status_name(r.outcome.status),
                    std::to_string(r.outcome.rank), num(r.outcome.ms), std::to_string(r.outcome.hypotheses),
                    std::to_string(r.outcome.features), r.outcome.budget_exhausted ? "1" : "0",
@@ -78,7 +78,7 @@ bool write_csvs(const ScalingRun& run, std::string* error) {
                      "mean_hypotheses", "top1", "top5", "budget_exhausted"});
   std::vector<std::string> head{"models", "features"};
   for (Mode m : run.modes) {
-    std::string n = pipeline::mode_name(m);
+    std::string n = host::mode_name(m);
     head.insert(head.end(), {n + "_median_ms", n + "_mean_ms", n + "_mean_hypotheses", n + "_top1"});
   }
   CsvTable wide(head);
@@ -89,7 +89,7 @@ bool write_csvs(const ScalingRun& run, std::string* error) {
     std::vector<std::string> row{std::to_string(b.models), std::to_string(b.features)};
     for (uint32_t m = 0; m < run.modes.size(); ++m) {
       Cell c = cell(run, s, m);
-      longform.add({std::to_string(b.models), std::to_string(b.features), pipeline::mode_name(run.modes[m]),
+      longform.add({std::to_string(b.models), std::to_string(b.features), host::mode_name(run.modes[m]),
                     std::to_string(c.ms.size()), num(median_of(c.ms)), num(mean_of(c.ms)),
                     num(median_of(c.hyp)), num(mean_of(c.hyp)), num(c.top(1)), num(c.top(5)),
                     std::to_string(c.budget)});

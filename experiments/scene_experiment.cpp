@@ -164,7 +164,8 @@ int run_scene(const SceneArgs& a) {
     return fail(error.empty() ? "--mode: one of bran, sran, sind" : error);
   const uint32_t unknown = fleet.unknown.empty() ? 0u : a.unknown_vehicles;
   cfg.recognizer.mode = modes[0];
-  cfg.recognizer.ground_clearance = 0.0f;  // as `spinhash scene`: the terrain classifier removes the ground
+  cfg.recognizer.ground.ground_clearance =
+      0.0f;  // as `spinhash scene`: the terrain classifier removes the ground
   cfg.max_tile_points = kExperimentTilePoints;
   apply_settings(a.settings, &cfg.recognizer);
   if (!model_clouds(models, &clouds, &error) ||

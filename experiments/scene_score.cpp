@@ -72,7 +72,7 @@ void score_tile(const host::SceneScan& scan, const SceneResult& result, const Da
       r.found = true, r.distance = best_d, r.answer = first_model(db, o), r.confident = o.confident;
       r.score = o.ranking_count > 0 ? o.ranking[0].score : 0.0;
       r.score_second = o.ranking_count > 1 ? o.ranking[1].score : 0.0;
-      r.features = o.stats.features;
+      r.features = o.stats.extract.features;
       r.ground_gap = o.ground_gap;
       if (v.kind == SceneObjectKind::kVehicle)
         used[best] = true;  // an unknown vehicle's answer stays a candidate alarm

@@ -69,7 +69,7 @@ struct Collected {
 // origin the first point pushed: the swath covers the width either side.
 StreamConfig line_config(double width, const host::FlightLineScan& line) {
   StreamConfig c;
-  c.scene.recognizer.ground_clearance = 0.0f;
+  c.scene.recognizer.ground.ground_clearance = 0.0f;
   c.heading_deg = 90.0f;  // the line runs along +y
   c.swath_min = c.own_min = static_cast<float>(-width);
   c.swath_max = c.own_max = static_cast<float>(width);

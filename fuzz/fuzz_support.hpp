@@ -23,10 +23,10 @@ inline RecognizerConfig small_config(Mode mode) {
   cfg.mode = mode;
   cfg.max_points = kPoints;
   cfg.max_features = kFeatures;
-  cfg.max_trials = kTrials;
-  cfg.sran_trials = kSranTrials;
-  cfg.max_hypotheses = kHypotheses;
-  cfg.max_bucket_scan = kBucketScan;
+  cfg.draws.max_trials = kTrials;
+  cfg.draws.sran_trials = kSranTrials;
+  cfg.draws.max_hypotheses = kHypotheses;
+  cfg.candidates.max_bucket_scan = kBucketScan;
   return cfg;
 }
 

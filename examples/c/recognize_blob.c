@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
   config.seed = 7;
   config.max_points = kMaxPoints;
   config.max_models = 16;
-  config.max_hypotheses = 2000; /* the frame-time budget: stop early, best answer so far */
+  config.draws.max_hypotheses = 2000; /* the frame-time budget: stop early, best answer so far */
   need = spinhash_workspace_bytes(&config);
   printf("database: %u models, %lu bytes; workspace %lu bytes; cloud %u points\n",
          (unsigned)spinhash_database_model_count(&database), (unsigned long)blob_bytes, (unsigned long)need,

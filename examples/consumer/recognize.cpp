@@ -142,8 +142,8 @@ int main(int argc, char** argv) {
   const auto points = static_cast<uint32_t>(xyz.size() / 3);
   const spinhash::Result r = recognizer.recognize(xyz.data(), points);
   std::printf("query: %u points, status %s, confident %s, %u features, %u hypotheses%s\n", points,
-              spinhash::status_name(r.status), r.confident ? "yes" : "no", r.stats.features,
-              r.stats.hypotheses, r.stats.budget_exhausted ? ", work budget exhausted" : "");
+              spinhash::status_name(r.status), r.confident ? "yes" : "no", r.stats.extract.features,
+              r.stats.draws.hypotheses, r.stats.draws.budget_exhausted ? ", work budget exhausted" : "");
   if (r.status != spinhash::Status::kOk || r.ranking_count == 0) return kExitError;
   for (uint32_t i = 0; i < r.ranking_count && i < kRanksShown; ++i) {
     const spinhash::RankedModel& m = r.ranking[i];

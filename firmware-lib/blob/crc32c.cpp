@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "spinhash/database.hpp"
+#include "spinhash/internal/fnv1a.hpp"
 
 namespace spinhash {
 namespace {
@@ -12,7 +13,6 @@ namespace {
 constexpr uint32_t kCrc32cReflectedPoly = 0x82F63B78u;  // 0x1EDC6F41 bit-reversed
 constexpr uint32_t kCrcTableSize = 256;
 constexpr uint32_t kBitsPerByte = 8;
-constexpr uint64_t kFnvOffsetBasis = 0xCBF29CE484222325ull;
 constexpr uint64_t kFnvPrime = 0x00000100000001B3ull;
 
 struct CrcTable {
@@ -46,14 +46,15 @@ uint32_t crc32c(const void* data, size_t size, uint32_t crc) noexcept {
   return ~c;
 }
 
-uint64_t fnv1a64(const void* data, size_t size) noexcept {
+uint64_t fnv1a64_update(uint64_t h, const void* data, size_t size) noexcept {
   const uint8_t* p = static_cast<const uint8_t*>(data);
-  uint64_t h = kFnvOffsetBasis;
   for (size_t i = 0; i < size; ++i) {
     h ^= p[i];
     h *= kFnvPrime;
   }
   return h;
 }
+
+uint64_t fnv1a64(const void* data, size_t size) noexcept { return fnv1a64_update(kFnv1a64Basis, data, size); }
 
 }  // namespace spinhash

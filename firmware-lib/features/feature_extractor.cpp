@@ -22,6 +22,7 @@ struct FeatureExtractor::Impl {
   uint8_t* has_normal = nullptr;
   uint32_t* basis = nullptr;         // max_points
   float* terrain_scratch = nullptr;  // kObjectGroundScratchFloats, when ground is removed
+  uint32_t loaded = 0;               // points in `points` after load() and drop_ground()
   float* out_positions = nullptr;
   float* out_normals = nullptr;
   float* out_spins = nullptr;
@@ -35,33 +36,24 @@ bool params_valid(const FeatureParams& p, const ExtractorCapacity& cap) {
          positive(p.support_radius) && p.bins_alpha >= 1u && p.bins_beta >= 1u &&
          p.bins_alpha <= kMaxSpinBinsPerAxis && p.bins_beta <= kMaxSpinBinsPerAxis &&
          spin_dims(p) <= cap.max_spin_dims && p.support_angle_deg > 0.0f && cap.max_points >= 1u &&
-         cap.max_points <= kMaxQueryPointsLimit && cap.max_features >= 1u && cap.ground_clearance >= 0.0f &&
-         cap.ground_clearance <= kMaxGroundClearance;
+         cap.max_points <= kMaxQueryPointsLimit && cap.max_features >= 1u;
 }
 
 // A sparse scan (an airborne survey at 10-30 points per m^2): fewer than
-// kMinOrientedShare of its points find the kMinNormalNeighbours a normal
+// min_oriented_share of its points find the kMinNormalNeighbours a normal
 // needs within normal_radius. Its normals are estimated again over a radius
-// kSparseRadiusGrowth times larger, at most kMaxSparseRadiusSteps times.
-// Dense scans (0.10 m spacing, occluded, noisy: 99.5 % oriented) and the
-// model scans keep the database's radius. Measured on the 56-model fleet,
-// 3-view scans at 0.35 m (66-89 % oriented at 0.4 m): class right first 49
-// -> 55 of 56 and model right first 39 -> 46 with 0.6 m (issue 28).
-constexpr float kMinOrientedShare = 0.9f;
-constexpr float kSparseRadiusGrowth = 1.5f;
-constexpr uint32_t kMaxSparseRadiusSteps = 2;
-
-// Normals of the n equalised points over the smallest radius (normal_radius
-// grown kSparseRadiusGrowth-fold up to kMaxSparseRadiusSteps times) that
-// orients kMinOrientedShare of them; returns the radius, *oriented the count.
+// normal_radius_growth times larger, at most max_radius_steps times. Dense
+// scans (0.10 m spacing, occluded, noisy: 99.5 % oriented) and the model
+// scans keep the database's radius. Returns the radius, *oriented the count.
 float sparse_aware_normals(CellGrid& grid, const float* points, uint32_t n, float radius, float* normals,
-                           uint8_t* has_normal, const NeighbourScratch& scratch, uint32_t* oriented) {
-  for (uint32_t step = 0;; ++step, radius *= kSparseRadiusGrowth) {
+                           uint8_t* has_normal, const NeighbourScratch& scratch, const ExtractParams& p,
+                           uint32_t* oriented) {
+  for (uint32_t step = 0;; ++step, radius *= p.normal_radius_growth) {
     // The voxel grid at the radius makes the PCA searches visit 27 cells.
     grid.build(points, n, radius);
     *oriented = estimate_normals(grid, points, n, radius, normals, has_normal, scratch);
-    if (step == kMaxSparseRadiusSteps ||
-        static_cast<float>(*oriented) >= kMinOrientedShare * static_cast<float>(n))
+    if (step >= p.max_radius_steps ||
+        static_cast<float>(*oriented) >= p.min_oriented_share * static_cast<float>(n))
       return radius;
   }
 }
@@ -115,7 +107,7 @@ Status FeatureExtractor::init(const FeatureParams& params, const ExtractorCapaci
   target->normals = arena.alloc<float>(3u * static_cast<size_t>(np));
   target->has_normal = arena.alloc<uint8_t>(np);
   target->basis = arena.alloc<uint32_t>(np);
-  if (cap.ground_clearance > 0.0f) target->terrain_scratch = arena.alloc<float>(kObjectGroundScratchFloats);
+  if (cap.drops_ground) target->terrain_scratch = arena.alloc<float>(kObjectGroundScratchFloats);
   target->out_positions = arena.alloc<float>(3u * static_cast<size_t>(nf));
   target->out_normals = arena.alloc<float>(3u * static_cast<size_t>(nf));
   target->out_spins = arena.alloc<float>(static_cast<size_t>(nf) * cap.max_spin_dims);
@@ -126,7 +118,13 @@ Status FeatureExtractor::init(const FeatureParams& params, const ExtractorCapaci
 
 Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& hint, FeatureSet* out,
                                  ExtractStats* stats) noexcept {
+  const Status s = load(cloud, out, stats);
+  return s != Status::kOk ? s : describe(hint, ExtractParams{}, out, stats);
+}
+
+Status FeatureExtractor::load(const CloudView& cloud, FeatureSet* out, ExtractStats* stats) noexcept {
   if (impl_ == nullptr || out == nullptr || stats == nullptr) return Status::kNotOpen;
+  impl_->loaded = 0;
   if ((cloud.xyz_f == nullptr) == (cloud.xyz_d == nullptr) && cloud.count > 0)
     return Status::kInvalidArgument;
   *stats = ExtractStats{};
@@ -136,24 +134,41 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   Impl& m = *impl_;
   const uint32_t keep = cloud.count > cap_.max_points ? cap_.max_points : cloud.count;
   stats->points_thinned = cloud.count - keep;
-
-  uint32_t n = recentre(cloud, keep, out->origin, m.points);
+  const uint32_t n = recentre(cloud, keep, out->origin, m.points);
   stats->points_nonfinite = keep - n;
-  if (n == 0) return Status::kEmptyCloud;
-  if (cap_.ground_clearance > 0.0f) {
-    TerrainUnder terrain;
-    stats->points_ground =
-        remove_object_ground(m.points, n, cap_.ground_clearance, m.terrain_scratch, &terrain);
-    n -= stats->points_ground;
-    if (n == 0) return Status::kNotEnoughFeatures;  // nothing stands on the ground
-    if (terrain.found) {
-      out->top_above_terrain = terrain.top;
-      out->terrain_sigma = terrain.sigma;
-      out->ground_band = terrain.band;
-    }
-  }
+  m.loaded = n;
+  return n == 0 ? Status::kEmptyCloud : Status::kOk;
+}
 
-  m.voxel_grid.build(m.points, n, params_.cloud_voxel);
+Status FeatureExtractor::drop_ground(const GroundParams& params, FeatureSet* out,
+                                     uint32_t* dropped) noexcept {
+  if (impl_ == nullptr || out == nullptr || dropped == nullptr) return Status::kNotOpen;
+  Impl& m = *impl_;
+  *dropped = 0;
+  if (m.terrain_scratch == nullptr) return Status::kOk;  // sized without room for the terrain grid
+  TerrainUnder terrain;
+  *dropped = remove_object_ground(m.points, m.loaded, params, m.terrain_scratch, &terrain);
+  m.loaded -= *dropped;
+  if (m.loaded == 0) return Status::kNotEnoughFeatures;  // nothing stands on the ground
+  if (terrain.found) {
+    out->top_above_terrain = terrain.top;
+    out->terrain_sigma = terrain.sigma;
+    out->ground_band = terrain.band;
+  }
+  return Status::kOk;
+}
+
+Status FeatureExtractor::describe(const OrientationHint& hint, const ExtractParams& params, FeatureSet* out,
+                                  ExtractStats* stats) noexcept {
+  if (impl_ == nullptr || out == nullptr || stats == nullptr) return Status::kNotOpen;
+  Impl& m = *impl_;
+  const uint32_t n = m.loaded;
+  if (n == 0) return Status::kEmptyCloud;
+  const float cloud_voxel = params.query_cloud_voxel > 0.0f ? params.query_cloud_voxel : params_.cloud_voxel;
+  const float basis_spacing =
+      params.query_basis_spacing > 0.0f ? params.query_basis_spacing : params_.basis_spacing;
+
+  m.voxel_grid.build(m.points, n, cloud_voxel);
   uint32_t ne = equalise_density(m.voxel_grid, m.points, m.equalised);
   stats->points_equalised = ne;
 
@@ -168,7 +183,7 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   scratch.y = scratch.x + scratch.capacity;
   scratch.z = scratch.y + scratch.capacity;
   const float radius = sparse_aware_normals(m.voxel_grid, m.equalised, ne, params_.normal_radius, m.normals,
-                                            m.has_normal, scratch, &stats->points_oriented);
+                                            m.has_normal, scratch, params, &stats->points_oriented);
   float cell = params_.support_radius * 0.5f;  // spin support R = two cells each way
   if (cell < radius) cell = radius;
   m.neighbour_grid.build(m.equalised, ne, cell);
@@ -183,7 +198,7 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   }
   orient_normals(m.equalised, ne, reference, hint.has_viewpoint, m.normals, m.has_normal);
 
-  m.voxel_grid.build(m.equalised, ne, params_.basis_spacing);
+  m.voxel_grid.build(m.equalised, ne, basis_spacing);
   uint32_t nb = select_basis_points(m.voxel_grid, m.equalised, m.has_normal, m.basis);
   stats->basis_points = nb;
   stats->features_thinned = nb > cap_.max_features;
@@ -199,6 +214,8 @@ Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& 
   }
   compute_spin_images(sp, m.neighbour_grid, m.equalised, ne, m.normals, m.has_normal, m.basis, nb,
                       spin_scratch(m.points, cap_.max_points), m.out_spins);
+  m.loaded = 0;  // the spin images' scratch has overwritten the loaded points
+  stats->features = nb;
   out->count = nb;
   out->dims = dims;
   out->positions = m.out_positions;

@@ -35,8 +35,7 @@ uint32_t estimate_normals(const CellGrid& grid, const float* points, uint32_t n,
 // itself turned a car's hood and trunk, or a pickup's bed, downward when
 // they lay below the centroid of an airborne scan (which shows more roof
 // than the model's all-round scan does), while the model kept them up: the
-// spin images of those features no longer matched their model's (at 0.10 m
-// spacing sedan-04 was named sedan-01 in 7 of 12 hard scans).
+// spin images of those features no longer matched their model's.
 constexpr float kFacesUpZ = 0.70710678f;  // cos 45 degrees
 // Turns every normal as above, or towards `viewpoint` when given (the sensor
 // position).

@@ -4,51 +4,23 @@
 #include <Eigen/Core>
 #include <cmath>
 
-#include "util/angle_math.hpp"
+#include "util/far.hpp"
 #include "util/heap_sort.hpp"
 
 namespace spinhash {
 namespace {
 
-constexpr float kEmptyCell = 3.0e38f;  // lowest point of a cell without points
-constexpr uint32_t kMinPlaneCells = 3;
-// CellStats::spread of a cell without kMinRoughnessPoints ground points: none
-// (kUnmeasured), or a few, all within kRoughnessBand of its low lowest point
-// (kSparseFlat: ground a sparse scan samples thinly, issue 28: at 10-20
-// points per m^2 the 1 m cells the footprint's edge cuts hold 1-4 points, and
-// two thirds of the border cells of a vehicle on open ground were not
-// measured, so its ground was never removed).
+constexpr float kEmptyCell = kFar;      // lowest point of a cell without points
+constexpr uint32_t kMinPlaneCells = 3;  // a plane through fewer is not determined
+// CellStats::spread of a cell without min_roughness_points ground points:
+// none (kUnmeasured), or a few, all within roughness_band of its low lowest
+// point (kSparseFlat: ground a sparse scan samples thinly; at 10-20 points
+// per m^2 the 1 m cells the footprint's edge cuts hold 1-4 points).
 constexpr float kUnmeasured = -1.0f;
 constexpr float kSparseFlat = -2.0f;
-// A sparse scan's terrain shows at least this many cells of measured, clean
-// ground: bare vehicles scanned at 12-32 points per m^2 show 0-18 (a
-// truck's box roof the most), and a pickup's roof, hood and bed passed
-// every other test (it lost 75 % of its points as "ground" before this);
-// with a 12 m ground square around them 27-147.
-constexpr uint32_t kMinSparseGroundCells = 24;
-// Fewer clean cells are terrain when they ring the footprint and a body
-// stands on them: a survey's cut-out of a car reaching a metre or two past
-// it shows 13-23 clean cells at 12-21 points per m^2, 95-100 % of the
-// border clean and the roof 1.5-2.2 m above; 22 of 24 sedans there kept
-// their ground and were named tracked vehicles or buses (issue 28).
-// Bare vehicles fail one of the two: a sedan's or a pickup's top rings its
-// footprint (border up to 100 % clean) with nothing 0.85 m above it, a
-// truck's cab roof has its box 2.3 m above but at most 79 % of the border.
-constexpr uint32_t kMinRingedGroundCells = 12;
-constexpr float kMinRingedBorderShare = 0.9f;
-constexpr float kMinBodyRise = 1.0f;  // m above the terrain: a vehicle stands there
-// A dense scan's terrain shows at least this many m^2 of measured, clean
-// ground. Without ground, a low open-wheel racer (TORCS' car1-ow1, 4.5 x
-// 1.4 x 0.85 m) scanned noise-free at 0.05-0.10 m shows 23-27 clean 0.5 m
-// cells (5.8-6.8 m^2) whose spread, its bodywork's slopes within a cell,
-// reads as 10 cm of noise (sigma 0.09-0.10 m): 85 % of its points went as
-// "ground" and it was named a touring car (issue 28). The same cars on a
-// 6.4 m ground square show 91-148 cells (23-37 m^2); the tests' ground
-// patches reach 4.5 m or more around the vehicle.
-constexpr float kMinDenseGroundArea = 10.0f;
 
 struct Grid {
-  float x0 = 0.0f, y0 = 0.0f, cell = kMinTerrainCell;
+  float x0 = 0.0f, y0 = 0.0f, cell = 0.0f;
   uint32_t cell_of(const float* p) const { return index_of(p, 1u); }
   // The index of p's square in the grid with each cell split in split x split.
   uint32_t index_of(const float* p, uint32_t split) const {
@@ -69,7 +41,7 @@ struct Plane {
   float at(float x, float y) const { return a * x + b * y + c; }
 };
 
-Grid footprint(const float* xyz, uint32_t n) {
+Grid footprint(const float* xyz, uint32_t n, float min_cell) {
   float lo[2] = {xyz[0], xyz[1]}, hi[2] = {xyz[0], xyz[1]};
   for (uint32_t i = 1; i < n; ++i)
     for (uint32_t a = 0; a < 2; ++a) {
@@ -82,7 +54,7 @@ Grid footprint(const float* xyz, uint32_t n) {
   g.y0 = lo[1];
   const float extent = hi[0] - lo[0] > hi[1] - lo[1] ? hi[0] - lo[0] : hi[1] - lo[1];
   const float cell = extent / static_cast<float>(kTerrainGridSide);
-  g.cell = cell > kMinTerrainCell ? cell : kMinTerrainCell;
+  g.cell = cell > min_cell ? cell : min_cell;
   return g;
 }
 
@@ -124,18 +96,18 @@ bool fit_plane(const Grid& g, const float* lowest, const Plane* previous, float 
   return true;
 }
 
-bool fit_terrain_plane(const Grid& g, const float* lowest, Plane* plane) {
+bool fit_terrain_plane(const Grid& g, const float* lowest, const GroundParams& p, Plane* plane) {
   if (!fit_plane(g, lowest, nullptr, 0.0f, plane)) return false;
-  for (uint32_t round = 1; round < kTerrainFitRounds; ++round) {
+  for (uint32_t round = 1; round < p.fit_rounds; ++round) {
     const Plane previous = *plane;
-    const float rise = round <= kTerrainCoarseRounds ? kObjectCellRise : kGroundCellRise;
+    const float rise = round <= p.coarse_rounds ? p.object_cell_rise : p.ground_cell_rise;
     if (!fit_plane(g, lowest, &previous, rise, plane)) return false;
   }
-  return std::sqrt(plane->a * plane->a + plane->b * plane->b) <= std::tan(deg_to_rad(kMaxTerrainSlopeDeg));
+  return std::sqrt(plane->a * plane->a + plane->b * plane->b) <= p.max_ground_slope;
 }
 
-// Per cell, over its ground points (those within kRoughnessBand of the
-// lowest point of a cell that rises at most kGroundCellRise above the
+// Per cell, over its ground points (those within roughness_band of the
+// lowest point of a cell that rises at most ground_cell_rise above the
 // plane): their mean height above the plane and their spread.
 struct CellStats {
   float* mean;    // level: becomes the cell's ground level
@@ -144,21 +116,21 @@ struct CellStats {
 };
 
 void accumulate(const float* xyz, uint32_t n, const Grid& g, const Plane& plane, const float* lowest,
-                const CellStats& cs) {
+                const GroundParams& p, const CellStats& cs) {
   for (uint32_t c = 0; c < kTerrainCells; ++c) cs.mean[c] = cs.spread[c] = cs.count[c] = 0.0f;
   for (uint32_t i = 0; i < n; ++i) {
-    const float* p = xyz + 3u * i;
-    const uint32_t c = g.cell_of(p);
-    if (lowest[c] - plane.at(g.centre_x(c), g.centre_y(c)) > kGroundCellRise ||
-        p[2] > lowest[c] + kRoughnessBand)
+    const float* x = xyz + 3u * i;
+    const uint32_t c = g.cell_of(x);
+    if (lowest[c] - plane.at(g.centre_x(c), g.centre_y(c)) > p.ground_cell_rise ||
+        x[2] > lowest[c] + p.roughness_band)
       continue;
-    const float d = p[2] - plane.at(p[0], p[1]);
+    const float d = x[2] - plane.at(x[0], x[1]);
     cs.mean[c] += d;
     cs.spread[c] += d * d;
     cs.count[c] += 1.0f;
   }
   for (uint32_t c = 0; c < kTerrainCells; ++c) {
-    if (cs.count[c] < static_cast<float>(kMinRoughnessPoints)) {
+    if (cs.count[c] < static_cast<float>(p.min_roughness_points)) {
       cs.spread[c] = cs.count[c] > 0.0f ? kSparseFlat : kUnmeasured;
       continue;
     }
@@ -170,11 +142,11 @@ void accumulate(const float* xyz, uint32_t n, const Grid& g, const Plane& plane,
 
 // Sparse-flat cells with a point above the roughness band hold an object.
 void unflatten_occupied(const float* xyz, uint32_t n, const Grid& g, const float* lowest,
-                        const CellStats& cs) {
+                        float roughness_band, const CellStats& cs) {
   for (uint32_t i = 0; i < n; ++i) {
-    const float* p = xyz + 3u * i;
-    const uint32_t c = g.cell_of(p);
-    if (cs.spread[c] == kSparseFlat && p[2] > lowest[c] + kRoughnessBand) cs.spread[c] = kUnmeasured;
+    const float* x = xyz + 3u * i;
+    const uint32_t c = g.cell_of(x);
+    if (cs.spread[c] == kSparseFlat && x[2] > lowest[c] + roughness_band) cs.spread[c] = kUnmeasured;
   }
 }
 
@@ -190,10 +162,10 @@ float median_spread(const CellStats& cs, uint32_t* ground_cells) {
   return cs.count[k / 2u];
 }
 
-// Clean ground cells (spread at most kCleanSpreadFactor x the median)
+// Clean ground cells (spread at most clean_spread_factor x the median)
 // flagged in count.
-void mark_clean(const CellStats& cs, float sigma) {
-  const float clean = kCleanSpreadFactor * sigma + kSpreadSlack;
+void mark_clean(const CellStats& cs, float sigma, const GroundParams& p) {
+  const float clean = p.clean_spread_factor * sigma + p.spread_slack;
   for (uint32_t c = 0; c < kTerrainCells; ++c)
     cs.count[c] = cs.spread[c] >= 0.0f && cs.spread[c] <= clean ? 1.0f : 0.0f;
 }
@@ -232,16 +204,16 @@ uint32_t clean_cells(const CellStats& cs) {
 
 // What the clean ground cells prove: terrain (enough of them), terrain if
 // they ring the footprint and a body stands on them (a sparse scan with
-// kMinRingedGroundCells or more), or nothing.
+// min_ringed_ground_cells or more), or nothing.
 enum class CleanGround { kTerrain, kTerrainIfRinged, kNone };
 
-CleanGround clean_ground(const CellStats& cs, const Grid& g, bool sparse) {
+CleanGround clean_ground(const CellStats& cs, const Grid& g, bool sparse, const GroundParams& p) {
   const uint32_t clean = clean_cells(cs);
   if (!sparse)
-    return static_cast<float>(clean) * g.cell * g.cell < kMinDenseGroundArea ? CleanGround::kNone
-                                                                             : CleanGround::kTerrain;
-  if (clean >= kMinSparseGroundCells) return CleanGround::kTerrain;
-  return clean >= kMinRingedGroundCells ? CleanGround::kTerrainIfRinged : CleanGround::kNone;
+    return static_cast<float>(clean) * g.cell * g.cell < p.min_dense_ground_area ? CleanGround::kNone
+                                                                                 : CleanGround::kTerrain;
+  if (clean >= p.min_sparse_ground_cells) return CleanGround::kTerrain;
+  return clean >= p.min_ringed_ground_cells ? CleanGround::kTerrainIfRinged : CleanGround::kNone;
 }
 
 // Clean ground cells keep their mean as level; the others take their clean
@@ -300,10 +272,10 @@ BandCounts column_tops(const float* xyz, uint32_t n, const Level& level, float d
 // Compacts xyz to the points above the band (`drop` m over the terrain) and
 // the band's top in a column that holds a body; returns how many stay, and
 // the two highest of them above their terrain in top.
-uint32_t keep_above_band(float* xyz, uint32_t n, const Level& level, float drop, const float* tops,
-                         float top[2]) {
-  const float body = drop + kBodyAbove;           // a column rising this high holds a body
-  const float body_floor = kBandKeptFrom * drop;  // band points below it are ground even there
+uint32_t keep_above_band(float* xyz, uint32_t n, const Level& level, float drop, const GroundParams& gp,
+                         const float* tops, float top[2]) {
+  const float body = drop + gp.body_above;            // a column rising this high holds a body
+  const float body_floor = gp.band_kept_from * drop;  // band points below it are ground even there
   uint32_t kept = 0;
   for (uint32_t i = 0; i < n; ++i) {
     const float* p = xyz + 3u * i;
@@ -319,59 +291,59 @@ uint32_t keep_above_band(float* xyz, uint32_t n, const Level& level, float drop,
 
 }  // namespace
 
-uint32_t remove_object_ground(float* xyz, uint32_t n, float clearance, float* scratch,
+uint32_t remove_object_ground(float* xyz, uint32_t n, const GroundParams& p, float* scratch,
                               TerrainUnder* terrain) {
   if (terrain != nullptr) *terrain = TerrainUnder{};
-  if (n == 0 || !(clearance > 0.0f)) return 0;
+  if (n == 0 || !p.enabled || !(p.ground_clearance > 0.0f)) return 0;
   float* lowest = scratch;
   const CellStats cs{scratch + kTerrainCells, scratch + 2u * kTerrainCells, scratch + 3u * kTerrainCells};
-  Grid g = footprint(xyz, n);
+  Grid g = footprint(xyz, n, p.min_ground_cell);
   lowest_points(xyz, n, g, lowest);
   uint32_t occupied = occupied_cells(lowest);
-  // A sparse scan: cells scaled so that they hold kMinPointsPerCell points
+  // A sparse scan: cells scaled so that they hold min_points_per_cell points
   // on average (the occupied area grows with the cell too, so this is a lower
-  // bound on the scale), once, up to kMaxTerrainCell. The grid keeps its
+  // bound on the scale), once, up to max_ground_cell. The grid keeps its
   // corner; the larger cell still covers the footprint.
   const float per_cell = static_cast<float>(n) / static_cast<float>(occupied > 0u ? occupied : 1u);
-  if (per_cell < kMinPointsPerCell && g.cell < kMaxTerrainCell) {
-    const float wanted = g.cell * std::sqrt(kMinPointsPerCell / per_cell);
-    g.cell = wanted < kMaxTerrainCell ? wanted : kMaxTerrainCell;
+  if (per_cell < p.min_points_per_cell && g.cell < p.max_ground_cell) {
+    const float wanted = g.cell * std::sqrt(p.min_points_per_cell / per_cell);
+    g.cell = wanted < p.max_ground_cell ? wanted : p.max_ground_cell;
     lowest_points(xyz, n, g, lowest);
     occupied = occupied_cells(lowest);
   }
   Plane plane;
-  if (!fit_terrain_plane(g, lowest, &plane)) return 0;
+  if (!fit_terrain_plane(g, lowest, p, &plane)) return 0;
   uint32_t ground_cells = 0;
-  accumulate(xyz, n, g, plane, lowest, cs);
+  accumulate(xyz, n, g, plane, lowest, p, cs);
   const float sigma = median_spread(cs, &ground_cells);
-  if (static_cast<float>(ground_cells) < kMinGroundCellShare * static_cast<float>(occupied) ||
-      sigma > kMaxGroundRoughness)
+  if (static_cast<float>(ground_cells) < p.min_ground_cell_share * static_cast<float>(occupied) ||
+      sigma > p.max_ground_roughness)
     return 0;
-  mark_clean(cs, sigma);
-  const bool sparse = g.cell > kMinTerrainCell;  // cells grown for a sparse scan
-  const CleanGround proof = clean_ground(cs, g, sparse);
+  mark_clean(cs, sigma, p);
+  const bool sparse = g.cell > p.min_ground_cell;  // cells grown for a sparse scan
+  const CleanGround proof = clean_ground(cs, g, sparse, p);
   if (proof == CleanGround::kNone) return 0;
   const bool ringed = proof == CleanGround::kTerrainIfRinged;
-  unflatten_occupied(xyz, n, g, lowest, cs);
+  unflatten_occupied(xyz, n, g, lowest, p.roughness_band, cs);
   const float border = clean_border_share(lowest, cs, sparse);
-  if (border < (ringed ? kMinRingedBorderShare : kMinCleanBorderShare)) return 0;
+  if (border < (ringed ? p.min_ringed_border_share : p.min_clean_border_share)) return 0;
   fill_levels(cs);
-  // kClearanceSigmas of the ground's own roughness, within [kMinClearance, clearance].
-  float drop = kClearanceSigmas * sigma;
-  drop = drop < kMinClearance ? kMinClearance : (drop > clearance ? clearance : drop);
+  // clearance_sigmas of the ground's own roughness, within [min_clearance, ground_clearance].
+  float drop = p.clearance_sigmas * sigma;
+  drop = drop < p.min_clearance ? p.min_clearance : (drop > p.ground_clearance ? p.ground_clearance : drop);
   const Level level{g, plane, cs.mean};
   // Terrain is the lowest surface: a flat part of an object (a hood, a
   // pickup's bed) has the rest of the object below it.
-  const float below =
-      -(kBelowTerrainSigmas * sigma > kMinBelowTerrain ? kBelowTerrainSigmas * sigma : kMinBelowTerrain);
+  const float below = -(p.below_terrain_sigmas * sigma > p.min_below_terrain ? p.below_terrain_sigmas * sigma
+                                                                             : p.min_below_terrain);
   float* tops = scratch + 4u * kTerrainCells;
   const BandCounts counts = column_tops(xyz, n, level, drop, below, tops);
-  if (static_cast<float>(counts.near) < kMinObjectGroundShare * static_cast<float>(n) ||
-      static_cast<float>(counts.under) > kMaxBelowTerrainShare * static_cast<float>(n) ||
-      (ringed && counts.highest < kMinBodyRise))
+  if (static_cast<float>(counts.near) < p.min_object_ground_share * static_cast<float>(n) ||
+      static_cast<float>(counts.under) > p.max_below_terrain_share * static_cast<float>(n) ||
+      (ringed && counts.highest < p.min_body_rise))
     return 0;
   float top[2] = {0.0f, 0.0f};  // the two highest kept points above their terrain
-  const uint32_t kept = keep_above_band(xyz, n, level, drop, tops, top);
+  const uint32_t kept = keep_above_band(xyz, n, level, drop, p, tops, top);
   if (terrain != nullptr && kept > 1u) *terrain = TerrainUnder{true, top[1], sigma, drop};
   return n - kept;
 }

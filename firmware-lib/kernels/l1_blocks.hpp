@@ -13,7 +13,7 @@ constexpr uint32_t kL1Step = 32;   // the first block starts on this step
 // Where l1_distance_within looks first (dims >= kL1Block): the last
 // kL1Block bytes starting on a kL1Step boundary, the image's upper rows
 // (beta from the tangent plane towards the normal). Far images differ most
-// there: from byte 0, the 1000-model queries cost 3 % more instructions.
+// there, so a far image exceeds the bound sooner than from byte 0.
 inline uint32_t first_block(uint32_t dims) { return (dims - kL1Block) / kL1Step * kL1Step; }
 
 // A kernel's sum of |a[i] - b[i]| over n bytes.
@@ -34,9 +34,7 @@ inline uint32_t within_by_blocks(const uint8_t* a, const uint8_t* b, uint32_t di
 constexpr uint32_t kPaperSpinDims = 100;  // the paper's 10 x 10 image (config.hpp's default)
 
 // The optimised kernels give the paper's image size its own copy with
-// constant offsets: straight vector code, no loop counters (3 % fewer
-// instructions per query at 1000 models when it was introduced; its loss
-// cost 1 % on aarch64 in verification's exact distances).
+// constant offsets: straight vector code, no loop counters.
 template <SadFn sad>
 inline uint32_t distance_paper_first(const uint8_t* a, const uint8_t* b, uint32_t dims) {
   return dims == kPaperSpinDims ? sad(a, b, kPaperSpinDims) : sad(a, b, dims);

@@ -144,31 +144,36 @@ namespace {
 
 // Per-feature log-likelihood of an unexplained feature: a match at Delta
 // with the most dissimilar spin image.
-float floor_term(const LikelihoodParams& lp, const RecognizerConfig& cfg) {
-  return -lp.delta2 * lp.inv_two_sigma2 - kMaxNormalisedL1 / cfg.spin_lambda;
+float floor_term(const LikelihoodParams& lp, const DrawsParams& d) {
+  return -lp.delta2 * lp.inv_two_sigma2 - kMaxNormalisedL1 / d.spin_lambda;
 }
 
 }  // namespace
 
-LikelihoodParams make_likelihood_params(const RecognizerConfig& cfg, const Database& db) {
+LikelihoodParams make_likelihood_params(const StageParams& p, const Database& db) {
+  const DrawsParams& d = p.draws;
   LikelihoodParams lp;
-  lp.inv_two_sigma2 = 1.0f / (2.0f * cfg.sigma * cfg.sigma);
-  lp.delta2 = cfg.delta * cfg.delta;
-  lp.delta_max2 = cfg.delta_max * cfg.delta_max;
-  lp.cos_eta_max = std::cos(deg_to_rad(cfg.eta_max_deg));
-  lp.spin_weight = 1.0f / (cfg.spin_lambda * db.params().spin_quant_scale);
-  lp.floor = floor_term(lp, cfg);
-  const float reach = std::ceil(cfg.delta_max / db.params().grid_cell);
+  lp.inv_two_sigma2 = 1.0f / (2.0f * d.sigma * d.sigma);
+  lp.delta2 = d.delta * d.delta;
+  lp.delta_max2 = d.delta_max * d.delta_max;
+  lp.cos_eta_max = std::cos(deg_to_rad(d.eta_max_deg));
+  lp.spin_weight = 1.0f / (d.spin_lambda * db.params().spin_quant_scale);
+  lp.floor = floor_term(lp, d);
+  const float reach = std::ceil(d.delta_max / db.params().grid_cell);
   lp.reach = reach < static_cast<float>(kMaxGridReach) ? static_cast<uint32_t>(reach) : kMaxGridReach;
-  lp.use_field = db.has_nearest_field() && cfg.delta_max <= db.params().field_reach;
+  lp.use_field = db.has_nearest_field() && d.delta_max <= db.params().field_reach;
+  lp.preemptive_first = d.preemptive_first;
+  lp.preemptive_first_slack = d.preemptive_first_slack;
+  lp.preemptive_second = d.preemptive_second;
+  lp.preemptive_second_slack = d.preemptive_second_slack;
   return lp;
 }
 
-LikelihoodParams make_surface_params(const RecognizerConfig& cfg, const Database& db) {
-  LikelihoodParams lp = make_likelihood_params(cfg, db);
+LikelihoodParams make_surface_params(const StageParams& p, const Database& db) {
+  LikelihoodParams lp = make_likelihood_params(p, db);
   lp.use_field = false;  // the field's voxel-centre answers blur centimetres
-  lp.inv_two_sigma2 = 1.0f / (2.0f * cfg.sigma_surface * cfg.sigma_surface);
-  lp.surface_patch_radius = kPatchRadiusPerSpacing * db.params().basis_spacing;
+  lp.inv_two_sigma2 = 1.0f / (2.0f * p.refine.sigma_surface * p.refine.sigma_surface);
+  lp.surface_patch_radius = p.refine.patch_radius_per_spacing * db.params().basis_spacing;
   return lp;
 }
 
@@ -228,10 +233,10 @@ Verification verify_pose(const Database& db, uint32_t model, const RigidPose& po
   // l + stride < 2n: one subtraction is the modulo (stride < n).
   for (uint32_t i = 0; i < used; ++i, l = l + stride >= n ? l + stride - n : l + stride) {
     if (v.log_likelihood < to_beat) return v;  // remaining terms are <= 0
-    if (preemptive && ((i == kPreemptiveFirst &&
-                        v.log_likelihood / static_cast<float>(i) < best_mean - kPreemptiveSlackFirst) ||
-                       (i == kPreemptiveSecond &&
-                        v.log_likelihood / static_cast<float>(i) < best_mean - kPreemptiveSlackSecond)))
+    if (preemptive && ((i == lp.preemptive_first &&
+                        v.log_likelihood / static_cast<float>(i) < best_mean - lp.preemptive_first_slack) ||
+                       (i == lp.preemptive_second &&
+                        v.log_likelihood / static_cast<float>(i) < best_mean - lp.preemptive_second_slack)))
       return v;
     kernels::to_model_frame(frame, query.positions + 3u * l, query.normals + 3u * l, x, nm);
     NearestFeature near =

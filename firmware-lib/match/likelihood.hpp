@@ -30,17 +30,6 @@ struct QueryFeatures {
   uint32_t verify_count = 0;  // features verify_pose scores (evenly spread), <= count
 };
 
-// Preemptive verification: a hypothesis is first scored on this many query
-// features (spread evenly over the query) and dropped if their mean term is
-// more than a slack (log units) below the model's best mean so far.
-// Terms lie in [floor, 0] with a spread near 2, so over 64 features the mean
-// of a pose as good as the best rarely falls 1.0 below it.
-// Checked twice: a cheap early look, then a steadier one.
-constexpr uint32_t kPreemptiveFirst = 32;
-constexpr float kPreemptiveSlackFirst = 1.5f;
-constexpr uint32_t kPreemptiveSecond = 96;
-constexpr float kPreemptiveSlackSecond = 0.8f;
-
 // Grid cells searched each way around a point, at most: Delta_max may span up
 // to this many model-grid cells (a larger Delta_max is searched only this far).
 constexpr uint32_t kMaxGridReach = 4;
@@ -70,21 +59,26 @@ struct LikelihoodParams {
   // that feature stands for: the offset along its normal, plus how far the
   // query feature lies beyond this radius (m) along the surface.
   float surface_patch_radius = kPointToPoint;
+  // Preemptive verification (DrawsParams::preemptive_*): a hypothesis is
+  // first scored on preemptive_first query features (spread evenly over the
+  // query) and dropped if their mean term is more than preemptive_first_slack
+  // (log units) below the model's best mean so far; then again, steadier, at
+  // preemptive_second. Terms lie in [floor, 0] with a spread near 2.
+  uint32_t preemptive_first = 0;
+  float preemptive_first_slack = 0.0f;
+  uint32_t preemptive_second = 0;
+  float preemptive_second_slack = 0.0f;
 };
 
-// A model feature stands for the surface of its basis voxel: up to half the
-// basis spacing away along the surface (an axis-aligned half-width; the
-// corners, up to 0.7 spacing away, pay a little).
-constexpr float kPatchRadiusPerSpacing = 0.5f;
-
-// The hypothesis loop's likelihood (the paper's eqs. 4-7).
-LikelihoodParams make_likelihood_params(const RecognizerConfig& cfg, const Database& db);
+// The hypothesis loop's likelihood (the paper's eqs. 4-7, DrawsParams).
+LikelihoodParams make_likelihood_params(const StageParams& p, const Database& db);
 // The final ranking's: the exact nearest-feature search, r to the model's
-// surface patch, and sigma_surface in eq. 5 (the sampling offset that sigma
-// covers is gone). The floor stays the hypothesis loop's: an unexplained
-// feature costs the same in both (derived from sigma_surface, -8.5 instead
-// of -6, it lost 2 % of the fleet's right answers).
-LikelihoodParams make_surface_params(const RecognizerConfig& cfg, const Database& db);
+// surface patch (RefineParams::patch_radius_per_spacing of the basis
+// spacing: a model feature stands for the surface of its basis voxel), and
+// sigma_surface in eq. 5 (the sampling offset that sigma covers is gone).
+// The floor stays the hypothesis loop's: an unexplained feature costs the
+// same in both (one derived from sigma_surface ranked the fleet worse).
+LikelihoodParams make_surface_params(const StageParams& p, const Database& db);
 
 // The signed distance of x (model frame) from model feature m's tangent
 // plane, along its normal: > 0 on the side the normal points to. Summed

@@ -6,10 +6,10 @@
 namespace spinhash {
 
 bool pose_from_doublet(const OrientedPoint& q1, const OrientedPoint& q2, const OrientedPoint& m1,
-                       const OrientedPoint& m2, RigidPose* out) {
+                       const OrientedPoint& m2, RigidPose* out, float normal_lever) {
   constexpr int kPairs = 4;
-  const Eigen::Vector3f qs[kPairs] = {q1.p, q2.p, q1.p + kNormalLever * q1.n, q2.p + kNormalLever * q2.n};
-  const Eigen::Vector3f ms[kPairs] = {m1.p, m2.p, m1.p + kNormalLever * m1.n, m2.p + kNormalLever * m2.n};
+  const Eigen::Vector3f qs[kPairs] = {q1.p, q2.p, q1.p + normal_lever * q1.n, q2.p + normal_lever * q2.n};
+  const Eigen::Vector3f ms[kPairs] = {m1.p, m2.p, m1.p + normal_lever * m1.n, m2.p + normal_lever * m2.n};
   Eigen::Vector3f qc = Eigen::Vector3f::Zero(), mc = Eigen::Vector3f::Zero();
   for (int i = 0; i < kPairs; ++i) {
     qc += qs[i];

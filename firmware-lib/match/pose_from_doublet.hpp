@@ -5,12 +5,11 @@
 
 namespace spinhash {
 
-// Normal tips sit this far from their points, so a normal error of e radians
-// weighs like a position error of e * kNormalLever metres.
-constexpr float kNormalLever = 1.0f;
-
-// Pose taking model points (m1, m2) onto query points (q1, q2); false when degenerate.
+// Pose taking model points (m1, m2) onto query points (q1, q2); false when
+// degenerate. The normal tips sit `normal_lever` m from their points
+// (DrawsParams::normal_lever), so a normal error of e radians weighs like a
+// position error of e * normal_lever metres.
 bool pose_from_doublet(const OrientedPoint& q1, const OrientedPoint& q2, const OrientedPoint& m1,
-                       const OrientedPoint& m2, RigidPose* out);
+                       const OrientedPoint& m2, RigidPose* out, float normal_lever);
 
 }  // namespace spinhash

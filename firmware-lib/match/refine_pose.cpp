@@ -35,7 +35,7 @@ struct PlaneSums {
 }  // namespace
 
 bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query, const LikelihoodParams& lp,
-                 RigidPose* pose, const int32_t* matches) {
+                 RigidPose* pose, const int32_t* matches, float damping) {
   const blob::ModelRecord& rec = db.model(model);
   const Eigen::Matrix3f rt = pose->rotation.transpose();
   PlaneSums sums;
@@ -50,7 +50,7 @@ bool refine_pose(const Database& db, uint32_t model, const QueryFeatures& query,
     sums.add(x, m.p, m.n);
   }
   if (sums.matches < kMinRefineMatches) return false;
-  sums.jtj.diagonal().array() += kDampingPerMatch * static_cast<float>(sums.matches);
+  sums.jtj.diagonal().array() += damping * static_cast<float>(sums.matches);
   const Vector6f step = sums.jtj.llt().solve(-sums.jtr);
   if (!step.allFinite()) return false;
   const Eigen::Vector3f w = step.head<3>();
@@ -79,12 +79,12 @@ RigidPose turned_end_to_end(const RigidPose& pose, const blob::ModelRecord& mode
 }
 
 bool end_aligned_pose(const RigidPose& pose, const blob::ModelRecord& source, const blob::ModelRecord& target,
-                      uint32_t index, RigidPose* out) {
+                      uint32_t index, RigidPose* out, float min_end_shift) {
   const bool front = index >= 2u, turned = (index & 1u) != 0u;
   const float rear_dx = source.bbox_min[0] - target.bbox_min[0];
   const float dx = front ? source.bbox_max[0] - target.bbox_max[0] : rear_dx;
   // Front ends aligned as the rear ends were: pose 0 once more.
-  if (front && !turned && std::fabs(dx - rear_dx) < kMinEndShift) return false;
+  if (front && !turned && std::fabs(dx - rear_dx) < min_end_shift) return false;
   // x -> x + dx in the target's frame: q = R (x + dx e_x) + t.
   *out = pose;
   out->translation += dx * pose.rotation.col(0);

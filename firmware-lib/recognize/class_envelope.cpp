@@ -2,51 +2,41 @@
 
 #include <cmath>
 
-#include "recognize/confidence.hpp"
+#include "util/far.hpp"
 
 namespace spinhash {
 namespace {
 
-constexpr float kFar = 3.0e38f;  // beyond any coordinate: no feature yet
-
-// The highest points of a noisy roof lie above it by up to this many sigma
-// of the noise along the ray (the second highest of a few hundred samples
-// of a Gaussian: 2-3 sigma).
-constexpr float kTopNoiseSigmas = 3.0f;
-// A model's box height is its cloud's top above its lowest point, and the
-// model clouds are scanned from 45 degrees (spinhash build): a wheel of
-// radius r shows down to r (1 - sin 45) = 0.29 r above the ground, up to
-// 0.18 m for the fleet's largest wheels (0.62 m). A vehicle's top above
-// the terrain exceeds its model's box height by up to this.
-constexpr float kModelBottomGap = 0.2f;
-// How far below the roof's highest part a sparse scan's second highest
-// point may lie: a roof is sampled from above at the scan's spacing, and
-// cambered by a few centimetres over a sample spacing; a thin rack or
-// antenna the model's dense cloud holds may fall between samples.
-constexpr float kTopSamplingSlack = 0.1f;
-// Without terrain, the lowest features lie on a side's lowest sampled row:
-// above the vehicle's lowest visible part by up to a sample spacing up the
-// side, s / cos(e) for views at elevation e: 1.4 s at the paper's 45
-// degrees, where a scan of spacing s returns about (1.6 / s)^2 points per m^2
-// of the top with the sides (section 11: 118 per m^2 at 0.15 m, 22 at
-// 0.35 m), so 2.3 / sqrt(density), and the model's box bottom is its
-// cloud's lowest point, itself that far above the ground. 3 / sqrt(density)
-// keeps 98 % of the right class-confident answers on the procedural fleet's
-// 3-view scans at 0.15-0.35 m (docs/results.md 11c; 2.5: 96 %, 2: 91 %).
-// Steeper views (a survey's 70 degrees: 2.9 s) show less of the sides: their
-// lower part is often unseen and the class flag withheld without terrain.
-constexpr float kBottomGapSpacings = 3.0f;
-
-// Without terrain the height is measured only where that allowance is finer
-// than the step between classes. Below kMinModelDensity (50 per m^2: 0.42 m,
-// 0.55-0.95 m at 10-30 per m^2) it is coarser than the fleet's step from
-// sedans (1.31-1.46 m) to vans (1.56-2.01 m): a van's pose sunk by half a
-// metre under a real 1.2 m saloon passed, and 17 of 329 sparse bare scans of
-// real cars were confidently of a wrong class (docs/results.md 11d, 11e).
-// A sparse scan then confirms a class only with its terrain, the model flag's
-// floor (dense_enough_for_model).
-bool height_measured(const ScanShape& scan) {
-  return scan.on_terrain || dense_enough_for_model(scan.density);
+// The tolerances (ClassesParams):
+// - top_noise_sigmas: the highest points of a noisy roof lie above it by up
+//   to this many sigma of the noise along the ray (the second highest of a
+//   few hundred samples of a Gaussian: 2-3 sigma).
+// - model_bottom_gap: a model's box height is its cloud's top above its
+//   lowest point, and the model clouds are scanned from 45 degrees
+//   (spinhash build): a wheel of radius r shows down to r (1 - sin 45) =
+//   0.29 r above the ground. A vehicle's top above the terrain exceeds its
+//   model's box height by up to this.
+// - top_sampling_slack: how far below the roof's highest part a sparse
+//   scan's second highest point may lie: a roof is sampled from above at the
+//   scan's spacing, and cambered by a few centimetres over a sample spacing;
+//   a thin rack or antenna the model's dense cloud holds may fall between
+//   samples.
+// - bottom_gap_spacings: without terrain, the lowest features lie on a
+//   side's lowest sampled row: above the vehicle's lowest visible part by up
+//   to a sample spacing up the side, s / cos(e) for views at elevation e
+//   (1.4 s at 45 degrees), where a scan of spacing s returns about
+//   (1.6 / s)^2 points per m^2 of the top with the sides, so
+//   2.3 / sqrt(density), and the model's box bottom is its cloud's lowest
+//   point, itself that far above the ground. Steeper views show less of the
+//   sides: their lower part is often unseen and the class flag withheld
+//   without terrain.
+// - min_height_density: without terrain the height is measured only where
+//   that allowance is finer than the step between classes; below about 50
+//   points per m^2 it is coarser than the step from sedans to vans, and a
+//   van's pose sunk under a low saloon passed. A sparse scan then confirms
+//   a class only with its terrain.
+bool height_measured(const ScanShape& scan, const ClassesParams& p) {
+  return scan.on_terrain || scan.density >= p.min_height_density;
 }
 
 float span(float lo, float hi) { return hi > lo ? hi - lo : 0.0f; }
@@ -114,14 +104,15 @@ ScanShape measure_scan(const QueryFeatures& query, const blob::ModelRecord& lead
   return s;
 }
 
-bool within_envelope(const ScanShape& scan, const ClassEnvelope& env, float end_tolerance) {
+bool within_envelope(const ScanShape& scan, const ClassEnvelope& env, float end_tolerance,
+                     const ClassesParams& p) {
   if (env.members == 0u) return false;
-  if (scan.length > env.length_max + 2.0f * end_tolerance) return false;
+  if (scan.length > env.length_max + 2.0f * end_tolerance) return false;  // both ends
   if (scan.width > env.width_max + 2.0f * end_tolerance) return false;
-  if (!height_measured(scan)) return false;
-  if (!scan.on_terrain && scan.bottom_gap > kBottomGapSpacings * scan.spacing) return false;
-  if (scan.height > env.height_max + kTopNoiseSigmas * scan.noise + kModelBottomGap) return false;
-  return scan.height >= env.height_min - kTopSamplingSlack;
+  if (!height_measured(scan, p)) return false;
+  if (!scan.on_terrain && scan.bottom_gap > p.bottom_gap_spacings * scan.spacing) return false;
+  if (scan.height > env.height_max + p.top_noise_sigmas * scan.noise + p.model_bottom_gap) return false;
+  return scan.height >= env.height_min - p.top_sampling_slack;
 }
 
 }  // namespace spinhash

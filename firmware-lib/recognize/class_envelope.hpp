@@ -1,9 +1,9 @@
 // How far the members of a vehicle class vary in size, and whether a scan's
-// measured shape lies within that range (issue 28; not in the paper). The
-// class margin says which of the database's classes explains a scan best,
-// not whether any of them is this vehicle's: a real 1.2 m tall racing saloon
-// lies between the fleet's sedans and vans and was named a van, confidently,
-// in 17.9 % of its scans (docs/results.md 11b). The envelope is the class's
+// measured shape lies within that range (not in the paper). The class
+// margin says which of the database's classes explains a scan best, not
+// whether any of them is this vehicle's: a real 1.2 m tall racing saloon
+// lies between the fleet's sedans and vans and was named a van,
+// confidently. The envelope is the class's
 // own members' boxes, read from the database; the tolerances come from what
 // an airborne scan measures well (the top, the terrain) and badly (the
 // bottom of a side, the hidden end of an occluded vehicle).
@@ -12,6 +12,7 @@
 
 #include "match/likelihood.hpp"
 #include "match/oriented_point.hpp"
+#include "spinhash/config.hpp"
 #include "spinhash/database.hpp"
 
 namespace spinhash {
@@ -66,9 +67,10 @@ ScanShape measure_scan(const QueryFeatures& query, const blob::ModelRecord& lead
 // sampling. Without terrain the scan must also show the vehicle's lower
 // part (bottom_gap within a side's sample spacing): a scan that shows
 // neither terrain nor the lower sides does not measure the height, and a
-// van's roof explains a saloon's; and below kMinModelDensity a scan without
-// terrain never measures the height (that allowance is coarser than the
-// step between classes). False for a class without members.
-bool within_envelope(const ScanShape& scan, const ClassEnvelope& env, float end_tolerance);
+// van's roof explains a saloon's; and below min_height_density a scan
+// without terrain never measures the height (that allowance is coarser than
+// the step between classes). False for a class without members.
+bool within_envelope(const ScanShape& scan, const ClassEnvelope& env, float end_tolerance,
+                     const ClassesParams& p);
 
 }  // namespace spinhash

@@ -2,39 +2,15 @@
 
 #include <cmath>
 
+#include "recognize/residual_structure.hpp"
+#include "recognize/visible_surface.hpp"
+#include "util/far.hpp"
+
 namespace spinhash {
 namespace {
 
 // Box faces tested: both ends along x and y, and the top (z up in the model).
 constexpr int kTestedFaces = 5;
-constexpr float kFar = 3.0e38f;  // beyond any coordinate (no feature yet) and any lead
-// The lead over the runner-up that a query whose candidates spread over many
-// look-alikes needs, in units of min_margin: the runner-up is then the best
-// of many near-identical models, and the best of N noisy scores lies about
-// sqrt(2 ln N) spreads above their mean: 2.4 for the 16 focused models
-// against 1.2 for the one or two rivals of a query among distinct models.
-// With min_margin 0.8 (1.6 here) the 1 000-model scans flag 43 / 37 answers,
-// none wrong (34 / 27 at 1.2; docs/results.md 11l).
-constexpr float kSpreadMarginFactor = 2.0f;
-// The share of max_residual_f that the same query may leave: among hundreds
-// of near-identical models most alternatives differ from the first by one
-// patch (a longer hood, a lower roof): a weak structure in the residuals.
-// On 196 such scans the right answers left F <= 1.55, the two confident
-// wrong ones 2.16 and 2.35 (docs/results.md 9k).
-constexpr float kSpreadResidualFactor = 0.8f;
-
-// The least density and query features for a confident class.
-constexpr float kMinClassDensity = 5.0f;
-constexpr uint32_t kMinClassFeatures = 12;
-// How far the scan may stop short of the class leader's box ends and top,
-// or reach beyond them, in units of max_extent_shortfall and
-// max_extent_overhang: members of a class differ by tens of centimetres, a
-// vehicle of another class by metres, and a sparse scan's outermost feature
-// lies up to a point spacing inside the vehicle's end. Without the
-// shortfall test a bus explains every point of a van's sparse scan: 5.4 %
-// of the sparse scans of unknown vehicles were confidently of a wrong class,
-// most of them a van, truck or APC called a bus.
-constexpr float kClassExtentFactor = 2.0f;
 constexpr float kMinTopArea = 0.25f;  // m^2: a degenerate box counts as this
 
 // The query's two outermost features on each side of every axis, in the
@@ -76,10 +52,10 @@ struct Outermost {
   }
 };
 
-// 1, or sqrt(kFullModelDensity / density) for a sparser scan; 1 for an
+// 1, or sqrt(full_model_density / density) for a sparser scan; 1 for an
 // unmeasured density (0: no pose, no answer to gate).
-float density_factor(float density) {
-  return density > 0.0f && density < kFullModelDensity ? std::sqrt(kFullModelDensity / density) : 1.0f;
+float density_factor(const ConfidenceParams& c, float density) {
+  return density > 0.0f && density < c.full_model_density ? std::sqrt(c.full_model_density / density) : 1.0f;
 }
 
 }  // namespace
@@ -125,64 +101,32 @@ ExtentFit extent_fit(const QueryFeatures& query, const blob::ModelRecord& model,
 }
 
 float residual_limit(const Result& r, const RecognizerConfig& cfg) {
-  return r.stats.candidates_spread ? kSpreadResidualFactor * cfg.max_residual_f : cfg.max_residual_f;
+  const ConfidenceParams& c = cfg.confidence;
+  return r.stats.candidates.spread ? c.spread_residual_factor * c.max_residual_f : c.max_residual_f;
 }
 
-float scan_density(const ExtractStats& s, const ExtentFit& fit) {
-  const uint32_t dropped = s.points_nonfinite + s.points_ground;
-  const float points = static_cast<float>(s.points_in > dropped ? s.points_in - dropped : 0u);
+float scan_density(const RecognitionStats& s, const ExtentFit& fit) {
+  const uint32_t dropped = s.extract.points_nonfinite + s.ground.points_ground;
+  const float points = static_cast<float>(s.extract.points_in > dropped ? s.extract.points_in - dropped : 0u);
   return points / (fit.seen_area > kMinTopArea ? fit.seen_area : kMinTopArea);
 }
 
-bool dense_enough_for_model(float density) { return density >= kMinModelDensity; }
-
-uint32_t rank_classes(const Database& db, const Result& r, RankedClass* out) {
-  uint32_t n = 0;
-  for (uint32_t k = 0; k < r.ranking_count; ++k) {
-    const uint32_t c = db.model(r.ranking[k].model).vehicle_class;
-    uint32_t i = 0;
-    while (i < n && out[i].vehicle_class != c) ++i;
-    if (i < n) continue;  // ranked already, by a better model
-    out[n++] = RankedClass{c, r.ranking[k].score, r.ranking[k].model, k};
-  }
-  // Insertion sort of at most kVehicleClassCount: best first, ties by class id.
-  for (uint32_t i = 1; i < n; ++i)
-    for (uint32_t j = i; j > 0; --j) {
-      const RankedClass& a = out[j - 1];
-      const RankedClass& b = out[j];
-      if (a.score > b.score || (a.score == b.score && a.vehicle_class < b.vehicle_class)) break;
-      const RankedClass t = out[j - 1];
-      out[j - 1] = out[j];
-      out[j] = t;
-    }
-  return n;
-}
-
-bool is_class_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
-                        float density) {
-  if (r.class_ranking_count < 2u || cfg.mode == Mode::kSind) return false;
-  const RankedClass& first = r.class_ranking[0];
-  if (first.vehicle_class == static_cast<uint32_t>(VehicleClass::kUnclassified)) return false;
-  const RankedModel& m = r.ranking[first.best_rank];
-  const float n = static_cast<float>(features);
-  return m.has_pose && features >= kMinClassFeatures && density >= kMinClassDensity &&
-         static_cast<float>(m.inliers) >= cfg.min_inlier_fraction * n &&
-         m.score >= cfg.min_mean_log_likelihood * n &&
-         fit.shortfall <= kClassExtentFactor * cfg.max_extent_shortfall &&
-         fit.overhang <= kClassExtentFactor * cfg.max_extent_overhang &&
-         first.score - r.class_ranking[1].score >= cfg.min_margin * std::sqrt(n);
+bool dense_enough_for_model(const RecognizerConfig& cfg, float density) {
+  return density >= cfg.confidence.min_model_density;
 }
 
 float lookalike_margin(const Result& r, const RecognizerConfig& cfg) {
-  return r.stats.candidates_spread ? kSpreadMarginFactor * cfg.min_margin : cfg.min_margin;
+  const ConfidenceParams& c = cfg.confidence;
+  return r.stats.candidates.spread ? c.spread_margin_factor * c.min_margin : c.min_margin;
 }
 
 float confident_margin(const Result& r, const RecognizerConfig& cfg) {
-  const float margin = lookalike_margin(r, cfg) * density_factor(r.stats.scan_density);
-  const float c = r.stats.surface_coverage;
-  if (!(c < cfg.full_coverage)) return margin;
-  if (!(c > 0.0f)) return kFar;  // nothing of the model's top seen: no lead is enough
-  const float short_by = cfg.full_coverage / c;
+  const ConfidenceParams& c = cfg.confidence;
+  const float margin = lookalike_margin(r, cfg) * density_factor(c, r.stats.confidence.scan_density);
+  const float cov = r.stats.confidence.surface_coverage;
+  if (!(cov < c.full_coverage)) return margin;
+  if (!(cov > 0.0f)) return kFar;  // nothing of the model's top seen: no lead is enough
+  const float short_by = c.full_coverage / cov;
   return margin * short_by * short_by;
 }
 
@@ -198,12 +142,31 @@ uint32_t lookalike_group_size(const Result& r, const RecognizerConfig& cfg, uint
 bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
                   float residual_f) {
   if (r.ranking_count == 0 || !r.ranking[0].has_pose) return false;
+  const ConfidenceParams& c = cfg.confidence;
   const float n = static_cast<float>(features);
   const float lead = r.ranking_count > 1 ? r.ranking[0].score - r.ranking[1].score : kFar;
-  return static_cast<float>(r.ranking[0].inliers) >= cfg.min_inlier_fraction * n &&
-         r.ranking[0].score >= cfg.min_mean_log_likelihood * n && r.group_size == 1u &&
-         lead >= confident_margin(r, cfg) * std::sqrt(n) && fit.shortfall <= cfg.max_extent_shortfall &&
-         fit.overhang <= cfg.max_extent_overhang && residual_f <= residual_limit(r, cfg);
+  return static_cast<float>(r.ranking[0].inliers) >= c.min_inlier_fraction * n &&
+         r.ranking[0].score >= c.min_mean_log_likelihood * n && r.group_size == 1u &&
+         lead >= confident_margin(r, cfg) * std::sqrt(n) && fit.shortfall <= c.max_extent_shortfall &&
+         fit.overhang <= c.max_extent_overhang && residual_f <= residual_limit(r, cfg);
+}
+
+Status confidence_stage(SearchContext& ctx) {
+  Result& result = ctx.result;
+  result.confident = false;
+  if (result.ranking_count == 0 || !result.ranking[0].has_pose) return Status::kOk;
+  const uint32_t first = result.ranking[0].model;
+  const RigidPose& pose = ctx.buf.best[first].pose;
+  ConfidenceStats& st = ctx.stats.confidence;
+  st.surface_coverage = upward_surface(ctx, first, pose).coverage();
+  const float band = ctx.features.ground_band;  // m above the terrain removed with the ground
+  const ExtentFit fit = extent_fit(ctx.query, ctx.db.model(first), pose, hidden_ends(ctx.db, first, band));
+  st.scan_density = scan_density(ctx.stats, fit);
+  if (!dense_enough_for_model(ctx.params, st.scan_density)) return Status::kOk;
+  if (!is_confident(result, ctx.params, ctx.query.count, fit, 0.0f)) return Status::kOk;
+  result.confident =
+      is_confident(result, ctx.params, ctx.query.count, fit, residual_structure(ctx, first, pose));
+  return Status::kOk;
 }
 
 }  // namespace spinhash

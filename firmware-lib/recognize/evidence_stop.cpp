@@ -8,15 +8,13 @@
 // only find the same pose again; models near the leader are still reached by
 // the pose transfer and the final rescoring. A wrong leader fits few
 // candidates, so its q is small and the search goes on to the budget.
-#include "recognize/search_context.hpp"
+#include "recognize/evidence_stop.hpp"
 
 namespace spinhash {
 namespace {
 
-// Draws before the bound is consulted: q from one early pose is noisy, and
-// the first correct doublets give poses degrees off (the toy golden query 0
-// stopped after 16 draws 10 degrees from its true yaw; after 64, 1.4).
-constexpr uint32_t kMinEvidenceDraws = 64;
+// The bound is consulted after DrawsParams::min_evidence_draws: q from one
+// early pose is noisy, and the first correct doublets give poses degrees off.
 // (1 - q^2)^n below this is taken as 0 (no float underflow on any target).
 constexpr float kNegligibleMiss = 1.0e-20f;
 
@@ -71,14 +69,14 @@ void note_leader(SearchContext& ctx, uint32_t model) {
 
 bool evidence_says_stop(SearchContext& ctx) {
   EvidenceState& e = ctx.evidence;
-  if (ctx.cfg.stop_miss_probability <= 0.0f || e.leader == kNoLeader || ctx.cumulative == nullptr)
-    return false;
+  const DrawsParams& d = ctx.params.draws;
+  if (d.stop_miss_probability <= 0.0f || e.leader == kNoLeader || ctx.cumulative == nullptr) return false;
   if (e.leader_moved) {
     const float q = fitting_draw_share(ctx, e.leader);
     e.miss_per_draw = 1.0f - q * q;
     e.leader_moved = false;
   }
-  return e.draws >= kMinEvidenceDraws && power(e.miss_per_draw, e.draws) <= ctx.cfg.stop_miss_probability;
+  return e.draws >= d.min_evidence_draws && power(e.miss_per_draw, e.draws) <= d.stop_miss_probability;
 }
 
 }  // namespace spinhash

@@ -1,51 +1,44 @@
-// The final lending (not in the paper; BRAN). After the leading models are
+// The final lending (not in the paper; BRAN; part of the refine stage,
+// RefineParams::lend_*). After the leading models are
 // refined, the first model's refined pose is lent to its nearest models by
 // bounding box, each rescored on every feature, refined and charged for its
 // unseen surface as the leaders were; when a look-alike then comes first,
-// its own look-alikes get the same once more (kFinalLendRounds).
+// its own look-alikes get the same once more (lend_rounds).
 //
 // - Candidates spread over look-alikes (1000 near-identical models): the
 //   scanned model was often a near neighbour of the wrong first one, whose
 //   pose fits it within centimetres, but never refined. The pose is lent as
-//   it is, to kSpreadLookalikes models, and finalised on those where it
-//   comes within kSpreadWindow of the first on the hypothesis loop's features.
+//   it is, to lend_spread_models models, and finalised on those where it
+//   comes within lend_spread_window of the first on the hypothesis loop's
+//   features (wider than the end-aligned window: only the refinement brings
+//   a stretched copy's pose home).
 // - Otherwise (a fleet of families): the scanned model was often a sibling
 //   a metre shorter or longer than the first, or one the first fits the
 //   wrong way round; the first's pose puts the sibling's centre where its
 //   own was, off by half the difference in length, and the sibling's own
 //   poses had not come near. A twin of the same length gets the pose as it
 //   is: the in-loop transfer lent it the first's pose before the focused
-//   search and refinement moved it (Warzone's two identical tankers: the
-//   twin 700 log units behind, so the first named confidently). The pose
-//   is lent to kFamilyLookalikes models with the two boxes' rear ends, or
-//   front ends, made to coincide, each also turned end to end; the best of
-//   these on the hypothesis loop's features is finalised when it comes
-//   within kEndAlignedWindow of the first there.
+//   search and refinement moved it (two identical tankers: the twin far
+//   behind, so the first named confidently). The pose is lent to
+//   lend_family_models models with the two boxes' rear ends, or front ends,
+//   made to coincide, each also turned end to end; the best of these on the
+//   hypothesis loop's features is finalised when it comes within
+//   lend_end_aligned_window of the first there.
 //
-// Bounded: kFinalLendRounds x look-alikes x (kEndAlignedPoses screens (one when spread) on the
-// hypothesis loop's features + 2 + kRefineIterations full verifications).
+// Bounded: lend_rounds x look-alikes x (kEndAlignedPoses screens (one when
+// spread) on the hypothesis loop's features + 2 + refine_iterations full
+// verifications). Off with the transfer stage (TransferParams::enabled) or
+// transfer_models 0, which also caps the look-alikes.
+#include "recognize/final_lending.hpp"
+
 #include "match/refine_pose.hpp"
 #include "recognize/box_distance.hpp"
-#include "recognize/search_context.hpp"
+#include "recognize/refinement.hpp"
+#include "recognize/visible_surface.hpp"
+#include "spinhash/limits.hpp"
 
 namespace spinhash {
 namespace {
-
-constexpr uint32_t kSpreadLookalikes = 16;  // spread candidates: look-alikes a pose is lent to
-constexpr uint32_t kFamilyLookalikes = 8;   // otherwise: siblings nearest by box
-constexpr uint32_t kMaxLookalikes =
-    kSpreadLookalikes > kFamilyLookalikes ? kSpreadLookalikes : kFamilyLookalikes;
-constexpr uint32_t kFinalLendRounds = 2;
-// Log units per verified feature: an end-aligned pose is finalised when, on
-// the hypothesis loop's features, it scores at most this much below the
-// first model's pose (families, six seeds: of the lent poses that came
-// out first, 25 of 31 screen within 0.3, for about 2 finalised per query).
-constexpr float kEndAlignedWindow = 0.3f;
-// ... and a pose lent as it is to a spread look-alike: wider, since only
-// the refinement brings a stretched copy's pose home (1000 procedural
-// models, 100 queries at 0.10 m: 0.3 loses 3 answers, 0.6 none; 2-16 of
-// the 16 pass it, 10.6 on average on the instruction benchmark's queries).
-constexpr float kSpreadWindow = 0.6f;
 
 // Lent poses compared as the leaders were: rescored, refined, charged for
 // the unseen upward surface. Keeps the better of this and a final score
@@ -57,7 +50,7 @@ void finalise_lent(SearchContext& ctx, uint32_t model, const RigidPose& pose, co
   b.pose = pose;
   b.has_score = true;
   ++b.hypotheses;
-  ++ctx.stats.transferred;
+  ++ctx.stats.transfer.transferred;
   rescore_model(ctx, model, all, exact);
   if (refine) refine_model(ctx, model, all, exact, true);
   b.score += upward_surface(ctx, model, b.pose).log_likelihood;
@@ -71,7 +64,8 @@ bool best_end_aligned(SearchContext& ctx, uint32_t source, uint32_t target, floa
   bool found = false;
   for (uint32_t i = 0; i < kEndAlignedPoses; ++i) {
     RigidPose pose;
-    if (!end_aligned_pose(ctx.buf.best[source].pose, ctx.db.model(source), ctx.db.model(target), i, &pose))
+    if (!end_aligned_pose(ctx.buf.best[source].pose, ctx.db.model(source), ctx.db.model(target), i, &pose,
+                          ctx.params.refine.lend_min_end_shift))
       continue;
     const Verification v =
         verify_pose(ctx.db, target, pose, ctx.query, ctx.likelihood, best_score, kNoScoreToBeat);
@@ -95,7 +89,7 @@ float screen_floor(const SearchContext& ctx, uint32_t source, float window) {
 void lend_as_is(SearchContext& ctx, uint32_t source, const QueryFeatures& all, const LikelihoodParams& exact,
                 bool refine, const uint32_t* targets, uint32_t n) {
   const RigidPose pose = ctx.buf.best[source].pose;  // no target is the source
-  const float floor = screen_floor(ctx, source, kSpreadWindow);
+  const float floor = screen_floor(ctx, source, ctx.params.refine.lend_spread_window);
   for (uint32_t t = 0; t < n; ++t) {
     const Verification v =
         verify_pose(ctx.db, targets[t], pose, ctx.query, ctx.likelihood, floor, kNoScoreToBeat);
@@ -105,7 +99,7 @@ void lend_as_is(SearchContext& ctx, uint32_t source, const QueryFeatures& all, c
 
 void lend_end_aligned(SearchContext& ctx, uint32_t source, const QueryFeatures& all,
                       const LikelihoodParams& exact, bool refine, const uint32_t* targets, uint32_t n) {
-  const float floor = screen_floor(ctx, source, kEndAlignedWindow);
+  const float floor = screen_floor(ctx, source, ctx.params.refine.lend_end_aligned_window);
   for (uint32_t t = 0; t < n; ++t) {
     RigidPose best;
     if (best_end_aligned(ctx, source, targets[t], floor, &best))
@@ -117,15 +111,17 @@ void lend_end_aligned(SearchContext& ctx, uint32_t source, const QueryFeatures& 
 
 void lend_final_pose(SearchContext& ctx, const QueryFeatures& all, const LikelihoodParams& exact,
                      bool refine) {
-  const bool spread = ctx.stats.candidates_spread;
-  const uint32_t cap = spread ? kSpreadLookalikes : kFamilyLookalikes;
-  const uint32_t wanted = ctx.cfg.transfer_models < cap ? ctx.cfg.transfer_models : cap;
-  if (wanted == 0u) return;                   // transfer_models = 0: the paper's BRAN
+  const bool spread = ctx.stats.candidates.spread;
+  const RefineParams& p = ctx.params.refine;
+  const TransferParams& t = ctx.params.transfer;
+  const uint32_t cap = spread ? p.lend_spread_models : p.lend_family_models;  // <= kMaxLendModels
+  const uint32_t wanted = !t.enabled ? 0u : (t.transfer_models < cap ? t.transfer_models : cap);
+  if (wanted == 0u) return;                   // the transfer off: the paper's BRAN
   uint32_t lent_from = ctx.db.model_count();  // none yet
-  for (uint32_t round = 0; round < kFinalLendRounds; ++round) {
+  for (uint32_t round = 0; round < p.lend_rounds; ++round) {
     uint32_t first = 0;
     if (!final_first(ctx, &first) || first == lent_from) return;
-    uint32_t targets[kMaxLookalikes];
+    uint32_t targets[kMaxLendModels];
     // Spread: only models not yet finalised (the leaders were refined from their own poses).
     const uint32_t n = nearest_by_box(ctx.db, first, wanted, targets, [&](uint32_t m) {
       return m != first && (!spread || !ctx.buf.best[m].final_score);

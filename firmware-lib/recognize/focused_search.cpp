@@ -1,17 +1,7 @@
-// BRAN's focused search (not in the paper). When the joint candidates are
-// spread over many look-alikes (bran.cpp: each query feature's W candidates
-// name a few dozen near-identical models), or so few poses were verified
-// that the draws were extended past max_trials (min_hypotheses), few
-// doublets pair up in one model, and the true model may hold only a handful
-// of poorer poses (or a look-alike's, lent by the pose transfer). The
-// leading models after the draws are then nearly all of the right family,
-// so each of the cfg.focus_models best gets the short RANSAC that SRAN
-// gives every model: its own top_w_sran nearest features for an evenly
-// spread share of the query features, and kFocusTrials draws through the
-// same cascade and likelihood. Bounded: focus_models x (the searched
-// features x one model's features) descriptor distances, and kFocusTrials x
-// top_w_sran^2 pair checks per model, within max_pair_checks.
-#include "recognize/search_context.hpp"
+#include "recognize/focused_search.hpp"
+
+#include "recognize/draws.hpp"
+#include "recognize/hypotheses.hpp"
 #include "spinhash/limits.hpp"
 #include "util/top_n.hpp"
 
@@ -29,21 +19,31 @@ void gather_subset_candidates(SearchContext& ctx, uint32_t model, uint32_t step)
   }
 }
 
+// Candidates spread over look-alikes, or so few poses that the draws were
+// extended, and budget left.
+bool worth_focusing(const SearchContext& ctx) {
+  const DrawsStats& d = ctx.stats.draws;
+  return (ctx.stats.candidates.spread || d.trials > trial_budget(ctx)) && !d.budget_exhausted;
+}
+
 }  // namespace
 
-void focus_on_leaders(SearchContext& ctx) {
+Status focus_stage(SearchContext& ctx) {
+  if (ctx.mode != Mode::kBran || !worth_focusing(ctx)) return Status::kOk;
   uint32_t models[kMaxFocusModels];
   const uint32_t n = top_n(
-      ctx.db.model_count(), ctx.cfg.focus_models, models, [&](uint32_t m) { return has_hypothesis(ctx, m); },
+      ctx.db.model_count(), ctx.params.focus.focus_models, models,
+      [&](uint32_t m) { return has_hypothesis(ctx, m); },
       [&](uint32_t a, uint32_t b) { return scores_higher(ctx, a, b); });
   // Every step-th feature: about verify_count of them, the hypotheses' subset size.
   const uint32_t step = (ctx.query.count + ctx.query.verify_count - 1u) / ctx.query.verify_count;
   ctx.cumulative = ctx.buf.cumulative;
-  const HypothesisCaps caps{0xFFFFFFFFu, ctx.cfg.max_hypotheses};
+  const HypothesisCaps caps{0xFFFFFFFFu, ctx.params.draws.max_hypotheses};
   for (uint32_t i = 0; i < n; ++i) {
     gather_subset_candidates(ctx, models[i], step);
-    if (!draw_for_model(ctx, models[i], kFocusTrials, caps)) return;
+    if (!draw_for_model(ctx, models[i], ctx.params.focus.focus_trials, caps)) break;
   }
+  return Status::kOk;
 }
 
 }  // namespace spinhash

@@ -1,19 +1,10 @@
-// The hypothesis machinery shared by BRAN and SRAN: doublet draws, the
-// Figure 5 cascade, the pose and its likelihood.
+#include "recognize/hypotheses.hpp"
+
 #include "match/pose_from_doublet.hpp"
-#include "recognize/search_context.hpp"
+#include "recognize/evidence_stop.hpp"
 #include "spinhash/limits.hpp"
 
 namespace spinhash {
-
-OrientedPoint SearchContext::query_point(uint32_t f) const {
-  const float* p = query.positions + 3u * f;
-  const float* n = query.normals + 3u * f;
-  return OrientedPoint{Eigen::Vector3f(p[0], p[1], p[2]), Eigen::Vector3f(n[0], n[1], n[2])};
-}
-
-OrientedPoint SearchContext::model_point(uint32_t f) const { return model_feature_point(db, f); }
-
 namespace {
 
 uint32_t draw_index(SearchContext& ctx) {
@@ -65,15 +56,15 @@ void consider_pose(SearchContext& ctx, uint32_t model, const RigidPose& pose, fl
 uint32_t gather_model_candidates(SearchContext& ctx, uint32_t model, uint32_t l) {
   const uint32_t n =
       search_model_exhaustive(ctx.db, model, ctx.query.spins + static_cast<size_t>(l) * ctx.query.dims,
-                              ctx.cfg.top_w_sran, ctx.candidates_of(l));
+                              ctx.params.candidates.top_w_sran, ctx.candidates_of(l));
   ctx.buf.candidate_count[l] = n;
-  ctx.stats.candidates += n;
+  ctx.stats.candidates.kept += n;
   return n;
 }
 
 bool draw_for_model(SearchContext& ctx, uint32_t model, uint32_t trials, const HypothesisCaps& caps) {
   for (uint32_t trial = 0; trial < trials; ++trial) {
-    ++ctx.stats.trials;
+    ++ctx.stats.draws.trials;
     uint32_t k = 0, l = 0;
     DoubletShape shape;
     if (!draw_stable_doublet(ctx, &k, &l, &shape)) continue;
@@ -90,8 +81,8 @@ bool draw_for_model(SearchContext& ctx, uint32_t model, uint32_t trials, const H
 
 PairOutcome evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l,
                           const DoubletShape& shape, uint32_t fu, uint32_t fv, const HypothesisCaps& caps) {
-  RecognitionStats& st = ctx.stats;
-  if (st.pair_checks >= ctx.cfg.max_pair_checks) {
+  DrawsStats& st = ctx.stats.draws;
+  if (st.pair_checks >= ctx.params.draws.max_pair_checks) {
     st.budget_exhausted = true;
     return PairOutcome::kBudgetSpent;
   }
@@ -101,7 +92,9 @@ PairOutcome evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32
   if (check_doublet(shape, mu, mv, ctx.tolerance) != CascadeStage::kPass) return PairOutcome::kRejected;
   ++st.doublets_passed;
   RigidPose pose;
-  if (!pose_from_doublet(ctx.query_point(k), ctx.query_point(l), mu, mv, &pose)) return PairOutcome::kPassed;
+  if (!pose_from_doublet(ctx.query_point(k), ctx.query_point(l), mu, mv, &pose,
+                         ctx.params.draws.normal_lever))
+    return PairOutcome::kPassed;
   // The total budget counts the poses found, tilted ones too: a sphere
   // pairs with any patch, and counting only the verified poses took the
   // worst cases' draws (docs/budgets.md) to 1.6-2x their instructions.

@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "recognize/confidence.hpp"
-
 namespace spinhash {
 
 float footprint_density(const QueryFeatures& query, uint32_t points) {
@@ -31,20 +29,27 @@ float footprint_density(const QueryFeatures& query, uint32_t points) {
   return static_cast<float>(points) / (area > kMinFootprint ? area : kMinFootprint);
 }
 
-uint32_t trial_scale(float density) { return dense_enough_for_model(density) ? 1u : kSparseTrialScale; }
-
-uint32_t sparse_bucket_scan(uint32_t max_bucket_scan) {
-  if (max_bucket_scan >= kMaxSparseBucketScan / kSparseScanScale)
-    return max_bucket_scan > kMaxSparseBucketScan ? max_bucket_scan : kMaxSparseBucketScan;
-  return max_bucket_scan * kSparseScanScale;
+bool searched_as_sparse(const StageParams& p, float density) {
+  return !(density >= p.candidates.sparse_density);
 }
 
-uint32_t bucket_scan(uint32_t max_bucket_scan, uint32_t max_features, float density, uint32_t features) {
-  if (dense_enough_for_model(density) || features == 0) return max_bucket_scan;
-  const uint64_t share = static_cast<uint64_t>(max_features) * max_bucket_scan / features;
-  const uint32_t scan = sparse_bucket_scan(max_bucket_scan);
-  if (share >= scan) return scan;
-  return share > max_bucket_scan ? static_cast<uint32_t>(share) : max_bucket_scan;
+uint32_t trial_scale(const StageParams& p, float density) {
+  return searched_as_sparse(p, density) ? p.draws.sparse_trial_scale : 1u;
+}
+
+uint32_t sparse_bucket_scan(const CandidatesParams& p) {
+  const uint32_t scan = p.max_bucket_scan, most = p.max_sparse_bucket_scan;
+  if (scan >= most / p.sparse_scan_scale) return scan > most ? scan : most;
+  return scan * p.sparse_scan_scale;
+}
+
+uint32_t bucket_scan(const StageParams& p, uint32_t max_features, float density, uint32_t features) {
+  const uint32_t scan = p.candidates.max_bucket_scan;
+  if (!searched_as_sparse(p, density) || features == 0) return scan;
+  const uint64_t share = static_cast<uint64_t>(max_features) * scan / features;
+  const uint32_t sparse = sparse_bucket_scan(p.candidates);
+  if (share >= sparse) return sparse;
+  return share > scan ? static_cast<uint32_t>(share) : scan;
 }
 
 }  // namespace spinhash

@@ -161,12 +161,12 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
   // The tile's terrain measures the object's top (the class envelope's
   // height; its noise: the recognizer's sigma_surface, not measured per
   // object); the object's points start ground_height above it.
-  const Result r = b.recognizer.recognize(points, o.points,
-                                          ObjectTerrain{o.hmax, c.recognizer.sigma_surface, c.ground_height});
+  const Result r = b.recognizer.recognize(
+      points, o.points, ObjectTerrain{o.hmax, c.recognizer.refine.sigma_surface, c.ground_height});
   out.status = r.status;
   out.stats = r.stats;
-  stats->recognition_hypotheses += r.stats.hypotheses;
-  stats->recognition_candidates += r.stats.candidates;
+  stats->recognition_hypotheses += r.stats.draws.hypotheses;
+  stats->recognition_candidates += r.stats.candidates.kept;
   if (r.status != Status::kOk || r.ranking_count == 0) {
     out.kind = ObjectKind::kUnknown;
     return;
@@ -201,7 +201,7 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
 
 RecognizerConfig scene_object_config(const SceneConfig& c) {
   RecognizerConfig r = c.recognizer;
-  r.ground_clearance = 0.0f;  // the scene removed the ground already, on any slope
+  r.ground.ground_clearance = 0.0f;  // the scene removed the ground already, on any slope
   return r;
 }
 

@@ -140,8 +140,8 @@ int run_scene(const SceneArgs& a) {
 
 void add_scene_command(CLI::App& app, int* exit_code) {
   auto a = std::make_shared<SceneArgs>();
-  a->config.recognizer.ground_clearance = 0.0f;  // the scene's terrain classifier removes the ground
-  a->config.max_tile_points = 0;                 // sized per tile from its density (tile_stream.hpp)
+  a->config.recognizer.ground.ground_clearance = 0.0f;  // the scene's terrain classifier removes the ground
+  a->config.max_tile_points = 0;                        // sized per tile from its density (tile_stream.hpp)
   CLI::App* cmd = app.add_subcommand(
       "scene",
       "find and recognise every vehicle in airborne lidar tiles (LAS, LAZ, COPC, PLY or x y z text, z up)");

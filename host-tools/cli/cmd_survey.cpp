@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "flags/recognizer_flags.hpp"
 #include "flags/scene_flags.hpp"
 #include "survey/survey_runner.hpp"
 
@@ -30,6 +31,7 @@ void add_survey_command(CLI::App& app, int* exit_code) {
   cmd->add_flag("--quiet", o->quiet, "no progress line");
   add_work_crs_option(cmd, &o->work);
   flags::add_scene_flags(cmd, &o->scene, {"--top", "--max-objects"});
+  flags::add_set_option(cmd, &o->scene.recognizer);  // --preset, --set STAGE.FIELD=VALUE
   cmd->add_option("tiles", *tiles, "tiles (LAS, LAZ, COPC, PLY, x y z text) or folders of them")
       ->required()
       ->check(CLI::ExistingPath);  // planned before any runs: a missing one is a usage error

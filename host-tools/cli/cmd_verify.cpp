@@ -8,9 +8,9 @@
 #include "cli/json_line.hpp"
 #include "cli/report_keys.hpp"
 #include "cli/result_json.hpp"
+#include "config/mode_name.hpp"
 #include "flags/recognizer_flags.hpp"
 #include "pipeline/database_file.hpp"
-#include "pipeline/mode_name.hpp"
 #include "pipeline/model_sources.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/recognition_session.hpp"
@@ -19,10 +19,10 @@
 namespace spinhash::cli {
 
 using flags::add_recognizer_flags;
+using host::mode_name;
 using pipeline::DatabaseFile;
 using pipeline::load_database;
 using pipeline::load_model_meshes;
-using pipeline::mode_name;
 using pipeline::model_name;
 using pipeline::ModelMesh;
 using pipeline::Progress;

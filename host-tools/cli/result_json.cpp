@@ -53,7 +53,8 @@ std::string result_json(const std::string& query, const Database& db, const Resu
   s += "," +
        pipeline::class_json(db, r.class_ranking, ok ? r.class_ranking_count : 0u, ok && r.class_confident);
   s += ",\"crs\":" + (crs.empty() ? std::string("null") : json_string(crs));
-  s += ",\"time_ms\":" + json_number(time_ms, 4) + ",\"hypotheses\":" + std::to_string(r.stats.hypotheses);
+  s += ",\"time_ms\":" + json_number(time_ms, 4) +
+       ",\"hypotheses\":" + std::to_string(r.stats.draws.hypotheses);
   s += ",\"stats\":" + stats_json(r.stats) + "," + json_version_member() + "}";
   return s;
 }

@@ -2,10 +2,9 @@
 
 #include <cerrno>
 #include <cstdlib>
-#include <type_traits>
+#include <sstream>
 
-#include "spinhash/config_fields.h"
-#include "spinhash/limits.hpp"
+#include "config/field_table.hpp"
 #include "spinhash/presets.hpp"
 
 namespace spinhash::host {
@@ -27,33 +26,40 @@ bool parse(const std::string& text, unsigned long long* out) {
   return errno == 0 && *end == '\0';
 }
 
-template <typename T, typename L, typename H>
-bool set_number(const std::string& text, T* v, L lo, H hi) {
-  using P = typename std::conditional<std::is_floating_point<T>::value, double, unsigned long long>::type;
+template <typename T, typename P>
+bool set_number(const std::string& text, const ConfigField& f, RecognizerConfig* cfg) {
   P p = 0;
-  if (!parse(text, &p) || !(p >= static_cast<P>(lo) && p <= static_cast<P>(hi))) return false;  // NaN too
-  *v = static_cast<T>(p);
+  if (!parse(text, &p) || !(p >= static_cast<P>(f.lo) && p <= static_cast<P>(f.hi))) return false;  // NaN too
+  f.in<T>(*cfg) = static_cast<T>(p);
   return true;
 }
-template <typename L, typename H>
-bool set_U32(const std::string& t, uint32_t* v, L lo, H hi) {
-  return set_number(t, v, lo, hi);
+
+bool set_field(const ConfigField& f, const std::string& value, RecognizerConfig* cfg) {
+  switch (f.kind) {
+    case FieldKind::BOOL:
+      if (value != "0" && value != "1" && value != "false" && value != "true") return false;
+      f.in<bool>(*cfg) = value == "1" || value == "true";
+      return true;
+    case FieldKind::U32: return set_number<uint32_t, unsigned long long>(value, f, cfg);
+    case FieldKind::U64: return set_number<uint64_t, unsigned long long>(value, f, cfg);
+    case FieldKind::F32: return set_number<float, double>(value, f, cfg);
+    case FieldKind::MODE:
+    case FieldKind::VEC3D: return false;
+  }
+  return false;
 }
-template <typename L, typename H>
-bool set_U64(const std::string& t, uint64_t* v, L lo, H hi) {
-  return set_number(t, v, lo, hi);
+
+const char* kind_name(FieldKind k) {
+  switch (k) {
+    case FieldKind::MODE: return "MODE";
+    case FieldKind::BOOL: return "BOOL";
+    case FieldKind::U32: return "U32";
+    case FieldKind::U64: return "U64";
+    case FieldKind::F32: return "F32";
+    case FieldKind::VEC3D: return "VEC3D";
+  }
+  return "?";
 }
-template <typename L, typename H>
-bool set_F32(const std::string& t, float* v, L lo, H hi) {
-  return set_number(t, v, lo, hi);
-}
-bool set_BOOL(const std::string& t, bool* v, int, int) {
-  if (t != "0" && t != "1") return false;
-  *v = t == "1";
-  return true;
-}
-bool set_MODE(const std::string&, Mode*, int, int) { return false; }
-bool set_VEC3D(const std::string&, double (*)[3], int, int) { return false; }
 
 }  // namespace
 
@@ -67,18 +73,22 @@ bool assign_config_field(const std::string& assignment, RecognizerConfig* cfg, s
       apply_preset(preset, cfg);
       return true;
     }
-    *error = "no preset " + value + " (default, flight)";
+    *error = "no preset " + value + " (default, flight, full)";
     return false;
   }
-#define SPINHASH_ASSIGN_FIELD(kind, field, lo, hi, flag, help)                            \
-  if (name == #field) {                                                                   \
-    if (set_##kind(value, &cfg->field, lo, hi)) return true;                              \
-    *error = "bad value for " + name + " (" #kind ", range " #lo " - " #hi "): " + value; \
-    return false;                                                                         \
+  const ConfigField* f = find_config_field(name);
+  if (f == nullptr) {
+    *error = "no configuration field " + name + " (docs/api.md lists them: stage.field or a top-level field)";
+    return false;
   }
-  SPINHASH_CONFIG_FIELDS(SPINHASH_ASSIGN_FIELD)
-#undef SPINHASH_ASSIGN_FIELD
-  *error = "no configuration field " + name;
+  if (set_field(*f, value, cfg)) return true;
+  std::ostringstream range;
+  range << static_cast<double>(f->lo) << " - " << static_cast<double>(f->hi);
+  *error = "bad value for " + f->key() + " (" + kind_name(f->kind) +
+           (f->kind == FieldKind::U32 || f->kind == FieldKind::U64 || f->kind == FieldKind::F32
+                ? ", range " + range.str()
+                : std::string(f->kind == FieldKind::BOOL ? ", 0 or 1" : ", set by its own flag")) +
+           "): " + value;
   return false;
 }
 

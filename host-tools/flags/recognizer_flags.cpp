@@ -3,54 +3,50 @@
 #include <map>
 #include <string>
 
-#include "pipeline/mode_name.hpp"
-#include "spinhash/config_fields.h"
-#include "spinhash/limits.hpp"
+#include "config/config_assign.hpp"
+#include "config/field_table.hpp"
+#include "config/mode_name.hpp"
 #include "spinhash/presets.hpp"
 
 namespace spinhash::flags {
 
-using pipeline::mode_name;
-using pipeline::mode_names;
+using host::ConfigField;
+using host::FieldKind;
+using host::mode_name;
+using host::mode_names;
+
 namespace {
 
-// One registration per kind of SPINHASH_CONFIG_FIELDS.
 // By name: a transformer over the enum would print its raw bytes in --help.
-void add_MODE(CLI::App* cmd, Mode* v, int, int, const char* flag, const char* help) {
+void add_mode(CLI::App* cmd, Mode* v, const ConfigField& f) {
   std::vector<std::string> names;
   for (const auto& entry : mode_names()) names.push_back(entry.first);
   cmd->add_option_function<std::string>(
-         flag, [v](const std::string& name) { *v = mode_names().at(name); }, help)
+         f.flag, [v](const std::string& name) { *v = mode_names().at(name); }, f.help)
       ->check(CLI::IsMember(names, CLI::ignore_case))
       ->default_str(mode_name(*v));
 }
-void add_BOOL(CLI::App* cmd, bool* v, int, int, const char* flag, const char* help) {
-  cmd->add_flag(flag, *v, help);
-}
-template <typename T, typename L, typename H>
-void add_number(CLI::App* cmd, T* v, L lo, H hi, const char* flag, const char* help) {
-  cmd->add_option(flag, *v, help)
-      ->check(CLI::Range(static_cast<T>(lo), static_cast<T>(hi)))
+
+template <typename T>
+void add_number(CLI::App* cmd, T* v, const ConfigField& f) {
+  cmd->add_option(f.flag, *v, f.help)
+      ->check(CLI::Range(static_cast<T>(f.lo), static_cast<T>(f.hi)))
       ->capture_default_str();
 }
-template <typename L, typename H>
-void add_U32(CLI::App* cmd, uint32_t* v, L lo, H hi, const char* flag, const char* help) {
-  add_number(cmd, v, lo, hi, flag, help);
-}
-template <typename L, typename H>
-void add_U64(CLI::App* cmd, uint64_t* v, L lo, H hi, const char* flag, const char* help) {
-  add_number(cmd, v, lo, hi, flag, help);
-}
-template <typename L, typename H>
-void add_F32(CLI::App* cmd, float* v, L lo, H hi, const char* flag, const char* help) {
-  add_number(cmd, v, lo, hi, flag, help);
-}
-void add_VEC3D(CLI::App*, double (*)[3], int, int, const char*, const char*) {}  // --viewpoint, below
 
-}  // namespace
+// One registration per kind; the help names the field's key, which --set takes.
+void add_flag(CLI::App* cmd, RecognizerConfig* c, const ConfigField& f) {
+  switch (f.kind) {
+    case FieldKind::MODE: add_mode(cmd, &f.in<Mode>(*c), f); break;
+    case FieldKind::BOOL: cmd->add_flag(f.flag, f.in<bool>(*c), f.help); break;
+    case FieldKind::U32: add_number(cmd, &f.in<uint32_t>(*c), f); break;
+    case FieldKind::U64: add_number(cmd, &f.in<uint64_t>(*c), f); break;
+    case FieldKind::F32: add_number(cmd, &f.in<float>(*c), f); break;
+    case FieldKind::VEC3D: break;  // --viewpoint, below
+  }
+}
 
-void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
-  // First, so that its callback runs before the fields' flags, which override it.
+void add_preset(CLI::App* cmd, RecognizerConfig* c) {
   cmd->add_option_function<std::string>(
          "--preset",
          [c](const std::string& name) {
@@ -58,14 +54,41 @@ void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
            preset_from_name(name.c_str(), &preset);
            apply_preset(preset, c);
          },
-         "a named configuration (include/spinhash/presets.hpp): default, or flight (about a third of "
-         "the default's instructions per query, at a measured loss of accuracy: docs/results.md); the "
-         "flags below override its fields")
-      ->check(CLI::IsMember({"default", "flight"}));
-#define SPINHASH_ADD_FLAG(kind, name, lo, hi, flag, help) \
-  if (*(flag) != '\0') add_##kind(cmd, &c->name, lo, hi, flag, help);
-  SPINHASH_CONFIG_FIELDS(SPINHASH_ADD_FLAG)
-#undef SPINHASH_ADD_FLAG
+         "a named configuration (include/spinhash/presets.hpp): default, full (every stage at the default's "
+         "settings) or "
+         "flight (a third of the default's instructions); the other flags and --set override its fields")
+      ->check(CLI::IsMember({"default", "flight", "full"}));
+}
+
+void add_set(CLI::App* cmd, RecognizerConfig* c) {
+  cmd->add_option_function<std::vector<std::string>>(
+         "--set", [c](const std::vector<std::string>& settings) { apply_settings(settings, c); },
+         "STAGE.FIELD=VALUE: any stage parameter (docs/api.md lists them), or a top-level field by its "
+         "name; applied after the other flags, in order (repeatable)")
+      ->check(check_setting)
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+}  // namespace
+
+std::string check_setting(const std::string& setting) {
+  RecognizerConfig probe;
+  std::string error;
+  return host::assign_config_field(setting, &probe, &error) ? std::string() : error;
+}
+
+void apply_settings(const std::vector<std::string>& settings, RecognizerConfig* cfg) {
+  std::string error;
+  for (const std::string& s : settings)
+    if (!host::assign_config_field(s, cfg, &error)) throw CLI::ValidationError("--set", error);
+}
+
+void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
+  // First, so that its callback runs before the fields' flags, which override it.
+  add_preset(cmd, c);
+  for (const ConfigField& f : host::config_fields())
+    if (*f.flag != '\0') add_flag(cmd, c, f);
   cmd->add_option_function<std::vector<double>>(
          "--viewpoint",
          [c](const std::vector<double>& v) {
@@ -74,6 +97,12 @@ void add_recognizer_flags(CLI::App* cmd, RecognizerConfig* c) {
          },
          "sensor position X Y Z in the cloud's coordinates: normals turn towards it")
       ->expected(3);
+  add_set(cmd, c);  // last: its callback runs after every flag's
+}
+
+void add_set_option(CLI::App* cmd, RecognizerConfig* c) {
+  add_preset(cmd, c);
+  add_set(cmd, c);
 }
 
 }  // namespace spinhash::flags

@@ -10,11 +10,13 @@
 #include <thread>
 
 #include "blob/file_io.hpp"
+#include "config/config_text.hpp"
 #include "pipeline/database_file.hpp"
 #include "pipeline/exit_codes.hpp"
 #include "pipeline/json_line.hpp"
 #include "pipeline/spill_folder.hpp"
 #include "pipeline/version.hpp"
+#include "spinhash/internal/fnv1a.hpp"
 #include "survey/footprint.hpp"
 #include "survey/interrupt_cleanup.hpp"
 #include "survey/survey_progress.hpp"
@@ -26,7 +28,6 @@ namespace {
 namespace fs = std::filesystem;
 using pipeline::json_string;
 
-constexpr uint64_t kFnvOffset = 1469598103934665603ull, kFnvPrime = 1099511628211ull;
 constexpr size_t kHashChunk = size_t{1} << 20;
 
 // The database's digest (FNV-1a 64 of its bytes): a result made with
@@ -34,10 +35,10 @@ constexpr size_t kHashChunk = size_t{1} << 20;
 std::string file_digest(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::vector<char> buf(kHashChunk);
-  uint64_t h = kFnvOffset;
+  uint64_t h = kFnv1a64Basis;
   while (in) {
     in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
-    for (std::streamsize i = 0; i < in.gcount(); ++i) h = (h ^ static_cast<uint8_t>(buf[i])) * kFnvPrime;
+    h = fnv1a64_update(h, buf.data(), static_cast<size_t>(in.gcount()));
   }
   char hex[20];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
@@ -53,9 +54,13 @@ void remove_results(const std::string& folder) {
 }
 
 std::string settings_key(const SurveyOptions& o) {
+  const std::string recognizer = host::config_text(o.scene.recognizer);
+  char digest[20];
+  std::snprintf(digest, sizeof digest, "%016llx",
+                static_cast<unsigned long long>(fnv1a64(recognizer.data(), recognizer.size())));
   return "spinhash=" + std::string(pipeline::version()) + ";db=" + file_digest(o.db_path) +
          ";top=" + std::to_string(o.scene.top_n) + ";max_objects=" + std::to_string(o.scene.max_objects) +
-         ";max_window_points=" + std::to_string(o.scene.max_tile_points) +
+         ";max_window_points=" + std::to_string(o.scene.max_tile_points) + ";recognizer=" + digest +
          ";work_crs=" + escape_line(o.work.named ? o.work.crs.proj_definition() : "");
 }
 
@@ -91,8 +96,8 @@ bool write_manifest(const PreparedSurvey& s, const std::vector<bool>& done, std:
 
 SceneConfig default_survey_scene() {
   SceneConfig c;
-  c.recognizer.ground_clearance = 0.0f;  // the scene's terrain classifier removes the ground
-  c.max_tile_points = 0;                 // sized per tile from its density (tile_stream.hpp)
+  c.recognizer.ground.ground_clearance = 0.0f;  // the scene's terrain classifier removes the ground
+  c.max_tile_points = 0;                        // sized per tile from its density (tile_stream.hpp)
   return c;
 }
 

@@ -1,8 +1,9 @@
 // Oriented spin-image features from a point cloud: the one code path used for
 // database models (host build) and for queries (onboard), so the two can never
-// drift apart. Pipeline: re-centre in double, drop non-finite points, voxel
-// equalise density, PCA normals, consistent orientation, uniform basis points,
-// spin images.
+// drift apart. Pipeline: re-centre in double, drop non-finite points, (for a
+// query, drop its ground: the recognizer's ground stage), voxel equalise
+// density, PCA normals, consistent orientation, uniform basis points, spin
+// images.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -26,7 +27,7 @@ struct ExtractorCapacity {
   uint32_t max_features = 1024;   // basis points kept (deterministically thinned above)
   uint32_t max_spin_dims = 256;   // bins_alpha * bins_beta supported
   bool thin_large_clouds = true;  // above max_points: keep max_points spread evenly (else refuse)
-  float ground_clearance = 0.0f;  // m: terrain and this much above it dropped (queries; 0: kept)
+  bool drops_ground = false;      // room for drop_ground's terrain grid (queries)
 };
 
 // Normal orientation (z up): within 45 degrees of level, up; steeper, away
@@ -44,8 +45,8 @@ struct FeatureSet {
   float* normals = nullptr;    // 3 per feature, unit length
   float* spins = nullptr;      // dims per feature, normalised to sum 1
   double origin[3] = {0.0, 0.0, 0.0};
-  // The terrain the object stands on, when the extractor found and dropped it
-  // (ExtractorCapacity::ground_clearance): the object's top above it (the
+  // The terrain the object stands on, when drop_ground found and dropped it
+  // (GroundParams): the object's top above it (the
   // second highest point; m), the ground's roughness (m, the scan's noise) and
   // the band above the terrain dropped with it (m: the object's lowest part,
   // a low nose or bumper, went too). top_above_terrain < 0: no terrain found.
@@ -58,11 +59,11 @@ struct ExtractStats {
   uint32_t points_in = 0;
   uint32_t points_thinned = 0;    // dropped to fit max_points (evenly spread)
   uint32_t points_nonfinite = 0;  // dropped NaN / infinite / beyond 1e9 m points (of those kept)
-  uint32_t points_ground = 0;     // dropped as terrain (geometry/object_ground.hpp)
   uint32_t points_equalised = 0;  // after the density voxel
   uint32_t points_oriented = 0;   // with a usable normal
   uint32_t basis_points = 0;      // before thinning to max_features
   bool features_thinned = false;  // more basis points than max_features
+  uint32_t features = 0;          // s: features described (basis points kept)
 };
 
 // Buffers reserved once; the same object is reused for every cloud.
@@ -70,8 +71,24 @@ class FeatureExtractor {
  public:
   // Carves its buffers from `arena` (counting arenas work too).
   Status init(const FeatureParams& params, const ExtractorCapacity& cap, Arena& arena) noexcept;
+  // The whole path without ground removal (the database's models): load,
+  // then describe with the default ExtractParams.
   Status extract(const CloudView& cloud, const OrientationHint& hint, FeatureSet* out,
                  ExtractStats* stats) noexcept;
+
+  // The same path in steps (the recognizer's ground and extract stages).
+  // Re-centres the cloud, thins it to max_points and drops its non-finite
+  // points; *out and *stats start afresh (out->origin is set).
+  Status load(const CloudView& cloud, FeatureSet* out, ExtractStats* stats) noexcept;
+  // Drops the terrain under the loaded points (geometry/object_ground.hpp)
+  // and records it in out's terrain fields; *dropped: how many points went.
+  // Needs ExtractorCapacity::drops_ground. kNotEnoughFeatures when nothing
+  // stands on the ground.
+  Status drop_ground(const GroundParams& params, FeatureSet* out, uint32_t* dropped) noexcept;
+  // The loaded points' features, by `params` (ExtractParams' query_* fields
+  // override the database's voxel and spacing).
+  Status describe(const OrientationHint& hint, const ExtractParams& params, FeatureSet* out,
+                  ExtractStats* stats) noexcept;
 
  private:
   struct Impl;  // buffers, placed in the arena by init()

@@ -13,23 +13,30 @@ constexpr uint32_t kMaxSpinDims = kMaxSpinBinsPerAxis * kMaxSpinBinsPerAxis;  //
 constexpr uint32_t kMaxLshBits = 64;      // K: bits per key (one uint64 key)
 constexpr uint32_t kMaxLshTables = 64;    // L
 constexpr uint32_t kMaxCandidates = 128;  // W: candidates kept per query feature
-// Largest ground clearance, m (RecognizerConfig::ground_clearance).
+// Largest ground clearance, m (GroundParams::ground_clearance).
 constexpr float kMaxGroundClearance = 10.0f;
 // BRAN's draws while min_hypotheses is not met: at most this many times
-// RecognizerConfig::max_trials (the work budget stays bounded).
+// DrawsParams::max_trials (the work budget stays bounded).
 constexpr uint32_t kTrialExtension = 4;
-// Largest RecognizerConfig::max_trials: the extended budget fits uint32.
+// Largest DrawsParams::max_trials: the extended budget fits uint32.
 constexpr uint32_t kMaxTrials = 0xFFFFFFFFu / kTrialExtension;
-// Largest RecognizerConfig::transfer_models (look-alike pose transfer).
-constexpr uint32_t kMaxTransferModels = 64;
-// Largest RecognizerConfig::focus_models (BRAN's focused search), and the
-// draws each focused model gets: SRAN's default per model (sran_trials).
-// At 50, a quarter of the query features each, the focus missed the
-// scanned model's pose among Warzone's mirrored ruins, whose mirror twin
-// then led alone (docs/results.md 11p: 3 confident wrong answers -> 1;
-// 1 000 models +8 % instructions at the median).
-constexpr uint32_t kMaxFocusModels = 64;
-constexpr uint32_t kFocusTrials = 100;
+// Bounds of the stages' counts (stage_fields.h): each sizes an array or
+// bounds a loop of its stage.
+constexpr uint32_t kMaxTransferModels = 64;    // TransferParams::transfer_models
+constexpr uint32_t kMaxTransferPoses = 16;     // TransferParams::transfer_poses
+constexpr uint32_t kMaxFocusModels = 64;       // FocusParams::focus_models
+constexpr uint32_t kMaxRescoredModels = 16;    // RefineParams::rescored_models (an array on the stack)
+constexpr uint32_t kMaxRefineIterations = 16;  // RefineParams::refine_iterations
+constexpr uint32_t kMaxLendModels = 32;        // RefineParams::lend_spread_models, lend_family_models
+constexpr uint32_t kMaxLendRounds = 8;         // RefineParams::lend_rounds
+constexpr uint32_t kMaxNormalRadiusSteps = 8;  // ExtractParams::max_radius_steps
+constexpr uint32_t kMaxGroundFitRounds = 16;   // GroundParams::fit_rounds
+constexpr uint32_t kMaxBucketScan = 1u << 24;  // CandidatesParams::max_bucket_scan, max_sparse_bucket_scan
+constexpr uint32_t kMaxSparseScale =
+    64;  // CandidatesParams::sparse_scan_scale, DrawsParams::sparse_trial_scale
+// The object ground's grid over a cut-out's footprint (geometry/object_ground.hpp).
+constexpr uint32_t kObjectGroundGridSide = 32;
+constexpr uint32_t kObjectGroundCells = kObjectGroundGridSide * kObjectGroundGridSide;
 constexpr uint32_t kMaxModelNameBytes = 48;            // including the terminating NUL
 constexpr uint32_t kMaxModels = 65535;                 // model ids are stored as uint16
 constexpr uint32_t kMaxFeatures = 0x7FFFFFFF;          // feature ids are uint32

@@ -1,7 +1,7 @@
 // Named recognizer configurations: the one place their values live. The
 // command line (`--preset`), the experiments (`--preset`), the instruction
 // benchmark's target runner (`preset=flight`) and firmware all take them from
-// here. Values and their measured costs: docs/results.md section 9q.
+// here. docs/results.md measures what each costs and gains.
 #pragma once
 #include <cstdint>
 #include <cstring>
@@ -12,36 +12,31 @@ namespace spinhash {
 
 enum class Preset : uint8_t {
   kDefault = 0,  // RecognizerConfig{}: the accuracy of docs/results.md
-  kFlight = 1,   // issue 29's flight budget: about 50 M instructions per query on aarch64 at 56 models
+  kFlight = 1,   // a flight budget: about a third of the default's instructions per query
+  kFull = 2,     // the full recognition; today the default's settings
 };
 
-// kFlight: issue 29's flight budget, measured by scripts/flight-levers.sh
-// (docs/results.md section 9q) on aarch64 at 56 models: 40.8 M instructions
-// per query (the benchmark's middle of 6; worst 49.9 M, 1.22x) against
-// 124.2 M (worst 251.6 M) for the default (stop 31, with the spin-image,
-// moments and nearest kernels; 43.8 M against 145.4 M with verify_features
-// 128 before them). It costs accuracy: right
-// first 1 621 of 1 680 fleet and family queries against 1 652 (the fleet's noisy scans 199 and 202 of 224
-// without and with ground against 213 and 211, the families 499 and 498 of 504 at 0.05 and 0.10 m against 503
-// and 502), confident and right 82 % of the right against 96 %, and at 1 000 models 67 / 64 % right first
-// against 82 / 78 % (0.05 / 0.10 m). The query's density voxel (FeatureParams::cloud_voxel for the query
-// only), m: 2.25 times the database's 0.08 m.
-constexpr float kFlightQueryVoxel = 0.18f;
+// kFlight trades accuracy for instructions: a coarser query voxel (fewer
+// points described), fewer query features, a shorter LSH scan, fewer
+// candidates per feature, fewer features verified per hypothesis and the
+// draws' budget halved. docs/results.md gives its instructions per query
+// and its accuracy against the default's.
+constexpr float kFlightQueryVoxel = 0.18f;       // m: the query's density voxel (extract.query_cloud_voxel)
 constexpr uint32_t kFlightMaxFeatures = 256;     // s: query features kept (evenly thinned)
 constexpr uint32_t kFlightMaxBucketScan = 512;   // LSH entries scanned per query feature
 constexpr uint32_t kFlightTopW = 30;             // W: candidates per query feature
 constexpr uint32_t kFlightVerifyFeatures = 128;  // query features scored per hypothesis
-constexpr uint32_t kFlightMaxTrials = 800;  // BRAN's draws: the budget the figures above were measured at
+constexpr uint32_t kFlightMaxTrials = 800;       // BRAN's draws
 
 // Sets the fields a preset names; every other field keeps its value.
 inline void apply_preset(Preset preset, RecognizerConfig* c) {
   if (preset != Preset::kFlight) return;
-  c->query_cloud_voxel = kFlightQueryVoxel;
+  c->extract.query_cloud_voxel = kFlightQueryVoxel;
   c->max_features = kFlightMaxFeatures;
-  c->max_bucket_scan = kFlightMaxBucketScan;
-  c->top_w = kFlightTopW;
-  c->verify_features = kFlightVerifyFeatures;
-  c->max_trials = kFlightMaxTrials;
+  c->candidates.max_bucket_scan = kFlightMaxBucketScan;
+  c->candidates.top_w = kFlightTopW;
+  c->draws.verify_features = kFlightVerifyFeatures;
+  c->draws.max_trials = kFlightMaxTrials;
 }
 
 inline RecognizerConfig preset_config(Preset preset) {
@@ -50,14 +45,18 @@ inline RecognizerConfig preset_config(Preset preset) {
   return c;
 }
 
-inline const char* preset_name(Preset preset) { return preset == Preset::kFlight ? "flight" : "default"; }
+inline const char* preset_name(Preset preset) {
+  return preset == Preset::kFlight ? "flight" : (preset == Preset::kFull ? "full" : "default");
+}
 
-// "default" or "flight"; false for any other name.
+// "default", "flight" or "full"; false for any other name.
 inline bool preset_from_name(const char* name, Preset* preset) {
   if (std::strcmp(name, "default") == 0)
     *preset = Preset::kDefault;
   else if (std::strcmp(name, "flight") == 0)
     *preset = Preset::kFlight;
+  else if (std::strcmp(name, "full") == 0)
+    *preset = Preset::kFull;
   else
     return false;
   return true;

@@ -39,24 +39,39 @@ struct RankedClass {
   uint32_t best_rank = 0;      // that model's place in Result::ranking
 };
 
-struct RecognitionStats {
-  ExtractStats extract;
-  uint32_t features = 0;             // s: query features used
-  uint32_t salient_features = 0;     // features with candidates that sampling may draw
-  uint64_t candidates = 0;           // candidate model features kept (sum of W_l)
-  uint64_t bucket_entries = 0;       // LSH entries scanned
+// What each stage did (the stages of stage_fields.h that count something).
+struct GroundStats {
+  uint32_t points_ground = 0;  // dropped as terrain (geometry/object_ground.hpp)
+};
+struct CandidatesStats {
+  uint64_t kept = 0;                   // candidate model features kept (sum of W_l; SRAN and focus too)
+  uint64_t bucket_entries = 0;         // LSH entries scanned
+  uint32_t salient_features = 0;       // features with candidates that sampling may draw
+  bool spread = false;                 // BRAN: the candidates named many look-alikes (spread_perplexity)
+  bool bucket_scan_truncated = false;  // some LSH lookups hit max_bucket_scan
+};
+// The hypothesis machinery's counts: the draws', and the focused search's,
+// which draws through the same cascade.
+struct DrawsStats {
   uint32_t trials = 0;               // doublet draws
   uint64_t pair_checks = 0;          // candidate pairs put through the cascade
   uint64_t doublets_passed = 0;      // pairs that passed the cascade
   uint64_t poses_tilted = 0;         // their poses tilted past max_tilt_deg, not verified
   uint32_t hypotheses = 0;           // poses verified from doublets (max_hypotheses: poses_found())
-  uint32_t transferred = 0;          // look-alike pose transfers verified (BRAN, <= 4 x transfer_models + 32)
-  uint32_t refinements = 0;          // least-squares pose refinements verified
   bool budget_exhausted = false;     // the work budget cut recognition short
   bool stopped_on_evidence = false;  // BRAN stopped before the budget (stop_miss_probability)
-  bool candidates_spread = false;    // BRAN: the candidates named many look-alikes (focus_models)
-  bool bucket_scan_truncated = false;  // some LSH lookups hit max_bucket_scan
-  size_t workspace_used = 0;
+  // The poses the doublets gave, verified or refused for their tilt: what
+  // BRAN's pose budget and its draw extension count (max_hypotheses,
+  // min_hypotheses).
+  uint64_t poses_found() const { return hypotheses + poses_tilted; }
+};
+struct TransferStats {
+  uint32_t transferred = 0;  // look-alike pose transfers verified (here and by the final lending)
+};
+struct RefineStats {
+  uint32_t refinements = 0;  // least-squares pose refinements verified
+};
+struct ConfidenceStats {
   // The share of the first model's upward-facing surface (under its pose)
   // with a query feature within Delta: how much of the vehicle the scan
   // shows from the air, which occlusion and sparsity lower; 0 without a pose.
@@ -65,22 +80,29 @@ struct RecognitionStats {
   // top the scan spans, under its pose: how densely the scan samples the
   // vehicle, whatever the occlusion; 0 without a pose.
   float scan_density = 0.0f;
-  // The poses the doublets gave, verified or refused for their tilt: what
-  // BRAN's pose budget and its draw extension count (max_hypotheses,
-  // min_hypotheses).
-  uint64_t poses_found() const { return hypotheses + poses_tilted; }
+};
+
+struct RecognitionStats {
+  ExtractStats extract;
+  GroundStats ground;
+  CandidatesStats candidates;
+  DrawsStats draws;
+  TransferStats transfer;
+  RefineStats refine;
+  ConfidenceStats confidence;
+  size_t workspace_used = 0;
 };
 
 struct Result {
   Status status = Status::kNotOpen;
   const RankedModel* ranking = nullptr;  // in the workspace; valid until the next call
   uint32_t ranking_count = 0;            // models that got a score, best first
-  bool confident = false;                // the best model explains >= min_inlier_fraction of the features
+  bool confident = false;                // the first model is named confidently (ConfidenceParams)
   // Look-alike group: the first group_size models of the ranking score within
-  // min_margin x sqrt(features) log-likelihood of the first (twice that when
-  // stats.candidates_spread: among many look-alikes), so the scan
-  // does not tell them apart (BRAN, SRAN). 1: the first stands alone (always
-  // for SIND, which ranks by votes); 0: no ranking.
+  // min_margin x sqrt(features) log-likelihood of the first (spread_margin_factor
+  // times that when stats.candidates.spread: among many look-alikes), so the
+  // scan does not tell them apart (BRAN, SRAN). 1: the first stands alone
+  // (always for SIND, which ranks by votes); 0: no ranking.
   uint32_t group_size = 0;
   // The classes of the ranked models, best first (by their best model's
   // score; ties by class id); in the workspace like `ranking`.

@@ -23,6 +23,7 @@
 #include <stdint.h>
 
 #include "spinhash/config_fields.h"
+#include "spinhash/stage_fields.h"
 #include "spinhash/status_list.h"
 #include "spinhash/vehicle_classes.h"
 
@@ -39,7 +40,7 @@ extern "C" {
 /* Opaque storage sizes, the same on every target (checked against the C++
  * objects by static_assert in firmware-lib/c_api/). */
 #define SPINHASH_DATABASE_STORAGE_BYTES 128
-#define SPINHASH_RECOGNIZER_STORAGE_BYTES 320
+#define SPINHASH_RECOGNIZER_STORAGE_BYTES 1024
 #define SPINHASH_STORAGE_ALIGNMENT 8
 
 /* Values mirror spinhash::Status (include/spinhash/status.hpp) exactly: both
@@ -66,14 +67,29 @@ typedef union spinhash_recognizer {
   uint64_t align_u64;
 } spinhash_recognizer;
 
+/* Each stage's parameters: one struct per entry of SPINHASH_STAGES
+ * (stage_fields.h), spinhash_<id>_params, one member per entry of its
+ * SPINHASH_PARAMS_<id>, in that order (the list gives each one's default,
+ * range and meaning). BOOL members are 0 or 1. */
+#define SPINHASH_C_STAGE_STRUCT(id, Name, what)    \
+  typedef struct spinhash_##id##_params {          \
+    SPINHASH_PARAMS_##id(SPINHASH_C_PARAMS_MEMBER) \
+  } spinhash_##id##_params;
+SPINHASH_STAGES(SPINHASH_C_STAGE_STRUCT)
+#undef SPINHASH_C_STAGE_STRUCT
+
 /* Recognition settings: one member per entry of SPINHASH_CONFIG_FIELDS
- * (config_fields.h), in that order; see spinhash::RecognizerConfig
- * (config.hpp) for the meaning and default of each. Start from
+ * (config_fields.h), in that order, then one per stage, named by its id
+ * (cfg.draws.max_trials); see spinhash::RecognizerConfig (config.hpp) for
+ * the meaning and default of the first. Start from
  * spinhash_default_config(). BOOL members are 0 or 1; mode is a
  * spinhash_mode. */
+#define SPINHASH_C_STAGE_MEMBER(id, Name, what) spinhash_##id##_params id;
 typedef struct spinhash_config {
   SPINHASH_CONFIG_FIELDS(SPINHASH_C_CONFIG_MEMBER)
+  SPINHASH_STAGES(SPINHASH_C_STAGE_MEMBER)
 } spinhash_config;
+#undef SPINHASH_C_STAGE_MEMBER
 
 /* What one recognition did: one member per entry of SPINHASH_STATS_FIELDS
  * (config_fields.h); see spinhash::RecognitionStats (recognizer.hpp). */
@@ -87,12 +103,13 @@ typedef struct spinhash_result {
   int32_t status; /* spinhash_status */
   uint32_t ranking_count;
   uint32_t confident; /* 1: the best model explains enough of the query */
-  /* Leading models within min_margin x sqrt(features) of the first: the scan
-   * does not tell them apart (1: the first stands alone; 0: no ranking). */
+  /* Leading models within confidence.min_margin x sqrt(features) of the
+   * first: the scan does not tell them apart (1: the first stands alone; 0:
+   * no ranking). */
   uint32_t group_size;
   /* The classes of the ranked models, best first (spinhash_result_class),
    * and whether the first is confident: it leads the next class by
-   * min_margin x sqrt(features) on enough evidence (docs/api.md). */
+   * confidence.min_margin x sqrt(features) on enough evidence (docs/api.md). */
   uint32_t class_ranking_count;
   uint32_t class_confident;
   spinhash_stats stats;

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "pipeline/mode_name.hpp"
+#include "config/mode_name.hpp"
 
 namespace py = pybind11;
 
@@ -35,7 +35,7 @@ double shortest(float v) {
 }
 
 // One getter and one setter per kind of SPINHASH_CONFIG_FIELDS.
-py::object get_MODE(Mode v) { return py::str(pipeline::mode_name(v)); }
+py::object get_MODE(Mode v) { return py::str(host::mode_name(v)); }
 py::object get_BOOL(bool v) { return py::bool_(v); }
 py::object get_U32(uint32_t v) { return py::int_(v); }
 py::object get_U64(uint64_t v) { return py::int_(v); }
@@ -45,13 +45,13 @@ py::object get_VEC3D(const double (&v)[3]) { return py::make_tuple(v[0], v[1], v
 // By name, as the CLI's --mode: "bran", "sran" or "sind", any case.
 void set_MODE(RecognizerConfig*, Mode* v, int lo, int hi, const char* name, py::handle value) {
   std::string choices;
-  for (int m = lo; m <= hi; ++m) choices += std::string(m > lo ? ", " : "") + pipeline::mode_name(Mode(m));
+  for (int m = lo; m <= hi; ++m) choices += std::string(m > lo ? ", " : "") + host::mode_name(Mode(m));
   if (!py::isinstance<py::str>(value))
     throw py::type_error(std::string(name) + " must be a str (" + choices + "), got " + type_name(value));
   std::string word = value.cast<std::string>();
   for (char& ch : word) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
   for (int m = lo; m <= hi; ++m) {
-    if (word == pipeline::mode_name(Mode(m))) {
+    if (word == host::mode_name(Mode(m))) {
       *v = Mode(m);
       return;
     }

@@ -3,10 +3,9 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "config/field_table.hpp"
+#include "config/mode_name.hpp"
 #include "config_kinds.hpp"
-#include "pipeline/mode_name.hpp"
-#include "spinhash/config_fields.h"
-#include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"
 
 namespace py = pybind11;
@@ -14,56 +13,79 @@ namespace py = pybind11;
 namespace spinhash::python {
 namespace {
 
-// Field names in SPINHASH_CONFIG_FIELDS order.
+using host::ConfigField;
+using host::FieldKind;
+
+py::object get_field(const ConfigField& f, const RecognizerConfig& c) {
+  switch (f.kind) {
+    case FieldKind::MODE: return get_MODE(f.in<Mode>(c));
+    case FieldKind::BOOL: return get_BOOL(f.in<bool>(c));
+    case FieldKind::U32: return get_U32(f.in<uint32_t>(c));
+    case FieldKind::U64: return get_U64(f.in<uint64_t>(c));
+    case FieldKind::F32: return get_F32(f.in<float>(c));
+    case FieldKind::VEC3D: return get_VEC3D(f.in<double[3]>(c));
+  }
+  return py::none();
+}
+
+void set_field(const ConfigField& f, RecognizerConfig* c, py::handle v) {
+  const std::string name = f.flat();
+  const auto lo = static_cast<unsigned long long>(f.lo), hi = static_cast<unsigned long long>(f.hi);
+  switch (f.kind) {
+    case FieldKind::MODE:
+      set_MODE(c, &f.in<Mode>(*c), static_cast<int>(f.lo), static_cast<int>(f.hi), name.c_str(), v);
+      break;
+    case FieldKind::BOOL: set_BOOL(c, &f.in<bool>(*c), 0, 1, name.c_str(), v); break;
+    case FieldKind::U32: set_unsigned(&f.in<uint32_t>(*c), lo, hi, name.c_str(), v); break;
+    case FieldKind::U64: set_unsigned(&f.in<uint64_t>(*c), lo, hi, name.c_str(), v); break;
+    case FieldKind::F32:
+      set_F32(c, &f.in<float>(*c), static_cast<float>(f.lo), static_cast<float>(f.hi), name.c_str(), v);
+      break;
+    case FieldKind::VEC3D: set_VEC3D(c, &f.in<double[3]>(*c), 0, 0, name.c_str(), v); break;
+  }
+}
+
+// Python's names of the fields, in the lists' order.
 py::tuple field_names() {
   py::list names;
-#define SPINHASH_PY_NAME(kind, name, lo, hi, flag, help) names.append(#name);
-  SPINHASH_CONFIG_FIELDS(SPINHASH_PY_NAME)
-#undef SPINHASH_PY_NAME
+  for (const ConfigField& f : host::config_fields()) names.append(f.flat());
   return py::tuple(names);
 }
 
-// The valid range of each numeric setting, (lo, hi) inclusive, as the core checks it.
-py::object range_of(float lo, float hi) { return py::make_tuple(shortest(lo), shortest(hi)); }
-template <typename L, typename H>
-py::object range_of(L lo, H hi) {
-  return py::make_tuple(static_cast<unsigned long long>(lo), static_cast<unsigned long long>(hi));
+// Each Python name's key: stage.field for a stage's, the name at top level.
+py::dict field_keys() {
+  py::dict keys;
+  for (const ConfigField& f : host::config_fields()) keys[py::str(f.flat())] = f.key();
+  return keys;
 }
+
+// The valid range of each numeric setting, (lo, hi) inclusive, as the core checks it.
 py::dict field_ranges() {
   py::dict ranges;
-#define SPINHASH_PY_RANGE_MODE(name, lo, hi)
-#define SPINHASH_PY_RANGE_BOOL(name, lo, hi)
-#define SPINHASH_PY_RANGE_VEC3D(name, lo, hi)
-#define SPINHASH_PY_RANGE_U32(name, lo, hi) ranges[#name] = range_of(lo, hi);
-#define SPINHASH_PY_RANGE_U64(name, lo, hi) ranges[#name] = range_of(lo, hi);
-#define SPINHASH_PY_RANGE_F32(name, lo, hi) ranges[#name] = range_of(lo, hi);
-#define SPINHASH_PY_RANGE(kind, name, lo, hi, flag, help) SPINHASH_PY_RANGE_##kind(name, lo, hi)
-  SPINHASH_CONFIG_FIELDS(SPINHASH_PY_RANGE)
-#undef SPINHASH_PY_RANGE
+  for (const ConfigField& f : host::config_fields()) {
+    if (f.kind == FieldKind::F32)
+      ranges[py::str(f.flat())] =
+          py::make_tuple(shortest(static_cast<float>(f.lo)), shortest(static_cast<float>(f.hi)));
+    else if (f.kind == FieldKind::U32 || f.kind == FieldKind::U64)
+      ranges[py::str(f.flat())] =
+          py::make_tuple(static_cast<unsigned long long>(f.lo), static_cast<unsigned long long>(f.hi));
+  }
   return ranges;
 }
 
 // The mode words, in the MODE field's range ("bran", "sran", "sind").
 py::tuple mode_names() {
   py::list names;
-#define SPINHASH_PY_MODES_MODE(lo, hi) \
-  for (int m = lo; m <= hi; ++m) names.append(pipeline::mode_name(Mode(m)));
-#define SPINHASH_PY_MODES_BOOL(lo, hi)
-#define SPINHASH_PY_MODES_U32(lo, hi)
-#define SPINHASH_PY_MODES_U64(lo, hi)
-#define SPINHASH_PY_MODES_F32(lo, hi)
-#define SPINHASH_PY_MODES_VEC3D(lo, hi)
-#define SPINHASH_PY_MODES(kind, name, lo, hi, flag, help) SPINHASH_PY_MODES_##kind(lo, hi)
-  SPINHASH_CONFIG_FIELDS(SPINHASH_PY_MODES)
-#undef SPINHASH_PY_MODES
+  for (const ConfigField& f : host::config_fields())
+    if (f.kind == FieldKind::MODE)
+      for (int m = static_cast<int>(f.lo); m <= static_cast<int>(f.hi); ++m)
+        names.append(host::mode_name(Mode(m)));
   return py::tuple(names);
 }
 
 py::dict as_dict(const RecognizerConfig& c) {
   py::dict d;
-#define SPINHASH_PY_GET(kind, name, lo, hi, flag, help) d[#name] = get_##kind(c.name);
-  SPINHASH_CONFIG_FIELDS(SPINHASH_PY_GET)
-#undef SPINHASH_PY_GET
+  for (const ConfigField& f : host::config_fields()) d[py::str(f.flat())] = get_field(f, c);
   return d;
 }
 
@@ -87,11 +109,10 @@ RecognizerConfig from_kwargs(const py::kwargs& kwargs) {
 }  // namespace
 
 void set_config_field(RecognizerConfig* c, const std::string& key, py::handle value) {
-#define SPINHASH_PY_SET(kind, name, lo, hi, flag, help) \
-  if (key == #name) return set_##kind(c, &c->name, lo, hi, #name, value);
-  SPINHASH_CONFIG_FIELDS(SPINHASH_PY_SET)
-#undef SPINHASH_PY_SET
-  throw py::type_error("unknown recognizer setting '" + key + "' (spinhash.Config.fields lists them)");
+  const ConfigField* f = host::find_config_field(key);
+  if (f == nullptr)
+    throw py::type_error("unknown recognizer setting '" + key + "' (spinhash.Config.fields lists them)");
+  set_field(*f, c, value);
 }
 
 void set_config_fields(RecognizerConfig* c, const py::dict& settings) {
@@ -109,9 +130,9 @@ RecognizerConfig recognizer_config(const RecognizerConfig& base, py::handle conf
     c = config.cast<RecognizerConfig>();
   }
   set_config_fields(&c, kwargs);
-  if (c.delta_max < c.delta)
-    throw py::value_error("delta_max (" + bound_text(double{c.delta_max}) + ") must be at least delta (" +
-                          bound_text(double{c.delta}) + ")");
+  if (c.draws.delta_max < c.draws.delta)
+    throw py::value_error("delta_max (" + bound_text(double{c.draws.delta_max}) +
+                          ") must be at least delta (" + bound_text(double{c.draws.delta}) + ")");
   if (required_workspace_bytes(c) == 0) throw py::value_error("invalid recognizer configuration");
   return c;
 }
@@ -119,25 +140,21 @@ RecognizerConfig recognizer_config(const RecognizerConfig& base, py::handle conf
 void bind_config(py::module_& m) {
   py::class_<RecognizerConfig> cls(m, "Config",
                                    "Recognition settings: one attribute and keyword argument per setting of "
-                                   "the core's RecognizerConfig (Config.fields; docs/api.md).");
+                                   "the core's RecognizerConfig and its stages (Config.fields; Config.keys "
+                                   "maps each to its stage.field; docs/api.md).");
   cls.def(py::init(&from_kwargs), "Config(**settings): defaults, with the settings given");
   cls.attr("fields") = field_names();
+  cls.attr("keys") = field_keys();
   cls.attr("ranges") = field_ranges();
   cls.attr("modes") = mode_names();
-// A BOOL field's help describes its CLI flag, which sets it to false.
-#define SPINHASH_PY_DOC_MODE(help) help
-#define SPINHASH_PY_DOC_BOOL(help) "False: " help
-#define SPINHASH_PY_DOC_U32(help) help
-#define SPINHASH_PY_DOC_U64(help) help
-#define SPINHASH_PY_DOC_F32(help) help
-#define SPINHASH_PY_DOC_VEC3D(help) help
-#define SPINHASH_PY_PROPERTY(kind, name, lo, hi, flag, help)                                \
-  cls.def_property(                                                                         \
-      #name, [](const RecognizerConfig& c) { return get_##kind(c.name); },                  \
-      [](RecognizerConfig& c, py::handle v) { set_##kind(&c, &c.name, lo, hi, #name, v); }, \
-      SPINHASH_PY_DOC_##kind(help));
-  SPINHASH_CONFIG_FIELDS(SPINHASH_PY_PROPERTY)
-#undef SPINHASH_PY_PROPERTY
+  // A BOOL field whose CLI flag sets it to false says so first.
+  for (const ConfigField& f : host::config_fields()) {
+    const std::string doc =
+        (f.kind == FieldKind::BOOL && *f.flag == '!' ? "False: " : "") + std::string(f.help);
+    cls.def_property(
+        f.flat().c_str(), [&f](const RecognizerConfig& c) { return get_field(f, c); },
+        [&f](RecognizerConfig& c, py::handle v) { set_field(f, &c, v); }, doc.c_str());
+  }
   cls.def("to_dict", &as_dict, "every setting by name");
   cls.def("copy", [](const RecognizerConfig& c) { return c; });
   cls.def("__copy__", [](const RecognizerConfig& c) { return c; });

@@ -1,6 +1,9 @@
 // spinhash.Config: RecognizerConfig with one attribute and keyword argument
-// per entry of SPINHASH_CONFIG_FIELDS (include/spinhash/config_fields.h),
-// range-checked as the core checks them.
+// per field of the field lists (config_fields.h, stage_fields.h, through
+// host-tools/config/field_table.hpp), range-checked as the core checks them.
+// A stage's field goes by its own name (unique across the stages), a
+// stage's switch by <stage>_enabled; set_config_field also takes the
+// stage.field key.
 #pragma once
 #include <pybind11/pybind11.h>
 
@@ -10,8 +13,9 @@
 
 namespace spinhash::python {
 
-// Sets the field `key` (TypeError for an unknown field or a value of the
-// wrong type, ValueError naming the field for a value outside its range).
+// Sets the field `key`, a Python name or a stage.field key (TypeError for an
+// unknown field or a value of the wrong type, ValueError naming the field
+// for a value outside its range).
 void set_config_field(RecognizerConfig* cfg, const std::string& key, pybind11::handle value);
 
 // Every setting of a dict (keyword arguments), in its order; an explicit

@@ -182,7 +182,8 @@ SceneConfig scene_config_from(const py::object& config, const py::kwargs& kwargs
   SceneConfig scene;
   scene.max_tile_points = 0;  // sized from each tile's density, as `spinhash scene`
   RecognizerConfig base;
-  base.ground_clearance = 0.0f;  // the scene's terrain classifier removes the ground (as `spinhash scene`)
+  base.ground.ground_clearance =
+      0.0f;  // the scene's terrain classifier removes the ground (as `spinhash scene`)
   py::kwargs recognizer_kwargs;
   for (auto item : kwargs) {
     const std::string key = py::cast<std::string>(item.first);

@@ -80,7 +80,8 @@ ClassEnvelope fleet_vans() {
 }
 
 constexpr float kEndTolerance = 0.3f;  // max_extent_overhang
-constexpr float kSigmaSurface = 0.1f;  // RecognizerConfig::sigma_surface
+constexpr float kSigmaSurface = 0.1f;  // RefineParams::sigma_surface
+const ClassesParams kClasses;          // the class stage's tolerances
 
 }  // namespace
 
@@ -97,7 +98,7 @@ TEST_CASE("a class's envelope spans its members' boxes and nothing else") {
   CHECK(vans.height_min == vans.height_max);
   CHECK(class_envelope(toy().db, static_cast<uint32_t>(VehicleClass::kBus)).members == 0u);
   // A class without members holds no scan.
-  CHECK_FALSE(within_envelope(ScanShape{}, ClassEnvelope{}, kEndTolerance));
+  CHECK_FALSE(within_envelope(ScanShape{}, ClassEnvelope{}, kEndTolerance, kClasses));
 }
 
 // A model record of a box, x along its length, its bottom at z = bottom.
@@ -141,16 +142,16 @@ TEST_CASE("a 1.25 m saloon is no van: on terrain, and without terrain under a va
   const blob::ModelRecord van_on_ground = box_record(4.9f, 1.95f, 0.0f, 1.75f);
   const ScanShape on_ground =
       measure_scan(features_of(dense), van_on_ground, pose, 1.27f, 0.05f, kSigmaSurface, 150.0f);
-  CHECK_FALSE(within_envelope(on_ground, vans, kEndTolerance));
+  CHECK_FALSE(within_envelope(on_ground, vans, kEndTolerance, kClasses));
   ScanShape van = on_ground;  // a fleet van of 1.77 m on the same terrain is one
   van.height = 1.77f;
-  CHECK(within_envelope(van, vans, kEndTolerance));
+  CHECK(within_envelope(van, vans, kEndTolerance, kClasses));
   // Without terrain (150 per m^2, about 0.13 m spacing), posed as a van
   // standing where the saloon stands: its top is 1.25 m above the van's bottom.
   const ScanShape level =
       measure_scan(features_of(dense), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 150.0f);
   CHECK(level.height == doctest::Approx(1.25f).epsilon(0.01));
-  CHECK_FALSE(within_envelope(level, vans, kEndTolerance));
+  CHECK_FALSE(within_envelope(level, vans, kEndTolerance, kClasses));
   // Posed as that van tilted 7 degrees to follow the saloon's slopes: in the
   // model's frame the scan spans 1.65 m of z (its length leans), in the
   // air's vertical still 1.05 m above its lowest row.
@@ -159,7 +160,7 @@ TEST_CASE("a 1.25 m saloon is no van: on terrain, and without terrain under a va
   const ScanShape leaning =
       measure_scan(features_of(dense), van_on_ground, tilted, -1.0f, 0.0f, kSigmaSurface, 150.0f);
   CHECK(leaning.height < 1.3f);
-  CHECK_FALSE(within_envelope(leaning, vans, kEndTolerance));
+  CHECK_FALSE(within_envelope(leaning, vans, kEndTolerance, kClasses));
   // Posed as a van sunk 0.45 m so that the roofs meet: van-high, but the
   // van's lower 0.66 m holds no point, where the side's rows lie 0.1 m apart
   // (the allowance: 3 / sqrt(150) = 0.24 m).
@@ -167,29 +168,29 @@ TEST_CASE("a 1.25 m saloon is no van: on terrain, and without terrain under a va
   const ScanShape sunk = measure_scan(features_of(dense), van_sunk, pose, -1.0f, 0.0f, kSigmaSurface, 150.0f);
   CHECK(sunk.height == doctest::Approx(1.70f).epsilon(0.01));
   CHECK(sunk.bottom_gap == doctest::Approx(0.66f).epsilon(0.03));
-  CHECK_FALSE(within_envelope(sunk, vans, kEndTolerance));
+  CHECK_FALSE(within_envelope(sunk, vans, kEndTolerance, kClasses));
   // A fleet van itself at 60 per m^2 without terrain: its lowest row 0.3 m
   // up the side is within the allowance (3 / sqrt(60) = 0.39 m).
   const std::vector<float> sparse_van = seen_box(4.9f, 1.95f, 1.75f, 0.0f, 0.3f, 0.35f, pose);
   const ScanShape real_van =
       measure_scan(features_of(sparse_van), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 60.0f);
-  CHECK(within_envelope(real_van, vans, kEndTolerance));
-  // The same scan at 20 per m^2 (below kMinModelDensity): the allowance
+  CHECK(within_envelope(real_van, vans, kEndTolerance, kClasses));
+  // The same scan at 20 per m^2 (below min_height_density): the allowance
   // (0.67 m) would let a van sunk under a saloon pass, so without terrain
   // the height counts as unmeasured; with its terrain the class holds.
   const ScanShape bare_sparse =
       measure_scan(features_of(sparse_van), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 20.0f);
   CHECK(bare_sparse.bottom_gap < 3.0f / std::sqrt(20.0f));
-  CHECK_FALSE(within_envelope(bare_sparse, vans, kEndTolerance));
+  CHECK_FALSE(within_envelope(bare_sparse, vans, kEndTolerance, kClasses));
   CHECK(within_envelope(
       measure_scan(features_of(sparse_van), van_on_ground, pose, 1.75f, 0.05f, kSigmaSurface, 20.0f), vans,
-      kEndTolerance));
+      kEndTolerance, kClasses));
   // The same van's roof alone (a steep view that misses the sides): its
   // height is not measured, and the class is not confirmed.
   const std::vector<float> roof = seen_box(4.9f, 1.95f, 1.75f, 0.0f, 1.7f, 0.35f, pose);
   CHECK_FALSE(
       within_envelope(measure_scan(features_of(roof), van_on_ground, pose, -1.0f, 0.0f, kSigmaSurface, 60.0f),
-                      vans, kEndTolerance));
+                      vans, kEndTolerance, kClasses));
 }
 
 TEST_CASE("longer, wider or taller than every member is out; shorter (an occluded end) is not") {
@@ -199,19 +200,19 @@ TEST_CASE("longer, wider or taller than every member is out; shorter (an occlude
   s.noise = 0.05f;
   s.spacing = 0.1f;
   s.length = 4.0f, s.width = 1.9f, s.height = 1.9f;
-  CHECK(within_envelope(s, vans, kEndTolerance));
+  CHECK(within_envelope(s, vans, kEndTolerance, kClasses));
   s.length = 2.5f;  // half hidden
-  CHECK(within_envelope(s, vans, kEndTolerance));
+  CHECK(within_envelope(s, vans, kEndTolerance, kClasses));
   s.length = vans.length_max + 2.0f * kEndTolerance + 0.05f;  // a truck's length
-  CHECK_FALSE(within_envelope(s, vans, kEndTolerance));
+  CHECK_FALSE(within_envelope(s, vans, kEndTolerance, kClasses));
   s.length = 4.0f;
   s.width = vans.width_max + 2.0f * kEndTolerance + 0.05f;
-  CHECK_FALSE(within_envelope(s, vans, kEndTolerance));
+  CHECK_FALSE(within_envelope(s, vans, kEndTolerance, kClasses));
   s.width = 1.9f;
   s.height = 2.9f;  // a truck's cab
-  CHECK_FALSE(within_envelope(s, vans, kEndTolerance));
+  CHECK_FALSE(within_envelope(s, vans, kEndTolerance, kClasses));
   s.height = vans.height_max + 0.3f;  // within the top's noise (3 x 0.05) and the boxes' unseen bottom (0.2)
-  CHECK(within_envelope(s, vans, kEndTolerance));
+  CHECK(within_envelope(s, vans, kEndTolerance, kClasses));
 }
 
 TEST_CASE("a caller's terrain decides the class flag by the object's top above it") {

@@ -1,4 +1,4 @@
-// The class level of an answer (recognize/confidence.cpp): classes ranked by
+// The class level of an answer (recognize/classes.cpp): classes ranked by
 // their best model, a class confident on less evidence than a model, and a
 // model never confident on a sparse scan.
 #include <doctest/doctest.h>
@@ -8,6 +8,7 @@
 
 #include "blob/aligned_bytes.hpp"
 #include "geometry/normals.hpp"
+#include "recognize/classes.hpp"
 #include "recognize/confidence.hpp"
 #include "spinhash/recognizer.hpp"
 #include "support/geometry_fixtures.hpp"
@@ -68,7 +69,7 @@ TEST_CASE("classes are ranked by their best model, each once, with that model") 
 
 TEST_CASE("a class is confident when it leads the next class by min_margin x sqrt(features)") {
   const RecognizerConfig cfg;
-  const float margin = cfg.min_margin * std::sqrt(static_cast<float>(kFeatures));  // 24
+  const float margin = cfg.confidence.min_margin * std::sqrt(static_cast<float>(kFeatures));  // 24
   for (const float lead : {margin - 1.0f, margin + 1.0f}) {
     FourModels f(-600.0f - lead);
     f.r.class_ranking = f.classes;
@@ -121,16 +122,18 @@ TEST_CASE("scan density: points per m^2 of the part of the model's top the scan 
   const ExtentFit rear = fit_of({-2, -1, 1.5f, 0, 1, 1.5f, -2, 1, 1.5f, 0, -1, 1.5f});
   CHECK(whole.seen_area == doctest::Approx(8.0f));
   CHECK(rear.seen_area == doctest::Approx(4.0f));
-  ExtractStats s;
-  s.points_in = 1000;
-  s.points_ground = 500;
-  s.points_nonfinite = 100;
+  RecognitionStats s;
+  s.extract.points_in = 1000;
+  s.ground.points_ground = 500;
+  s.extract.points_nonfinite = 100;
   CHECK(scan_density(s, whole) == doctest::Approx(50.0f));
   CHECK(scan_density(s, rear) == doctest::Approx(100.0f));
-  CHECK(dense_enough_for_model(kMinModelDensity));
-  CHECK_FALSE(dense_enough_for_model(kMinModelDensity - 1.0f));
-  CHECK(kMinModelDensity == 50.0f);  // above what most cars of a 10-30 per m^2 survey return
-  s.points_ground = 2000;            // more dropped than counted: no points, not a wrap-around
+  const RecognizerConfig cfg;
+  const float min_density = cfg.confidence.min_model_density;
+  CHECK(dense_enough_for_model(cfg, min_density));
+  CHECK_FALSE(dense_enough_for_model(cfg, min_density - 1.0f));
+  CHECK(min_density == 50.0f);    // above what most cars of a 10-30 per m^2 survey return
+  s.ground.points_ground = 2000;  // more dropped than counted: no points, not a wrap-around
   CHECK(scan_density(s, whole) == 0.0f);
 }
 

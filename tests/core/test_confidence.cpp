@@ -63,7 +63,8 @@ struct LeadingAnswer {
     ranking[0].has_pose = true;
     ranking[0].inliers = 3u * features / 4u;
     ranking[0].score = -1.5f * static_cast<float>(features);
-    ranking[1].score = ranking[0].score - margins * cfg.min_margin * std::sqrt(static_cast<float>(features));
+    ranking[1].score =
+        ranking[0].score - margins * cfg.confidence.min_margin * std::sqrt(static_cast<float>(features));
     r.ranking = ranking;
     r.ranking_count = 2;
     r.group_size = 1;
@@ -142,11 +143,12 @@ TEST_CASE("confident needs every gate: fit, score, a group of one, and the scan'
   r.ranking = &first;
   r.ranking_count = 1;
   r.group_size = 1;
-  r.stats.surface_coverage = 1.0f;  // the whole top seen
+  r.stats.confidence.surface_coverage = 1.0f;  // the whole top seen
   const ExtentFit pinned{0.05f, 0.05f};
   constexpr float kNoiseOnlyF = 1.0f;  // residual F of a scan that is the model plus noise
   CHECK(is_confident(r, cfg, kFeatures, pinned, kNoiseOnlyF));
-  CHECK_FALSE(is_confident(r, cfg, kFeatures, pinned, cfg.max_residual_f + 0.5f));  // a patch off the surface
+  CHECK_FALSE(is_confident(r, cfg, kFeatures, pinned,
+                           cfg.confidence.max_residual_f + 0.5f));  // a patch off the surface
 
   // The same answer with one thing changed.
   auto with = [&](auto change) {
@@ -163,17 +165,21 @@ TEST_CASE("confident needs every gate: fit, score, a group of one, and the scan'
   CHECK_FALSE(
       with([](Result& c, RankedModel&, ExtentFit&) { c.group_size = 2; }));  // a look-alike within the margin
   CHECK_FALSE(with([](Result& c, RankedModel&, ExtentFit&) { c.ranking_count = 0; }));
-  CHECK_FALSE(
-      with([&](Result&, RankedModel&, ExtentFit& f) { f.shortfall = cfg.max_extent_shortfall + 0.05f; }));
-  CHECK_FALSE(
-      with([&](Result&, RankedModel&, ExtentFit& f) { f.overhang = cfg.max_extent_overhang + 0.05f; }));
-  CHECK(with([&](Result&, RankedModel&, ExtentFit& f) { f.shortfall = cfg.max_extent_shortfall - 0.05f; }));
+  CHECK_FALSE(with([&](Result&, RankedModel&, ExtentFit& f) {
+    f.shortfall = cfg.confidence.max_extent_shortfall + 0.05f;
+  }));
+  CHECK_FALSE(with(
+      [&](Result&, RankedModel&, ExtentFit& f) { f.overhang = cfg.confidence.max_extent_overhang + 0.05f; }));
+  CHECK(with([&](Result&, RankedModel&, ExtentFit& f) {
+    f.shortfall = cfg.confidence.max_extent_shortfall - 0.05f;
+  }));
 }
 
 TEST_CASE("among many look-alikes the runner-up must trail by twice the margin") {
   const RecognizerConfig cfg;
   constexpr uint32_t kFeatures = 400;
-  const float margin = cfg.min_margin * std::sqrt(static_cast<float>(kFeatures));  // log-likelihood
+  const float margin =
+      cfg.confidence.min_margin * std::sqrt(static_cast<float>(kFeatures));  // log-likelihood
   RankedModel ranking[2];
   ranking[0].score = -600.0f;
   Result r;
@@ -182,9 +188,9 @@ TEST_CASE("among many look-alikes the runner-up must trail by twice the margin")
   for (float lead : {0.5f, 1.5f, 2.5f}) {  // in margins
     CAPTURE(lead);
     ranking[1].score = ranking[0].score - lead * margin;
-    r.stats.candidates_spread = false;
+    r.stats.candidates.spread = false;
     CHECK(lookalike_group_size(r, cfg, kFeatures) == (lead < 1.0f ? 2u : 1u));
-    r.stats.candidates_spread = true;  // the runner-up is the best of many near-identical models
+    r.stats.candidates.spread = true;  // the runner-up is the best of many near-identical models
     CHECK(lookalike_group_size(r, cfg, kFeatures) == (lead < 2.0f ? 2u : 1u));
   }
 }
@@ -195,27 +201,28 @@ TEST_CASE("a scan that shows less of the model's top needs a larger lead") {
   LeadingAnswer a(cfg, kFeatures, 1.5f);  // leads by 1.5 margins
   Result& r = a.r;
   RankedModel* ranking = a.ranking;
-  const float margin = cfg.min_margin * std::sqrt(static_cast<float>(kFeatures));  // log-likelihood
+  const float margin =
+      cfg.confidence.min_margin * std::sqrt(static_cast<float>(kFeatures));  // log-likelihood
   const ExtentFit pinned{0.05f, 0.05f};
   auto confident_at = [&](float coverage) {
-    r.stats.surface_coverage = coverage;
+    r.stats.confidence.surface_coverage = coverage;
     return is_confident(r, cfg, kFeatures, pinned, 1.0f);
   };
   CHECK(confident_at(1.0f));
-  CHECK(confident_at(cfg.full_coverage));  // the plain margin down to full_coverage
-  CHECK(confident_at(0.8f));               // (0.9 / 0.8)^2 = 1.27 margins
-  CHECK_FALSE(confident_at(0.7f));         // 1.65 margins: an occluder may hide what tells them apart
-  CHECK_FALSE(confident_at(0.0f));         // nothing of the top seen: no lead is enough
+  CHECK(confident_at(cfg.confidence.full_coverage));  // the plain margin down to full_coverage
+  CHECK(confident_at(0.8f));                          // (0.9 / 0.8)^2 = 1.27 margins
+  CHECK_FALSE(confident_at(0.7f));  // 1.65 margins: an occluder may hide what tells them apart
+  CHECK_FALSE(confident_at(0.0f));  // nothing of the top seen: no lead is enough
   CHECK(confident_margin(r, cfg) > 1e30f);
-  r.stats.surface_coverage = 0.45f;
-  CHECK(confident_margin(r, cfg) == doctest::Approx(4.0f * cfg.min_margin));
-  r.stats.candidates_spread = true;  // on top of the look-alikes' doubled margin
-  CHECK(confident_margin(r, cfg) == doctest::Approx(8.0f * cfg.min_margin));
-  r.stats.candidates_spread = false;
-  cfg.full_coverage = 0.0f;  // off: the plain margin whatever the scan shows
+  r.stats.confidence.surface_coverage = 0.45f;
+  CHECK(confident_margin(r, cfg) == doctest::Approx(4.0f * cfg.confidence.min_margin));
+  r.stats.candidates.spread = true;  // on top of the look-alikes' doubled margin
+  CHECK(confident_margin(r, cfg) == doctest::Approx(8.0f * cfg.confidence.min_margin));
+  r.stats.candidates.spread = false;
+  cfg.confidence.full_coverage = 0.0f;  // off: the plain margin whatever the scan shows
   CHECK(confident_at(0.7f));
-  CHECK(confident_margin(r, cfg) == doctest::Approx(cfg.min_margin));
-  cfg.full_coverage = 0.9f;
+  CHECK(confident_margin(r, cfg) == doctest::Approx(cfg.confidence.min_margin));
+  cfg.confidence.full_coverage = 0.9f;
   ranking[1].score = ranking[0].score - 2.0f * margin;
   CHECK(confident_at(0.7f));  // a lead of 2 margins is enough at 0.7
   r.ranking_count = 1;        // no runner-up: nothing to lead
@@ -227,22 +234,22 @@ TEST_CASE("a sparser scan needs a larger lead: the margin grows as 1 / sqrt(dens
   constexpr uint32_t kFeatures = 200;
   LeadingAnswer a(cfg, kFeatures, 1.3f);  // leads by 1.3 margins
   Result& r = a.r;
-  r.stats.surface_coverage = 1.0f;
+  r.stats.confidence.surface_coverage = 1.0f;
   const ExtentFit pinned{0.05f, 0.05f};
   auto confident_at = [&](float density) {
-    r.stats.scan_density = density;
+    r.stats.confidence.scan_density = density;
     return is_confident(r, cfg, kFeatures, pinned, 1.0f);
   };
-  CHECK(confident_at(1000.0f));            // 0.05 m
-  CHECK(confident_at(kFullModelDensity));  // the plain margin down to where it was set
-  CHECK(confident_at(90.0f));              // sqrt(130 / 90) = 1.20 margins
-  CHECK_FALSE(confident_at(64.0f));        // 0.15 m, 40 % occluded: 1.43 margins
-  r.stats.scan_density = 0.25f * kFullModelDensity;
-  CHECK(confident_margin(r, cfg) == doctest::Approx(2.0f * cfg.min_margin));
-  r.stats.surface_coverage = 0.45f;  // times the coverage's (0.9 / 0.45)^2
-  CHECK(confident_margin(r, cfg) == doctest::Approx(8.0f * cfg.min_margin));
-  r.stats.scan_density = 0.0f;  // not measured: no factor
-  CHECK(confident_margin(r, cfg) == doctest::Approx(4.0f * cfg.min_margin));
+  CHECK(confident_at(1000.0f));                            // 0.05 m
+  CHECK(confident_at(cfg.confidence.full_model_density));  // the plain margin down to where it was set
+  CHECK(confident_at(90.0f));                              // sqrt(130 / 90) = 1.20 margins
+  CHECK_FALSE(confident_at(64.0f));                        // 0.15 m, 40 % occluded: 1.43 margins
+  r.stats.confidence.scan_density = 0.25f * cfg.confidence.full_model_density;
+  CHECK(confident_margin(r, cfg) == doctest::Approx(2.0f * cfg.confidence.min_margin));
+  r.stats.confidence.surface_coverage = 0.45f;  // times the coverage's (0.9 / 0.45)^2
+  CHECK(confident_margin(r, cfg) == doctest::Approx(8.0f * cfg.confidence.min_margin));
+  r.stats.confidence.scan_density = 0.0f;  // not measured: no factor
+  CHECK(confident_margin(r, cfg) == doctest::Approx(4.0f * cfg.confidence.min_margin));
 }
 
 TEST_CASE("among many look-alikes the residuals must be closer to noise") {
@@ -256,15 +263,15 @@ TEST_CASE("among many look-alikes the residuals must be closer to noise") {
   r.ranking = &first;
   r.ranking_count = 1;
   r.group_size = 1;
-  r.stats.surface_coverage = 1.0f;
+  r.stats.confidence.surface_coverage = 1.0f;
   const ExtentFit pinned{0.05f, 0.05f};
-  const float weak_shape = 0.9f * cfg.max_residual_f;  // a patch a little off the surface
+  const float weak_shape = 0.9f * cfg.confidence.max_residual_f;  // a patch a little off the surface
   CHECK(is_confident(r, cfg, kFeatures, pinned, weak_shape));
-  r.stats.candidates_spread = true;  // the first is one of many near-identical models
+  r.stats.candidates.spread = true;  // the first is one of many near-identical models
   CHECK(residual_limit(r, cfg) < weak_shape);
   CHECK_FALSE(is_confident(r, cfg, kFeatures, pinned, weak_shape));
   CHECK(is_confident(r, cfg, kFeatures, pinned, 1.0f));  // noise alone stays confident
-  cfg.max_residual_f = 2.0f * weak_shape;                // the limit follows the configured field
+  cfg.confidence.max_residual_f = 2.0f * weak_shape;     // the limit follows the configured field
   CHECK(is_confident(r, cfg, kFeatures, pinned, weak_shape));
 }
 
@@ -279,8 +286,8 @@ TEST_CASE("a scan that hides a toy's end is not confident, though the right toy 
   const double t[3] = {-300.0, 80.0, 5.0};
   auto run = [&](const std::vector<double>& points, float shortfall, float residual_f = kAnyResidualF) {
     RecognizerConfig cfg;
-    cfg.max_extent_shortfall = shortfall;
-    cfg.max_residual_f = residual_f;
+    cfg.confidence.max_extent_shortfall = shortfall;
+    cfg.confidence.max_residual_f = residual_f;
     host::AlignedBytes ws(required_workspace_bytes(cfg));
     Recognizer r;
     REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
@@ -290,7 +297,7 @@ TEST_CASE("a scan that hides a toy's end is not confident, though the right toy 
     REQUIRE(res.ranking_count > 0);
     return std::make_pair(res.ranking[0].model, res.confident);
   };
-  const float defaults = RecognizerConfig{}.max_extent_shortfall;
+  const float defaults = RecognizerConfig{}.confidence.max_extent_shortfall;
   const auto whole = run(model, defaults);
   CHECK(whole.first == kModel);  // the whole top seen: right and confident
   CHECK(whole.second);
@@ -304,7 +311,7 @@ TEST_CASE("a scan that hides a toy's end is not confident, though the right toy 
   CHECK_FALSE(hidden.second);
   // Without the extent test it is confident: the residuals of the right
   // toy are noise (the wrong toy's shape: the near-twin case below).
-  CHECK(run(front_hidden, kNeverShort, RecognizerConfig{}.max_residual_f).second);
+  CHECK(run(front_hidden, kNeverShort, RecognizerConfig{}.confidence.max_residual_f).second);
 }
 
 TEST_CASE("a near twin outside the database is not confident: its residuals are a shape, not noise") {
@@ -318,7 +325,7 @@ TEST_CASE("a near twin outside the database is not confident: its residuals are 
     std::vector<double> model = test::toy_vehicle_points(kModel, 0.05f);
     for (size_t i = 0; i < model.size(); i += 3) model[i] *= stretch;
     RecognizerConfig cfg;
-    cfg.max_residual_f = residual_f;
+    cfg.confidence.max_residual_f = residual_f;
     host::AlignedBytes ws(required_workspace_bytes(cfg));
     Recognizer r;
     REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
@@ -328,7 +335,7 @@ TEST_CASE("a near twin outside the database is not confident: its residuals are 
     REQUIRE(res.ranking_count > 0);
     return std::make_pair(res.ranking[0].model, res.confident);
   };
-  const float defaults = RecognizerConfig{}.max_residual_f;
+  const float defaults = RecognizerConfig{}.confidence.max_residual_f;
   const auto own = run(1.0, defaults);
   CHECK(own.first == kModel);  // the toy itself, plus noise: confident
   CHECK(own.second);
@@ -351,7 +358,7 @@ TEST_CASE("within a look-alike group the model whose residuals are noise comes f
   const double t[3] = {-300.0, 80.0, 5.0};
   auto first = [&](uint32_t scanned) {
     RecognizerConfig cfg;
-    cfg.min_margin = 1e6f;  // every model within the margin: one group
+    cfg.confidence.min_margin = 1e6f;  // every model within the margin: one group
     host::AlignedBytes ws(required_workspace_bytes(cfg));
     Recognizer r;
     REQUIRE(r.init(&twins.db, cfg, ws.data(), ws.size()) == Status::kOk);

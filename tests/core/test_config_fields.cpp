@@ -1,22 +1,27 @@
-// The field lists of spinhash/config_fields.h and spinhash/scene_fields.h
-// against the C++ structs they mirror: same fields, same types (at compile
-// time), every recognizer field through the C struct and back with a value
-// that is not its default, and every scene field's range checked.
+// The field lists of spinhash/config_fields.h, spinhash/stage_fields.h and
+// spinhash/scene_fields.h against the C++ structs they mirror: same fields,
+// same types, the stages' defaults (at compile time), every recognizer field
+// through the C struct and back with a value that is not its default, and
+// every field's range checked by the core.
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <limits>
+#include <string>
 #include <type_traits>
 #include <utility>
 
 #include "c_api/config_bridge.hpp"
+#include "recognize/config_check.hpp"
+#include "recognize/stages.hpp"
 #include "spinhash/config_fields.h"
 #include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"
 #include "spinhash/scene_fields.h"
 #include "spinhash/scene_stream.hpp"
+#include "spinhash/stage_fields.h"
 
 using namespace spinhash;
 
@@ -55,16 +60,31 @@ constexpr bool starts_with(const char* s, const char* prefix) {
 // --- What the lists say.
 constexpr size_t width_MODE = 1, width_BOOL = 1, width_U32 = 1, width_U64 = 1, width_F32 = 1, width_VEC3D = 3;
 constexpr size_t listed_config_initializers() {
-  size_t n = 0;
+  size_t n = 1;  // the StageParams base: one initializer
 #define SPINHASH_COUNT(kind, name, lo, hi, flag, help) n += width_##kind;
   SPINHASH_CONFIG_FIELDS(SPINHASH_COUNT)
 #undef SPINHASH_COUNT
   return n;
 }
-constexpr size_t listed_stats(bool in_extract) {
+constexpr size_t listed_stages() {
   size_t n = 0;
-#define SPINHASH_COUNT(kind, name, member, json) \
-  n += starts_with(#member, "extract.") == in_extract ? 1u : 0u;
+#define SPINHASH_COUNT(id, Name, what) ++n;
+  SPINHASH_STAGES(SPINHASH_COUNT)
+#undef SPINHASH_COUNT
+  return n;
+}
+// Statistics whose member lies in `block` ("" for RecognitionStats' own).
+constexpr bool in_block(const char* member, const char* block) {
+  if (*block == '\0') {
+    for (; *member != '\0'; ++member)
+      if (*member == '.') return false;
+    return true;
+  }
+  return starts_with(member, block);
+}
+constexpr size_t listed_stats(const char* block) {
+  size_t n = 0;
+#define SPINHASH_COUNT(kind, name, member, json) n += in_block(#member, block) ? 1u : 0u;
   SPINHASH_STATS_FIELDS(SPINHASH_COUNT)
 #undef SPINHASH_COUNT
   return n;
@@ -72,18 +92,68 @@ constexpr size_t listed_stats(bool in_extract) {
 
 static_assert(member_count<RecognizerConfig>() == listed_config_initializers(),
               "RecognizerConfig and SPINHASH_CONFIG_FIELDS (config_fields.h) list different fields");
-static_assert(member_count<ExtractStats>() == listed_stats(true),
+static_assert(member_count<StageParams>() == listed_stages(),
+              "StageParams and SPINHASH_STAGES (stage_fields.h) list different stages");
+static_assert(member_count<ExtractStats>() == listed_stats("extract."),
               "ExtractStats and the extract.* entries of SPINHASH_STATS_FIELDS differ");
-static_assert(member_count<RecognitionStats>() == listed_stats(false) + 1u,
+static_assert(member_count<GroundStats>() == listed_stats("ground."), "GroundStats and ground.* differ");
+static_assert(member_count<CandidatesStats>() == listed_stats("candidates."),
+              "CandidatesStats and candidates.* differ");
+static_assert(member_count<DrawsStats>() == listed_stats("draws."), "DrawsStats and draws.* differ");
+static_assert(member_count<TransferStats>() == listed_stats("transfer."),
+              "TransferStats and transfer.* differ");
+static_assert(member_count<RefineStats>() == listed_stats("refine."), "RefineStats and refine.* differ");
+static_assert(member_count<ConfidenceStats>() == listed_stats("confidence."),
+              "ConfidenceStats and confidence.* differ");
+static_assert(member_count<RecognitionStats>() == listed_stats("") + 7u,
               "RecognitionStats and SPINHASH_STATS_FIELDS (config_fields.h) list different fields");
 
-// --- Types: each kind's C++ type.
+// Each stage's struct has exactly its list's fields, of the list's types,
+// with the list's defaults, the defaults within the ranges; a stage with an
+// `enabled` field has it first.
 using CppType_MODE = Mode;
 using CppType_BOOL = bool;
 using CppType_U32 = uint32_t;
 using CppType_U64 = uint64_t;
 using CppType_F32 = float;
 using CppType_VEC3D = double[3];
+
+constexpr bool in_range(bool, int, int) { return true; }
+constexpr bool in_range(uint32_t v, uint32_t lo, uint32_t hi) { return v >= lo && v <= hi; }
+constexpr bool in_range(float v, float lo, float hi) { return v >= lo && v <= hi; }
+constexpr bool same_name(const char* a, const char* b) {
+  while (*a != '\0' && *a == *b) ++a, ++b;
+  return *a == *b;
+}
+
+#define SPINHASH_PARAM_CHECKS(kind, name, def, lo, hi, flag, why)                          \
+  static_assert(std::is_same<decltype(Params::name), CppType_##kind>::value,               \
+                #name ": another type in its Params struct than in stage_fields.h");       \
+  static_assert(Params{}.name == (def), #name ": another default than in stage_fields.h"); \
+  static_assert(in_range(Params{}.name, lo, hi), #name ": the default is outside its range");
+#define SPINHASH_COUNT_PARAM(kind, name, def, lo, hi, flag, why) +1
+#define SPINHASH_ENABLED_AT(kind, name, def, lo, hi, flag, why) \
+  ok = ok && (at++ == 0 || !same_name(#name, "enabled"));
+#define SPINHASH_STAGE_CHECKS(id, Name, what)                                                   \
+  namespace stage_##id {                                                                        \
+    using Params = Name##Params;                                                                \
+    static_assert(member_count<Params>() == 0 SPINHASH_PARAMS_##id(SPINHASH_COUNT_PARAM),       \
+                  #Name "Params and SPINHASH_PARAMS_" #id " list different fields");            \
+    static_assert(std::is_same<decltype(StageParams::id), Params>::value, "StageParams::" #id); \
+    SPINHASH_PARAMS_##id(SPINHASH_PARAM_CHECKS) constexpr bool enabled_first() {                \
+      int at = 0;                                                                               \
+      bool ok = true;                                                                           \
+      SPINHASH_PARAMS_##id(SPINHASH_ENABLED_AT) return ok;                                      \
+    }                                                                                           \
+    static_assert(enabled_first(), #Name "Params: `enabled` must be the first field");          \
+  }
+SPINHASH_STAGES(SPINHASH_STAGE_CHECKS)
+#undef SPINHASH_STAGE_CHECKS
+#undef SPINHASH_ENABLED_AT
+#undef SPINHASH_COUNT_PARAM
+#undef SPINHASH_PARAM_CHECKS
+
+// --- Types: each kind's C++ type.
 #define SPINHASH_SAME_TYPE(kind, name, lo, hi, flag, help)                             \
   static_assert(std::is_same<decltype(RecognizerConfig::name), CppType_##kind>::value, \
                 #name ": another type in RecognizerConfig than in config_fields.h");
@@ -135,6 +205,15 @@ TEST_CASE("config fields: every field survives C++ -> C -> C++ with a non-defaul
 #define SPINHASH_EDIT(kind, name, lo, hi, flag, help) change(edited.name, k++);
   SPINHASH_CONFIG_FIELDS(SPINHASH_EDIT)
 #undef SPINHASH_EDIT
+#define SPINHASH_EDIT_PARAM(kind, name, def, lo, hi, flag, why) change(p.name, k++);
+#define SPINHASH_EDIT_STAGE(id, Name, what)   \
+  {                                           \
+    Name##Params& p = edited.id;              \
+    SPINHASH_PARAMS_##id(SPINHASH_EDIT_PARAM) \
+  }
+  SPINHASH_STAGES(SPINHASH_EDIT_STAGE)
+#undef SPINHASH_EDIT_STAGE
+#undef SPINHASH_EDIT_PARAM
 
   spinhash_config c, c_defaults;
   std::memset(&c, 0xA5, sizeof c);
@@ -151,6 +230,26 @@ TEST_CASE("config fields: every field survives C++ -> C -> C++ with a non-defaul
   }
   SPINHASH_CONFIG_FIELDS(SPINHASH_ROUND_TRIP)
 #undef SPINHASH_ROUND_TRIP
+#define SPINHASH_PARAM_ROUND_TRIP(kind, name, def, lo, hi, flag, why) \
+  {                                                                   \
+    INFO("field " #name);                                             \
+    CHECK_FALSE(same(mine.name, c_defaults_stage.name));              \
+    CHECK(same(mine.name, c_stage.name));                             \
+    CHECK(same(back_stage.name, c_stage.name));                       \
+  }
+#define SPINHASH_STAGE_ROUND_TRIP(id, Name, what)   \
+  {                                                 \
+    INFO("stage " #id);                             \
+    const Name##Params& mine = edited.id;           \
+    const Name##Params& back_stage = back.id;       \
+    const auto& c_stage = c.id;                     \
+    const auto& c_defaults_stage = c_defaults.id;   \
+    SPINHASH_PARAMS_##id(SPINHASH_PARAM_ROUND_TRIP) \
+  }
+  SPINHASH_STAGES(SPINHASH_STAGE_ROUND_TRIP)
+#undef SPINHASH_STAGE_ROUND_TRIP
+#undef SPINHASH_PARAM_ROUND_TRIP
+  CHECK(k > 100);
 }
 
 TEST_CASE("config fields: the C default config is the C++ default, field by field") {
@@ -165,6 +264,20 @@ TEST_CASE("config fields: the C default config is the C++ default, field by fiel
   }
   SPINHASH_CONFIG_FIELDS(SPINHASH_DEFAULT)
 #undef SPINHASH_DEFAULT
+#define SPINHASH_PARAM_DEFAULT(kind, name, def, lo, hi, flag, why) \
+  {                                                                \
+    INFO("field " #name);                                          \
+    CHECK(same(mine.name, c_stage.name));                          \
+  }
+#define SPINHASH_STAGE_DEFAULT(id, Name, what)   \
+  {                                              \
+    const Name##Params& mine = defaults.id;      \
+    const auto& c_stage = c.id;                  \
+    SPINHASH_PARAMS_##id(SPINHASH_PARAM_DEFAULT) \
+  }
+  SPINHASH_STAGES(SPINHASH_STAGE_DEFAULT)
+#undef SPINHASH_STAGE_DEFAULT
+#undef SPINHASH_PARAM_DEFAULT
 }
 
 TEST_CASE("config fields: every statistic reaches the C struct") {
@@ -312,4 +425,50 @@ TEST_CASE("scene fields: the defaults are valid and a field just outside its ran
   SPINHASH_STREAM_CONFIG_FIELDS(SPINHASH_OUTSIDE)
 #undef SPINHASH_OUTSIDE
   CHECK(refused > 30);
+}
+
+TEST_CASE("stage fields: the defaults are valid and a field just outside its range is refused") {
+  REQUIRE(config_valid(RecognizerConfig{}));
+  int checked = 0;
+#define SPINHASH_PARAM_OUTSIDE(kind, name, def, lo, hi, flag, why)  \
+  {                                                                 \
+    INFO("field " << stage_name << "." #name);                      \
+    RecognizerConfig c;                                             \
+    if (below(lo, &(c.*member).name)) CHECK_FALSE(config_valid(c)); \
+    RecognizerConfig d;                                             \
+    if (above(hi, &(d.*member).name)) CHECK_FALSE(config_valid(d)); \
+    ++checked;                                                      \
+  }
+#define SPINHASH_STAGE_OUTSIDE(id, Name, what)            \
+  {                                                       \
+    const char* stage_name = #id;                         \
+    Name##Params StageParams::*member = &StageParams::id; \
+    SPINHASH_PARAMS_##id(SPINHASH_PARAM_OUTSIDE)          \
+  }
+  SPINHASH_STAGES(SPINHASH_STAGE_OUTSIDE)
+#undef SPINHASH_STAGE_OUTSIDE
+#undef SPINHASH_PARAM_OUTSIDE
+  CHECK(checked > 90);
+}
+
+TEST_CASE("the stage table runs the stages of stage_fields.h in their order, each switch its `enabled`") {
+  const char* listed[] = {
+#define SPINHASH_STAGE_NAME(id, Name, what) #id,
+      SPINHASH_STAGES(SPINHASH_STAGE_NAME)
+#undef SPINHASH_STAGE_NAME
+  };
+  REQUIRE(kStageCount == sizeof(listed) / sizeof(listed[0]));
+  StageParams off;
+  off.ground.enabled = false;
+  off.transfer.enabled = false;
+  off.focus.enabled = false;
+  for (uint32_t i = 0; i < kStageCount; ++i) {
+    INFO("stage ", listed[i]);
+    const StageId id = kStageOrder[i];
+    CHECK(std::string(stage_name(id)) == listed[i]);
+    CHECK(static_cast<uint32_t>(id) == i);
+    CHECK(stage_enabled(id, StageParams{}));
+    const std::string name = listed[i];
+    CHECK(stage_enabled(id, off) == !(name == "ground" || name == "transfer" || name == "focus"));
+  }
 }

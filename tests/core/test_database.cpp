@@ -836,7 +836,7 @@ TEST_CASE("every single-byte change of a blob is refused, padding included") {
 }
 
 TEST_CASE("a changed padding byte of the golden blob is kBlobNotZeroed") {
-  // The corruptions of issue 29 that were accepted: bytes between the end of
+  // A corruption the checks must catch: bytes between the end of
   // the section table (byte 416) and the first payload (byte 448).
   host::AlignedBytes golden = spinhash::test::golden_blob(true);
   const auto* table = reinterpret_cast<const blob::SectionEntry*>(golden.data() + sizeof(blob::Header));

@@ -5,6 +5,7 @@
 
 #include "match/doublet.hpp"
 #include "match/pose_from_doublet.hpp"
+#include "spinhash/config.hpp"
 
 using namespace spinhash;
 
@@ -30,7 +31,7 @@ TEST_CASE("a known rotation and translation are recovered from two oriented corr
   OrientedPoint m1 = op(0.4f, 0.2f, 1.1f, Eigen::Vector3f(0.1f, 0.2f, 1.0f));
   OrientedPoint m2 = op(-1.3f, 0.9f, 0.6f, Eigen::Vector3f(-1.0f, 0.3f, 0.2f));
   RigidPose pose;
-  REQUIRE(pose_from_doublet(moved(m1, r, t), moved(m2, r, t), m1, m2, &pose));
+  REQUIRE(pose_from_doublet(moved(m1, r, t), moved(m2, r, t), m1, m2, &pose, DrawsParams{}.normal_lever));
   CHECK((pose.rotation - r).norm() < 1e-4f);
   CHECK((pose.translation - t).norm() < 1e-4f);
   CHECK(pose.rotation.determinant() == doctest::Approx(1.0f).epsilon(1e-5));
@@ -44,7 +45,7 @@ TEST_CASE("the pose degrades gracefully with noisy normals") {
   OrientedPoint q1 = moved(m1, r, t), q2 = moved(m2, r, t);
   q1.n = (q1.n + Eigen::Vector3f(0.05f, 0.0f, 0.0f)).normalized();  // about 3 degrees off
   RigidPose pose;
-  REQUIRE(pose_from_doublet(q1, q2, m1, m2, &pose));
+  REQUIRE(pose_from_doublet(q1, q2, m1, m2, &pose, DrawsParams{}.normal_lever));
   float angle = Eigen::AngleAxisf(pose.rotation * r.transpose()).angle();
   CHECK(angle < 0.06f);
 }

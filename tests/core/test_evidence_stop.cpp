@@ -27,7 +27,7 @@ struct Stopping {
 
   Result recognize(const std::vector<double>& xyz, float stop_miss_probability) {
     RecognizerConfig cfg;
-    cfg.stop_miss_probability = stop_miss_probability;
+    cfg.draws.stop_miss_probability = stop_miss_probability;
     return recognize(xyz, cfg);
   }
   Result recognize(const std::vector<double>& xyz, const RecognizerConfig& cfg) {
@@ -55,21 +55,21 @@ double yaw_of(const Pose& p) { return std::atan2(p.rotation[3], p.rotation[0]); 
 TEST_CASE_FIXTURE(Stopping, "a clear view stops on evidence with the model and pose of a run to the budget") {
   const Result full = recognize(view(), 0.0f);
   REQUIRE(full.ranking_count > 0);
-  const uint32_t full_trials = full.stats.trials, full_hypotheses = full.stats.hypotheses;
+  const uint32_t full_trials = full.stats.draws.trials, full_hypotheses = full.stats.draws.hypotheses;
   const Pose full_pose = full.ranking[0].pose;
   CHECK(full.ranking[0].model == kModel);
-  CHECK_FALSE(full.stats.stopped_on_evidence);
+  CHECK_FALSE(full.stats.draws.stopped_on_evidence);
   // No stop: draws go on until the work budget (here the hypotheses) or the trials run out.
-  CHECK((full.stats.budget_exhausted || full_trials == RecognizerConfig{}.max_trials));
+  CHECK((full.stats.draws.budget_exhausted || full_trials == RecognizerConfig{}.draws.max_trials));
 
-  const Result early = recognize(view(), RecognizerConfig{}.stop_miss_probability);
+  const Result early = recognize(view(), RecognizerConfig{}.draws.stop_miss_probability);
   REQUIRE(early.ranking_count > 0);
-  CHECK(early.stats.stopped_on_evidence);
-  CHECK_FALSE(early.stats.budget_exhausted);
-  CHECK(early.stats.trials < full_trials);
-  CHECK(early.stats.hypotheses * 3u < full_hypotheses * 2u);
-  MESSAGE("trials ", early.stats.trials, " of ", full_trials, ", hypotheses ", early.stats.hypotheses, " of ",
-          full_hypotheses);
+  CHECK(early.stats.draws.stopped_on_evidence);
+  CHECK_FALSE(early.stats.draws.budget_exhausted);
+  CHECK(early.stats.draws.trials < full_trials);
+  CHECK(early.stats.draws.hypotheses * 3u < full_hypotheses * 2u);
+  MESSAGE("trials ", early.stats.draws.trials, " of ", full_trials, ", hypotheses ",
+          early.stats.draws.hypotheses, " of ", full_hypotheses);
   CHECK(early.ranking[0].model == kModel);
   CHECK(std::fabs(yaw_of(early.ranking[0].pose) - kYaw) < 0.05);  // rad, about 3 degrees
   for (int a = 0; a < 3; ++a)
@@ -81,11 +81,11 @@ TEST_CASE_FIXTURE(Stopping, "an object no model explains never stops on evidence
   // fits few candidates and the draws go on until the pose budget, which
   // counts the poses found, tilted ones too (max_tilt_deg): counting only
   // the verified ones let the ball draw 580 times and then stop on evidence.
-  const Result r = recognize(ball(), RecognizerConfig{}.stop_miss_probability);
-  REQUIRE(r.stats.hypotheses > 0);  // some model leads, so the bound is consulted
-  CHECK(r.stats.poses_tilted > 0u);
-  CHECK_FALSE(r.stats.stopped_on_evidence);
-  CHECK(r.stats.budget_exhausted);
+  const Result r = recognize(ball(), RecognizerConfig{}.draws.stop_miss_probability);
+  REQUIRE(r.stats.draws.hypotheses > 0);  // some model leads, so the bound is consulted
+  CHECK(r.stats.draws.poses_tilted > 0u);
+  CHECK_FALSE(r.stats.draws.stopped_on_evidence);
+  CHECK(r.stats.draws.budget_exhausted);
   CHECK_FALSE(r.confident);
 }
 
@@ -94,29 +94,29 @@ TEST_CASE_FIXTURE(Stopping,
   constexpr uint32_t kTrials = 50;
   // The ball passes 20-30 poses a draw: 200 draws came within 3 % of the
   // default budget (6 000) on x86-64 and reached it on aarch64 (a sphere's
-  // features tie, and its poses differ across targets; they did before the
-  // normals of results.md 9n too). The pose budget is not under test.
+  // features tie, and its poses differ across targets). The pose budget is
+  // not under test.
   constexpr uint32_t kAmpleHypotheses = 1u << 20;
   auto stats_with = [&](uint32_t min_hypotheses) {
     RecognizerConfig cfg;
-    cfg.max_trials = kTrials;
-    cfg.max_hypotheses = kAmpleHypotheses;
-    cfg.min_hypotheses = min_hypotheses;
-    cfg.focus_models = 0;                     // its draws follow extended ones (test_pose_transfer.cpp)
+    cfg.draws.max_trials = kTrials;
+    cfg.draws.max_hypotheses = kAmpleHypotheses;
+    cfg.draws.min_hypotheses = min_hypotheses;
+    cfg.focus.focus_models = 0;               // its draws follow extended ones (test_pose_transfer.cpp)
     const Result r = recognize(ball(), cfg);  // never stops on evidence
-    REQUIRE_FALSE(r.stats.budget_exhausted);
-    REQUIRE_FALSE(r.stats.stopped_on_evidence);
+    REQUIRE_FALSE(r.stats.draws.budget_exhausted);
+    REQUIRE_FALSE(r.stats.draws.stopped_on_evidence);
     return r.stats;
   };
   const RecognitionStats paper = stats_with(0u);
-  CHECK(paper.trials == kTrials);
+  CHECK(paper.draws.trials == kTrials);
   // The first kTrials draws are the same; then draws go on until they find
   // one more pose, verified or refused for its tilt (max_tilt_deg).
-  REQUIRE(paper.poses_tilted > 0);  // a ball's doublets pose the toy vehicles any way up
-  const uint64_t wanted = paper.poses_found() + 1u;
+  REQUIRE(paper.draws.poses_tilted > 0);  // a ball's doublets pose the toy vehicles any way up
+  const uint64_t wanted = paper.draws.poses_found() + 1u;
   const RecognitionStats more = stats_with(static_cast<uint32_t>(wanted));
-  CHECK(more.trials > kTrials);
-  CHECK(more.trials <= kTrialExtension * kTrials);
-  CHECK((more.poses_found() >= wanted || more.trials == kTrialExtension * kTrials));
-  CHECK(stats_with(0xFFFFFFFFu).trials == kTrialExtension * kTrials);
+  CHECK(more.draws.trials > kTrials);
+  CHECK(more.draws.trials <= kTrialExtension * kTrials);
+  CHECK((more.draws.poses_found() >= wanted || more.draws.trials == kTrialExtension * kTrials));
+  CHECK(stats_with(0xFFFFFFFFu).draws.trials == kTrialExtension * kTrials);
 }

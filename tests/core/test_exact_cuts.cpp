@@ -1,4 +1,4 @@
-// Issue 29's exact cuts give what the code they replace gave, bit for bit:
+// The exact cuts give what the plain code gives, bit for bit:
 // the radius search that skips cells beyond the radius visits the points a
 // brute-force scan of its cells would, in the same order; normals over
 // gathered neighbourhoods equal the point-by-point ones (also when the
@@ -37,7 +37,7 @@ std::vector<uint32_t> visited(const CellGrid& grid, const float* q, float radius
   return out;
 }
 
-// The same from every cell within the reach, none skipped (the search before issue 29).
+// The same from every cell within the reach, none skipped (the plain search).
 std::vector<uint32_t> visited_unculled(const CellGrid& grid, const float* pts, uint32_t n, const float* q,
                                        float radius) {
   const float cell = grid.cell_size();

@@ -17,6 +17,8 @@ using namespace spinhash;
 
 namespace {
 
+const float kMinEndShift = RefineParams{}.lend_min_end_shift;  // m: 0.05
+
 constexpr float kYaw = 0.7f;
 constexpr float kTolerance = 1e-4f;  // m
 
@@ -43,7 +45,8 @@ TEST_CASE("end-aligned poses put a longer sibling's rear, then its front, on the
   const blob::ModelRecord first = centred_box(11.0f), sibling = centred_box(12.0f);
   const RigidPose pose = yawed_pose();
   RigidPose out[kEndAlignedPoses];
-  for (uint32_t i = 0; i < kEndAlignedPoses; ++i) REQUIRE(end_aligned_pose(pose, first, sibling, i, &out[i]));
+  for (uint32_t i = 0; i < kEndAlignedPoses; ++i)
+    REQUIRE(end_aligned_pose(pose, first, sibling, i, &out[i], kMinEndShift));
   const Eigen::Vector3f side(0.0f, 1.2f, 1.0f);  // a point on the left side, mid-height
   const Eigen::Vector3f first_rear = apply(pose, side + Eigen::Vector3f(first.bbox_min[0], 0, 0));
   const Eigen::Vector3f first_front = apply(pose, side + Eigen::Vector3f(first.bbox_max[0], 0, 0));
@@ -64,23 +67,24 @@ TEST_CASE("end-aligned poses put a longer sibling's rear, then its front, on the
 }
 
 TEST_CASE("a sibling of the same length gets the pose as it is and the turned ones, not pose 0 twice") {
-  const blob::ModelRecord first = centred_box(4.4f), twin = centred_box(4.42f);  // within kMinEndShift
+  const blob::ModelRecord first = centred_box(4.4f), twin = centred_box(4.42f);  // within lend_min_end_shift
   const RigidPose pose = yawed_pose();
   RigidPose out;
-  REQUIRE(end_aligned_pose(pose, first, twin, 0, &out));  // rear ends 0.01 m apart: nearly as it is
+  REQUIRE(
+      end_aligned_pose(pose, first, twin, 0, &out, kMinEndShift));  // rear ends 0.01 m apart: nearly as it is
   CHECK((out.translation - pose.translation).norm() < 0.011f);
   CHECK((out.rotation - pose.rotation).norm() < kTolerance);
-  CHECK(!end_aligned_pose(pose, first, twin, 2, &out));  // front ends: pose 0 once more
+  CHECK(!end_aligned_pose(pose, first, twin, 2, &out, kMinEndShift));  // front ends: pose 0 once more
   // A sibling of the first's length in a frame 0.3 m along: one shifted pose.
   blob::ModelRecord shifted = centred_box(4.4f);
   shifted.bbox_min[0] += 0.3f, shifted.bbox_max[0] += 0.3f;
-  REQUIRE(end_aligned_pose(pose, first, shifted, 0, &out));
+  REQUIRE(end_aligned_pose(pose, first, shifted, 0, &out, kMinEndShift));
   CHECK((out.translation - (pose.translation - 0.3f * pose.rotation.col(0))).norm() < kTolerance);
-  CHECK(!end_aligned_pose(pose, first, shifted, 2, &out));
+  CHECK(!end_aligned_pose(pose, first, shifted, 2, &out, kMinEndShift));
   const RigidPose turned = turned_end_to_end(pose, twin);
-  // Each shift is 0.01 m, within kMinEndShift: the turned poses are nearly the plain turn.
+  // Each shift is 0.01 m, within lend_min_end_shift: the turned poses are nearly the plain turn.
   for (uint32_t i : {1u, 3u}) {
-    REQUIRE(end_aligned_pose(pose, first, twin, i, &out));
+    REQUIRE(end_aligned_pose(pose, first, twin, i, &out, kMinEndShift));
     CHECK((out.translation - turned.translation).norm() < 0.011f);
     CHECK((out.rotation - turned.rotation).norm() < kTolerance);
   }

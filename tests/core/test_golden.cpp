@@ -49,9 +49,9 @@ TEST_CASE("golden: the blob of this target's byte order reproduces the recorded 
     REQUIRE(rec.init(&db, cfg, workspace.data(), workspace.size()) == Status::kOk);
     Result r = rec.recognize(xyz.data() + 3u * want.first_point, want.point_count);
     REQUIRE(r.status == Status::kOk);
-    CHECK(r.stats.features == want.features);
-    CHECK(r.stats.hypotheses == want.hypotheses);
-    CHECK(r.stats.budget_exhausted == want.budget_exhausted);
+    CHECK(r.stats.extract.features == want.features);
+    CHECK(r.stats.draws.hypotheses == want.hypotheses);
+    CHECK(r.stats.draws.budget_exhausted == want.budget_exhausted);
     REQUIRE(r.ranking_count == want.ranking_count);
     for (uint32_t i = 0; i < r.ranking_count && i < golden::kMaxGoldenRanked; ++i) {
       CAPTURE(i);

@@ -40,7 +40,7 @@ RecognizerConfig fast_config() {
   constexpr uint32_t kHypotheses = 1500;
   RecognizerConfig cfg;
   cfg.max_features = kFeatures;
-  cfg.max_hypotheses = kHypotheses;
+  cfg.draws.max_hypotheses = kHypotheses;
   return cfg;
 }
 
@@ -261,7 +261,9 @@ std::vector<double> random_blob(uint32_t points, double side) {
 constexpr uint32_t kUnknownPoints = 3000;
 constexpr float kSphereZ = 1.5f;  // m: centred at a toy's height
 
-float mean_score(const Result& r) { return r.ranking[0].score / static_cast<float>(r.stats.features); }
+float mean_score(const Result& r) {
+  return r.ranking[0].score / static_cast<float>(r.stats.extract.features);
+}
 
 }  // namespace
 
@@ -349,33 +351,36 @@ TEST_CASE("invalid config values are refused by required_workspace_bytes and ini
     void (*patch)(RecognizerConfig&);
   };
   const Case cases[] = {
-      {"NaN sigma", [](RecognizerConfig& c) { c.sigma = kNaN; }},
-      {"zero sigma", [](RecognizerConfig& c) { c.sigma = 0.0f; }},
-      {"NaN delta", [](RecognizerConfig& c) { c.delta = kNaN; }},
-      {"delta_max below delta", [](RecognizerConfig& c) { c.delta_max = c.delta * 0.5f; }},
-      {"infinite d_min", [](RecognizerConfig& c) { c.d_min = kInf; }},
-      {"negative distance tolerance", [](RecognizerConfig& c) { c.tol_distance = -0.1f; }},
-      {"NaN angle tolerance", [](RecognizerConfig& c) { c.tol_angle_deg = kNaN; }},
-      {"NaN handedness tolerance", [](RecognizerConfig& c) { c.tol_handedness = kNaN; }},
-      {"NaN theta_min", [](RecognizerConfig& c) { c.theta_min_deg = kNaN; }},
-      {"eta_max 181", [](RecognizerConfig& c) { c.eta_max_deg = 181.0f; }},
-      {"zero spin lambda", [](RecognizerConfig& c) { c.spin_lambda = 0.0f; }},
-      {"NaN min_inlier_fraction", [](RecognizerConfig& c) { c.min_inlier_fraction = kNaN; }},
-      {"min_inlier_fraction 1.5", [](RecognizerConfig& c) { c.min_inlier_fraction = 1.5f; }},
-      {"NaN min_mean_log_likelihood", [](RecognizerConfig& c) { c.min_mean_log_likelihood = kNaN; }},
-      {"positive min_mean_log_likelihood", [](RecognizerConfig& c) { c.min_mean_log_likelihood = 1.0f; }},
-      {"-inf min_mean_log_likelihood", [](RecognizerConfig& c) { c.min_mean_log_likelihood = -kInf; }},
-      {"verify_features 0", [](RecognizerConfig& c) { c.verify_features = 0; }},
-      {"NaN query basis spacing", [](RecognizerConfig& c) { c.query_basis_spacing = kNaN; }},
-      {"negative query basis spacing", [](RecognizerConfig& c) { c.query_basis_spacing = -1.0f; }},
+      {"NaN sigma", [](RecognizerConfig& c) { c.draws.sigma = kNaN; }},
+      {"zero sigma", [](RecognizerConfig& c) { c.draws.sigma = 0.0f; }},
+      {"NaN delta", [](RecognizerConfig& c) { c.draws.delta = kNaN; }},
+      {"delta_max below delta", [](RecognizerConfig& c) { c.draws.delta_max = c.draws.delta * 0.5f; }},
+      {"infinite d_min", [](RecognizerConfig& c) { c.draws.d_min = kInf; }},
+      {"negative distance tolerance", [](RecognizerConfig& c) { c.draws.tol_distance = -0.1f; }},
+      {"NaN angle tolerance", [](RecognizerConfig& c) { c.draws.tol_angle_deg = kNaN; }},
+      {"NaN handedness tolerance", [](RecognizerConfig& c) { c.draws.tol_handedness = kNaN; }},
+      {"NaN theta_min", [](RecognizerConfig& c) { c.draws.theta_min_deg = kNaN; }},
+      {"eta_max 181", [](RecognizerConfig& c) { c.draws.eta_max_deg = 181.0f; }},
+      {"zero spin lambda", [](RecognizerConfig& c) { c.draws.spin_lambda = 0.0f; }},
+      {"NaN min_inlier_fraction", [](RecognizerConfig& c) { c.confidence.min_inlier_fraction = kNaN; }},
+      {"min_inlier_fraction 1.5", [](RecognizerConfig& c) { c.confidence.min_inlier_fraction = 1.5f; }},
+      {"NaN min_mean_log_likelihood",
+       [](RecognizerConfig& c) { c.confidence.min_mean_log_likelihood = kNaN; }},
+      {"positive min_mean_log_likelihood",
+       [](RecognizerConfig& c) { c.confidence.min_mean_log_likelihood = 1.0f; }},
+      {"-inf min_mean_log_likelihood",
+       [](RecognizerConfig& c) { c.confidence.min_mean_log_likelihood = -kInf; }},
+      {"verify_features 0", [](RecognizerConfig& c) { c.draws.verify_features = 0; }},
+      {"NaN query basis spacing", [](RecognizerConfig& c) { c.extract.query_basis_spacing = kNaN; }},
+      {"negative query basis spacing", [](RecognizerConfig& c) { c.extract.query_basis_spacing = -1.0f; }},
       {"max_points 0", [](RecognizerConfig& c) { c.max_points = 0; }},
       {"max_points above the limit", [](RecognizerConfig& c) { c.max_points = kMaxQueryPointsLimit + 1u; }},
       {"max_features 1", [](RecognizerConfig& c) { c.max_features = 1; }},
       {"max_models 0", [](RecognizerConfig& c) { c.max_models = 0; }},
       {"max_spin_dims above the limit", [](RecognizerConfig& c) { c.max_spin_dims = kMaxSpinDims + 1u; }},
-      {"top_w 0", [](RecognizerConfig& c) { c.top_w = 0; }},
-      {"top_w above kMaxCandidates", [](RecognizerConfig& c) { c.top_w = kMaxCandidates + 1u; }},
-      {"max_bucket_scan 0", [](RecognizerConfig& c) { c.max_bucket_scan = 0; }},
+      {"top_w 0", [](RecognizerConfig& c) { c.candidates.top_w = 0; }},
+      {"top_w above kMaxCandidates", [](RecognizerConfig& c) { c.candidates.top_w = kMaxCandidates + 1u; }},
+      {"max_bucket_scan 0", [](RecognizerConfig& c) { c.candidates.max_bucket_scan = 0; }},
       {"NaN viewpoint",
        [](RecognizerConfig& c) {
          c.has_viewpoint = true;

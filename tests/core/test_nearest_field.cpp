@@ -50,10 +50,10 @@ struct Fixture {
 
 TEST_CASE_FIXTURE(Fixture, "the default build has a field that reaches the default Delta_max") {
   REQUIRE(toy.db.has_nearest_field());
-  CHECK(toy.db.params().field_reach >= cfg.delta_max);
+  CHECK(toy.db.params().field_reach >= cfg.draws.delta_max);
   CHECK(field.use_field);
   RecognizerConfig wide = cfg;
-  wide.delta_max = toy.db.params().field_reach + 0.1f;
+  wide.draws.delta_max = toy.db.params().field_reach + 0.1f;
   CHECK_FALSE(make_likelihood_params(wide, toy.db).use_field);  // beyond its reach: the exact search
 }
 

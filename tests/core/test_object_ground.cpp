@@ -23,6 +23,13 @@ namespace {
 
 constexpr float kClearance = 0.25f;
 
+// The stage's parameters with ground_clearance `clearance` (0: off).
+GroundParams with_clearance(float clearance) {
+  GroundParams p;
+  p.ground_clearance = clearance;
+  return p;
+}
+
 // A 4 x 2 x 1.5 m box standing on z = 0, above a level ground square.
 std::vector<float> box_on_ground(float ground_half) {
   std::vector<float> pts = test::box_surface(4.0f, 2.0f, 1.5f, 0.1f);
@@ -63,6 +70,10 @@ test::Tile toy_on_plane(double slope_deg, double ground_spacing, float toy_spaci
 
 }  // namespace
 
+TEST_CASE("object ground: the steepest terrain is 18 degrees, as a rise per m") {
+  CHECK(GroundParams{}.max_ground_slope == doctest::Approx(std::tan(18.0 * 3.14159265358979323846 / 180.0)));
+}
+
 TEST_CASE("noise-free ground and the lowest centimetres of an object on it are dropped, nothing else") {
   std::vector<float> pts = box_on_ground(5.0f);
   const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
@@ -70,9 +81,9 @@ TEST_CASE("noise-free ground and the lowest centimetres of an object on it are d
   const uint32_t roof = count_near(pts, n, 1.5f);
   REQUIRE(roof > 0);
   std::vector<float> scratch(kObjectGroundScratchFloats);
-  const uint32_t dropped = remove_object_ground(pts.data(), n, kClearance, scratch.data());
+  const uint32_t dropped = remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data());
   // No roughness: the minimum clearance, not the configured one, decides.
-  CHECK(count_at_most(pts, n - dropped, kMinClearance - 0.01f) == 0);
+  CHECK(count_at_most(pts, n - dropped, GroundParams{}.min_clearance - 0.01f) == 0);
   CHECK(n - dropped >= above);
   CHECK(count_at_most(pts, n - dropped, 0.2f) > 0);  // the box's lowest 20 cm (but 5) stay
   CHECK(count_near(pts, n - dropped, 1.5f) == roof);
@@ -100,11 +111,11 @@ TEST_CASE("the clearance follows the ground's measured noise, up to the configur
     uint32_t ground = 0;
     std::vector<float> pts = box_on_noisy_ground(sigma, &ground);
     const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
-    const float kept_above = std::min(kClearanceSigmas * sigma, kClearance) + 0.05f;
+    const float kept_above = std::min(GroundParams{}.clearance_sigmas * sigma, kClearance) + 0.05f;
     uint32_t box_high = 0;
     for (uint32_t i = ground; i < n; ++i) box_high += pts[3 * i + 2] > kept_above ? 1u : 0u;
     std::vector<float> scratch(kObjectGroundScratchFloats);
-    const uint32_t kept = n - remove_object_ground(pts.data(), n, kClearance, scratch.data());
+    const uint32_t kept = n - remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data());
     uint32_t kept_high = 0, kept_low = 0;
     for (uint32_t i = 0; i < kept; ++i) {
       kept_high += pts[3 * i + 2] > kept_above ? 1u : 0u;
@@ -156,7 +167,7 @@ TEST_CASE("sloped, bumpy terrain with a curb is dropped and the object on it kep
     for (uint32_t i = ground; i < n; ++i)
       high += (untilt * Eigen::Vector3f(pts[3 * i], pts[3 * i + 1], pts[3 * i + 2])).z() > kClearance + 0.02f;
     std::vector<float> scratch(kObjectGroundScratchFloats);
-    const uint32_t dropped = remove_object_ground(pts.data(), n, kClearance, scratch.data());
+    const uint32_t dropped = remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data());
     const uint32_t kept = n - dropped;
     // Every high box point survives; at most 1% of the ground does.
     uint32_t kept_high = 0;
@@ -177,9 +188,9 @@ TEST_CASE("an object seen from the air without ground is left whole") {
   const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
   std::vector<float> before = pts;
   std::vector<float> scratch(kObjectGroundScratchFloats);
-  CHECK(remove_object_ground(pts.data(), n, kClearance, scratch.data()) == 0);
+  CHECK(remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data()) == 0);
   CHECK(pts == before);
-  CHECK(remove_object_ground(pts.data(), n, 0.0f, scratch.data()) == 0);  // clearance 0: off
+  CHECK(remove_object_ground(pts.data(), n, with_clearance(0.0f), scratch.data()) == 0);  // clearance 0: off
 }
 
 TEST_CASE(
@@ -187,7 +198,7 @@ TEST_CASE(
   // The top of a 4.5 x 1.4 m body rising from 0.10 to 0.22 m, with a 0.45 m
   // cockpit hump: noise-free, its smooth slopes fill every 0.5 m cell with a
   // few centimetres of spread, which read as the ground's roughness (TORCS'
-  // open-wheel racer lost 85 % of its points that way, issue 28).
+  // open-wheel racer lost most of its points that way).
   auto racer = [](std::vector<float>* pts) {
     for (float x = -2.25f; x <= 2.25f; x += 0.05f)
       for (float y = -0.7f; y <= 0.7f; y += 0.05f) {
@@ -199,13 +210,13 @@ TEST_CASE(
   racer(&pts);
   const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
   std::vector<float> scratch(kObjectGroundScratchFloats);
-  CHECK(remove_object_ground(pts.data(), n, kClearance, scratch.data()) == 0u);
+  CHECK(remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data()) == 0u);
   // On a level ground square of +-4 m (64 m^2) the ground goes, the body stays.
   std::vector<float> ground = test::plane_grid(4.0f, 0.1f);
   const uint32_t ground_points = static_cast<uint32_t>(ground.size() / 3);
   pts.insert(pts.end(), ground.begin(), ground.end());
-  const uint32_t dropped =
-      remove_object_ground(pts.data(), static_cast<uint32_t>(pts.size() / 3), kClearance, scratch.data());
+  const uint32_t dropped = remove_object_ground(pts.data(), static_cast<uint32_t>(pts.size() / 3),
+                                                with_clearance(kClearance), scratch.data());
   CHECK(dropped >= ground_points);
   CHECK(dropped <= ground_points + n / 10u);
 }
@@ -222,7 +233,7 @@ TEST_CASE("a toy vehicle standing on ground is recognised with the ground remove
           RecognizerConfig{}.max_points);  // no thinning: every ground point reaches the removal
   for (float clearance : {kClearance, 0.0f}) {
     RecognizerConfig cfg;
-    cfg.ground_clearance = clearance;
+    cfg.ground.ground_clearance = clearance;
     host::AlignedBytes ws(required_workspace_bytes(cfg));
     Recognizer r;
     REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
@@ -230,12 +241,12 @@ TEST_CASE("a toy vehicle standing on ground is recognised with the ground remove
     REQUIRE(res.status == Status::kOk);
     CAPTURE(clearance);
     if (clearance > 0.0f) {
-      CHECK(res.stats.extract.points_ground >= ground.size() / 3);
+      CHECK(res.stats.ground.points_ground >= ground.size() / 3);
       REQUIRE(res.ranking_count >= 1);
       CHECK(res.ranking[0].model == 3u);
       CHECK(res.confident);
     } else {
-      CHECK(res.stats.extract.points_ground == 0);
+      CHECK(res.stats.ground.points_ground == 0);
       CHECK(!res.confident);  // most features are ground no model explains
     }
   }
@@ -269,7 +280,7 @@ TEST_CASE("vehicles without ground keep every point (their hood and sides are no
           for (int a = 0; a < 3; ++a) seen.push_back(static_cast<float>(pts[i + a]));
       const uint32_t n = static_cast<uint32_t>(seen.size() / 3);
       std::vector<float> scratch(kObjectGroundScratchFloats);
-      CHECK(remove_object_ground(seen.data(), n, kClearance, scratch.data()) == 0);
+      CHECK(remove_object_ground(seen.data(), n, with_clearance(kClearance), scratch.data()) == 0);
     }
 }
 TEST_CASE("a toy vehicle resting on ground tilted by 15 degrees is recognised with the ground removed") {
@@ -284,8 +295,8 @@ TEST_CASE("a toy vehicle resting on ground tilted by 15 degrees is recognised wi
   REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
   Result res = r.recognize(tile.xyz.data(), n);
   REQUIRE(res.status == Status::kOk);
-  CHECK(res.stats.extract.points_ground >= 0.97 * truth_ground);
-  CHECK(res.stats.extract.points_ground <= truth_ground + 0.05 * (n - truth_ground));
+  CHECK(res.stats.ground.points_ground >= 0.97 * truth_ground);
+  CHECK(res.stats.ground.points_ground <= truth_ground + 0.05 * (n - truth_ground));
   REQUIRE(res.ranking_count >= 1);
   CHECK(res.ranking[0].model == 1u);
   CHECK(res.confident);
@@ -305,7 +316,7 @@ TEST_CASE("sparse ground (0.24 m) around a toy vehicle is dropped on level and 1
     std::vector<float> pts(tile.xyz.begin(), tile.xyz.end());
     const uint32_t n = static_cast<uint32_t>(tile.ground.size());
     std::vector<float> scratch(kObjectGroundScratchFloats);
-    const uint32_t dropped = remove_object_ground(pts.data(), n, kClearance, scratch.data());
+    const uint32_t dropped = remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data());
     CHECK(dropped >= 0.97 * truth_ground);
     CHECK(dropped <= truth_ground + 0.05 * (n - truth_ground));
   }
@@ -331,7 +342,7 @@ TEST_CASE(
     }
     const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
     std::vector<float> scratch(kObjectGroundScratchFloats);
-    const uint32_t dropped = remove_object_ground(pts.data(), n, kClearance, scratch.data());
+    const uint32_t dropped = remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data());
     CHECK(dropped >= 0.95 * truth_ground);
     CHECK(dropped <= truth_ground + 0.05 * (n - truth_ground));
   }
@@ -345,7 +356,7 @@ TEST_CASE(
       if (model[i + 2] > 0.2)
         pts.insert(pts.end(), {float(model[i]), float(model[i + 1]), float(model[i + 2])});
     std::vector<float> scratch(kObjectGroundScratchFloats);
-    CHECK(remove_object_ground(pts.data(), static_cast<uint32_t>(pts.size() / 3), kClearance,
+    CHECK(remove_object_ground(pts.data(), static_cast<uint32_t>(pts.size() / 3), with_clearance(kClearance),
                                scratch.data()) == 0u);
   }
 }
@@ -358,7 +369,7 @@ TEST_CASE("the terrain found says the object's top above it and the ground's noi
     const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
     std::vector<float> scratch(kObjectGroundScratchFloats);
     TerrainUnder terrain;
-    REQUIRE(remove_object_ground(pts.data(), n, kClearance, scratch.data(), &terrain) > 0u);
+    REQUIRE(remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data(), &terrain) > 0u);
     CHECK(terrain.found);
     CHECK(terrain.top == doctest::Approx(1.5f).epsilon(0.02));  // the ground's level from thousands of points
     CHECK(terrain.sigma == doctest::Approx(sigma).epsilon(0.3));
@@ -368,8 +379,8 @@ TEST_CASE("the terrain found says the object's top above it and the ground's noi
   std::vector<float> scratch(kObjectGroundScratchFloats);
   TerrainUnder terrain;
   terrain.found = true;
-  CHECK(remove_object_ground(box.data(), static_cast<uint32_t>(box.size() / 3), kClearance, scratch.data(),
-                             &terrain) == 0u);
+  CHECK(remove_object_ground(box.data(), static_cast<uint32_t>(box.size() / 3), with_clearance(kClearance),
+                             scratch.data(), &terrain) == 0u);
   CHECK_FALSE(terrain.found);
 }
 
@@ -380,11 +391,12 @@ TEST_CASE("under a body the band's top is kept; beside it the whole band goes") 
   const uint32_t n = static_cast<uint32_t>(pts.size() / 3);
   std::vector<float> scratch(kObjectGroundScratchFloats);
   TerrainUnder terrain;
-  const uint32_t kept = n - remove_object_ground(pts.data(), n, kClearance, scratch.data(), &terrain);
+  const uint32_t kept =
+      n - remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data(), &terrain);
   REQUIRE(terrain.found);
   // Heights within kSlack of a bound may fall either side (the cells' levels are noisy).
   constexpr float kSlack = 0.015f;
-  const float floor = kBandKeptFrom * terrain.band;
+  const float floor = GroundParams{}.band_kept_from * terrain.band;
   auto in_band_top = [&](const float* p) { return p[2] > floor + kSlack && p[2] < terrain.band - kSlack; };
   auto under_box = [](const float* p) { return std::fabs(p[0]) <= 2.001f && std::fabs(p[1]) <= 1.001f; };
   uint32_t box_top = 0;  // the box's sides in the band's top: each column has the roof above it
@@ -406,10 +418,10 @@ TEST_CASE("under a body the band's top is kept; beside it the whole band goes") 
   CHECK(ground_in_band == 0u);
 }
 
-// A survey's cut-out of a car (issue 28): a 4.5 x 1.8 x 1.45 m body seen
+// A survey's cut-out of a car: a 4.5 x 1.8 x 1.45 m body seen
 // by two flight lines at 70 degrees, its roof sampled at 0.35 m and its
 // sides by a row per metre of height, the ground reaching 1.5 m past it.
-// Its 1 m cells show fewer clean ones than kMinSparseGroundCells (the 24 a
+// Its 1 m cells show fewer clean ones than min_sparse_ground_cells (the 24 a
 // bare truck's roof cannot show), but they ring the body, and it stands
 // 1.45 m above them.
 constexpr float kSurveySpacing = 0.35f;
@@ -432,14 +444,14 @@ TEST_CASE("a survey's small cut-out of a car: the ground ringing it goes; bare b
   const uint32_t body = static_cast<uint32_t>(pts.size() / 3);
   std::vector<float> scratch(kObjectGroundScratchFloats);
   std::vector<float> bare = pts;
-  CHECK(remove_object_ground(bare.data(), body, kClearance, scratch.data()) == 0u);
+  CHECK(remove_object_ground(bare.data(), body, with_clearance(kClearance), scratch.data()) == 0u);
   // A flat-bed trailer seen from above, 5 x 3 m, its sides unseen: its bed
   // rings its footprint with 12 or more clean cells, but nothing stands on it.
   std::vector<float> bed = test::plane_grid(2.5f, kSurveySpacing);
   for (size_t i = 0; i < bed.size(); i += 3) bed[i + 1] *= 0.6f;
   for (size_t i = 2; i < bed.size(); i += 3) bed[i] = 1.1f;
-  CHECK(remove_object_ground(bed.data(), static_cast<uint32_t>(bed.size() / 3), kClearance, scratch.data()) ==
-        0u);
+  CHECK(remove_object_ground(bed.data(), static_cast<uint32_t>(bed.size() / 3), with_clearance(kClearance),
+                             scratch.data()) == 0u);
   const std::vector<float> plane = test::plane_grid(4.0f, kSurveySpacing);
   Pcg32 rng(23u);
   uint32_t ground = 0;
@@ -453,7 +465,8 @@ TEST_CASE("a survey's small cut-out of a car: the ground ringing it goes; bare b
   }
   const uint32_t n = body + ground;
   TerrainUnder terrain;
-  const uint32_t dropped = remove_object_ground(pts.data(), n, kClearance, scratch.data(), &terrain);
+  const uint32_t dropped =
+      remove_object_ground(pts.data(), n, with_clearance(kClearance), scratch.data(), &terrain);
   CHECK(terrain.found);
   CHECK(dropped == ground);
   CHECK(terrain.top == doctest::Approx(kCarHeight).epsilon(0.05));

@@ -33,9 +33,9 @@ struct Twinned {
   Twinned() { REQUIRE(test::make_toy_database(&toy, kTwinned)); }
 
   Result recognize(uint32_t transfer_models, RecognizerConfig cfg = RecognizerConfig{}) {
-    cfg.top_w = 1;
-    cfg.max_bucket_scan = kWholeBuckets;
-    cfg.transfer_models = transfer_models;
+    cfg.candidates.top_w = 1;
+    cfg.candidates.max_bucket_scan = kWholeBuckets;
+    cfg.transfer.transfer_models = transfer_models;
     ws = host::AlignedBytes(required_workspace_bytes(cfg));
     Recognizer r;
     REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
@@ -91,14 +91,14 @@ TEST_CASE_FIXTURE(Twinned, "an answer its exact twin ties is not confident, what
   CHECK_FALSE(r.confident);               // the lead over the runner-up (the twin) is 0 < min_margin
   CHECK(r.group_size >= 2u);              // ... so the answer is the look-alike group: the twins, first
   CHECK(r.group_size < r.ranking_count);  // not every model: the toys differ by more than the margin
-  CHECK(r.ranking[0].inliers * 2u >= r.stats.features);  // the fit itself would pass
+  CHECK(r.ranking[0].inliers * 2u >= r.stats.extract.features);  // the fit itself would pass
 }
 
 TEST_CASE_FIXTURE(Twinned, "without its twin in the running the same fit is confident") {
   // toy_query's view stops short of the hull's right side, which a wider
   // look-alike could have: not what this case is about (test_confidence.cpp).
   RecognizerConfig cfg;
-  cfg.max_extent_shortfall = kUnpinned;
+  cfg.confidence.max_extent_shortfall = kUnpinned;
   Result r = recognize(0, cfg);
   REQUIRE(r.ranking_count >= 1);
   CHECK(r.ranking[0].model == kTwinned);
@@ -110,10 +110,10 @@ TEST_CASE_FIXTURE(Twinned, "the look-alike group is every leading model within m
   RecognizerConfig cfg;
   for (float margin : {0.0f, 2.1f, 20.0f, 1e4f}) {
     CAPTURE(margin);
-    cfg.min_margin = margin;
+    cfg.confidence.min_margin = margin;
     Result r = recognize(8, cfg);
     REQUIRE(r.ranking_count >= 2);
-    const float within = margin * std::sqrt(static_cast<float>(r.stats.features));
+    const float within = margin * std::sqrt(static_cast<float>(r.stats.extract.features));
     uint32_t expected = 1;
     while (expected < r.ranking_count && r.ranking[0].score - r.ranking[expected].score < within) ++expected;
     CHECK(r.group_size == expected);
@@ -124,10 +124,10 @@ TEST_CASE_FIXTURE(Twinned, "the look-alike group is every leading model within m
   Result first = recognize(8);
   REQUIRE(first.ranking_count >= 3);
   const float gap = first.ranking[0].score - first.ranking[2].score;
-  const float root = std::sqrt(static_cast<float>(first.stats.features));
-  cfg.min_margin = gap / (0.75f * root);
+  const float root = std::sqrt(static_cast<float>(first.stats.extract.features));
+  cfg.confidence.min_margin = gap / (0.75f * root);
   CHECK(recognize(8, cfg).group_size >= 3u);
-  cfg.min_margin = gap / (1.25f * root);  // ... and one that just leaves it out
+  cfg.confidence.min_margin = gap / (1.25f * root);  // ... and one that just leaves it out
   CHECK(recognize(8, cfg).group_size == 2u);
 }
 
@@ -138,9 +138,9 @@ namespace {
 constexpr uint32_t kFewTrials = 200;
 RecognizerConfig extended_draws(uint32_t focus_models) {
   RecognizerConfig cfg;
-  cfg.max_trials = kFewTrials;
-  cfg.min_hypotheses = 0xFFFFFFFFu;
-  cfg.focus_models = focus_models;
+  cfg.draws.max_trials = kFewTrials;
+  cfg.draws.min_hypotheses = 0xFFFFFFFFu;
+  cfg.focus.focus_models = focus_models;
   return cfg;
 }
 
@@ -154,15 +154,15 @@ std::vector<RankedModel> copied(const Result& r) {
 
 TEST_CASE_FIXTURE(Twinned, "after extended draws the leading models get a focused search of their own") {
   const Result lent = recognize(8, extended_draws(0));
-  CHECK(lent.stats.trials == kTrialExtension * kFewTrials);
+  CHECK(lent.stats.draws.trials == kTrialExtension * kFewTrials);
   const RankedModel* twin_lent = find(lent, twin);
   REQUIRE(twin_lent != nullptr);
   const uint32_t lent_hypotheses = twin_lent->hypotheses;
   CHECK(lent_hypotheses <= 4u);  // lent poses only (W = 1: its features are never candidates)
 
   const Result focused = recognize(8, extended_draws(2));  // the twins lead: both are searched
-  CHECK(focused.stats.trials == kTrialExtension * kFewTrials + 2u * kFocusTrials);
-  CHECK(focused.stats.hypotheses > lent.stats.hypotheses);
+  CHECK(focused.stats.draws.trials == kTrialExtension * kFewTrials + 2u * FocusParams{}.focus_trials);
+  CHECK(focused.stats.draws.hypotheses > lent.stats.draws.hypotheses);
   const RankedModel* twin_own = find(focused, twin);
   const RankedModel* original = find(focused, kTwinned);
   REQUIRE(twin_own != nullptr);
@@ -177,14 +177,15 @@ TEST_CASE_FIXTURE(Twinned, "after extended draws the leading models get a focuse
 
 TEST_CASE_FIXTURE(Twinned, "draws that meet min_hypotheses within max_trials leave the focused search out") {
   RecognizerConfig with, without;
-  with.min_hypotheses = without.min_hypotheses = 10;  // W = 1 verifies a few dozen poses in 800 draws
-  without.focus_models = 0;
+  with.draws.min_hypotheses = without.draws.min_hypotheses =
+      10;  // W = 1 verifies a few dozen poses in 800 draws
+  without.focus.focus_models = 0;
   const Result a = recognize(8, with);
   const std::vector<RankedModel> ranked = copied(a);
   const Result b = recognize(8, without);
-  REQUIRE(a.stats.trials <= with.max_trials);
-  CHECK(a.stats.trials == b.stats.trials);
-  CHECK(a.stats.hypotheses == b.stats.hypotheses);
+  REQUIRE(a.stats.draws.trials <= with.draws.max_trials);
+  CHECK(a.stats.draws.trials == b.stats.draws.trials);
+  CHECK(a.stats.draws.hypotheses == b.stats.draws.hypotheses);
   REQUIRE(ranked.size() == b.ranking_count);
   for (uint32_t i = 0; i < b.ranking_count; ++i) {
     CHECK(ranked[i].model == b.ranking[i].model);

@@ -9,36 +9,50 @@
 #include "spinhash/config_fields.h"
 #include "spinhash/presets.hpp"
 #include "spinhash/recognizer.hpp"
+#include "spinhash/stage_fields.h"
 #include "support/toy_database.hpp"
 
 using namespace spinhash;
 
 namespace {
 
-// The fields two configurations differ in, by name.
+// The fields two configurations differ in, by key (stage.field for a stage's).
 std::vector<std::string> changed_fields(const RecognizerConfig& a, const RecognizerConfig& b) {
   std::vector<std::string> names;
 #define SPINHASH_FIELD_CHANGED(kind, name, lo, hi, flag, help) \
   if (std::memcmp(&a.name, &b.name, sizeof a.name) != 0) names.push_back(#name);
   SPINHASH_CONFIG_FIELDS(SPINHASH_FIELD_CHANGED)
 #undef SPINHASH_FIELD_CHANGED
+#define SPINHASH_PARAM_CHANGED(kind, name, def, lo, hi, flag, why) \
+  if (std::memcmp(&pa.name, &pb.name, sizeof pa.name) != 0) names.push_back(std::string(stage) + "." #name);
+#define SPINHASH_STAGE_CHANGED(id, Name, what)   \
+  {                                              \
+    const char* stage = #id;                     \
+    const Name##Params &pa = a.id, &pb = b.id;   \
+    SPINHASH_PARAMS_##id(SPINHASH_PARAM_CHANGED) \
+  }
+  SPINHASH_STAGES(SPINHASH_STAGE_CHANGED)
+#undef SPINHASH_STAGE_CHANGED
+#undef SPINHASH_PARAM_CHANGED
   return names;
 }
 
 }  // namespace
 
-TEST_CASE("presets: default is RecognizerConfig{} and flight changes only its named fields") {
+TEST_CASE("presets: default and full are RecognizerConfig{} and flight changes only its named fields") {
   CHECK(changed_fields(preset_config(Preset::kDefault), RecognizerConfig{}).empty());
+  CHECK(changed_fields(preset_config(Preset::kFull), RecognizerConfig{}).empty());
   const RecognizerConfig flight = preset_config(Preset::kFlight);
-  const std::vector<std::string> expected = {"max_features",    "query_cloud_voxel", "top_w",
-                                             "max_bucket_scan", "verify_features",   "max_trials"};
+  const std::vector<std::string> expected = {"max_features",          "extract.query_cloud_voxel",
+                                             "candidates.top_w",      "candidates.max_bucket_scan",
+                                             "draws.verify_features", "draws.max_trials"};
   CHECK(changed_fields(flight, RecognizerConfig{}) == expected);
-  CHECK(flight.max_trials == kFlightMaxTrials);
-  CHECK(flight.query_cloud_voxel == kFlightQueryVoxel);
+  CHECK(flight.draws.max_trials == kFlightMaxTrials);
+  CHECK(flight.extract.query_cloud_voxel == kFlightQueryVoxel);
   CHECK(flight.max_features == kFlightMaxFeatures);
-  CHECK(flight.max_bucket_scan == kFlightMaxBucketScan);
-  CHECK(flight.top_w == kFlightTopW);
-  CHECK(flight.verify_features == kFlightVerifyFeatures);
+  CHECK(flight.candidates.max_bucket_scan == kFlightMaxBucketScan);
+  CHECK(flight.candidates.top_w == kFlightTopW);
+  CHECK(flight.draws.verify_features == kFlightVerifyFeatures);
   // Valid, and a smaller workspace than the default (fewer features).
   CHECK(required_workspace_bytes(flight) > 0);
   CHECK(required_workspace_bytes(flight) < required_workspace_bytes(RecognizerConfig{}));
@@ -53,7 +67,7 @@ TEST_CASE("presets: default is RecognizerConfig{} and flight changes only its na
 }
 
 TEST_CASE("presets: names") {
-  for (Preset p : {Preset::kDefault, Preset::kFlight}) {
+  for (Preset p : {Preset::kDefault, Preset::kFlight, Preset::kFull}) {
     Preset back = Preset::kDefault;
     CHECK(preset_from_name(preset_name(p), &back));
     CHECK(back == p);
@@ -77,5 +91,5 @@ TEST_CASE("presets: the flight preset recognises a toy model from its view") {
   REQUIRE(r.status == Status::kOk);
   REQUIRE(r.ranking_count >= 1);
   CHECK(r.ranking[0].model == m);
-  CHECK(r.stats.features <= kFlightMaxFeatures);
+  CHECK(r.stats.extract.features <= kFlightMaxFeatures);
 }

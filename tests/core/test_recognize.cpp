@@ -91,10 +91,10 @@ TEST_CASE("recognition is deterministic for a seed and reports its work") {
     CHECK(first[i].model == b.ranking[i].model);
     CHECK(first[i].score == b.ranking[i].score);
   }
-  CHECK(b.stats.features > 10);
-  CHECK(b.stats.hypotheses > 0);
-  CHECK(b.stats.doublets_passed >= b.stats.hypotheses);
-  CHECK(b.stats.pair_checks >= b.stats.doublets_passed);
+  CHECK(b.stats.extract.features > 10);
+  CHECK(b.stats.draws.hypotheses > 0);
+  CHECK(b.stats.draws.doublets_passed >= b.stats.draws.hypotheses);
+  CHECK(b.stats.draws.pair_checks >= b.stats.draws.doublets_passed);
   CHECK(b.stats.workspace_used <= s.workspace.size());
 }
 
@@ -102,14 +102,14 @@ TEST_CASE("the work budget stops recognition and says so") {
   Session s;
   REQUIRE(test::make_toy_database(&s.toy));
   RecognizerConfig cfg;
-  cfg.max_hypotheses = 3;
+  cfg.draws.max_hypotheses = 3;
   REQUIRE(s.init(cfg) == Status::kOk);
   const double t[3] = {0, 0, 0};
   std::vector<double> q = test::toy_query(test::toy_vehicle_points(0, 0.05f), 0.0, t, 0.0, 1);
   Result r = recognize_without_heap(s.recognizer, q);
   REQUIRE(r.status == Status::kOk);
-  CHECK(r.stats.budget_exhausted);
-  CHECK(r.stats.hypotheses == 3);
+  CHECK(r.stats.draws.budget_exhausted);
+  CHECK(r.stats.draws.hypotheses == 3);
 }
 
 TEST_CASE("a blob built without the nearest-feature field recognises the toys as one with it") {

@@ -5,13 +5,24 @@
 #include <cmath>
 #include <vector>
 
-#include "recognize/confidence.hpp"
 #include "recognize/sparse_search.hpp"
 #include "support/geometry_fixtures.hpp"
 
 using namespace spinhash;
 
 namespace {
+
+const RecognizerConfig kDefaults;
+const float kSparseBelow = kDefaults.candidates.sparse_density;            // object points per m^2
+const uint32_t kSparseTrialScale = kDefaults.draws.sparse_trial_scale;     // 4
+const uint32_t kSparseScanScale = kDefaults.candidates.sparse_scan_scale;  // 4
+
+// The candidates' parameters with max_bucket_scan `scan`.
+StageParams with_scan(uint32_t scan) {
+  StageParams p;
+  p.candidates.max_bucket_scan = scan;
+  return p;
+}
 
 // The top and sides of a 4.6 x 1.9 x 1.4 m car, yawed, as query features.
 std::vector<float> yawed_car(float yaw) {
@@ -38,38 +49,42 @@ TEST_CASE("footprint density: points per m^2 of the features' extent along their
     // 4.6 x 1.9 = 8.74 m^2 whatever the yaw (an axis-aligned box would grow to 4.6 x 4.6 at 45 degrees).
     CHECK(footprint_density(q, 874u) == doctest::Approx(100.0f).epsilon(0.02));
     // A survey at 10-30 points per m^2 returns 100-250 points of such a car: four times the draws.
-    CHECK(trial_scale(footprint_density(q, 200u)) == kSparseTrialScale);
+    CHECK(trial_scale(kDefaults, footprint_density(q, 200u)) == kSparseTrialScale);
     // The scans that may name a model keep the configured budget.
-    CHECK(trial_scale(footprint_density(q, 874u)) == 1u);
+    CHECK(trial_scale(kDefaults, footprint_density(q, 874u)) == 1u);
   }
-  CHECK(trial_scale(kMinModelDensity) == 1u);
-  CHECK(trial_scale(kMinModelDensity - 0.5f) == kSparseTrialScale);
+  CHECK(kSparseTrialScale == 4u);
+  CHECK(trial_scale(kDefaults, kSparseBelow) == 1u);
+  CHECK(trial_scale(kDefaults, kSparseBelow - 0.5f) == kSparseTrialScale);
   QueryFeatures none;
   CHECK(footprint_density(none, 100u) == 0.0f);
 }
 
 TEST_CASE("a sparse scan's lookups scan four times the entries, within the dense query's total") {
   constexpr uint32_t kScan = 1024, kFeatures = 1024;
-  const float sparse = kMinModelDensity - 0.5f;
+  const StageParams p = with_scan(kScan);
+  const float sparse = kSparseBelow - 0.5f;
   // Dense scans keep the configured bound, whatever their feature count.
-  CHECK(bucket_scan(kScan, kFeatures, kMinModelDensity, 200u) == kScan);
+  CHECK(bucket_scan(p, kFeatures, kSparseBelow, 200u) == kScan);
   // A sparse car's 100-300 features: four times it, the seen set's bound.
-  CHECK(sparse_bucket_scan(kScan) == kSparseScanScale * kScan);
-  CHECK(bucket_scan(kScan, kFeatures, sparse, 200u) == kSparseScanScale * kScan);
+  CHECK(kSparseScanScale == 4u);
+  CHECK(sparse_bucket_scan(p.candidates) == kSparseScanScale * kScan);
+  CHECK(bucket_scan(p, kFeatures, sparse, 200u) == kSparseScanScale * kScan);
   // Many features share max_features x max_bucket_scan, never below the configured bound.
-  CHECK(bucket_scan(kScan, kFeatures, sparse, 512u) == kFeatures * kScan / 512u);
-  CHECK(bucket_scan(kScan, kFeatures, sparse, kFeatures) == kScan);
-  CHECK(bucket_scan(kScan, kFeatures, sparse, 0u) == kScan);
-  // Up to kMaxSparseBucketScan: a small bound is scaled, a large one kept.
-  CHECK(sparse_bucket_scan(256u) == 1024u);
-  CHECK(sparse_bucket_scan(2048u) == kMaxSparseBucketScan);
-  CHECK(sparse_bucket_scan(1u << 24) == 1u << 24);
+  CHECK(bucket_scan(p, kFeatures, sparse, 512u) == kFeatures * kScan / 512u);
+  CHECK(bucket_scan(p, kFeatures, sparse, kFeatures) == kScan);
+  CHECK(bucket_scan(p, kFeatures, sparse, 0u) == kScan);
+  // Up to max_sparse_bucket_scan: a small bound is scaled, a large one kept.
+  const uint32_t most = kDefaults.candidates.max_sparse_bucket_scan;
+  CHECK(sparse_bucket_scan(with_scan(256u).candidates) == 1024u);
+  CHECK(sparse_bucket_scan(with_scan(2048u).candidates) == most);
+  CHECK(sparse_bucket_scan(with_scan(1u << 24).candidates) == 1u << 24);
   for (uint32_t scan : {1u, 100u, 512u, 1024u, 3000u, 4096u, 70000u})
     for (uint32_t n : {1u, 50u, 300u, 700u, 1024u}) {
       CAPTURE(scan);
       CAPTURE(n);
-      const uint32_t b = bucket_scan(scan, kFeatures, sparse, n);
+      const uint32_t b = bucket_scan(with_scan(scan), kFeatures, sparse, n);
       CHECK(b >= scan);
-      CHECK(b <= sparse_bucket_scan(scan));
+      CHECK(b <= sparse_bucket_scan(with_scan(scan).candidates));
     }
 }

@@ -36,7 +36,7 @@ struct Upright {
 
   Result recognize(const std::vector<double>& xyz, float max_tilt_deg) {
     RecognizerConfig cfg;
-    cfg.max_tilt_deg = max_tilt_deg;
+    cfg.draws.max_tilt_deg = max_tilt_deg;
     ws = host::AlignedBytes(required_workspace_bytes(cfg));
     Recognizer r;
     REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);
@@ -70,10 +70,10 @@ TEST_CASE_FIXTURE(Upright, "a vehicle on its side is posed on its side only when
   const Result any = recognize(on_its_side(), kAnyTilt);
   CHECK(any.ranking[0].model == kModel);
   CHECK(std::fabs(up_z(any.ranking[0].pose)) < kOnItsSide);
-  CHECK(any.stats.poses_tilted == 0u);
+  CHECK(any.stats.draws.poses_tilted == 0u);
 
-  const Result standing = recognize(on_its_side(), RecognizerConfig{}.max_tilt_deg);
-  CHECK(standing.stats.poses_tilted > 0u);
+  const Result standing = recognize(on_its_side(), RecognizerConfig{}.draws.max_tilt_deg);
+  CHECK(standing.stats.draws.poses_tilted > 0u);
   for (uint32_t k = 0; k < standing.ranking_count; ++k) {
     INFO("rank ", k, ", model ", standing.ranking[k].model);
     if (standing.ranking[k].has_pose) CHECK(up_z(standing.ranking[k].pose) >= kUprightAfterRefinement);
@@ -86,11 +86,11 @@ TEST_CASE_FIXTURE(Upright, "a standing vehicle gets the same answer from fewer v
   CHECK(any.ranking[0].model == kModel);
   // The ranking lives in the workspace, which the next recognize replaces.
   const Pose any_pose = any.ranking[0].pose;
-  const uint32_t any_hypotheses = any.stats.hypotheses;
-  const Result standing = recognize(view(), RecognizerConfig{}.max_tilt_deg);
+  const uint32_t any_hypotheses = any.stats.draws.hypotheses;
+  const Result standing = recognize(view(), RecognizerConfig{}.draws.max_tilt_deg);
   CHECK(standing.ranking[0].model == kModel);
-  CHECK(standing.stats.poses_tilted > 0u);  // flat patches pair with sides
-  CHECK(standing.stats.hypotheses < any_hypotheses);
+  CHECK(standing.stats.draws.poses_tilted > 0u);  // flat patches pair with sides
+  CHECK(standing.stats.draws.hypotheses < any_hypotheses);
   for (int a = 0; a < 3; ++a)
     CHECK(standing.ranking[0].pose.translation[a] == doctest::Approx(any_pose.translation[a]).epsilon(0.01));
   CHECK(up_z(standing.ranking[0].pose) == doctest::Approx(up_z(any_pose)).epsilon(0.01));

@@ -14,6 +14,8 @@ using namespace spinhash;
 
 namespace {
 
+const float kDamping = RefineParams{}.damping_per_match;
+
 constexpr uint32_t kModel = 1;
 constexpr float kDegree = 3.14159265f / 180.0f;
 constexpr int kRefineSteps = 6;  // further least-squares steps after the first
@@ -90,12 +92,13 @@ TEST_CASE_FIXTURE(Fixture, "refine_pose, repeated, recovers the pose from a pert
   start.translation += Eigen::Vector3f(0.04f, -0.03f, 0.03f);
   REQUIRE(angle_between(start.rotation, truth.rotation) > 1.4f * kDegree);
   RigidPose refined = start;
-  REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &refined));
+  REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &refined, nullptr, kDamping));
   CHECK(angle_between(refined.rotation, truth.rotation) <
         0.5f * angle_between(start.rotation, truth.rotation));
   CHECK((refined.translation - truth.translation).norm() <
         0.5f * (start.translation - truth.translation).norm());
-  for (int step = 0; step < kRefineSteps; ++step) REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &refined));
+  for (int step = 0; step < kRefineSteps; ++step)
+    REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &refined, nullptr, kDamping));
   CHECK(angle_between(refined.rotation, truth.rotation) < 0.05f * kDegree);
   CHECK((refined.translation - truth.translation).norm() < 1e-3f);
 }
@@ -120,8 +123,8 @@ TEST_CASE_FIXTURE(Fixture,
   CHECK(matched == v.inliers);
   CHECK(matched < q.view.count);
   RigidPose searched = start, reused = start;
-  REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &searched));
-  REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &reused, matches.data()));
+  REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &searched, nullptr, kDamping));
+  REQUIRE(refine_pose(toy.db, kModel, q.view, lp, &reused, matches.data(), kDamping));
   CHECK(reused.rotation == searched.rotation);  // bit for bit: the same sums in the same order
   CHECK(reused.translation == searched.translation);
 }
@@ -130,7 +133,7 @@ TEST_CASE_FIXTURE(Fixture, "refine_pose keeps a pose that matches too few featur
   RigidPose far = truth;
   far.translation += Eigen::Vector3f(500.0f, 0.0f, 0.0f);
   RigidPose kept = far;
-  CHECK_FALSE(refine_pose(toy.db, kModel, q.view, lp, &kept));
+  CHECK_FALSE(refine_pose(toy.db, kModel, q.view, lp, &kept, nullptr, kDamping));
   CHECK(kept.translation == far.translation);
 }
 
@@ -139,8 +142,9 @@ TEST_CASE_FIXTURE(
   const LikelihoodParams surface = make_surface_params(cfg, toy.db);
   REQUIRE_FALSE(surface.use_field);
   CHECK(surface.surface_patch_radius ==
-        doctest::Approx(kPatchRadiusPerSpacing * toy.db.params().basis_spacing));
-  CHECK(surface.inv_two_sigma2 == doctest::Approx(1.0f / (2.0f * cfg.sigma_surface * cfg.sigma_surface)));
+        doctest::Approx(cfg.refine.patch_radius_per_spacing * toy.db.params().basis_spacing));
+  CHECK(surface.inv_two_sigma2 ==
+        doctest::Approx(1.0f / (2.0f * cfg.refine.sigma_surface * cfg.refine.sigma_surface)));
   CHECK(surface.floor == lp.floor);  // an unexplained feature costs what it cost in the hypothesis loop
   const uint32_t f = toy.db.model(kModel).first_feature;
   const Eigen::Vector3f p = Eigen::Map<const Eigen::Vector3f>(toy.db.positions() + 3u * f);
@@ -192,7 +196,7 @@ TEST_CASE_FIXTURE(Fixture, "refine_pose on one flat face corrects across it and 
   RigidPose start = truth;
   start.translation += truth.rotation * Eigen::Vector3f(0.0f, 0.0f, 0.06f);  // 6 cm above the roof
   RigidPose refined = start;
-  REQUIRE(refine_pose(toy.db, kModel, top.view, lp, &refined));
+  REQUIRE(refine_pose(toy.db, kModel, top.view, lp, &refined, nullptr, kDamping));
   const Eigen::Vector3f moved = rt * (refined.translation - start.translation);
   CHECK(moved.z() == doctest::Approx(-0.06f).epsilon(0.1));  // down onto the roof
   CHECK(std::abs(moved.x()) < 0.01f);                        // not along it
@@ -220,7 +224,8 @@ TEST_CASE_FIXTURE(
   const float right =
       verify_pose(toy.db, kModel, truth, q.view, surface, kNoScoreToBeat, kNoScoreToBeat).log_likelihood;
   RigidPose refined = turned;
-  for (int step = 0; step < kRefineSteps; ++step) refine_pose(toy.db, kModel, q.view, surface, &refined);
+  for (int step = 0; step < kRefineSteps; ++step)
+    refine_pose(toy.db, kModel, q.view, surface, &refined, nullptr, kDamping);
   CHECK(angle_between(refined.rotation, truth.rotation) > 90.0f * kDegree);
   const float stuck =
       verify_pose(toy.db, kModel, refined, q.view, surface, kNoScoreToBeat, kNoScoreToBeat).log_likelihood;

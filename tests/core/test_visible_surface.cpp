@@ -97,11 +97,11 @@ TEST_CASE_FIXTURE(LookAlikes, "surface_coverage: the share of the first model's 
     const Result all = recognize(whole, seed, true);
     REQUIRE(all.ranking_count > 0);
     CHECK(all.ranking[0].model == kTruck);
-    CHECK(all.stats.surface_coverage >= 0.9f);
+    CHECK(all.stats.confidence.surface_coverage >= 0.9f);
     const Result part = recognize(middle_hidden, seed, true);
     REQUIRE(part.ranking_count > 0);
     CHECK(part.ranking[0].model == kTruck);
-    CHECK(part.stats.surface_coverage <= 0.75f);
-    CHECK(part.stats.surface_coverage >= 0.45f);
+    CHECK(part.stats.confidence.surface_coverage <= 0.75f);
+    CHECK(part.stats.confidence.surface_coverage >= 0.45f);
   }
 }

@@ -25,6 +25,9 @@ struct WorkspaceThreshold {
 };
 // Pointer-sized members make 64-bit layouts larger than 32-bit ones, and a
 // SceneObject's 8-byte aligned statistics pad differently on 32-bit ABIs.
+// The scene's figures hold a recognizer (its config and workspace) and 256
+// SceneObjects, each with its class ranking and its recognition's
+// statistics, so a statistic or a stage parameter moves them.
 constexpr WorkspaceThreshold kThreshold64 = {6451936, 5622016, 53140832, 44648280};
 constexpr WorkspaceThreshold kThreshold32 = {6451776, 5621856, 31005040, 44621136};
 // Padding and alignment may move a few bytes between ABIs of one pointer size

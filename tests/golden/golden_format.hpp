@@ -28,8 +28,8 @@ struct GoldenQuery {
   uint32_t first_point;  // index of its first xyz triple in golden_queries.i16
   uint32_t point_count;
   Mode mode;
-  uint32_t features;    // stats.features
-  uint32_t hypotheses;  // stats.hypotheses
+  uint32_t features;    // stats.extract.features
+  uint32_t hypotheses;  // stats.draws.hypotheses
   bool budget_exhausted;
   uint32_t ranking_count;
   GoldenEntry ranking[kMaxGoldenRanked];  // the first min(ranking_count, kMaxGoldenRanked)
@@ -54,7 +54,7 @@ inline RecognizerConfig golden_config(Mode mode) {
   c.seed = 7;
   c.max_points = 8192;
   c.max_models = 16;
-  c.max_hypotheses = kGoldenMaxHypotheses;
+  c.draws.max_hypotheses = kGoldenMaxHypotheses;
   return c;
 }
 

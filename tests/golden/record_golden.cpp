@@ -112,9 +112,9 @@ bool record(const std::string& dir) {
     g.first_point = next_point;
     g.point_count = static_cast<uint32_t>(pts.size() / 3);
     g.mode = q.mode;
-    g.features = r.stats.features;
-    g.hypotheses = r.stats.hypotheses;
-    g.budget_exhausted = r.stats.budget_exhausted;
+    g.features = r.stats.extract.features;
+    g.hypotheses = r.stats.draws.hypotheses;
+    g.budget_exhausted = r.stats.draws.budget_exhausted;
     g.ranking_count = r.ranking_count;
     for (uint32_t i = 0; i < r.ranking_count && i < golden::kMaxGoldenRanked; ++i)
       g.ranking[i] = golden::GoldenEntry{r.ranking[i].model, r.ranking[i].score};
@@ -125,7 +125,7 @@ bool record(const std::string& dir) {
     next_point += g.point_count;
     std::printf("query %zu: model %u mode %d -> top %u score %g, %u hypotheses\n", expected.size() - 1,
                 q.model, static_cast<int>(q.mode), r.ranking[0].model,
-                static_cast<double>(r.ranking[0].score), r.stats.hypotheses);
+                static_cast<double>(r.ranking[0].score), r.stats.draws.hypotheses);
   }
   if (!write_bytes(dir + "/golden_queries.i16", query_bytes)) return false;
   // The first query alone, for the C example (examples/c/recognize_blob.c).

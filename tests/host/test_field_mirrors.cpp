@@ -1,7 +1,8 @@
 // The command line and the documentation against the lists they mirror:
-// spinhash/config_fields.h (every recognizer field has its flag in
-// `recognize --help` and in docs/cli.md, every statistic its JSON key
-// there), spinhash/scene_fields.h (the scene's flags in `scene --help`,
+// spinhash/config_fields.h and stage_fields.h (every recognizer field with a
+// flag has it in `recognize --help` and in docs/cli.md, every stage's
+// fields are its table in docs/api.md, every statistic its JSON key in
+// docs/cli.md), spinhash/scene_fields.h (the scene's flags in `scene --help`,
 // `survey --help` and docs/cli.md; the settings tables of docs/api.md; the
 // keys of `scene`'s lines), spinhash/status_list.h (the status table of
 // docs/api.md), and the folders of the tree (README's folder table).
@@ -15,6 +16,7 @@
 
 #include "cli/report_keys.hpp"
 #include "cli_runner.hpp"
+#include "config/field_table.hpp"
 #include "spinhash/config_fields.h"
 #include "spinhash/limits.hpp"
 #include "spinhash/scene_fields.h"
@@ -129,26 +131,63 @@ bool git_ignores(const std::string& relative) {
 
 }  // namespace
 
-TEST_CASE("every configuration field has its flag in --help and in docs/cli.md") {
+TEST_CASE("every configuration field's flag is in --help and in docs/cli.md, and --set is") {
   const spinhash::host::test::TempDir dir("field-mirrors");
   const spinhash::host::test::CliRun help = spinhash::host::test::run_spinhash(dir, "recognize --help");
   REQUIRE(help.exit_code == 0);
   const std::string docs = read_bytes(SPINHASH_SOURCE_DIR "/docs/cli.md");
   REQUIRE_FALSE(docs.empty());
   int flags = 0;
-#define SPINHASH_FLAG_DOCUMENTED(kind, name, lo, hi, flag, help_text) \
-  if (*(flag) != '\0') {                                              \
-    INFO("field " #name ", flag " flag);                              \
-    CHECK(help.out.find(long_flag(flag)) != std::string::npos);       \
-    CHECK(docs.find("`" + long_flag(flag)) != std::string::npos);     \
-    ++flags;                                                          \
-  } else {                                                            \
-    INFO("field " #name " has no flag of its own");                   \
-    CHECK(std::string(help_text).rfind("set by --", 0) == 0);         \
+  for (const spinhash::host::ConfigField& f : spinhash::host::config_fields()) {
+    if (*f.flag != '\0') {
+      INFO("field ", f.key(), ", flag ", f.flag);
+      CHECK(help.out.find(long_flag(f.flag)) != std::string::npos);
+      CHECK(docs.find("`" + long_flag(f.flag)) != std::string::npos);
+      ++flags;
+    } else if (*f.stage == '\0') {  // a top-level field: set through another option, which its help names
+      INFO("field ", f.key(), " has no flag of its own");
+      CHECK(std::string(f.help).rfind("set by --", 0) == 0);
+    }  // a stage's field without a flag: --set (test_config_assign.cpp)
   }
-  SPINHASH_CONFIG_FIELDS(SPINHASH_FLAG_DOCUMENTED)
-#undef SPINHASH_FLAG_DOCUMENTED
   CHECK(flags > 30);
+  CHECK(help.out.find("--set") != std::string::npos);
+  CHECK(docs.find("`--set") != std::string::npos);
+  for (const char* command : {"scene --help", "survey --help", "verify --help"}) {
+    INFO(command);
+    CHECK(spinhash::host::test::run_spinhash(dir, command).out.find("--set") != std::string::npos);
+  }
+}
+
+TEST_CASE("the stage tables of docs/api.md are stage_fields.h: names, defaults, ranges, flags, why") {
+  const std::string docs = read_bytes(SPINHASH_SOURCE_DIR "/docs/api.md");
+  const RecognizerConfig defaults;
+  for (const std::string& stage : spinhash::host::stage_ids()) {
+    INFO("stage ", stage);
+    const auto rows = table_rows(docs, "`" + stage + ".` field");
+    size_t k = 0;
+    for (const spinhash::host::ConfigField& f : spinhash::host::config_fields()) {
+      if (f.stage != stage) continue;
+      INFO("field ", f.key());
+      REQUIRE(k < rows.size());
+      const auto& row = rows[k++];
+      REQUIRE(row.size() == 5u);
+      CHECK(row[0] == "`" + std::string(f.name) + "`");
+      using spinhash::host::FieldKind;
+      if (f.kind == FieldKind::BOOL) {
+        CHECK(same_default(row[1], f.in<bool>(defaults)));
+        CHECK(same_range(row[2], 0, 1, false));
+      } else if (f.kind == FieldKind::U32) {
+        CHECK(same_default(row[1], f.in<uint32_t>(defaults)));
+        CHECK(same_range(row[2], static_cast<double>(f.lo), static_cast<double>(f.hi), true));
+      } else {
+        CHECK(same_default(row[1], f.in<float>(defaults)));
+        CHECK(same_range(row[2], static_cast<float>(f.lo), static_cast<float>(f.hi), true));
+      }
+      CHECK(row[3] == (*f.flag != '\0' ? "`" + long_flag(f.flag) + "`" : std::string()));
+      CHECK(row[4] == f.help);
+    }
+    CHECK(k == rows.size());
+  }
 }
 
 TEST_CASE("every statistic has its JSON key in docs/cli.md") {

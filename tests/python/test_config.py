@@ -1,5 +1,6 @@
-"""spinhash.Config mirrors SPINHASH_CONFIG_FIELDS (include/spinhash/config_fields.h):
-every field is an attribute and a keyword argument, with the core's range."""
+"""spinhash.Config mirrors SPINHASH_CONFIG_FIELDS (include/spinhash/config_fields.h)
+and each stage's SPINHASH_PARAMS_<id> (stage_fields.h): every field is an
+attribute and a keyword argument, with the core's range."""
 import math
 import re
 
@@ -9,20 +10,40 @@ import spinhash
 from conftest import SOURCE_DIR, json_lines, run_cli
 
 FIELDS_HEADER = SOURCE_DIR / "include" / "spinhash" / "config_fields.h"
+STAGES_HEADER = SOURCE_DIR / "include" / "spinhash" / "stage_fields.h"
 
 
-def header_entries(macro, letter):
-    """(kind, name, rest) of each entry of one X-macro list of config_fields.h."""
-    text = FIELDS_HEADER.read_text()
+def header_entries(macro, letter, header=FIELDS_HEADER):
+    """(kind, name, rest) of each entry of one X-macro list of config_fields.h (or `header`)."""
+    text = header.read_text()
     body = text[text.index(f"#define {macro}("):]
     body = body[:body.index("\n\n")]
     return re.findall(rf"\b{letter}\((\w+), (\w+),([^\n]*)", body)
 
 
+def config_entries():
+    """(kind, Python name, rest) of every field: the top-level list, then each stage's in run order
+    (a stage's switch, `enabled`, is <stage>_enabled in Python)."""
+    entries = header_entries("SPINHASH_CONFIG_FIELDS", "X")
+    for stage, _, _ in header_entries("SPINHASH_STAGES", "S", STAGES_HEADER):
+        for kind, name, rest in header_entries(f"SPINHASH_PARAMS_{stage}", "X", STAGES_HEADER):
+            entries.append((kind, f"{stage}_enabled" if name == "enabled" else name, rest))
+    return entries
+
+
 def test_every_config_field_and_only_those():
-    names = [name for _, name, _ in header_entries("SPINHASH_CONFIG_FIELDS", "X")]
-    assert len(names) >= 30
+    names = [name for _, name, _ in config_entries()]
+    assert len(names) >= 100
     assert list(spinhash.Config.fields) == names
+    assert len(set(names)) == len(names)
+
+
+def test_a_stage_field_also_goes_by_its_key():
+    config = spinhash.Config(**{"draws.max_trials": 800, "focus.enabled": False})
+    assert config.max_trials == 800 and not config.focus_enabled
+    assert spinhash.Config.keys["max_trials"] == "draws.max_trials"
+    assert spinhash.Config.keys["focus_enabled"] == "focus.enabled"
+    assert spinhash.Config.keys["seed"] == "seed"
 
 
 def test_every_stats_field_under_its_json_key(fleet, truck_query):
@@ -148,7 +169,7 @@ def test_defaults_and_ranges_are_the_clis():
     """Each numeric flag of `spinhash recognize --help` shows the module's range and default."""
     help_text = run_cli("recognize", "--help")
     checked = 0
-    for kind, name, rest in header_entries("SPINHASH_CONFIG_FIELDS", "X"):
+    for kind, name, rest in config_entries():
         flag = re.search(r'"(?:-\w,)?(--[\w-]+)"', rest)
         if kind not in ("U32", "U64", "F32") or not flag:
             continue

@@ -1,5 +1,5 @@
 // Databases of many copies of one toy vehicle, whose query features'
-// candidates spread over the copies (stats.candidates_spread), and the view
+// candidates spread over the copies (stats.candidates.spread), and the view
 // of that toy the spread tests recognise.
 #pragma once
 #include <cstdint>

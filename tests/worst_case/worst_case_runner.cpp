@@ -122,16 +122,18 @@ int recognise(const Database& db, const float* xyz, uint32_t count, const char* 
   std::printf(
       "%s: status=%s points=%u features=%u trials=%u pair_checks=%llu hypotheses=%u poses_tilted=%llu "
       "bucket_entries=%llu bucket_scan_truncated=%d budget_exhausted=%d\n",
-      name, status_name(r.status), count, s.features, s.trials,
-      static_cast<unsigned long long>(s.pair_checks), s.hypotheses,
-      static_cast<unsigned long long>(s.poses_tilted), static_cast<unsigned long long>(s.bucket_entries),
-      s.bucket_scan_truncated ? 1 : 0, s.budget_exhausted ? 1 : 0);
+      name, status_name(r.status), count, s.extract.features, s.draws.trials,
+      static_cast<unsigned long long>(s.draws.pair_checks), s.draws.hypotheses,
+      static_cast<unsigned long long>(s.draws.poses_tilted),
+      static_cast<unsigned long long>(s.candidates.bucket_entries),
+      s.candidates.bucket_scan_truncated ? 1 : 0, s.draws.budget_exhausted ? 1 : 0);
   if (r.status != Status::kOk) return fail(std::string(name) + ": not recognised");
   // The hypothesis budget counts the poses found, tilted ones too (max_tilt_deg).
-  const bool cap_reached = s.poses_found() >= cfg.max_hypotheses || s.pair_checks >= cfg.max_pair_checks;
-  if (cap_reached != s.budget_exhausted)
+  const bool cap_reached =
+      s.draws.poses_found() >= cfg.draws.max_hypotheses || s.draws.pair_checks >= cfg.draws.max_pair_checks;
+  if (cap_reached != s.draws.budget_exhausted)
     return fail(std::string(name) + ": budget flag disagrees with the stats");
-  if (must_exhaust && !s.budget_exhausted)
+  if (must_exhaust && !s.draws.budget_exhausted)
     return fail(std::string(name) + ": worst case did not reach the budget");
   return 0;
 }
@@ -192,8 +194,8 @@ int query(const std::string& db_path, const std::string& cloud_path, const std::
   spinhash_bench_end();
   if (r.status != Status::kOk || r.ranking_count == 0)
     return fail(std::string("query: ") + status_name(r.status));
-  std::printf("top=%s hypotheses=%u features=%u\n", db.model(r.ranking[0].model).name, r.stats.hypotheses,
-              r.stats.features);
+  std::printf("top=%s hypotheses=%u features=%u\n", db.model(r.ranking[0].model).name,
+              r.stats.draws.hypotheses, r.stats.extract.features);
   return 0;
 }
 
@@ -230,6 +232,6 @@ int main(int argc, char** argv) {
     return golden_queries(argv[2], argc == 4 ? std::atoi(argv[3]) : -1);
   std::fprintf(stderr,
                "usage: worst_case_runner prepare DIR | run DIR CASE | golden GOLDEN_DIR [INDEX] | "
-               "query DB.shdb CLOUD.f64 MODE [FIELD=VALUE...]\n");
+               "query DB.shdb CLOUD.f64 MODE [KEY=VALUE...]\n");
   return 2;
 }

@@ -6,9 +6,9 @@
 
 #include "spinhash/config.hpp"
 
-namespace spinhash::pipeline {
+namespace spinhash::host {
 
 const std::map<std::string, Mode>& mode_names();
 const char* mode_name(Mode m);  // "?" for a value out of range
 
-}  // namespace spinhash::pipeline
+}  // namespace spinhash::host

@@ -1,6 +1,6 @@
-#include "pipeline/mode_name.hpp"
+#include "config/mode_name.hpp"
 
-namespace spinhash::pipeline {
+namespace spinhash::host {
 
 const std::map<std::string, Mode>& mode_names() {
   static const std::map<std::string, Mode> names{
@@ -14,4 +14,4 @@ const char* mode_name(Mode m) {
   return "?";
 }
 
-}  // namespace spinhash::pipeline
+}  // namespace spinhash::host

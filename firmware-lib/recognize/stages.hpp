@@ -1,0 +1,36 @@
+// The recognizer's stages (stage_fields.h, SPINHASH_STAGES), run in order
+// over one SearchContext: a pass. Each stage reads its parameters from the
+// pass's config (ctx.params.<id>), counts in its block of the statistics
+// (stats.<id>) and may stop the pass with a status (the ground and extract
+// stages, on a cloud without enough features). A stage with an `enabled`
+// field is skipped when it is false. The list is fixed at compile time, a
+// bounded, deterministic op list, and each stage is called directly (no
+// function pointers), so that the static call graph, and the stack budget
+// measured from it, sees every stage.
+#pragma once
+#include <cstdint>
+
+#include "recognize/search_context.hpp"
+
+namespace spinhash {
+
+enum class StageId : uint8_t {
+#define SPINHASH_STAGE_ID(id, Name, what) id,
+  SPINHASH_STAGES(SPINHASH_STAGE_ID)
+#undef SPINHASH_STAGE_ID
+};
+
+// Every stage's id in run order, and its name (the id, as `--set` spells it).
+extern const StageId kStageOrder[];
+extern const uint32_t kStageCount;
+const char* stage_name(StageId id);
+
+// false when `params` switch the stage off (its `enabled` field).
+bool stage_enabled(StageId id, const StageParams& params);
+// Runs one stage.
+Status run_stage(StageId id, SearchContext& ctx);
+// Runs the enabled stages of ctx.params in order; the first status other
+// than kOk ends the pass and is returned.
+Status run_stages(SearchContext& ctx);
+
+}  // namespace spinhash
