@@ -243,8 +243,8 @@ int run(const char* db_path, int files, char** paths) {
     const double decode = decode_seconds(path, &points);
     for (double& s : g_seconds) s = 0.0;
     pipeline::TileStreamOptions options;
-    options.scene.max_tile_points = 0;                 // sized from the density, as `spinhash scene`
-    options.scene.recognizer.ground_clearance = 0.0f;  // the terrain takes the ground
+    options.scene.max_tile_points = 0;                        // sized from the density, as `spinhash scene`
+    options.scene.recognizer.ground.ground_clearance = 0.0f;  // the terrain takes the ground
     uint64_t objects = 0, vehicles = 0;
     const double t0 = thread_seconds();
     auto source = host::open_point_source(path);

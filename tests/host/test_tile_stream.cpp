@@ -149,7 +149,7 @@ TEST_CASE("tile stream: chunks of any size and order give the whole tile's objec
 
   SceneConfig config;
   config.max_tile_points = 0;
-  config.recognizer.ground_clearance = 0.0f;
+  config.recognizer.ground.ground_clearance = 0.0f;
   auto run = [&](const std::vector<double>& points, size_t chunk) {
     pipeline::SceneSession session;
     REQUIRE(session.init(&db.db, config, &error));
