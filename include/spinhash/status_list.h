@@ -86,6 +86,9 @@
   X(kWindowOverflow, 46, WINDOW_OVERFLOW, "window_overflow",                                                \
     "a scene window held more points than its capacity")                                                    \
   /* points pushed after flush(): refused (counted); reset() starts a new line */                           \
-  X(kStreamFlushed, 47, STREAM_FLUSHED, "stream_flushed", "points pushed after the stream was flushed")
+  X(kStreamFlushed, 47, STREAM_FLUSHED, "stream_flushed", "points pushed after the stream was flushed")     \
+  /* SceneStream: points more than max_lag behind the furthest pushed came after their windows (dropped,    \
+     counted in points_late): order them along track first */                                               \
+  X(kPointsLate, 48, POINTS_LATE, "points_late", "points came after their windows ran (out of order)")
 
 #endif /* SPINHASH_STATUS_LIST_H */
