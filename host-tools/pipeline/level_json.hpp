@@ -22,7 +22,7 @@ constexpr const char* kModel = "model";                 // that model
 // calibrated level (answer_levels.h) its flag and evidence
 constexpr const char* kLevels = "levels";
 constexpr const char* kConfident = "confident";
-constexpr const char* kEvidence = "evidence";  // null when a prerequisite of the level failed
+constexpr const char* kEvidence = "evidence";  // null when not finite (failed prerequisite, or unopposed)
 // the most specific confident level whose coarser levels are confident and
 // consistent: "vehicle", "group", "class", "model", or "none"
 constexpr const char* kLevel = "level";
