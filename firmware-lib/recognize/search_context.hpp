@@ -10,6 +10,7 @@
 #include "spinhash/features.hpp"
 #include "spinhash/internal/lsh_search.hpp"
 #include "spinhash/recognizer.hpp"
+#include "spinhash/vehicle_class.hpp"
 #include "util/rng.hpp"
 
 namespace spinhash {
@@ -46,6 +47,7 @@ struct RecognizerBuffers {
   CellGrid feature_grid;                    // the query features (visible_surface.cpp)
   ResidualSample* residuals = nullptr;      // max_features (residual_structure.cpp)
   RankedClass classes[kVehicleClassCount];  // Result::class_ranking
+  RankedGroup groups[kVehicleGroupCount];   // Result::group_ranking
 };
 
 // The leading model as BRAN's stop on evidence follows it (evidence_stop.cpp).
