@@ -8,7 +8,7 @@ struct Expected {
   uint32_t id;
   const char* name;
   uint64_t elements;  // what the params call for
-  size_t actual;      // what the vector holds
+  uint64_t actual;    // what the vector holds
   uint64_t element_bytes;
 };
 
