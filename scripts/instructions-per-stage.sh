@@ -8,7 +8,7 @@
 #   scripts/instructions-per-stage.sh [--sizes 17,56,1000] [--queries 3] [--spacings 0.05,0.10]
 #       [--out DIR] [--spinhash BIN] [--jobs N] [--check] [--reuse]
 #
-# Stages: features (FeatureExtractor::extract), lsh (LshSearcher::search),
+# Stages: features (extract_stage: the cloud, normals and spin images), lsh (LshSearcher::search),
 # verification (verify_pose, hypotheses and finalisation alike, with its
 # nearest-feature lookups), rest (the total less those: doublets, poses,
 # ranking, refinement's least squares). Writes DIR/stages.csv (out/stages) and prints,
