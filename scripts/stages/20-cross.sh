@@ -7,7 +7,7 @@
 # builds the toy database in-process and runs dozens of recognitions) and the
 # float-heavy suites labelled "emulation-slow", which take minutes each under
 # QEMU (powerpc floating point is emulated about 5x slower than aarch64) and
-# run natively, under the sanitizers and on aarch64. What the 32-bit and
+# run on aarch64 and, on the host, under the sanitizers. What the 32-bit and
 # big-endian builds must prove stays on them: the golden vectors (the same
 # recognition path), the blob in its byte order, the kernels, the C example.
 # Builds in build-cross-<target>.
