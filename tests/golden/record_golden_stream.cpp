@@ -5,7 +5,6 @@
 // them see them too.
 #include "golden/record_golden_stream.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>

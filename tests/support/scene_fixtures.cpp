@@ -129,7 +129,10 @@ std::vector<double> in_scan_order(const Tile& tile, int axis, const double offse
   std::vector<double> xyz;
   xyz.reserve(3 * n);
   for (size_t i : order)
-    for (int k = 0; k < 3; ++k) xyz.push_back(tile.xyz[3 * i + k] + (offset != nullptr ? offset[k] : 0.0));
+    for (int k = 0; k < 3; ++k) {
+      const double v = tile.xyz[3 * i + k];
+      xyz.push_back(offset != nullptr ? v + offset[k] : v);
+    }
   return xyz;
 }
 

@@ -13,7 +13,6 @@
 // qemu-user. The link wraps the three stages (-Wl,--wrap, tests/CMakeLists.txt)
 // so that each call runs between markers of its own: the plugin counts a
 // stage's instructions where callgrind gives its inclusive count.
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
