@@ -1,12 +1,23 @@
 // Workspace carving and Recognizer::run: the cloud loaded, then the stages
-// (stages.hpp).
+// (stages.hpp), in one pass or in the cascade's two.
+//
+// The cascade: the first pass runs the stages at the first_* settings (the
+// flight preset's); a confident answer ends the query. Otherwise the full
+// pass runs at the config's own settings in the same buffers (the
+// workspace is carved for the full pass; the first uses a part of each),
+// starting from the first pass's leading poses (carry.hpp). The first
+// pass's spin images overwrite its loaded points, so the full pass loads
+// the cloud again; its features are its own (another voxel, more of them).
 #include <new>
 
+#include "recognize/carry.hpp"
 #include "recognize/config_check.hpp"
 #include "recognize/search_context.hpp"
 #include "recognize/sparse_search.hpp"
 #include "recognize/stages.hpp"
+#include "recognize/work_meter.hpp"
 #include "spinhash/limits.hpp"
+#include "spinhash/presets.hpp"
 #include "spinhash/recognizer.hpp"
 
 namespace spinhash {
@@ -78,6 +89,7 @@ Status Recognizer::init(const Database* db, const RecognizerConfig& config, void
   new (b) RecognizerBuffers();
   Status s = carve(arena, config, db->feature_params(), *b);
   if (s != Status::kOk) return s;
+  apply_first_pass(config, &b->first_pass);
   db_ = db;
   config_ = config;
   used_bytes_ = arena.used();
@@ -103,6 +115,25 @@ Result Recognizer::recognize(const double* xyz, uint32_t count) noexcept {
   return run(cloud, ObjectTerrain{});
 }
 
+void Recognizer::run_pass(const CloudView& cloud, const ObjectTerrain& terrain, const RecognizerConfig& pass,
+                          uint64_t work_before, Result* result) noexcept {
+  RecognizerBuffers& b = *buffers_;
+  result->stats.workspace_used = used_bytes_;
+  SearchContext ctx(*db_, pass, b, *result);
+  ctx.terrain = terrain;
+  ctx.work_before = work_before;
+  result->status = b.extractor.load(cloud, &ctx.features, &result->stats.extract);
+  if (result->status == Status::kOk) result->status = run_stages(ctx);
+  CascadeStats& c = result->stats.cascade;
+  c.work = work_before + pass_work(result->stats, pass);
+  c.work_capped = result->status == Status::kWorkCapReached;
+  if (c.work_capped) {  // a partial search: its answer is never flagged
+    result->confident = false;
+    result->class_confident = false;
+  }
+  keep_leading_poses(ctx);
+}
+
 Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noexcept {
   Result result;
   if (buffers_ == nullptr) return result;  // kNotOpen
@@ -111,12 +142,27 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
     return result;
   }
   RecognizerBuffers& b = *buffers_;
-  result.stats.workspace_used = used_bytes_;
-  SearchContext ctx(*db_, config_, b, result);
-  ctx.terrain = terrain;
-  result.status = b.extractor.load(cloud, &ctx.features, &result.stats.extract);
-  if (result.status != Status::kOk) return result;
-  result.status = run_stages(ctx);
+  b.carried_count = 0;
+  uint64_t first_work = 0;
+  if (config_.cascade) {
+    run_pass(cloud, terrain, b.first_pass, 0, &result);
+    first_work = result.stats.cascade.work;
+    const bool answered =
+        (result.status == Status::kOk && result.confident) || result.status == Status::kWorkCapReached;
+    if (answered) {
+      result.stats.cascade.passes = 1;
+      result.stats.cascade.answered_by = 0;
+      result.stats.cascade.first_work = first_work;
+      return result;
+    }
+    result = Result{};
+  }
+  run_pass(cloud, terrain, config_, first_work, &result);
+  CascadeStats& c = result.stats.cascade;
+  c.passes = config_.cascade ? 2u : 1u;
+  c.answered_by = 1;
+  c.first_work = first_work;
+  c.full_work = c.work - first_work;
   return result;
 }
 

@@ -82,14 +82,31 @@ struct ConfidenceStats {
   float scan_density = 0.0f;
 };
 
+struct CarryStats {
+  uint32_t carried = 0;  // first-pass poses verified on the full pass's features
+};
+// The cascade (RecognizerConfig::cascade): the stage blocks above count the
+// pass that answered; this one, every pass's work (work units,
+// firmware-lib/recognize/work_meter.hpp).
+struct CascadeStats {
+  uint32_t passes = 0;       // passes run: 1, or 2 when the first pass was not confident
+  uint32_t answered_by = 0;  // the pass that answered: 0 the first (flight), 1 the full
+  uint64_t first_work = 0;   // work of the first pass (0 when the cascade is off)
+  uint64_t full_work = 0;    // work of the full pass (0 when the first pass answered)
+  uint64_t work = 0;         // the query's total, which RecognizerConfig::max_work caps
+  bool work_capped = false;  // max_work was reached (Status::kWorkCapReached)
+};
+
 struct RecognitionStats {
   ExtractStats extract;
   GroundStats ground;
   CandidatesStats candidates;
+  CarryStats carry;
   DrawsStats draws;
   TransferStats transfer;
   RefineStats refine;
   ConfidenceStats confidence;
+  CascadeStats cascade;
   size_t workspace_used = 0;
 };
 
@@ -144,6 +161,10 @@ class Recognizer {
 
  private:
   Result run(const CloudView& cloud, const ObjectTerrain& terrain) noexcept;
+  // One pass of the stages with `pass`'s settings; `work_before`: what the
+  // earlier passes spent (the cap counts the query's total).
+  void run_pass(const CloudView& cloud, const ObjectTerrain& terrain, const RecognizerConfig& pass,
+                uint64_t work_before, Result* result) noexcept;
 
   const Database* db_ = nullptr;
   RecognizerConfig config_{};

@@ -105,7 +105,9 @@ static_assert(member_count<TransferStats>() == listed_stats("transfer."),
 static_assert(member_count<RefineStats>() == listed_stats("refine."), "RefineStats and refine.* differ");
 static_assert(member_count<ConfidenceStats>() == listed_stats("confidence."),
               "ConfidenceStats and confidence.* differ");
-static_assert(member_count<RecognitionStats>() == listed_stats("") + 7u,
+static_assert(member_count<CarryStats>() == listed_stats("carry."), "CarryStats and carry.* differ");
+static_assert(member_count<CascadeStats>() == listed_stats("cascade."), "CascadeStats and cascade.* differ");
+static_assert(member_count<RecognitionStats>() == listed_stats("") + 9u,
               "RecognitionStats and SPINHASH_STATS_FIELDS (config_fields.h) list different fields");
 
 // Each stage's struct has exactly its list's fields, of the list's types,

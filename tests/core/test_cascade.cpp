@@ -1,0 +1,141 @@
+// The cascade (RecognizerConfig::cascade, recognizer.cpp): a clear view is
+// answered by the first pass alone; an unsure one goes on to the full pass,
+// which is the full preset's own pass plus the first pass's carried poses;
+// the work cap stops a query with its best answer so far.
+#include <doctest/doctest.h>
+
+#include <vector>
+
+#include "blob/aligned_bytes.hpp"
+#include "recognize/work_meter.hpp"
+#include "spinhash/presets.hpp"
+#include "spinhash/recognizer.hpp"
+#include "support/toy_database.hpp"
+
+using namespace spinhash;
+
+namespace {
+
+struct Run {
+  Result result;
+  std::vector<uint32_t> models;
+  std::vector<float> scores;
+};
+
+// Recognises toy model `m`'s noisy view under `cfg`; the ranking copied out
+// of the workspace.
+Run recognize_toy(const test::ToyDatabase& toy, const RecognizerConfig& cfg, uint32_t m,
+                  double noise = 0.03) {
+  host::AlignedBytes workspace(required_workspace_bytes(cfg));
+  Recognizer recognizer;
+  REQUIRE(recognizer.init(&toy.db, cfg, workspace.data(), workspace.size()) == Status::kOk);
+  const double t[3] = {431000.5, 4020000.25, 87.0};
+  const std::vector<double> q = test::toy_query(test::toy_vehicle_points(m, 0.05f), 0.4 + m, t, noise, m + 1);
+  Run run;
+  run.result = recognizer.recognize(q.data(), static_cast<uint32_t>(q.size() / 3));
+  for (uint32_t i = 0; i < run.result.ranking_count; ++i) {
+    run.models.push_back(run.result.ranking[i].model);
+    run.scores.push_back(run.result.ranking[i].score);
+  }
+  return run;
+}
+
+}  // namespace
+
+TEST_CASE("cascade: a clear view is answered confidently by the first pass alone, as the flight preset") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  const uint32_t m = 1;
+  const Run cascade = recognize_toy(toy, RecognizerConfig{}, m);
+  REQUIRE(cascade.result.status == Status::kOk);
+  REQUIRE(cascade.result.ranking_count >= 1);
+  CHECK(cascade.result.ranking[0].model == m);
+  CHECK(cascade.result.confident);
+  const CascadeStats& c = cascade.result.stats.cascade;
+  CHECK(c.passes == 1u);
+  CHECK(c.answered_by == 0u);
+  CHECK(c.first_work > 0u);
+  CHECK(c.full_work == 0u);
+  CHECK(c.work == c.first_work);
+  CHECK(cascade.result.stats.extract.features <= kFlightMaxFeatures);
+  // The first pass is the flight preset's recognition, answer for answer.
+  const Run flight = recognize_toy(toy, preset_config(Preset::kFlight), m);
+  CHECK(flight.models == cascade.models);
+  CHECK(flight.scores == cascade.scores);
+  CHECK(flight.result.confident == cascade.result.confident);
+  CHECK(flight.result.stats.cascade.passes == 1u);
+  CHECK(flight.result.stats.cascade.answered_by == 1u);  // a single pass is the configured one
+}
+
+TEST_CASE("cascade: an unsure first pass goes on to the full pass, which starts from its poses") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  const uint32_t m = 2;
+  RecognizerConfig unsure;
+  unsure.first_min_margin = 1e6f;  // no first answer is confident
+  const Run escalated = recognize_toy(toy, unsure, m);
+  REQUIRE(escalated.result.status == Status::kOk);
+  REQUIRE(escalated.result.ranking_count >= 1);
+  CHECK(escalated.result.ranking[0].model == m);
+  const CascadeStats& c = escalated.result.stats.cascade;
+  CHECK(c.passes == 2u);
+  CHECK(c.answered_by == 1u);
+  CHECK(c.first_work > 0u);
+  CHECK(c.full_work > c.first_work);  // the full pass describes more, finer features
+  CHECK(c.work == c.first_work + c.full_work);
+  CHECK(escalated.result.stats.carry.carried > 0u);
+  CHECK(escalated.result.stats.extract.features > kFlightMaxFeatures);
+
+  // Without the carried poses, the full pass is the full preset's: the
+  // shared workspace carries nothing else from the first pass.
+  RecognizerConfig uncarried = unsure;
+  uncarried.carry.enabled = false;
+  const Run plain = recognize_toy(toy, uncarried, m);
+  const Run full = recognize_toy(toy, preset_config(Preset::kFull), m);
+  CHECK(plain.result.stats.cascade.passes == 2u);
+  CHECK(plain.result.stats.carry.carried == 0u);
+  CHECK(full.result.stats.cascade.passes == 1u);
+  CHECK(full.result.stats.cascade.first_work == 0u);
+  CHECK(full.result.stats.cascade.full_work == full.result.stats.cascade.work);
+  CHECK(plain.models == full.models);
+  CHECK(plain.scores == full.scores);
+  CHECK(plain.result.confident == full.result.confident);
+  CHECK(plain.result.stats.cascade.full_work == full.result.stats.cascade.work);
+}
+
+TEST_CASE("cascade: the work cap ends a query with its best answer so far, never confident") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  const uint32_t m = 3;
+  RecognizerConfig full = preset_config(Preset::kFull);
+  const Run whole = recognize_toy(toy, full, m);
+  REQUIRE(whole.result.status == Status::kOk);
+  const uint64_t work = whole.result.stats.cascade.work;
+  REQUIRE(work > 0u);
+  REQUIRE_FALSE(whole.result.stats.cascade.work_capped);
+  // A cap past the extraction and the candidates, in the draws.
+  const ExtractStats& e = whole.result.stats.extract;
+  const uint64_t described =
+      kWorkPerPoint * e.points_equalised + kWorkPerBucketEntry * whole.result.stats.candidates.bucket_entries;
+  REQUIRE(described < work);
+  full.max_work = described + (work - described) / 4u;
+  const Run capped = recognize_toy(toy, full, m);
+  CHECK(capped.result.status == Status::kWorkCapReached);
+  CHECK(capped.result.stats.cascade.work_capped);
+  CHECK(capped.result.stats.cascade.work >= full.max_work);
+  CHECK(capped.result.stats.cascade.work < work);
+  CHECK(capped.result.stats.draws.budget_exhausted);
+  CHECK_FALSE(capped.result.confident);
+  CHECK_FALSE(capped.result.class_confident);
+  REQUIRE(capped.result.ranking_count >= 1);  // the best answer so far
+  // The cascade's first pass counts against the same cap: spent there, the
+  // full pass never starts.
+  RecognizerConfig tight;
+  tight.first_min_margin = 1e6f;
+  tight.max_work = 1;
+  const Run first = recognize_toy(toy, tight, m);
+  CHECK(first.result.status == Status::kWorkCapReached);
+  CHECK(first.result.stats.cascade.passes == 1u);
+  CHECK(first.result.stats.cascade.answered_by == 0u);
+  CHECK(first.result.ranking_count == 0u);
+}
