@@ -47,16 +47,17 @@
     "a first pass at the first_* settings, the full pass only when its answer is not confident")             \
   X(F32, first_query_voxel, 0.0f, 100.0f, "",                                                                \
     "the first pass's query voxel, m (0: the database's; the full pass reuses its features when equal)")     \
-  X(U32, first_features, 2u, kMaxQueryFeaturesLimit, "", "the first pass's query features (at most max_features)") \
+  X(U32, first_features, 2u, kMaxQueryFeaturesLimit, "",                                                     \
+    "the first pass's query features (at most max_features)")                                                \
   X(U32, first_bucket_scan, 1u, kMaxBucketScan, "",                                                          \
     "the first pass's LSH entries scanned per feature (at most max_bucket_scan)")                            \
   X(U32, first_top_w, 1u, kMaxCandidates, "", "the first pass's candidates per feature (at most top_w)")     \
-  X(U32, first_verify_features, 1u, kMaxQueryFeaturesLimit, "", "the first pass's features per hypothesis") \
+  X(U32, first_verify_features, 1u, kMaxQueryFeaturesLimit, "", "the first pass's features per hypothesis")  \
   X(U32, first_trials, 0u, kMaxTrials, "", "the first pass's doublet draws (BRAN)")                          \
   X(F32, first_min_margin, 0.0f, 1e6f, "",                                                                   \
-    "the first pass's confidence margin: stricter than the full pass's, since its answer ends the query")   \
+    "the first pass's confidence margin: stricter than the full pass's, since its answer ends the query")    \
   X(U64, max_work, 1u, kMaxQueryWork, "--max-work",                                                          \
-    "work units a query may spend over both passes (work_meter.hpp); reached: the best answer so far, "     \
+    "work units a query may spend over both passes (work_meter.hpp); reached: the best answer so far, "      \
     "status work_cap_reached")
 
 #define SPINHASH_STATS_FIELDS(S)                                                            \
@@ -85,7 +86,7 @@
   S(BOOL, bucket_scan_truncated, candidates.bucket_scan_truncated, "bucket_scan_truncated") \
   S(U64, workspace_used, workspace_used, "workspace_used")                                  \
   S(F32, surface_coverage, confidence.surface_coverage, "surface_coverage")                 \
-  S(F32, scan_density, confidence.scan_density, "scan_density")                            \
+  S(F32, scan_density, confidence.scan_density, "scan_density")                             \
   S(U32, carried, carry.carried, "carried")                                                 \
   S(U32, passes, cascade.passes, "passes")                                                  \
   S(U32, answered_by, cascade.answered_by, "answered_by")                                   \

@@ -84,8 +84,8 @@
   X(kWindowOverflow, 46, WINDOW_OVERFLOW, "window_overflow",                                                \
     "a scene window held more points than its capacity")                                                    \
   /* points pushed after flush(): refused (counted); reset() starts a new line */                           \
-  X(kStreamFlushed, 47, STREAM_FLUSHED, "stream_flushed", "points pushed after the stream was flushed")    \
-  /* recognize: the query spent config.max_work; the answer is the best found so far (ranked, never        \
+  X(kStreamFlushed, 47, STREAM_FLUSHED, "stream_flushed", "points pushed after the stream was flushed")     \
+  /* recognize: the query spent config.max_work; the answer is the best found so far (ranked, never         \
      confident) */                                                                                          \
   X(kWorkCapReached, 48, WORK_CAP_REACHED, "work_cap_reached", "work cap reached: best answer so far")
 
