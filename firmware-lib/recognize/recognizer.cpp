@@ -115,11 +115,17 @@ Result Recognizer::recognize(const double* xyz, uint32_t count) noexcept {
   return run(cloud, ObjectTerrain{});
 }
 
-void Recognizer::run_pass(const CloudView& cloud, const ObjectTerrain& terrain, const RecognizerConfig& pass,
-                          uint64_t work_before, Result* result) noexcept {
-  RecognizerBuffers& b = *buffers_;
-  result->stats.workspace_used = used_bytes_;
-  SearchContext ctx(*db_, pass, b, *result);
+namespace {
+
+// One pass of the stages with `pass`'s settings; `work_before`: what the
+// earlier passes spent (the cap counts the query's total). Not named run*:
+// the instruction scripts toggle callgrind on Recognizer::run*, and a
+// nested match would toggle it off.
+void recognize_pass(const Database& db, RecognizerBuffers& b, size_t used_bytes, const CloudView& cloud,
+                    const ObjectTerrain& terrain, const RecognizerConfig& pass, uint64_t work_before,
+                    Result* result) {
+  result->stats.workspace_used = used_bytes;
+  SearchContext ctx(db, pass, b, *result);
   ctx.terrain = terrain;
   ctx.work_before = work_before;
   result->status = b.extractor.load(cloud, &ctx.features, &result->stats.extract);
@@ -134,6 +140,8 @@ void Recognizer::run_pass(const CloudView& cloud, const ObjectTerrain& terrain, 
   keep_leading_poses(ctx);
 }
 
+}  // namespace
+
 Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noexcept {
   Result result;
   if (buffers_ == nullptr) return result;  // kNotOpen
@@ -145,7 +153,7 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
   b.carried_count = 0;
   uint64_t first_work = 0;
   if (config_.cascade) {
-    run_pass(cloud, terrain, b.first_pass, 0, &result);
+    recognize_pass(*db_, b, used_bytes_, cloud, terrain, b.first_pass, 0, &result);
     first_work = result.stats.cascade.work;
     const bool answered =
         (result.status == Status::kOk && result.confident) || result.status == Status::kWorkCapReached;
@@ -157,7 +165,7 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
     }
     result = Result{};
   }
-  run_pass(cloud, terrain, config_, first_work, &result);
+  recognize_pass(*db_, b, used_bytes_, cloud, terrain, config_, first_work, &result);
   CascadeStats& c = result.stats.cascade;
   c.passes = config_.cascade ? 2u : 1u;
   c.answered_by = 1;

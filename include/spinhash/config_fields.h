@@ -45,16 +45,18 @@
   X(VEC3D, viewpoint, 0, 0, "", "set by --viewpoint X Y Z: sensor position, normals turn towards it")        \
   X(BOOL, cascade, 0, 1, "!--no-cascade",                                                                    \
     "a first pass at the first_* settings, the full pass only when its answer is not confident")             \
-  X(F32, first_query_voxel, 0.0f, 100.0f, "",                                                                \
-    "the first pass's query voxel, m (0: the database's; the full pass reuses its features when equal)")     \
-  X(U32, first_features, 2u, kMaxQueryFeaturesLimit, "",                                                     \
+  X(F32, first_query_voxel, 0.0f, 100.0f, "--first-voxel",                                                   \
+    "the first pass's query voxel, m (0: the database's)")                                                   \
+  X(U32, first_features, 2u, kMaxQueryFeaturesLimit, "--first-features",                                     \
     "the first pass's query features (at most max_features)")                                                \
-  X(U32, first_bucket_scan, 1u, kMaxBucketScan, "",                                                          \
+  X(U32, first_bucket_scan, 1u, kMaxBucketScan, "--first-bucket-scan",                                       \
     "the first pass's LSH entries scanned per feature (at most max_bucket_scan)")                            \
-  X(U32, first_top_w, 1u, kMaxCandidates, "", "the first pass's candidates per feature (at most top_w)")     \
-  X(U32, first_verify_features, 1u, kMaxQueryFeaturesLimit, "", "the first pass's features per hypothesis")  \
-  X(U32, first_trials, 0u, kMaxTrials, "", "the first pass's doublet draws (BRAN)")                          \
-  X(F32, first_min_margin, 0.0f, 1e6f, "",                                                                   \
+  X(U32, first_top_w, 1u, kMaxCandidates, "--first-top-w",                                                   \
+    "the first pass's candidates per feature (at most top_w)")                                               \
+  X(U32, first_verify_features, 1u, kMaxQueryFeaturesLimit, "--first-verify-features",                       \
+    "the first pass's features per hypothesis")                                                              \
+  X(U32, first_trials, 0u, kMaxTrials, "--first-trials", "the first pass's doublet draws (BRAN)")            \
+  X(F32, first_min_margin, 0.0f, 1e6f, "--first-min-margin",                                                 \
     "the first pass's confidence margin: stricter than the full pass's, since its answer ends the query")    \
   X(U64, max_work, 1u, kMaxQueryWork, "--max-work",                                                          \
     "work units a query may spend over both passes (work_meter.hpp); reached: the best answer so far, "      \

@@ -161,10 +161,6 @@ class Recognizer {
 
  private:
   Result run(const CloudView& cloud, const ObjectTerrain& terrain) noexcept;
-  // One pass of the stages with `pass`'s settings; `work_before`: what the
-  // earlier passes spent (the cap counts the query's total).
-  void run_pass(const CloudView& cloud, const ObjectTerrain& terrain, const RecognizerConfig& pass,
-                uint64_t work_before, Result* result) noexcept;
 
   const Database* db_ = nullptr;
   RecognizerConfig config_{};
