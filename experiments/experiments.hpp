@@ -17,6 +17,9 @@ void add_scene_experiment(CLI::App* parent, int* exit_code);
 // Simulated flight lines through the SceneStream: recall, top-1, false
 // alarms, duplicates and points per second against density.
 void add_stream_experiment(CLI::App* parent, int* exit_code);
+// Leave one world out: each world's vehicles recognised with a database of
+// the other worlds' (unknown vehicles), then with every world's.
+void add_worlds_experiment(CLI::App* parent, int* exit_code);
 // Warzone 2100's PIE models (vehicles, structures) to OBJ meshes.
 void add_prepare_warzone(CLI::App* parent, int* exit_code);
 // TORCS and Trigger Rally car bodies to OBJ meshes in class folders.

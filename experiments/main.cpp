@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   spinhash::experiment::add_lsh_experiment(&app, &exit_code);
   spinhash::experiment::add_scene_experiment(&app, &exit_code);
   spinhash::experiment::add_stream_experiment(&app, &exit_code);
+  spinhash::experiment::add_worlds_experiment(&app, &exit_code);
   spinhash::experiment::add_prepare_warzone(&app, &exit_code);
   spinhash::experiment::add_prepare_cars(&app, &exit_code);
   spinhash::experiment::add_prepare_sweethome3d(&app, &exit_code);

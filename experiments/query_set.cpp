@@ -34,30 +34,45 @@ uint64_t query_seed(uint64_t base_seed, uint32_t model, uint32_t q) {
   return base_seed * kModelSeedStride * kQuerySeedStride + model * kQuerySeedStride + q + 1u;
 }
 
+bool scan_query(const host::Mesh& mesh, const QueryScan& s, host::ScanResult* out, std::string* error) {
+  host::ScanOptions opt = host::query_scan_options(s.noise, s.seed);
+  opt.random_pose = true;
+  opt.occlusion = s.occlusion;
+  opt.point_spacing = s.spacing;
+  opt.ground_slope_deg = s.slope_deg;
+  host::Mesh ground;
+  if (s.ground) {
+    const host::Box3 box = mesh.bounding_box();
+    const double half =
+        std::max({std::abs(box.lo.x()), std::abs(box.hi.x()), std::abs(box.lo.y()), std::abs(box.hi.y())}) +
+        s.ground_margin;
+    ground = host::make_ground_patch(half, s.ground_z);
+    opt.ground = &ground;
+  }
+  *out = host::simulate_scan(mesh, opt);
+  if (!out->ok()) {
+    *error = mesh.name + ": query scan: " + out->error;
+    return false;
+  }
+  return true;
+}
+
 bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const QueryCondition& c,
                     uint64_t base_seed, double ground_margin, Query* out, std::string* error) {
   out->model = model;
   out->index = q;
   out->seed = query_seed(base_seed, model, q);
-  host::ScanOptions opt = host::query_scan_options(c.noise, out->seed);
-  opt.random_pose = true;
-  opt.occlusion = c.occlusion;
-  opt.point_spacing = c.spacing;
-  opt.ground_slope_deg = c.ground == Ground::kNone ? 0.0 : c.slope_deg;
-  host::Mesh ground;
-  if (c.ground != Ground::kNone) {
-    host::Box3 box = mesh.bounding_box();
-    double half =
-        std::max({std::abs(box.lo.x()), std::abs(box.hi.x()), std::abs(box.lo.y()), std::abs(box.hi.y())}) +
-        ground_margin;
-    ground = host::make_ground_patch(half, box.lo.z());
-    opt.ground = &ground;
-  }
-  host::ScanResult scan = host::simulate_scan(mesh, opt);
-  if (!scan.ok()) {
-    *error = mesh.name + ": query scan: " + scan.error;
-    return false;
-  }
+  QueryScan s;
+  s.seed = out->seed;
+  s.noise = c.noise;
+  s.occlusion = c.occlusion;
+  s.spacing = c.spacing;
+  s.ground = c.ground != Ground::kNone;
+  s.slope_deg = s.ground ? c.slope_deg : 0.0;
+  s.ground_z = mesh.bounding_box().lo.z();
+  s.ground_margin = ground_margin;
+  host::ScanResult scan;
+  if (!scan_query(mesh, s, &scan, error)) return false;
   out->object_points = static_cast<uint32_t>(std::count(scan.on_object.begin(), scan.on_object.end(), 1));
   out->xyz = std::move(scan.xyz);
   out->true_pose = scan.true_pose;

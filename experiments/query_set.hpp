@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "mesh/mesh.hpp"
+#include "scan/scan_simulator.hpp"
 
 namespace spinhash::experiment {
 
@@ -46,6 +47,19 @@ struct Query {
 // The same (model, q) gets the same seed, hence the same sides and pose,
 // under every condition: conditions differ only in what they change.
 uint64_t query_seed(uint64_t base_seed, uint32_t model, uint32_t q);
+
+// One query scan's settings: the query views (query_scan_options), a
+// random pose, and with `ground` a level ground square at ground_z
+// reaching ground_margin beyond the object's footprint on each side.
+struct QueryScan {
+  uint64_t seed = 1;
+  double noise = 0.05, occlusion = 0.0, spacing = kPaperQuerySpacing;
+  double slope_deg = 0.0;  // the object (and the ground) tilted together
+  bool ground = false;
+  double ground_z = 0.0, ground_margin = 3.0;
+};
+// false with *error (naming the mesh) when the simulator fails.
+bool scan_query(const host::Mesh& mesh, const QueryScan& s, host::ScanResult* out, std::string* error);
 
 // ground_margin: metres of ground beyond the vehicle's footprint on each side.
 bool simulate_query(const host::Mesh& mesh, uint32_t model, uint32_t q, const QueryCondition& c,

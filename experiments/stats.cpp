@@ -1,6 +1,7 @@
 #include "stats.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace spinhash::experiment {
 
@@ -37,6 +38,15 @@ LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
   f.intercept = my - f.slope * mx;
   f.r2 = syy > 0.0 ? (sxy * sxy) / (sxx * syy) : 1.0;
   return f;
+}
+
+ShareInterval wilson_interval(uint64_t k, uint64_t n) {
+  if (n == 0) return {};
+  constexpr double kZ = 1.96;  // 95 %
+  const double nn = static_cast<double>(n), p = static_cast<double>(k) / nn, z2 = kZ * kZ;
+  const double centre = (p + z2 / (2.0 * nn)) / (1.0 + z2 / nn);
+  const double half = kZ * std::sqrt(p * (1.0 - p) / nn + z2 / (4.0 * nn * nn)) / (1.0 + z2 / nn);
+  return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
 }
 
 }  // namespace spinhash::experiment

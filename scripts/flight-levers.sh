@@ -35,6 +35,7 @@
 # configuration of the FILE) on the same
 # queries (every set both ran). DIR defaults to out/flight-levers (ignored by git).
 set -euo pipefail
+source "$(dirname "$0")/lib/fleet_db.sh"
 
 usage() { sed -n '2,36p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
@@ -83,12 +84,7 @@ done
 IFS=, read -r -a size_list <<< "$sizes"
 for size in "${size_list[@]}"; do
   db="$out/db$size.shdb"
-  if [[ ! -f "$db" ]]; then
-    members=$(mktemp -d)
-    "$spinhash" generate -o "$members" --count "$size" 2>/dev/null
-    "$spinhash" build -o "$db" "$members" --quiet
-    rm -rf "$members"
-  fi
+  fleet_db "$spinhash" "$db" "$size"
 done
 
 # Right first, confident and confident-wrong answers of per_query.csv files, by a key of columns.

@@ -20,6 +20,7 @@
 # libinsn.so); it must rank the same model first. Writes DIR/instructions.csv
 # (DIR: out/instructions unless given; git ignores out/) and prints a Markdown table of the means.
 set -euo pipefail
+source "$(dirname "$0")/lib/fleet_db.sh"
 
 usage() { sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
@@ -92,11 +93,8 @@ for ((q = 0; q < queries; q++)); do
 done
 
 for size in "${size_list[@]}"; do
-  members=$(mktemp -d)
-  "$spinhash" generate -o "$members" --count "$size" 2>/dev/null
   db="$out/db$size.shdb"
-  [[ -f "$db" ]] || "$spinhash" build -o "$db" "$members" --quiet
-  rm -rf "$members"
+  fleet_db "$spinhash" "$db" "$size"
   # awk reads to the end: an early exit would break the pipe (pipefail).
   features=$("$spinhash" info "$db" | awk '$1 == "features" && !f {f = $2} END {print f}')
   for mode in "${mode_list[@]}"; do

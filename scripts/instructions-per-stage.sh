@@ -17,6 +17,7 @@
 # docs/budgets.md (scripts/budgets.sh) and fails over budget. --reuse keeps
 # the callgrind files DIR already holds (the same binary's).
 set -euo pipefail
+source "$(dirname "$0")/lib/fleet_db.sh"
 
 usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
@@ -74,12 +75,7 @@ csv="$out/stages.csv"
 echo "models,spacing,query,total,features,lsh,verification,rest,top" > "$csv"
 for size in "${size_list[@]}"; do
   db="$out/db$size.shdb"
-  if [[ ! -f "$db" ]]; then
-    members=$(mktemp -d)
-    "$spinhash" generate -o "$members" --count "$size" 2>/dev/null
-    "$spinhash" build -o "$db" "$members" --quiet
-    rm -rf "$members"
-  fi
+  fleet_db "$spinhash" "$db" "$size"
   # The queries of one size, --jobs at a time (counts do not depend on the load).
   pids=()
   for s in "${spacing_list[@]}"; do

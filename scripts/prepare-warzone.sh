@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Real artist-made models for the experiments: downloads Debian's
-# warzone2100-data with apt-get download (GPL game content: never commit it),
-# unpacks base.wz and converts its vehicles, structures and map features to
-# OBJ meshes (spinhash-experiment prepare-warzone).
+# Real artist-made models for the experiments: reads Debian's
+# warzone2100-data (GPL game content: never commit it) in place when it is
+# installed, else downloads it with apt-get download; unpacks base.wz and
+# converts its vehicles, structures and map features to OBJ meshes
+# (spinhash-experiment prepare-warzone).
 #
 #   scripts/prepare-warzone.sh [OUT_DIR] [EXPERIMENT_BIN]
 #       OUT_DIR defaults to out/warzone; meshes land in OUT_DIR/meshes/{vehicles,structures,features}
@@ -17,13 +18,20 @@ if ! command -v unzip >/dev/null; then
 fi
 work=$out/download
 mkdir -p "$work"
-if ! ls "$work"/warzone2100-data_*.deb >/dev/null 2>&1; then
-  (cd "$work" && apt-get download warzone2100-data)
+# The installed package's base.wz is read in place; else the .deb is
+# downloaded and unpacked.
+if dpkg-query -W -f='${Status}' warzone2100-data 2>/dev/null | grep -q "install ok installed"; then
+  base_wz=$(dpkg -L warzone2100-data | grep '/base\.wz$' | sed -n 1p)
+  from="the installed warzone2100-data"
+else
+  if ! ls "$work"/warzone2100-data_*.deb >/dev/null 2>&1; then
+    (cd "$work" && apt-get download warzone2100-data)
+  fi
+  from=$(ls "$work"/warzone2100-data_*.deb | sed -n 1p)
+  dpkg-deb -x "$from" "$work/x"
+  base_wz=$(find "$work/x" -name base.wz | sed -n 1p)
 fi
-deb=$(ls "$work"/warzone2100-data_*.deb | sed -n 1p)
-dpkg-deb -x "$deb" "$work/x"
-base_wz=$(find "$work/x" -name base.wz | sed -n 1p)
-[[ -n "$base_wz" ]] || { echo "prepare-warzone: base.wz not found in $deb" >&2; exit 1; }
+[[ -n "$base_wz" && -f "$base_wz" ]] || { echo "prepare-warzone: base.wz not found in $from" >&2; exit 1; }
 rm -rf "$work/base"
 unzip -q "$base_wz" -d "$work/base"
 "$spinhash" prepare-warzone --base "$work/base" -o "$out/meshes"

@@ -154,10 +154,27 @@ bool read_binary_property(BinaryCursor* c, const Property& p, double* value, std
   return true;
 }
 
+// The entries of element `ei`, each property read by `read_property` (the
+// binary or the ascii one); the vertex element's x, y and z go to t.xyz.
+template <class Cursor, class ReadProperty>
+bool read_element(Cursor* c, const Element& e, std::size_t ei, const Targets& t, ReadProperty read_property,
+                  std::string* error) {
+  const bool is_vertex = ei == t.vertex;
+  if (is_vertex) t.xyz->reserve(kAxes * e.count);
+  const std::string where = "element '" + e.name + "'";
+  double point[kAxes] = {0.0, 0.0, 0.0};
+  for (uint64_t n = 0; n < e.count; ++n) {
+    for (std::size_t p = 0; p < e.properties.size(); ++p) {
+      double value = 0.0;
+      if (!read_property(c, e.properties[p], &value, t.items_of(ei, p), where, error)) return false;
+      if (is_vertex && t.axis[p] >= 0) point[t.axis[p]] = value;
+    }
+    if (is_vertex) t.xyz->insert(t.xyz->end(), point, point + kAxes);
+  }
+  return true;
+}
+
 bool read_binary(const std::string& bytes, const Header& h, const Targets& t, std::string* error) {
-  const std::size_t vertex = t.vertex;
-  const std::vector<int>& axis = t.axis;
-  std::vector<double>* xyz = t.xyz;
   BinaryCursor c{reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), h.data_offset,
                  h.format == Format::kBinaryBigEndian};
   for (std::size_t ei = 0; ei < h.elements.size(); ++ei) {
@@ -168,17 +185,7 @@ bool read_binary(const std::string& bytes, const Header& h, const Targets& t, st
                              std::to_string(c.remaining()) +
                              " bytes of data remain (truncated file or wrong count)");
     }
-    if (ei == vertex) xyz->reserve(kAxes * e.count);
-    const std::string where = "element '" + e.name + "'";
-    double point[kAxes] = {0.0, 0.0, 0.0};
-    for (uint64_t n = 0; n < e.count; ++n) {
-      for (std::size_t p = 0; p < e.properties.size(); ++p) {
-        double value = 0.0;
-        if (!read_binary_property(&c, e.properties[p], &value, t.items_of(ei, p), where, error)) return false;
-        if (ei == vertex && axis[p] >= 0) point[axis[p]] = value;
-      }
-      if (ei == vertex) xyz->insert(xyz->end(), point, point + kAxes);
-    }
+    if (!read_element(&c, e, ei, t, read_binary_property, error)) return false;
   }
   if (c.remaining() != 0) {
     return fail(error, std::to_string(c.remaining()) +
@@ -253,9 +260,6 @@ bool read_ascii_property(TextCursor* c, const Property& p, double* value, std::v
 }
 
 bool read_ascii(const std::string& bytes, const Header& h, const Targets& t, std::string* error) {
-  const std::size_t vertex = t.vertex;
-  const std::vector<int>& axis = t.axis;
-  std::vector<double>* xyz = t.xyz;
   TextCursor c{bytes, h.data_offset};
   for (std::size_t ei = 0; ei < h.elements.size(); ++ei) {
     const Element& e = h.elements[ei];
@@ -266,17 +270,7 @@ bool read_ascii(const std::string& bytes, const Header& h, const Targets& t, std
       return fail(error, "element '" + e.name + "' claims " + std::to_string(e.count) +
                              " entries but the file is too short (truncated or wrong count)");
     }
-    if (ei == vertex) xyz->reserve(kAxes * e.count);
-    const std::string where = "element '" + e.name + "'";
-    double point[kAxes] = {0.0, 0.0, 0.0};
-    for (uint64_t n = 0; n < e.count; ++n) {
-      for (std::size_t p = 0; p < e.properties.size(); ++p) {
-        double value = 0.0;
-        if (!read_ascii_property(&c, e.properties[p], &value, t.items_of(ei, p), where, error)) return false;
-        if (ei == vertex && axis[p] >= 0) point[axis[p]] = value;
-      }
-      if (ei == vertex) xyz->insert(xyz->end(), point, point + kAxes);
-    }
+    if (!read_element(&c, e, ei, t, read_ascii_property, error)) return false;
   }
   if (!c.next().empty()) return fail(error, "unexpected data after the last element (wrong count?)");
   return true;

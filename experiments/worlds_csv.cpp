@@ -1,0 +1,101 @@
+// experiment worlds: per_scan.csv, one row per scan and database.
+#include "csv_table.hpp"
+#include "spinhash/vehicle_class.hpp"
+#include "worlds_data.hpp"
+
+namespace spinhash::experiment {
+namespace {
+
+std::string flag(bool b) { return b ? "1" : "0"; }
+
+}  // namespace
+
+bool write_worlds_csv(const WorldsRun& run, std::string* error) {
+  CsvTable t({"world",
+              "object",
+              "kind",
+              "true_class",
+              "true_group",
+              "condition",
+              "scan",
+              "seed",
+              "spacing_m",
+              "density",
+              "noise_m",
+              "occlusion",
+              "ground",
+              "slope_deg",
+              "points",
+              "object_points",
+              "database",
+              "status",
+              "first_model",
+              "first_world",
+              "model_right",
+              "model_confident",
+              "first_class",
+              "class_right",
+              "class_confident",
+              "first_group",
+              "group_right",
+              "group_confident",
+              "vehicle_confident",
+              "level",
+              "scan_density",
+              "ms"});
+  const WorldSet& set = *run.set;
+  for (const WorldsRecord& r : run.records) {
+    const WorldsJudgement j = judge(run, r);
+    const bool ranked = r.answer.ranked;
+    std::string world, object, kind, true_class, true_group;
+    if (r.clutter) {
+      const ClutterObject& c = set.clutter[r.object];
+      world = c.source;
+      object = c.name;
+      kind = c.kind;
+    } else {
+      const WorldVehicle& v = set.vehicles[r.object];
+      world = v.world;
+      object = v.model.name;
+      kind = "vehicle";
+      true_class = vehicle_class_name(j.true_class);
+      true_group = vehicle_group_name(j.true_group);
+    }
+    const bool first_known = ranked && r.first >= 0;
+    t.add({world,
+           object,
+           kind,
+           true_class,
+           true_group,
+           run.conditions[r.condition].name,
+           std::to_string(r.scan),
+           std::to_string(r.draw.seed),
+           num(r.draw.spacing, 4),
+           num(r.draw.density, 4),
+           num(r.draw.noise, 3),
+           num(r.draw.occlusion, 3),
+           flag(r.draw.ground),
+           num(r.draw.slope_deg, 3),
+           std::to_string(r.points),
+           std::to_string(r.object_points),
+           worlds_database_name(r.database),
+           status_name(r.status),
+           first_known ? set.vehicles[static_cast<size_t>(r.first)].model.name : "",
+           first_known ? set.vehicles[static_cast<size_t>(r.first)].world : "",
+           flag(j.model_right),
+           flag(r.answer.model_confident),
+           ranked ? vehicle_class_name(r.answer.vehicle_class) : "",
+           flag(j.class_right),
+           flag(r.answer.class_confident),
+           ranked ? vehicle_group_name(r.answer.group) : "",
+           flag(j.group_right),
+           flag(r.answer.group_confident),
+           flag(r.answer.vehicle_confident),
+           r.answer.level,
+           num(r.scan_density, 4),
+           num(r.ms, 4)});
+  }
+  return t.write(run.out_dir + "/per_scan.csv", error);
+}
+
+}  // namespace spinhash::experiment

@@ -1,0 +1,22 @@
+#include "spinhash/vehicle_class.hpp"
+#include "worlds_data.hpp"
+
+namespace spinhash::experiment {
+
+const char* worlds_database_name(WorldsDatabase d) {
+  return d == WorldsDatabase::kLeftOut ? "left-out" : "all";
+}
+
+WorldsJudgement judge(const WorldsRun& run, const WorldsRecord& r) {
+  WorldsJudgement j;
+  if (r.clutter) return j;
+  j.true_class = static_cast<uint32_t>(run.set->vehicles[r.object].model.vehicle_class);
+  j.true_group = static_cast<uint32_t>(vehicle_group_of(j.true_class));
+  if (!r.answer.ranked) return j;
+  j.model_right = r.first == static_cast<int32_t>(r.object);
+  j.class_right = r.answer.vehicle_class == j.true_class;
+  j.group_right = r.answer.group == j.true_group;
+  return j;
+}
+
+}  // namespace spinhash::experiment
