@@ -78,7 +78,7 @@ Status run_stages(SearchContext& ctx) {
 }
 
 bool stage_answers(StageId id) {
-  return id == StageId::rank || id == StageId::confidence || id == StageId::classes;
+  return id == StageId::carry || id == StageId::rank || id == StageId::confidence || id == StageId::classes;
 }
 
 }  // namespace spinhash

@@ -1,9 +1,12 @@
-// The work a pass has done, in units of about one LSH entry scanned (tens
-// of instructions on every target), from the counts its stages keep: what
+// The work a pass has done, in units of about one LSH entry scanned (70-110
+// instructions on x86-64 and aarch64), from the counts its stages keep: what
 // RecognizerConfig::max_work caps. Deterministic (counts, not time), so the
 // cap stops a query at the same point on every target. The weights are the
 // instructions of each counted step over an LSH entry's (docs/budgets.md
-// gives the instructions per unit as measured).
+// gives the instructions per unit as measured). The cap is checked between
+// stages and before each candidate pair, so a query may pass it by one
+// stage's uninterruptible work: the extraction (up to max_points points)
+// or the candidates (up to max_features x max_bucket_scan entries).
 #pragma once
 #include <cstdint>
 
