@@ -5,7 +5,7 @@
 namespace spinhash {
 
 Status carry_stage(SearchContext& ctx) {
-  if (ctx.mode == Mode::kSind) return Status::kOk;
+  if (ctx.mode == Mode::kSind || ctx.query.count == 0) return Status::kOk;  // no poses; no features (capped)
   RecognizerBuffers& b = ctx.buf;
   const uint32_t limit = ctx.params.carry.carry_models;
   const uint32_t n = b.carried_count < limit ? b.carried_count : limit;

@@ -129,6 +129,23 @@ TEST_CASE("cascade: the work cap ends a query with its best answer so far, never
   CHECK_FALSE(capped.result.confident);
   CHECK_FALSE(capped.result.class_confident);
   REQUIRE(capped.result.ranking_count >= 1);  // the best answer so far
+  // An escalated query whose full pass reaches the cap before its draws
+  // still verifies the first pass's poses on the full pass's features and
+  // answers with them.
+  {
+    RecognizerConfig cascade;
+    const Run side = recognize_toy(toy, cascade, 2u);
+    REQUIRE(side.result.stats.cascade.passes == 2u);
+    cascade.max_work = side.result.stats.cascade.first_work + 1u;
+    const Run early = recognize_toy(toy, cascade, 2u);
+    CHECK(early.result.status == Status::kWorkCapReached);
+    CHECK(early.result.stats.cascade.passes == 2u);
+    CHECK(early.result.stats.draws.trials == 0u);
+    CHECK(early.result.stats.carry.carried > 0u);
+    REQUIRE(early.result.ranking_count >= 1u);
+    CHECK(early.result.ranking[0].model == 2u);
+    CHECK_FALSE(early.result.confident);
+  }
   // The cascade's first pass counts against the same cap: spent there, the
   // full pass never starts.
   RecognizerConfig tight;
