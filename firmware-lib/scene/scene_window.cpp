@@ -6,6 +6,7 @@
 #include <limits>
 #include <new>
 
+#include "spinhash/answered.hpp"
 #include "spinhash/limits.hpp"
 #include "util/heap_sort.hpp"
 
@@ -178,7 +179,7 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
   out.stats = r.stats;
   stats->recognition_hypotheses += r.stats.draws.hypotheses;
   stats->recognition_candidates += r.stats.candidates.kept;
-  if (r.status != Status::kOk || r.ranking_count == 0) {
+  if (!has_answer(r.status) || r.ranking_count == 0) {
     out.kind = ObjectKind::kUnknown;
     return;
   }
