@@ -68,7 +68,7 @@ constexpr float kFirstPassMinMargin = 1.2f;
 // Work units a query may spend (work_meter.hpp; 68-109 aarch64
 // instructions a unit): a bound on the worst query that no query of the
 // fleet's accuracy sets reaches. 4 000 000 holds the instruction
-// benchmark's worst query under 300 M aarch64 instructions but stops 16 % of
+// benchmark's worst query under 300 M aarch64 instructions but ends a sixth of
 // the dense noisy fleet scans (docs/budgets.md).
 constexpr uint64_t kDefaultMaxWork = 12000000u;
 
