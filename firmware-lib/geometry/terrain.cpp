@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "geometry/xy_frame.hpp"
 #include "spinhash/limits.hpp"
 
 namespace spinhash {
@@ -36,6 +35,12 @@ void terrain_line_filter(const float* in, float* out, float* line, uint32_t nx, 
   auto value = [identity](float v) { return no_data(v) ? identity : v; };
   for (uint32_t l = 0; l < lines; ++l) {
     const uint32_t base = along_x ? l * nx : l;
+    uint32_t first = 0;  // a line without data stays without (sparse parts have many)
+    while (first < len && no_data(in[base + first * step])) ++first;
+    if (first == len) {
+      for (uint32_t i = 0; i < len; ++i) out[base + i * step] = NAN;
+      continue;
+    }
     float run = identity;
     for (uint32_t i = 0; i < len; ++i) {
       const float v = value(in[base + i * step]);
@@ -96,10 +101,6 @@ uint32_t progressive_filter(TerrainGrid& g, const TerrainParams& params) {
   return windows;
 }
 
-uint32_t terrain_cell_index(const TerrainGrid& g, const float* p) {
-  return cell_coord(p[1], g.y0, g.cell, g.ny) * g.nx + cell_coord(p[0], g.x0, g.cell, g.nx);
-}
-
 bool is_ground_cell(const TerrainGrid& g, uint32_t c) { return !no_data(g.value[c]) && !g.off_ground[c]; }
 
 // out[c] for each cell off the ground: linear interpolation between the
@@ -152,6 +153,21 @@ void fill_terrain_surface(TerrainGrid& g, uint32_t max_gap) {
   }
 }
 
+// The gap fill's reach: ground cells at most this far apart along a row or
+// column are joined (the widest opening, and the snap's extra cells).
+uint32_t gap_cells(const TerrainParams& params) {
+  return static_cast<uint32_t>(params.max_window / params.cell) + 2u;
+}
+
+void clear_sums(TerrainGrid& g) {
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c) {
+    g.value[c] = NAN;     // lowest z
+    g.scratch[c] = 0.0f;  // low band: sum
+    g.opened[c] = 0.0f;   // low band: count
+  }
+}
+
 }  // namespace
 
 bool terrain_params_valid(const TerrainParams& p) {
@@ -159,7 +175,17 @@ bool terrain_params_valid(const TerrainParams& p) {
   return p.cell >= kMinSceneTerrainCell && p.cell <= kMaxSceneTerrainCell && p.max_window >= p.cell &&
          p.max_window <= kMaxTerrainWindow && p.slope >= 0.0f && p.slope <= kMaxTerrainSlope &&
          p.dh0 >= 0.0f && p.dh_max >= p.dh0 && p.dh_max <= kMaxTerrainDh && p.ground_height >= 0.0f &&
-         p.ground_height <= kMaxGroundHeight;
+         p.ground_height <= kMaxGroundHeight && p.low_band >= 0.0f && p.low_band <= kMaxTerrainDh;
+}
+
+uint32_t terrain_reach_cells(const TerrainParams& params) {
+  uint32_t reach = 0;
+  for (uint32_t k = 0, r = 1; k < kMaxTerrainWindows; ++k, r *= 2u) {
+    if (static_cast<float>(2u * r + 1u) * params.cell > params.max_window && k > 0) break;
+    reach += 2u * r;  // erosion then dilation, each by r
+  }
+  const uint32_t gap = gap_cells(params);
+  return reach > gap ? reach : gap;
 }
 
 void TerrainGrid::carve(Arena& arena, uint32_t cells) {
@@ -228,34 +254,78 @@ float terrain_height_at(const TerrainGrid& g, float x, float y) {
   return g.surface[cell_coord(y, g.y0, g.cell, g.ny) * g.nx + cell_coord(x, g.x0, g.cell, g.nx)];
 }
 
+void TerrainParts::carve(Arena& arena, uint32_t max_cells) {
+  whole.carve(arena, max_cells);
+  part = arena.alloc<TerrainGrid>(kMaxTerrainParts);
+  block_part = arena.alloc<uint8_t>(kMaxTerrainBlocks);
+  count = 0;
+}
+
 namespace {
 
-void clear_sums(TerrainGrid& g) {
-  const uint32_t cells = g.nx * g.ny;
-  for (uint32_t c = 0; c < cells; ++c) {
-    g.value[c] = NAN;     // lowest z
-    g.scratch[c] = 0.0f;  // low band: sum
-    g.opened[c] = 0.0f;   // low band: count
-  }
+// Whether the part's grid, grown by a cell, holds (x, y): a point's own part
+// always does, though float rounding may put it in the next block.
+bool covers(const TerrainGrid& g, float x, float y) {
+  return x >= g.x0 - g.cell && x < g.x0 + static_cast<float>(g.nx + 1u) * g.cell && y >= g.y0 - g.cell &&
+         y < g.y0 + static_cast<float>(g.ny + 1u) * g.cell;
 }
 
 }  // namespace
 
-bool terrain_begin(TerrainGrid& g, float cell, const float* lo, const float* hi) {
-  if (!fit_xy_bounds(lo, hi, cell, g)) return false;
-  clear_sums(g);
+const TerrainGrid* TerrainParts::part_at(float x, float y) const {
+  const float fx = std::floor((x - x0) / block), fy = std::floor((y - y0) / block);
+  if (!(fx >= -1.0f && fy >= -1.0f && fx <= static_cast<float>(bx) && fy <= static_cast<float>(by)))
+    return nullptr;  // far outside, or NaN
+  const int32_t ix = static_cast<int32_t>(fx), iy = static_cast<int32_t>(fy);
+  // The point's own block first, then its neighbours.
+  constexpr int32_t kOrder[3] = {0, -1, 1};
+  for (int32_t dy : kOrder)
+    for (int32_t dx : kOrder) {
+      const int32_t i = ix + dx, j = iy + dy;
+      if (i < 0 || j < 0 || i >= static_cast<int32_t>(bx) || j >= static_cast<int32_t>(by)) continue;
+      const uint8_t p = block_part[static_cast<uint32_t>(j) * bx + static_cast<uint32_t>(i)];
+      if (p != kNoTerrainPart && covers(part[p], x, y)) return &part[p];
+    }
+  return nullptr;
+}
+
+bool terrain_parts_begin(TerrainParts& parts, float cell, float x0, float y0, uint32_t block_cells,
+                         uint32_t bx, uint32_t by) {
+  if (bx == 0 || by == 0 || static_cast<uint64_t>(bx) * by > kMaxTerrainBlocks) return false;
+  parts.count = 0;
+  parts.cells = 0;
+  parts.cell = cell;
+  parts.x0 = x0;
+  parts.y0 = y0;
+  parts.block = static_cast<float>(block_cells) * cell;
+  parts.bx = bx;
+  parts.by = by;
+  for (uint32_t b = 0; b < bx * by; ++b) parts.block_part[b] = kNoTerrainPart;
   return true;
 }
 
-bool terrain_begin_cells(TerrainGrid& g, float cell, float x0, float y0, uint32_t nx, uint32_t ny) {
-  if (nx == 0 || ny == 0 || static_cast<uint64_t>(nx) * ny > g.max_cells) return false;
-  g.cell = cell;
-  g.x0 = x0;
-  g.y0 = y0;
+uint8_t terrain_add_part(TerrainParts& parts, float x0, float y0, uint32_t nx, uint32_t ny) {
+  const uint64_t need = static_cast<uint64_t>(nx) * ny;
+  if (parts.count >= kMaxTerrainParts || nx == 0 || ny == 0 || parts.cells + need > parts.whole.max_cells)
+    return kNoTerrainPart;
+  TerrainGrid& g = parts.part[parts.count];
+  const TerrainGrid& w = parts.whole;
+  const uint32_t at = parts.cells;
+  g.max_cells = static_cast<uint32_t>(need);
+  g.value = w.value + at;
+  g.surface = w.surface + at;
+  g.scratch = w.scratch + at;
+  g.opened = w.opened + at;
+  g.line = w.line;  // one row or column at a time, shared
+  g.off_ground = w.off_ground + at;
   g.nx = nx;
   g.ny = ny;
+  g.x0 = x0;
+  g.y0 = y0;
+  g.cell = parts.cell;
   clear_sums(g);
-  return true;
+  parts.cells += static_cast<uint32_t>(need);
+  return static_cast<uint8_t>(parts.count++);
 }
 
 void terrain_put_cell(TerrainGrid& g, uint32_t ix, uint32_t iy, float lowest, float band_sum,
@@ -266,61 +336,38 @@ void terrain_put_cell(TerrainGrid& g, uint32_t ix, uint32_t iy, float lowest, fl
   g.opened[c] = band_count;
 }
 
-void terrain_add_lowest(TerrainGrid& g, const float* p) {
-  terrain_lowest(g.value[terrain_cell_index(g, p)], p[2]);
-}
-
-void terrain_add_low_band(TerrainGrid& g, const float* p) {
-  const uint32_t c = terrain_cell_index(g, p);
-  terrain_low_band(g.value[c], p[2], g.scratch[c], g.opened[c]);
-}
-
-uint32_t terrain_finish(TerrainGrid& g, const TerrainParams& params, uint32_t* cells_ground) {
-  const uint32_t cells = g.nx * g.ny;
-  for (uint32_t c = 0; c < cells; ++c)
-    if (g.opened[c] > 0.0f) g.value[c] += g.scratch[c] / g.opened[c];
-  const uint32_t windows = progressive_filter(g, params);
-  fill_terrain_surface(g, static_cast<uint32_t>(params.max_window / params.cell) + 2u);
-  uint32_t ground_cells = 0;
-  for (uint32_t c = 0; c < cells; ++c) ground_cells += is_ground_cell(g, c) ? 1u : 0u;
-  if (cells_ground) *cells_ground = ground_cells;
+// Each part: its cells' values from their sums, the progressive filter, the
+// gaps filled.
+uint32_t terrain_finish(TerrainParts& parts, const TerrainParams& params) {
+  uint32_t windows = 0;
+  for (uint32_t k = 0; k < parts.count; ++k) {
+    TerrainGrid& g = parts.part[k];
+    const uint32_t cells = g.nx * g.ny;
+    for (uint32_t c = 0; c < cells; ++c)
+      if (g.opened[c] > 0.0f) g.value[c] += g.scratch[c] / g.opened[c];
+    windows = progressive_filter(g, params);
+    fill_terrain_surface(g, gap_cells(params));
+  }
   return windows;
 }
 
-uint32_t terrain_heights(const TerrainGrid& g, const float* xyz, uint32_t n, float ground_height,
+float terrain_height_at(const TerrainParts& parts, float x, float y) {
+  const TerrainGrid* g = parts.part_at(x, y);
+  return g == nullptr ? NAN : terrain_height_at(*g, x, y);
+}
+
+uint32_t terrain_heights(const TerrainParts& parts, const float* xyz, uint32_t n, float ground_height,
                          float* height, uint8_t* ground) {
   uint32_t on_ground = 0;
+  const TerrainGrid* only = parts.count == 1 ? &parts.part[0] : nullptr;
   for (uint32_t i = 0; i < n; ++i) {
     const float* p = xyz + 3u * i;
-    height[i] = p[2] - terrain_height_at(g, p[0], p[1]);
+    const float z = only ? terrain_height_at(*only, p[0], p[1]) : terrain_height_at(parts, p[0], p[1]);
+    height[i] = p[2] - z;
     ground[i] = height[i] <= ground_height ? 1u : 0u;
     on_ground += ground[i];
   }
   return on_ground;
-}
-
-// Lowest z per cell, then the mean of the points within kTerrainLowBand of
-// it: unbiased on slopes (the lowest point sits at the downhill edge) and
-// steadier under range noise than the minimum alone.
-Status classify_terrain(const float* xyz, uint32_t n, const TerrainParams& params, TerrainGrid& g,
-                        float* height, uint8_t* ground, TerrainStats* stats) {
-  if (!terrain_params_valid(params) || (n > 0 && (xyz == nullptr || height == nullptr || ground == nullptr)))
-    return Status::kInvalidArgument;
-  TerrainStats st;
-  if (n == 0) {
-    if (stats) *stats = st;
-    return Status::kOk;
-  }
-  float lo[2], hi[2];
-  xy_bounds(xyz, n, lo, hi);
-  if (!terrain_begin(g, params.cell, lo, hi)) return Status::kTileTooLarge;
-  for (uint32_t i = 0; i < n; ++i) terrain_add_lowest(g, xyz + 3u * i);
-  for (uint32_t i = 0; i < n; ++i) terrain_add_low_band(g, xyz + 3u * i);
-  st.windows = terrain_finish(g, params, &st.cells_ground);
-  st.points_ground = terrain_heights(g, xyz, n, params.ground_height, height, ground);
-  st.cells = g.nx * g.ny;
-  if (stats) *stats = st;
-  return Status::kOk;
 }
 
 }  // namespace spinhash

@@ -5,17 +5,22 @@
 // steps (curbs), and removes anything narrower than the window; a cell is
 // off the ground when the opening lowers it by more than the slope allowance
 // of that window. Memory: a few floats per grid cell, carved by the caller.
+//
+// The scene's path (scene/terrain_cells.hpp): each cell's sums (its lowest
+// z, then the points within low_band of it), the cells that hold points put
+// into TerrainParts, the filter run on each part, then the points' heights.
+// Parts are the groups of occupied cells that lie farther apart than the
+// filter reaches (terrain_reach_cells): each is filtered on a grid over its
+// own footprint, so the work follows the points, not the area they span.
 #pragma once
 #include <cmath>
 #include <cstdint>
 
 #include "spinhash/arena.hpp"
+#include "spinhash/limits.hpp"
 #include "spinhash/status.hpp"
 
 namespace spinhash {
-
-constexpr float kTerrainLowBand = 0.3f;     // m: cell value = mean of the points this close to its lowest
-constexpr uint32_t kMaxTerrainWindows = 8;  // PMF windows (half-widths 1, 2, 4, ... cells)
 
 struct TerrainParams {
   float cell = 0.5f;            // m: grid cell edge
@@ -24,9 +29,11 @@ struct TerrainParams {
   float dh0 = 0.2f;             // m: dh_0, height tolerance of the smallest window
   float dh_max = 2.5f;          // m: dh_max, the cap of the height tolerance
   float ground_height = 0.25f;  // m: a point at most this far above the terrain is ground
+  float low_band = 0.3f;        // m: a cell's value is the mean of its points this close to its lowest
 };
 
-// The grid over a cloud's xy bounding box; its buffers come from an Arena.
+// One dense grid of cells (a part of a strip's terrain); its buffers come
+// from an Arena, or from the TerrainParts that holds it.
 struct TerrainGrid {
   uint32_t max_cells = 0;
   float* value = nullptr;    // per cell: low mean z (NaN: no point)
@@ -43,54 +50,66 @@ struct TerrainGrid {
   void carve(Arena& arena, uint32_t cells);
 };
 
-struct TerrainStats {
-  uint32_t cells = 0;          // grid cells used (nx * ny)
-  uint32_t cells_ground = 0;   // non-empty cells the filter kept as ground
-  uint32_t points_ground = 0;  // points at most ground_height above the terrain
-  uint32_t windows = 0;        // PMF windows run
+// The terrain of a strip: up to kMaxTerrainParts grids in one carved
+// buffer, and the blocks (squares of `block` m) that say which part covers
+// a point. Cells of different parts lie farther apart than the filter
+// reaches, so each part's surface is the one its own cells give.
+struct TerrainParts {
+  TerrainGrid whole;            // the carved buffers
+  TerrainGrid* part = nullptr;  // kMaxTerrainParts, carved
+  uint32_t count = 0;
+  uint32_t cells = 0;  // cells used by the parts, together
+  float cell = 0.5f;
+  float x0 = 0.0f, y0 = 0.0f;     // min corner of block (0, 0): a multiple of `cell`
+  float block = 0.0f;             // m: block edge
+  uint32_t bx = 0, by = 0;        // blocks
+  uint8_t* block_part = nullptr;  // kMaxTerrainBlocks, carved: per block its part, kNoTerrainPart: none
+
+  void carve(Arena& arena, uint32_t max_cells);
+  // The part that covers (x, y) (local frame), nullptr: none.
+  const TerrainGrid* part_at(float x, float y) const;
 };
+constexpr uint8_t kNoTerrainPart = 0xFFu;
 
-// Classifies the n points of xyz (finite, in a local frame, z up): height[i]
-// = z - terrain(x, y); ground[i] = 1 when height[i] <= params.ground_height.
-// kTileTooLarge when the footprint needs more than grid.max_cells cells (nothing
-// written), kInvalidArgument on a bad parameter. O(n + cells * max_window/cell).
-Status classify_terrain(const float* xyz, uint32_t n, const TerrainParams& params, TerrainGrid& grid,
-                        float* height, uint8_t* ground, TerrainStats* stats);
+// Cells within which the filter's result at a cell depends on others: the
+// openings' reach (each window erodes and dilates by its half-width) or
+// the gap fill's, whichever is larger.
+uint32_t terrain_reach_cells(const TerrainParams& params);
 
-// classify_terrain in steps, for a grid that several windows share (a strip
-// of a scene's row of windows) over points that are not in one array. The
-// same operations in the same order: begin over the points' footprint (x, y
-// bounds; false when it needs more cells than carved), every point through
-// add_lowest, then every point again, in the same order, through
-// add_low_band, finish (returns the PMF windows run), then the heights of
-// any points within the footprint (returns how many are ground).
-bool terrain_begin(TerrainGrid& grid, float cell, const float* lo, const float* hi);
-// Or begin over nx x ny cells from (x0, y0), a multiple of `cell`, and put
-// each cell's sums (terrain_lowest, then terrain_low_band, over its points)
-// with terrain_put_cell: the stream keeps its cells' sums, not the points.
-bool terrain_begin_cells(TerrainGrid& grid, float cell, float x0, float y0, uint32_t nx, uint32_t ny);
+// Begins the parts over a rectangle of bx x by blocks of `block_cells`
+// cells from (x0, y0) (local frame, a multiple of `cell`): no part yet.
+// false when more blocks than kMaxTerrainBlocks.
+bool terrain_parts_begin(TerrainParts& parts, float cell, float x0, float y0, uint32_t block_cells,
+                         uint32_t bx, uint32_t by);
+// Adds a part of nx x ny cells from (x0, y0) covering the blocks whose
+// block_part the caller sets to the index returned; kNoTerrainPart when no
+// room (cells or parts). Its cells start empty (put each with terrain_put_cell).
+uint8_t terrain_add_part(TerrainParts& parts, float x0, float y0, uint32_t nx, uint32_t ny);
 void terrain_put_cell(TerrainGrid& grid, uint32_t ix, uint32_t iy, float lowest, float band_sum,
                       float band_count);
-void terrain_add_lowest(TerrainGrid& grid, const float* p);
-void terrain_add_low_band(TerrainGrid& grid, const float* p);
-uint32_t terrain_finish(TerrainGrid& grid, const TerrainParams& params, uint32_t* cells_ground);
-uint32_t terrain_heights(const TerrainGrid& grid, const float* xyz, uint32_t n, float ground_height,
+// Filters every part; returns the PMF windows run (per part: the same).
+uint32_t terrain_finish(TerrainParts& parts, const TerrainParams& params);
+// height[i] = z - terrain at each of the n points (local frame, within the
+// parts' blocks); ground[i] = 1 within ground_height. Returns the ground points.
+uint32_t terrain_heights(const TerrainParts& parts, const float* xyz, uint32_t n, float ground_height,
                          float* height, uint8_t* ground);
 
 // Terrain z at (x, y): bilinear over the cell centres around it, skipping
-// cells without data (the point's own cell always has some).
+// cells without data (the point's own cell always has some). NaN outside
+// every part.
+float terrain_height_at(const TerrainParts& parts, float x, float y);
 float terrain_height_at(const TerrainGrid& grid, float x, float y);
 
 bool terrain_params_valid(const TerrainParams& p);
 
 // A cell's sums, point by point: its lowest z (NaN: none yet), then, once
-// that is final, the points within kTerrainLowBand of it (relative to it:
-// small sums, no float drift). The cell's value is lowest + sum / count.
+// that is final, the points within `band` of it (relative to it: small
+// sums, no float drift). The cell's value is lowest + sum / count.
 inline void terrain_lowest(float& lowest, float z) {
   if (std::isnan(lowest) || z < lowest) lowest = z;
 }
-inline void terrain_low_band(float lowest, float z, float& sum, float& count) {
-  if (z > lowest + kTerrainLowBand) return;
+inline void terrain_low_band(float lowest, float z, float band, float& sum, float& count) {
+  if (z > lowest + band) return;
   sum += z - lowest;
   count += 1.0f;
 }

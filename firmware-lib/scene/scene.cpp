@@ -1,21 +1,33 @@
-// SceneRecognizer: the tile API, a batch run of the stream's window stages
-// (scene_window.hpp) over a tile held in memory. A tile that fits one window
-// is one window with an unbounded core; a larger one is cut on the stream's
-// lattice and each window gathers its points straight from the tile, so the
-// order of the tile's points does not matter.
+// SceneRecognizer: the tile API, the stream's path over a tile held in
+// memory. The tile is planned as every host front end plans a file
+// (scene_tile.hpp): bands across, each a line of the stream, its rows along
+// x pushed in order. The points stay where the caller keeps them, in any
+// order: each row is one pass over them that pushes the row's points and
+// finds the next row that holds any, so the passes follow the points.
 #include "spinhash/scene.hpp"
 
 #include <cmath>
-#include <limits>
 #include <new>
 
-#include "scene/scene_window.hpp"
+#include "scene/scene_status.hpp"
+#include "scene/window_lattice.hpp"
 #include "spinhash/limits.hpp"
+#include "spinhash/scene_tile.hpp"
 
 namespace spinhash {
 
+namespace {
+
+constexpr uint32_t kStagedPoints = 256;  // points pushed at once
+
+}  // namespace
+
 struct SceneBuffers {
-  WindowBuffers window;
+  SceneStream stream;
+  StreamConfig config;  // every band's
+  void* stream_workspace = nullptr;
+  size_t stream_bytes = 0;
+  double* staged = nullptr;         // 3 x kStagedPoints
   SceneObject* objects = nullptr;   // max_objects: the tile's answers
   RankedModel* rankings = nullptr;  // max_objects x top_n
   uint32_t count = 0;
@@ -26,15 +38,21 @@ struct SceneBuffers {
 
 namespace {
 
-constexpr double kUnbounded = std::numeric_limits<double>::infinity();
-
 Status carve(Arena& arena, const SceneConfig& c, SceneBuffers& b) {
-  b.window.carve(arena, c);
+  b.stream_bytes = required_stream_workspace_bytes(tile_stream_config(c, 0));
+  uint8_t* raw = arena.alloc<uint8_t>(b.stream_bytes + kBufferAlignment);
+  b.stream_workspace = nullptr;
+  if (raw != nullptr) {
+    const uintptr_t at =
+        (reinterpret_cast<uintptr_t>(raw) + kBufferAlignment - 1u) / kBufferAlignment * kBufferAlignment;
+    b.stream_workspace = reinterpret_cast<void*>(at);
+  }
+  b.staged = arena.alloc<double>(3u * kStagedPoints);
   b.objects = arena.alloc<SceneObject>(c.max_objects);
   b.rankings = arena.alloc<RankedModel>(static_cast<size_t>(c.max_objects) * c.top_n);
   b.top_n = c.top_n;
   b.max_objects = c.max_objects;
-  return arena.overflowed() ? Status::kWorkspaceTooSmall : Status::kOk;
+  return arena.overflowed() || b.stream_bytes == 0 ? Status::kWorkspaceTooSmall : Status::kOk;
 }
 
 // The sink of the tile API: each reported object copied into the result.
@@ -73,45 +91,58 @@ uint32_t finite_bounds(const double* xyz, uint32_t n, double* lo, double* hi) {
   return m;
 }
 
-// Cells a grid of `cell` m needs over [0, ds] x [0, dt].
-double grid_cells(double ds, double dt, float cell) {
-  const double c = static_cast<double>(cell);
-  return (ds / c + 2.0) * (dt / c + 2.0);
-}
-
-// One window (k, j) of a tile: its points gathered straight from the tile
-// into the strip's local frame at (s0, t0), then the stages. A window whose
-// points or terrain (`terrain`) did not fit is counted and lost.
-struct TileWindows {
-  const Database* db;
-  const SceneConfig* c;
-  const StreamFrame* frame;
-  WindowSource src;
+struct Tile {
+  const double* xyz;
   uint32_t n;
-  const WindowLattice* lattice;
-  bool one_window;
+  const TilePlan* plan;
 };
 
-Status run_tile_window(const TileWindows& t, Status terrain, int64_t k, uint32_t j, double s0, double t0,
-                       WindowBuffers& w, const WindowOutput& out) {
-  WindowJob job;
-  job.row = k;
-  job.col = j;
-  job.core =
-      t.one_window ? FrameRect{-kUnbounded, kUnbounded, -kUnbounded, kUnbounded} : t.lattice->core_rect(k, j);
-  job.s0 = s0;
-  job.t0 = t0;
-  uint32_t missed = 0;
-  const uint32_t got =
-      gather_window(t.src, t.n, t.one_window ? job.core : t.lattice->gather_rect(k, j), job, w, &missed);
-  if (got == 0) return Status::kOk;
-  ++out.scene->windows;
-  const Status s = missed > 0 || terrain != Status::kOk
-                       ? Status::kWindowOverflow
-                       : run_window(*t.db, *t.c, *t.frame, t.src, job, got, w, out);
-  if (s != Status::kWindowOverflow && s != Status::kTileTooLarge) return s;
-  ++out.scene->windows_overflowed;
-  return Status::kWindowOverflow;
+// Whether the band whose frame starts at origin_y takes the point: its t
+// across, as the stream computes it, within the swath.
+bool in_swath(const double* p, double origin_y, double t0, double t1) {
+  const double t = p[1] - origin_y;
+  return finite_xyz(p) && t >= t0 && t < t1;
+}
+
+// One band: its points (those its swath [t0, t1) takes) row by row; each
+// pass pushes a row and finds the next row that holds any of them.
+Status run_band(const Tile& t, uint32_t band, double t0, double t1, SceneBuffers& b) {
+  double origin[3];
+  tile_band_origin(*t.plan, band, origin);
+  b.stream.reset(origin);
+  const double y = origin[1];
+  constexpr int64_t kNoRow = INT64_MAX;
+  int64_t row = kNoRow;
+  for (uint32_t i = 0; i < t.n; ++i) {
+    const double* p = t.xyz + 3u * i;
+    if (in_swath(p, y, t0, t1)) {
+      const int64_t r = tile_row(*t.plan, p[0]);
+      row = r < row ? r : row;
+    }
+  }
+  Status status = Status::kOk;
+  while (row != kNoRow) {
+    int64_t next = kNoRow;
+    uint32_t staged = 0;
+    for (uint32_t i = 0; i < t.n; ++i) {
+      const double* p = t.xyz + 3u * i;
+      if (!in_swath(p, y, t0, t1)) continue;
+      const int64_t r = tile_row(*t.plan, p[0]);
+      if (r > row) {
+        next = r < next ? r : next;
+        continue;
+      }
+      if (r != row) continue;  // an earlier row's, pushed already
+      for (int a = 0; a < 3; ++a) b.staged[3u * staged + a] = p[a];
+      if (++staged == kStagedPoints) {
+        status = worse_scene_status(status, b.stream.push(b.staged, staged));
+        staged = 0;
+      }
+    }
+    if (staged > 0) status = worse_scene_status(status, b.stream.push(b.staged, staged));
+    row = next;
+  }
+  return worse_scene_status(status, b.stream.flush());
 }
 
 }  // namespace
@@ -128,7 +159,7 @@ const char* object_kind_name(ObjectKind k) noexcept {
 }
 
 size_t required_scene_workspace_bytes(const SceneConfig& config) noexcept {
-  if (!scene_config_valid(config)) return 0;
+  if (!scene_config_valid(config) || !stream_config_valid(tile_stream_config(config, 0))) return 0;
   Arena counter;
   counter.alloc<SceneBuffers>(1);
   SceneBuffers scratch;
@@ -140,7 +171,7 @@ Status SceneRecognizer::init(const Database* db, const SceneConfig& config, void
                              size_t workspace_bytes) noexcept {
   buffers_ = nullptr;
   db_ = nullptr;
-  if (db == nullptr || !db->is_open() || workspace == nullptr || !scene_config_valid(config))
+  if (db == nullptr || !db->is_open() || workspace == nullptr || required_scene_workspace_bytes(config) == 0)
     return Status::kInvalidArgument;
   if (reinterpret_cast<uintptr_t>(workspace) % kBufferAlignment != 0) return Status::kMisalignedBuffer;
   Arena arena(workspace, workspace_bytes);
@@ -149,7 +180,8 @@ Status SceneRecognizer::init(const Database* db, const SceneConfig& config, void
   new (b) SceneBuffers();
   Status s = carve(arena, config, *b);
   if (s != Status::kOk) return s;
-  s = b->window.init_recognizer(db, config);
+  b->config = tile_stream_config(config, 0);
+  s = b->stream.init(db, b->config, b->stream_workspace, b->stream_bytes, collect, b);
   if (s != Status::kOk) return s;
   db_ = db;
   config_ = config;
@@ -166,15 +198,10 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
     return res;
   }
   SceneBuffers& b = *buffers_;
-  const SceneConfig& c = config_;
   b.count = 0;
   b.dropped = 0;
-  // Heading +x; the origin on the absolute lattice of window cores below
-  // the min corner, as `spinhash scene` streams a file: the same grid cells.
-  StreamFrame frame;
-  double hi[3];
-  const uint32_t m = finite_bounds(xyz, n, frame.origin, hi);
-  const double core = static_cast<double>(c.window_core);
+  double lo[3], hi[3];
+  const uint32_t m = finite_bounds(xyz, n, lo, hi);
   res.stats.points_nonfinite = n - m;
   res.stats.workspace_used = used_bytes_;
   if (m == 0) {
@@ -182,50 +209,35 @@ SceneResult SceneRecognizer::recognize(const double* xyz, uint32_t n) noexcept {
     res.stats.points_in = n;
     return res;
   }
-  double extent[2];
-  for (int a = 0; a < 2; ++a) {
-    frame.origin[a] = std::floor(frame.origin[a] / core) * core;
-    extent[a] = hi[a] - frame.origin[a];
-  }
-  const bool one_window = m <= c.max_tile_points &&
-                          grid_cells(extent[0], extent[1], c.terrain_cell) <= c.max_terrain_cells &&
-                          grid_cells(extent[0], extent[1], c.segment_cell) <= c.max_segment_cells;
-  WindowLattice lattice;
-  lattice.core = one_window ? kUnbounded : static_cast<double>(c.window_core);
-  lattice.margin = static_cast<double>(c.window_margin);
-  lattice.object_margin = static_cast<double>(c.object_margin);
-  lattice.own_min = 0.0;
-  lattice.own_max = one_window ? kUnbounded : (std::floor(extent[1] / core) + 1.0) * core;
-  const int64_t rows = one_window ? 1 : lattice.row_of(extent[0]) + 1;
-  const uint32_t cols = one_window ? 1u : lattice.columns();
-  WindowSource src{xyz, nullptr, &frame};
-  uint64_t reported = 0, not_owned = 0;
-  const WindowOutput out{collect, &b, &res.stats, &reported, &not_owned};
+  const TilePlan plan = plan_tile(config_, lo, hi);
+  const Tile tile{xyz, n, &plan};
+  const StreamConfig& band_config = b.config;
+  StreamStats total;
   res.status = Status::kOk;
-  const TileWindows tile{db_, &c, &frame, src, n, &lattice, one_window};
-  const uint32_t per_strip = one_window ? 1u : strip_columns(c);
-  for (int64_t k = 0; k < rows; ++k) {
-    for (uint32_t j0 = 0; j0 < cols; j0 += per_strip) {
-      const uint32_t j1 = j0 + per_strip < cols ? j0 + per_strip : cols;
-      const FrameRect strip = one_window ? FrameRect{-kUnbounded, kUnbounded, -kUnbounded, kUnbounded}
-                                         : strip_rect(lattice, k, j0, j1);
-      const double s0 = one_window ? 0.0 : strip.s0, t0 = one_window ? 0.0 : strip.t0;
-      const Status terrain = build_strip_terrain(c, src, n, strip, s0, t0, b.window, &res.stats);
-      if (terrain == Status::kEmptyCloud) continue;
-      for (uint32_t j = j0; j < j1; ++j) {
-        const Status s = run_tile_window(tile, terrain, k, j, s0, t0, b.window, out);
-        if (s == Status::kWindowOverflow) {
-          res.status = Status::kWindowOverflow;
-        } else if (s == Status::kTooManyObjects && res.status == Status::kOk) {
-          res.status = s;
-        } else if (s != Status::kOk && s != Status::kTooManyObjects) {
-          res.status = s;
-          return res;
-        }
-      }
+  // The bands whose gathers hold points: each found by the least y beyond
+  // the last band run.
+  const double om = plan.object_margin;
+  uint32_t band = tile_band_gathering(plan, lo[1]);
+  while (band < plan.bands) {
+    const Status s = run_band(tile, band, static_cast<double>(band_config.swath_min),
+                              static_cast<double>(band_config.swath_max), b);
+    add_stream_stats(total, b.stream.stats());
+    res.status = worse_scene_status(res.status, s);
+    double origin[3];
+    tile_band_origin(plan, band, origin);
+    const double next_from = origin[1] + plan.band_width - om;  // the next band's gather
+    double least = kUnbounded;
+    for (uint32_t i = 0; i < n; ++i) {
+      const double* p = xyz + 3u * i;
+      if (finite_xyz(p) && p[1] >= next_from && p[1] < least) least = p[1];
     }
+    const uint32_t next = least < kUnbounded ? tile_band_gathering(plan, least) : plan.bands;
+    band = next > band ? next : band + 1u;
   }
-  res.stats.points_in = n;
+  res.stats = total.scene;
+  res.stats.points_nonfinite = n - m;
+  res.stats.workspace_used = used_bytes_;
+  res.points_lost = total.points_outside + total.points_late + total.points_glitch + total.points_overflow;
   res.stats.objects_dropped += b.dropped;
   if (b.dropped > 0 && res.status == Status::kOk) res.status = Status::kTooManyObjects;
   res.objects = b.objects;

@@ -34,6 +34,13 @@ bool objects_whole(const SceneConfig& c) {
          c.object_margin <= c.window_margin;
 }
 
+// The layer gap is a whole number of column bins, within a column.
+bool layer_gap_fits(const SceneConfig& c) {
+  const float bins = std::round(c.layer_gap / c.column_bin);
+  return multiple_of(c.layer_gap, c.column_bin) && bins >= 1.0f &&
+         bins < static_cast<float>(kSegmentColumnBins);
+}
+
 }  // namespace
 
 bool scene_config_valid(const SceneConfig& c) noexcept {
@@ -45,7 +52,8 @@ bool scene_config_valid(const SceneConfig& c) noexcept {
          multiple_of(c.window_core, c.terrain_cell) && multiple_of(c.window_core, c.segment_cell) &&
          multiple_of(c.window_margin, c.terrain_cell) && objects_whole(c) &&
          c.terrain_window >= c.terrain_cell && c.terrain_dh_max >= c.terrain_dh0 &&
-         c.max_length >= c.min_length && c.max_width >= c.min_width && c.max_height >= c.min_height;
+         c.max_length >= c.min_length && c.max_width >= c.min_width && c.max_height >= c.min_height &&
+         layer_gap_fits(c);
 }
 
 bool stream_config_valid(const StreamConfig& c) noexcept {

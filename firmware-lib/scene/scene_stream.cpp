@@ -10,9 +10,12 @@
 #include <new>
 
 #include "scene/point_ring.hpp"
+#include "scene/scene_status.hpp"
 #include "scene/scene_window.hpp"
 #include "scene/terrain_cells.hpp"
 #include "spinhash/limits.hpp"
+#include "spinhash/scene_fields.h"
+#include "util/saturating_add.hpp"
 
 namespace spinhash {
 
@@ -26,8 +29,9 @@ struct StreamBuffers {
   WindowBuffers window;
   PointRing ring;
   TerrainCells cells;
-  double pending[3u * kJumpConfirmPoints] = {};  // a jump awaiting confirmation (frame coordinates)
+  double pending[3u * kMaxJumpConfirmPoints] = {};  // a jump awaiting confirmation (frame coordinates)
   uint32_t pending_count = 0;
+  double gather_min_s = kUnbounded;  // the least s of the buffered points a window gathers (across)
   bool origin_set = false;
   bool flushed = false;
   int64_t next_row = 0;  // the first row of windows not yet run
@@ -43,6 +47,7 @@ const StreamStats kNoStreamStats{};  // stats() before init
 Status carve(Arena& arena, const StreamConfig& c, StreamBuffers& b) {
   b.window.carve(arena, c.scene);
   b.ring.carve(arena, c.max_buffered_points);
+  b.cells.low_band = c.scene.terrain_low_band;
   const double margin = static_cast<double>(c.scene.window_margin);
   b.cells.carve(arena, static_cast<double>(c.scene.terrain_cell),
                 static_cast<double>(c.scene.window_core) + 2.0 * margin,
@@ -62,87 +67,113 @@ double late_before(const StreamBuffers& b) {
   return b.cells.started && b.cells.summed_edge() > gathered ? b.cells.summed_edge() : gathered;
 }
 
-// Keeps the points a later row gathers, and those whose terrain cell is
-// not summed yet (points across beyond the gathered band count only there).
-void forget_done(StreamBuffers& b) {
-  const double s_keep = needed_from(b, b.next_row), summed = b.cells.summed_edge();
-  const double t_lo = b.lattice.own_min - b.lattice.object_margin,
-               t_hi = b.lattice.own_max + b.lattice.object_margin;
-  b.ring.keep_if(
-      [&](const double* p) { return p[0] >= s_keep && ((p[1] >= t_lo && p[1] < t_hi) || p[0] >= summed); });
+// Whether a window of the owned band gathers points at t across.
+bool in_gathered_band(const StreamBuffers& b, double t) {
+  return t >= b.lattice.own_min - b.lattice.object_margin && t < b.lattice.own_max + b.lattice.object_margin;
 }
 
-// Keeps the worse of two outcomes: a lost window outranks a full list.
-Status worse(Status a, Status b) {
-  if (a == Status::kWindowOverflow || b == Status::kWindowOverflow) return Status::kWindowOverflow;
-  return a != Status::kOk ? a : b;
+// Keeps the points that a later row gathers, and those whose terrain cell
+// is not summed yet and that a later row's terrain sees; notes the least s
+// a later row gathers.
+void forget_done(StreamBuffers& b) {
+  const double gathered = needed_from(b, b.next_row), summed = b.cells.summed_edge();
+  const double seen = static_cast<double>(b.next_row) * b.lattice.core - b.lattice.margin;
+  double least = kUnbounded;
+  b.ring.keep_if([&](const double* p) {
+    const bool in_band = in_gathered_band(b, p[1]);
+    const bool keep = (in_band && p[0] >= gathered) || (p[0] >= summed && p[0] >= seen);
+    if (keep && in_band && p[0] < least) least = p[0];
+    return keep;
+  });
+  b.gather_min_s = least;
+}
+
+// The first row whose windows gather points at s along: row k gathers
+// [k core - object_margin, (k + 1) core + object_margin).
+int64_t first_row_gathering(const WindowLattice& l, double s) {
+  return l.row_of(s - l.object_margin - l.core) + 1;
 }
 
 // A window of the strip whose points or terrain did not fit: counted, lost.
 Status overflowed(StreamBuffers& b, uint32_t points) {
   ++b.stats.windows_overflowed;
+  b.stats.scene.windows_overflowed = saturating_add(b.stats.scene.windows_overflowed, 1u);
   b.stats.points_in_overflowed += points;
   return Status::kWindowOverflow;
 }
 
 // Runs the windows [j0, j1) of row k, a strip sharing one terrain grid.
 Status run_strip(StreamBuffers& b, int64_t k, uint32_t j0, uint32_t j1) {
-  const WindowSource src{nullptr, &b.ring, &b.frame};
   const WindowOutput out{b.sink, b.sink_context, &b.stats.scene, &b.stats.objects_reported,
                          &b.stats.objects_not_owned};
   const FrameRect strip = strip_rect(b.lattice, k, j0, j1);
   const Status terrain =
-      build_strip_terrain(b.config.scene, b.cells, strip, strip.s0, strip.t0, b.window, &b.stats.scene);
+      build_strip_terrain(b.config.scene, b.cells, strip, strip_gather_rect(b.lattice, k, j0, j1), strip.s0,
+                          strip.t0, b.window, &b.stats.scene);
   if (terrain == Status::kEmptyCloud) return Status::kOk;  // nothing to see here
   Status status = Status::kOk;
   for (uint32_t j = j0; j < j1; ++j) {
     WindowJob job;
     job.row = k;
     job.col = j;
-    job.core = b.lattice.core_rect(k, j);
+    job.core = b.lattice.owned_area(k, j);
     job.s0 = strip.s0;  // the strip's local frame, in which its terrain lies
     job.t0 = strip.t0;
     uint32_t missed = 0;
-    const uint32_t got =
-        gather_window(src, b.ring.count, b.lattice.gather_rect(k, j), job, b.window, &missed);
+    const uint32_t got = gather_window(b.ring, b.lattice.gather_rect(k, j), job, b.window, &missed);
     if (got == 0) continue;
     ++b.stats.windows;
+    b.stats.scene.windows = saturating_add(b.stats.scene.windows, 1u);
     Status s = missed > 0 || terrain != Status::kOk
                    ? Status::kWindowOverflow
-                   : run_window(*b.db, b.config.scene, b.frame, src, job, got, b.window, out);
+                   : run_window(*b.db, b.config.scene, b.frame, b.ring, job, got, b.window, out);
     if (s == Status::kTileTooLarge || s == Status::kWindowOverflow) s = overflowed(b, got + missed);
-    status = worse(status, s);
+    status = worse_scene_status(status, s);
   }
   return status;
 }
 
 // Sums row k's terrain cells, then runs its windows over the buffer, strip
-// by strip.
-Status run_row(StreamBuffers& b, int64_t k) {
+// by strip. Out of line: scripts/instructions-per-point.sh splits the
+// stream's work at it.
+__attribute__((noinline)) Status run_row(StreamBuffers& b, int64_t k) {
   const double core = b.lattice.core, margin = b.lattice.margin;
   b.cells.sum(b.ring, static_cast<double>(k) * core - margin, static_cast<double>(k + 1) * core + margin);
   Status status = Status::kOk;
   const uint32_t cols = b.lattice.columns(), per_strip = strip_columns(b.config.scene);
   for (uint32_t j0 = 0; j0 < cols; j0 += per_strip)
-    status = worse(status, run_strip(b, k, j0, j0 + per_strip < cols ? j0 + per_strip : cols));
+    status = worse_scene_status(status, run_strip(b, k, j0, j0 + per_strip < cols ? j0 + per_strip : cols));
+  return status;
+}
+
+// The rows before this one are complete: no point within max_lag can
+// still reach their seen rectangles.
+int64_t complete_before(const StreamBuffers& b, double settled) {
+  return b.lattice.row_of(settled - b.lattice.margin);
+}
+
+// Runs row next_row when a buffered point lies in its gather, else skips to
+// the first row that gathers one (at most to `end`): the work follows the
+// points, whatever the area between them.
+Status run_or_skip(StreamBuffers& b, int64_t end) {
+  const int64_t first = b.gather_min_s < kUnbounded ? first_row_gathering(b.lattice, b.gather_min_s) : end;
+  Status status = Status::kOk;
+  if (first > b.next_row) {
+    b.next_row = first < end ? first : end;
+  } else {
+    status = run_row(b, b.next_row);
+    ++b.next_row;
+  }
+  forget_done(b);
+  b.stats.done_until = static_cast<double>(b.next_row) * b.lattice.core;
   return status;
 }
 
 // Runs every row that no point within max_lag can still reach.
 Status run_complete_rows(StreamBuffers& b) {
   Status status = Status::kOk;
-  const double settled = b.stats.furthest_along - b.max_lag;
-  while (settled >= static_cast<double>(b.next_row + 1) * b.lattice.core + b.lattice.margin) {
-    if (b.ring.count == 0) {  // nothing buffered (a confirmed gap): skip the empty rows at once
-      b.next_row = b.lattice.row_of(settled - b.lattice.margin);
-      b.stats.done_until = static_cast<double>(b.next_row) * b.lattice.core;
-      break;
-    }
-    status = worse(status, run_row(b, b.next_row));
-    ++b.next_row;
-    forget_done(b);
-    b.stats.done_until = static_cast<double>(b.next_row) * b.lattice.core;
-  }
+  const int64_t end = complete_before(b, b.stats.furthest_along - b.max_lag);
+  while (b.next_row < end) status = worse_scene_status(status, run_or_skip(b, end));
   return status;
 }
 
@@ -155,8 +186,9 @@ Status take(StreamBuffers& b, const double* stz) {
   }
   if (!b.ring.push(stz)) {
     ++b.stats.points_overflow;
-    status = Status::kWindowOverflow;
+    return Status::kWindowOverflow;
   }
+  if (in_gathered_band(b, stz[1]) && stz[0] < b.gather_min_s) b.gather_min_s = stz[0];
   return status;
 }
 
@@ -171,7 +203,7 @@ void start_line(StreamBuffers& b, const double* first) {
   b.stats.done_until = static_cast<double>(b.next_row) * b.lattice.core;
 }
 
-// A point far ahead of the line: held until kJumpConfirmPoints agree (a gap
+// A point far ahead of the line: held until jump_confirm_points agree (a gap
 // in the data), dropped as a glitch when the line goes on where it was.
 Status hold_jump(StreamBuffers& b, const double* stz) {
   if (b.pending_count > 0 && std::fabs(stz[0] - b.pending[0]) > b.max_jump) {
@@ -179,9 +211,10 @@ Status hold_jump(StreamBuffers& b, const double* stz) {
     b.pending_count = 0;
   }
   for (int a = 0; a < 3; ++a) b.pending[3u * b.pending_count + a] = stz[a];
-  if (++b.pending_count < kJumpConfirmPoints) return Status::kOk;
+  if (++b.pending_count < b.config.jump_confirm_points) return Status::kOk;
   Status status = Status::kOk;
-  for (uint32_t i = 0; i < b.pending_count; ++i) status = worse(status, take(b, b.pending + 3u * i));
+  for (uint32_t i = 0; i < b.pending_count; ++i)
+    status = worse_scene_status(status, take(b, b.pending + 3u * i));
   b.pending_count = 0;
   return status;
 }
@@ -200,7 +233,7 @@ Status push_one(StreamBuffers& b, const double* xyz) {
   }
   if (stz[0] < late_before(b)) {
     ++b.stats.points_late;  // beyond the declared lag: its terrain is made, or its windows have run
-    return Status::kOk;
+    return Status::kPointsLate;
   }
   if (stz[0] > b.stats.furthest_along + b.max_jump) return hold_jump(b, stz);
   if (b.pending_count > 0) {
@@ -266,7 +299,8 @@ Status SceneStream::push(const double* xyz, uint32_t n) noexcept {
     return Status::kStreamFlushed;
   }
   Status status = Status::kOk;
-  for (uint32_t i = 0; i < n; ++i) status = worse(status, push_one(b, xyz + 3u * static_cast<size_t>(i)));
+  for (uint32_t i = 0; i < n; ++i)
+    status = worse_scene_status(status, push_one(b, xyz + 3u * static_cast<size_t>(i)));
   b.stats.points_pushed += n;
   return status;
 }
@@ -280,25 +314,57 @@ Status SceneStream::flush() noexcept {
   b.pending_count = 0;
   if (!b.origin_set) return Status::kOk;  // nothing was pushed
   Status status = Status::kOk;
-  const int64_t last = b.lattice.row_of(b.stats.furthest_along);
-  for (; b.next_row <= last; ++b.next_row) status = worse(status, run_row(b, b.next_row));
+  const int64_t end = b.lattice.row_of(b.stats.furthest_along) + 1;  // later cores hold no point
+  while (b.next_row < end) status = worse_scene_status(status, run_or_skip(b, end));
   b.ring.count = 0;
+  b.gather_min_s = kUnbounded;
   b.stats.done_until = static_cast<double>(b.next_row) * b.lattice.core;
   return status;
 }
 
-void SceneStream::reset() noexcept {
+void SceneStream::reset(const double* origin) noexcept {
   if (buffers_ == nullptr) return;
   StreamBuffers& b = *buffers_;
   b.ring.count = 0;
   b.cells.start(b.lattice.own_min - b.lattice.margin);
   b.pending_count = 0;
+  b.gather_min_s = kUnbounded;
   b.origin_set = false;
+  if (origin != nullptr && finite_xyz(origin)) {
+    b.config.origin_given = true;
+    for (int a = 0; a < 3; ++a) b.config.origin[a] = origin[a];
+  }
   b.flushed = false;
   b.next_row = 0;
   const size_t used = b.stats.scene.workspace_used;
   b.stats = StreamStats{};
   b.stats.scene.workspace_used = used;
+}
+
+namespace {
+
+// Adding one line's counts to another's, field by field from the one list
+// (scene_fields.h): counts add (32-bit ones saturate), positions along the
+// line take the furthest, the workspace is the largest.
+void add_field_U32(uint32_t& into, uint32_t b) { into = saturating_add(into, b); }
+void add_field_U64(uint64_t& into, uint64_t b) { into += b; }
+void add_field_F64(double& into, double b) { into = b > into ? b : into; }
+void add_field_SIZE(size_t& into, size_t b) { into = b > into ? b : into; }
+void add_field_KINDS(uint32_t (&into)[kObjectKinds], const uint32_t (&b)[kObjectKinds]) {
+  for (uint32_t k = 0; k < kObjectKinds; ++k) into[k] = saturating_add(into[k], b[k]);
+}
+void add_field_SCENE(SceneStats& into, const SceneStats& b) {
+#define SPINHASH_ADD(kind, name, json) add_field_##kind(into.name, b.name);
+  SPINHASH_SCENE_STATS_FIELDS(SPINHASH_ADD)
+#undef SPINHASH_ADD
+}
+
+}  // namespace
+
+void add_stream_stats(StreamStats& into, const StreamStats& line) noexcept {
+#define SPINHASH_ADD(kind, name, json) add_field_##kind(into.name, line.name);
+  SPINHASH_STREAM_STATS_FIELDS(SPINHASH_ADD)
+#undef SPINHASH_ADD
 }
 
 const StreamStats& SceneStream::stats() const noexcept {

@@ -8,13 +8,12 @@
 
 #include "spinhash/answered.hpp"
 #include "spinhash/limits.hpp"
+#include "util/angle_math.hpp"
 #include "util/heap_sort.hpp"
+#include "util/saturating_add.hpp"
 
 namespace spinhash {
 namespace {
-
-constexpr float kRadToDeg = 180.0f / 3.14159265f;
-constexpr uint32_t kMaxStripColumns = 1024;  // windows sharing one terrain grid: a bound for the sizing loop
 
 ObjectKind classify(const ObjectShape& o, const SceneConfig& c) {
   if (o.hmin > c.max_clearance) return ObjectKind::kNotVehicleShaped;  // crown, overhang
@@ -35,15 +34,11 @@ bool size_agrees(const ObjectShape& o, const blob::ModelRecord& m, float toleran
   return std::fabs(o.length() - len) <= tolerance * len && std::fabs(o.width() - wid) <= tolerance * wid;
 }
 
-// A confident class may differ more from its leader's box: members of a
-// class differ by tens of centimetres, classes by metres.
-constexpr float kClassSizeFactor = 2.0f;
-
 // The model's box bottom above the terrain under `pose` (world-aligned,
 // from the object's origin, which lies at (ds, dt) in the window's grid
 // frame), m: the mean over its four bottom corners that have terrain under
 // them; NaN when none has. The terrain grid lies in the frame's axes.
-float ground_gap(const Pose& pose, const blob::ModelRecord& m, const TerrainGrid& terrain,
+float ground_gap(const Pose& pose, const blob::ModelRecord& m, const TerrainParts& terrain,
                  const StreamFrame& frame, float ds, float dt) {
   const float ax = static_cast<float>(frame.ax), ay = static_cast<float>(frame.ay);
   float sum = 0.0f;
@@ -66,24 +61,18 @@ float ground_gap(const Pose& pose, const blob::ModelRecord& m, const TerrainGrid
 // Not sunk deeper than `tolerance`; NaN (no terrain to test against) passes.
 bool not_sunk(float gap, float tolerance) { return !(gap < -tolerance); }
 
-uint32_t add_saturated(uint32_t a, uint64_t b) {
-  const uint64_t s = static_cast<uint64_t>(a) + b;
-  return s > 0xFFFFFFFFull ? 0xFFFFFFFFu : static_cast<uint32_t>(s);
-}
-
 // Exact footprint boxes in the stream frame, from the points' sources:
 // the same for every window that sees the same points.
-void object_boxes(const WindowSource& src, uint32_t n, uint32_t objects, WindowBuffers& b) {
-  constexpr double kFar = std::numeric_limits<double>::infinity();
+void object_boxes(const PointRing& ring, uint32_t n, uint32_t objects, WindowBuffers& b) {
   for (uint32_t k = 0; k < objects; ++k) {
     double* box = b.box + 4u * k;
-    box[0] = box[2] = kFar;
-    box[1] = box[3] = -kFar;
+    box[0] = box[2] = kUnbounded;
+    box[1] = box[3] = -kUnbounded;
   }
   for (uint32_t i = 0; i < n; ++i) {
     if (b.label[i] == kNoObject) continue;
     double stz[3];
-    src.stz(b.source[i], stz);
+    ring.get(b.source[i], stz);
     double* box = b.box + 4u * b.label[i];
     box[0] = stz[0] < box[0] ? stz[0] : box[0];
     box[1] = stz[0] > box[1] ? stz[0] : box[1];
@@ -102,7 +91,7 @@ void object_origin(const WindowBuffers& b, uint32_t k, double* s0, double* t0) {
 
 // Counting sort of the object points into b.gathered, world-aligned, each
 // object relative to its own origin; b.offsets[k] = object k's first point.
-void gather_objects(const WindowSource& src, uint32_t n, uint32_t objects, const StreamFrame& frame,
+void gather_objects(const PointRing& ring, uint32_t n, uint32_t objects, const StreamFrame& frame,
                     WindowBuffers& b) {
   for (uint32_t k = 0; k <= objects; ++k) b.offsets[k] = 0;
   for (uint32_t i = 0; i < n; ++i)
@@ -112,7 +101,7 @@ void gather_objects(const WindowSource& src, uint32_t n, uint32_t objects, const
     if (b.label[i] == kNoObject) continue;
     const uint32_t at = b.offsets[b.label[i]]++;
     double stz[3], s0, t0, dx, dy;
-    src.stz(b.source[i], stz);
+    ring.get(b.source[i], stz);
     object_origin(b, b.label[i], &s0, &t0);
     frame.offset_to_world(stz[0] - s0, stz[1] - t0, &dx, &dy);
     float* q = b.gathered + 3u * static_cast<size_t>(at);
@@ -137,8 +126,8 @@ SceneObject describe(const ObjectShape& o, const SceneConfig& c, const StreamFra
   out.extent[0] = o.length();
   out.extent[1] = o.width();
   out.extent[2] = o.hmax;
-  const float frame_deg = static_cast<float>(std::atan2(frame.ay, frame.ax)) * kRadToDeg;
-  float heading = std::atan2(o.ay, o.ax) * kRadToDeg + frame_deg;
+  const float frame_deg = rad_to_deg(static_cast<float>(std::atan2(frame.ay, frame.ax)));
+  float heading = rad_to_deg(std::atan2(o.ay, o.ax)) + frame_deg;
   if (heading > 180.0f) heading -= 360.0f;
   if (heading <= -180.0f) heading += 360.0f;
   out.heading_deg = heading;
@@ -206,7 +195,7 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
     out.classes[j] = r.class_ranking[j];
   out.class_confident =
       r.class_confident && out.class_count > 0 &&
-      size_agrees(o, db.model(out.classes[0].model), kClassSizeFactor * c.max_size_mismatch);
+      size_agrees(o, db.model(out.classes[0].model), c.class_size_factor * c.max_size_mismatch);
 }
 
 }  // namespace
@@ -225,6 +214,18 @@ TerrainParams scene_terrain_params(const SceneConfig& c) {
   p.dh0 = c.terrain_dh0;
   p.dh_max = c.terrain_dh_max;
   p.ground_height = c.ground_height;
+  p.low_band = c.terrain_low_band;
+  return p;
+}
+
+SegmentParams scene_segment_params(const SceneConfig& c) {
+  SegmentParams p;
+  p.cell = c.segment_cell;
+  p.split_height = c.layer_split_height;
+  p.min_points = c.min_object_points;
+  p.max_objects = c.max_objects;
+  p.column_bin = c.column_bin;
+  p.layer_gap_bins = static_cast<uint32_t>(std::lround(c.layer_gap / c.column_bin));
   return p;
 }
 
@@ -276,69 +277,51 @@ FrameRect strip_rect(const WindowLattice& lattice, int64_t k, uint32_t j0, uint3
   return r;
 }
 
-namespace {
-
-// Calls f(p) with the local float point p (frame minus (s0, t0)) of each
-// of src's n points that lies in `seen`.
-template <class F>
-void for_local_points(const WindowSource& src, uint32_t n, const FrameRect& seen, double s0, double t0,
-                      F&& f) {
-  for_points_in(src, n, seen, [&](const double* stz, uint32_t) {
-    const float p[3] = {static_cast<float>(stz[0] - s0), static_cast<float>(stz[1] - t0),
-                        static_cast<float>(stz[2])};
-    f(p);
-  });
+FrameRect strip_gather_rect(const WindowLattice& lattice, int64_t k, uint32_t j0, uint32_t j1) {
+  FrameRect r = lattice.gather_rect(k, j0);
+  r.t1 = lattice.gather_rect(k, j1 - 1u).t1;
+  return r;
 }
 
-// The filter over the strip's summed cells, counted.
+namespace {
+
+// The filter over the strip's filled cells, counted.
 Status finish_strip_terrain(const SceneConfig& c, WindowBuffers& b, SceneStats* st) {
-  const uint32_t windows = terrain_finish(b.terrain, scene_terrain_params(c), nullptr);
-  st->terrain_cells = add_saturated(st->terrain_cells, b.terrain.nx * b.terrain.ny);
-  st->terrain_windows = add_saturated(st->terrain_windows, windows);
+  const uint32_t windows = terrain_finish(b.terrain, scene_terrain_params(c));
+  st->terrain_cells = saturating_add(st->terrain_cells, b.terrain.cells);
+  st->terrain_windows = saturating_add(st->terrain_windows, windows);
   return Status::kOk;
 }
 
 }  // namespace
 
-uint32_t gather_window(const WindowSource& src, uint32_t n, const FrameRect& seen, const WindowJob& job,
-                       WindowBuffers& b, uint32_t* missed) {
+uint32_t gather_window(const PointRing& ring, const FrameRect& seen, const WindowJob& job, WindowBuffers& b,
+                       uint32_t* missed) {
   uint32_t got = 0;
   *missed = 0;
-  for_points_in(src, n, seen, [&](const double* stz, uint32_t i) {
+  for (uint32_t i = 0; i < ring.count; ++i) {
+    double stz[3];
+    ring.get(i, stz);
+    if (!seen.holds(stz[0], stz[1])) continue;
     if (got >= b.capacity) {
       ++*missed;
-      return;
+      continue;
     }
     float* p = b.local + 3u * static_cast<size_t>(got);
     p[0] = static_cast<float>(stz[0] - job.s0);
     p[1] = static_cast<float>(stz[1] - job.t0);
     p[2] = static_cast<float>(stz[2]);
     b.source[got++] = i;
-  });
+  }
   return got;
 }
 
-Status build_strip_terrain(const SceneConfig& c, const WindowSource& src, uint32_t n, const FrameRect& seen,
-                           double s0, double t0, WindowBuffers& b, SceneStats* st) {
-  float lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-  uint32_t inside = 0;
-  for_local_points(src, n, seen, s0, t0, [&](const float* p) {
-    ++inside;
-    for (int a = 0; a < 2; ++a) {
-      lo[a] = p[a] < lo[a] ? p[a] : lo[a];
-      hi[a] = p[a] > hi[a] ? p[a] : hi[a];
-    }
-  });
-  if (inside == 0) return Status::kEmptyCloud;
-  if (!terrain_begin(b.terrain, c.terrain_cell, lo, hi)) return Status::kTileTooLarge;
-  for_local_points(src, n, seen, s0, t0, [&](const float* p) { terrain_add_lowest(b.terrain, p); });
-  for_local_points(src, n, seen, s0, t0, [&](const float* p) { terrain_add_low_band(b.terrain, p); });
-  return finish_strip_terrain(c, b, st);
-}
-
-Status build_strip_terrain(const SceneConfig& c, const TerrainCells& cells, const FrameRect& seen, double s0,
-                           double t0, WindowBuffers& b, SceneStats* st) {
-  const Status s = cells.fill(seen, s0, t0, c.terrain_cell, b.terrain);
+Status build_strip_terrain(const SceneConfig& c, const TerrainCells& cells, const FrameRect& seen,
+                           const FrameRect& gathered, double s0, double t0, WindowBuffers& b,
+                           SceneStats* st) {
+  const double om = static_cast<double>(c.object_margin);
+  const FrameRect needed{gathered.s0 - om, gathered.s1 + om, gathered.t0 - om, gathered.t1 + om};
+  const Status s = cells.fill(seen, needed, s0, t0, terrain_reach_cells(scene_terrain_params(c)), b.terrain);
   return s != Status::kOk ? s : finish_strip_terrain(c, b, st);
 }
 
@@ -347,54 +330,50 @@ Status build_strip_terrain(const SceneConfig& c, const TerrainCells& cells, cons
 // window that owns it. Not ground and in no object: a fragment (or an
 // object past max_objects). Without labels (segmentation failed) only the
 // points and the ground.
-void count_owned_points(const WindowSource& src, const WindowJob& job, uint32_t n, const WindowBuffers& b,
+void count_owned_points(const PointRing& ring, const WindowJob& job, uint32_t n, const WindowBuffers& b,
                         bool labelled, SceneStats& st) {
   uint32_t owned = 0, ground = 0, in_objects = 0;
   for (uint32_t i = 0; i < n; ++i) {
     double stz[3];
-    src.stz(b.source[i], stz);
-    if (!job.core.holds(stz[0], stz[1])) continue;
+    ring.get(b.source[i], stz);
+    if (!area_holds(job.core, stz[0], stz[1])) continue;
     ++owned;
     ground += b.ground[i] ? 1u : 0u;
     in_objects += labelled && b.label[i] != kNoObject ? 1u : 0u;
   }
-  st.points_in = add_saturated(st.points_in, owned);
-  st.points_ground = add_saturated(st.points_ground, ground);
+  st.points_in = saturating_add(st.points_in, owned);
+  st.points_ground = saturating_add(st.points_ground, ground);
   if (!labelled) return;
-  st.points_in_objects = add_saturated(st.points_in_objects, in_objects);
-  st.points_fragments = add_saturated(st.points_fragments, owned - ground - in_objects);
+  st.points_in_objects = saturating_add(st.points_in_objects, in_objects);
+  st.points_fragments = saturating_add(st.points_fragments, owned - ground - in_objects);
 }
 
-Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& frame, const WindowSource& src,
+Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& frame, const PointRing& ring,
                   const WindowJob& job, uint32_t n, WindowBuffers& b, const WindowOutput& out) {
   SceneStats& st = *out.scene;
   if (n == 0) return Status::kOk;
   terrain_heights(b.terrain, b.local, n, c.ground_height, b.height, b.ground);
-  SegmentParams sp;
-  sp.cell = c.segment_cell;
-  sp.split_height = c.layer_split_height;
-  sp.min_points = c.min_object_points;
-  sp.max_objects = c.max_objects;
+  const SegmentParams sp = scene_segment_params(c);
   SegmentStats ss;
   const Status seg = segment_objects(b.local, b.height, b.ground, n, sp, b.segments, b.shapes, b.label, &ss);
   const bool labelled = seg == Status::kOk || seg == Status::kTooManyObjects;
-  count_owned_points(src, job, n, b, labelled, st);
+  count_owned_points(ring, job, n, b, labelled, st);
   if (!labelled) return seg;
-  st.segment_cells = add_saturated(st.segment_cells, ss.cells);
-  st.components = add_saturated(st.components, ss.components);
-  st.objects_dropped = add_saturated(st.objects_dropped, ss.dropped);
-  object_boxes(src, n, ss.objects, b);
-  gather_objects(src, n, ss.objects, frame, b);
+  st.segment_cells = saturating_add(st.segment_cells, ss.cells);
+  st.components = saturating_add(st.components, ss.components);
+  st.objects_dropped = saturating_add(st.objects_dropped, ss.dropped);
+  object_boxes(ring, n, ss.objects, b);
+  gather_objects(ring, n, ss.objects, frame, b);
   for (uint32_t k = 0; k < ss.objects; ++k) {
     const double* box = b.box + 4u * k;
-    if (!job.core.holds(0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]))) {
+    if (!area_holds(job.core, 0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]))) {
       ++*out.objects_not_owned;  // another window reports it
       continue;
     }
     SceneObject o = describe(b.shapes[k], c, frame, job);
     if (o.kind == ObjectKind::kVehicleCandidate) recognize_object(db, c, frame, job, k, b, o, &st);
     st.objects_by_kind[static_cast<uint32_t>(o.kind)] =
-        add_saturated(st.objects_by_kind[static_cast<uint32_t>(o.kind)], 1u);
+        saturating_add(st.objects_by_kind[static_cast<uint32_t>(o.kind)], 1u);
     ++*out.objects_reported;
     if (out.sink != nullptr) out.sink(out.context, o, job.row, job.col);
   }

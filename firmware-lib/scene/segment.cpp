@@ -3,31 +3,12 @@
 #include <cmath>
 
 #include "geometry/xy_frame.hpp"
+#include "util/union_find.hpp"
 
 namespace spinhash {
 namespace {
 
 constexpr uint32_t kLayers = 2;  // low (vehicles, walls, trunks) and high (crowns, roofs)
-
-uint32_t find_root(uint32_t* parent, uint32_t c) {
-  // Path halving: each step at least halves the depth, so the loop ends
-  // within the forest's size; bounded by the cell count.
-  while (parent[c] != c) {
-    parent[c] = parent[parent[c]];
-    c = parent[c];
-  }
-  return c;
-}
-
-void unite(uint32_t* parent, uint32_t a, uint32_t b) {
-  a = find_root(parent, a);
-  b = find_root(parent, b);
-  if (a == b) return;
-  if (a < b)
-    parent[b] = a;  // the smaller index wins: labels do not depend on visiting order
-  else
-    parent[a] = b;
-}
 
 uint32_t coord(float v, float v0, float cell, uint32_t count) {
   const float c = (v - v0) / cell;
@@ -36,28 +17,31 @@ uint32_t coord(float v, float v0, float cell, uint32_t count) {
   return i < count ? i : count - 1u;
 }
 
+// The cell of a point above ground: its cell of the whole footprint, less
+// the grid's offset (the points above ground lie within [ox, ox + nx)).
 uint32_t cell_of(const SegmentGrid& g, const float* p) {
-  return coord(p[1], g.y0, g.cell, g.ny) * g.nx + coord(p[0], g.x0, g.cell, g.nx);
+  return (coord(p[1], g.y0, g.cell, g.frame_ny) - g.oy) * g.nx +
+         (coord(p[0], g.x0, g.cell, g.frame_nx) - g.ox);
 }
 
-uint32_t height_bin(float h) {
-  const float b = h / kColumnBin;
+uint32_t height_bin(float h, float bin) {
+  const float b = h / bin;
   if (!(b > 0.0f)) return 0;
-  return b < static_cast<float>(kColumnBins - 1u) ? static_cast<uint32_t>(b) : kColumnBins - 1u;
+  return b < static_cast<float>(kSegmentColumnBins - 1u) ? static_cast<uint32_t>(b) : kSegmentColumnBins - 1u;
 }
 
 // Turns each cell's occupied-bin mask into its low layer's bins: the lowest
 // occupied bin (low byte) and the highest reached from it without
-// kLayerGapBins empty bins on the way (second byte).
-void column_tops(SegmentGrid& g) {
+// gap_bins empty bins on the way (second byte).
+void column_tops(SegmentGrid& g, uint32_t gap_bins) {
   const uint32_t cells = g.nx * g.ny;
   for (uint32_t c = 0; c < cells; ++c) {
     const uint32_t mask = g.column[c];
     uint32_t low = 0, top = 0, empty = 0;
     bool started = false;
-    for (uint32_t b = 0; b < kColumnBins; ++b) {
+    for (uint32_t b = 0; b < kSegmentColumnBins; ++b) {
       if (mask & (1u << b)) {
-        if (started && empty >= kLayerGapBins) break;
+        if (started && empty >= gap_bins) break;
         if (!started) low = b;
         started = true;
         top = b;
@@ -72,10 +56,10 @@ void column_tops(SegmentGrid& g) {
 
 // Slot of a non-ground point: layer * cells + cell. High: above split, or
 // above a gap in its cell's column.
-uint32_t slot_of(const SegmentGrid& g, const float* p, float h, float split) {
+uint32_t slot_of(const SegmentGrid& g, const float* p, float h, const SegmentParams& params) {
   const uint32_t cells = g.nx * g.ny;
   const uint32_t c = cell_of(g, p);
-  return (h > split || height_bin(h) > (g.column[c] >> 8) ? cells : 0u) + c;
+  return (h > params.split_height || height_bin(h, params.column_bin) > (g.column[c] >> 8) ? cells : 0u) + c;
 }
 
 // Low-layer cells join only when their columns overlap in height (within a
@@ -129,6 +113,42 @@ void set_axes(ObjectShape& o) {
   o.ay = static_cast<float>(std::sin(angle));
 }
 
+// The frame over all n points (the footprint's min corner snapped to the
+// cell: the objects' sums are taken from it) and the grid over the cells
+// its points above ground span. false with nx = 0 when every point is
+// ground; false with nx > 0 when the grid needs more than max_cells.
+bool fit_frame(const float* xyz, const uint8_t* ground, uint32_t n, float cell, SegmentGrid& g) {
+  g.nx = g.ny = 0;
+  float lo[2], hi[2];
+  xy_bounds(xyz, n, lo, hi);
+  g.cell = cell;
+  g.x0 = snap_down(lo[0], cell);
+  g.y0 = snap_down(lo[1], cell);
+  const float fx = (hi[0] - g.x0) / cell + 1.0f, fy = (hi[1] - g.y0) / cell + 1.0f;
+  if (!(fx < 4.0e9f && fy < 4.0e9f)) {
+    g.nx = 1;  // not empty: refused
+    return false;
+  }
+  g.frame_nx = static_cast<uint32_t>(fx);
+  g.frame_ny = static_cast<uint32_t>(fy);
+  uint32_t c_lo[2] = {0xFFFFFFFFu, 0xFFFFFFFFu}, c_hi[2] = {0, 0};
+  for (uint32_t i = 0; i < n; ++i) {
+    if (ground[i]) continue;
+    const uint32_t c[2] = {coord(xyz[3u * i], g.x0, cell, g.frame_nx),
+                           coord(xyz[3u * i + 1u], g.y0, cell, g.frame_ny)};
+    for (int a = 0; a < 2; ++a) {
+      c_lo[a] = c[a] < c_lo[a] ? c[a] : c_lo[a];
+      c_hi[a] = c[a] > c_hi[a] ? c[a] : c_hi[a];
+    }
+  }
+  if (c_lo[0] > c_hi[0]) return false;  // all ground
+  g.ox = c_lo[0];
+  g.oy = c_lo[1];
+  g.nx = c_hi[0] - c_lo[0] + 1u;
+  g.ny = c_hi[1] - c_lo[1] + 1u;
+  return static_cast<uint64_t>(g.nx) * g.ny <= g.max_cells;
+}
+
 }  // namespace
 
 void SegmentGrid::carve(Arena& arena, uint32_t cells) {
@@ -146,7 +166,11 @@ Status segment_objects(const float* xyz, const float* height, const uint8_t* gro
     if (stats) *stats = st;
     return Status::kOk;
   }
-  if (!fit_xy_frame(xyz, n, params.cell, g)) return Status::kTileTooLarge;
+  if (!fit_frame(xyz, ground, n, params.cell, g)) {
+    for (uint32_t i = 0; i < n; ++i) label[i] = kNoObject;
+    if (stats) *stats = st;
+    return g.nx == 0 ? Status::kOk : Status::kTileTooLarge;  // all ground, or too wide
+  }
   const uint32_t cells = g.nx * g.ny;
   st.cells = cells;
   for (uint32_t s = 0; s < kLayers * cells; ++s) {
@@ -155,16 +179,16 @@ Status segment_objects(const float* xyz, const float* height, const uint8_t* gro
   }
   for (uint32_t c = 0; c < cells; ++c) g.column[c] = 0;
   for (uint32_t i = 0; i < n; ++i)
-    if (!ground[i]) g.column[cell_of(g, xyz + 3u * i)] |= 1u << height_bin(height[i]);
-  column_tops(g);
+    if (!ground[i]) g.column[cell_of(g, xyz + 3u * i)] |= 1u << height_bin(height[i], params.column_bin);
+  column_tops(g, params.layer_gap_bins);
   for (uint32_t i = 0; i < n; ++i)
     if (!ground[i]) {
-      const uint32_t s = slot_of(g, xyz + 3u * i, height[i], params.split_height);
+      const uint32_t s = slot_of(g, xyz + 3u * i, height[i], params);
       g.parent[s] = s;
     }
   link_neighbours(g);
   for (uint32_t i = 0; i < n; ++i)
-    if (!ground[i]) ++g.object[find_root(g.parent, slot_of(g, xyz + 3u * i, height[i], params.split_height))];
+    if (!ground[i]) ++g.object[find_root(g.parent, slot_of(g, xyz + 3u * i, height[i], params))];
   // Object ids in slot order: deterministic, independent of the point order.
   for (uint32_t s = 0; s < kLayers * cells; ++s) {
     if (g.parent[s] != s) continue;
@@ -183,8 +207,7 @@ Status segment_objects(const float* xyz, const float* height, const uint8_t* gro
   for (uint32_t i = 0; i < n; ++i) {
     label[i] = kNoObject;
     if (ground[i]) continue;
-    const uint32_t id =
-        g.object[find_root(g.parent, slot_of(g, xyz + 3u * i, height[i], params.split_height))];
+    const uint32_t id = g.object[find_root(g.parent, slot_of(g, xyz + 3u * i, height[i], params))];
     if (id == kNoObject) continue;
     label[i] = id;
     ObjectShape& o = objects[id];

@@ -1,13 +1,19 @@
-// The stream frame and the window lattice with its ownership rule: square
-// cores of edge `core` tile the (s, t) plane, each window's terrain sees its
-// core plus `margin` on every side and its objects the core plus
-// `object_margin`, and an object belongs to the window whose half-open core
-// holds its centre. Shared by the stream and the tile API.
+// The stream frame and the window lattice: square cores of edge `core` tile
+// the (s, t) plane, each window's terrain sees its core plus `margin` on
+// every side and its objects the core plus `object_margin`, and an object
+// belongs to the window whose core holds its centre (the ownership rule of
+// scene_ownership.hpp, each core an owned area).
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <limits>
+
+#include "spinhash/scene_ownership.hpp"
 
 namespace spinhash {
+
+// Beyond every coordinate: the empty box's bounds.
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
 // A point with three finite coordinates (the rest is counted, never used).
 inline bool finite_xyz(const double* p) {
@@ -82,6 +88,16 @@ struct WindowLattice {
     r.t0 = own_min + static_cast<double>(j) * core;
     r.t1 = r.t0 + core < own_max ? r.t0 + core : own_max;
     return r;
+  }
+  // The core as the area that owns the objects whose centre it holds.
+  OwnedArea owned_area(int64_t k, uint32_t j) const {
+    const FrameRect r = core_rect(k, j);
+    OwnedArea a;
+    a.min[0] = r.s0;
+    a.max[0] = r.s1;
+    a.min[1] = r.t0;
+    a.max[1] = r.t1;
+    return a;
   }
   FrameRect seen_rect(int64_t k, uint32_t j) const { return grown(core_rect(k, j), margin); }
   FrameRect gather_rect(int64_t k, uint32_t j) const { return grown(core_rect(k, j), object_margin); }

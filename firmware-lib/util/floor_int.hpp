@@ -1,5 +1,5 @@
 // floor of a float as an int, for |t| < 2^23 (the grids' clamped cell
-// coordinates): exact either way.
+// coordinates): exact either way; and of a double as an int64.
 #pragma once
 #include <cmath>
 #include <cstdint>
@@ -17,6 +17,13 @@ inline int32_t floor_to_int(float t) {
   const int32_t i = static_cast<int32_t>(t);
   return static_cast<float>(i) > t ? i - 1 : i;
 #endif
+}
+
+// floor of a double as an int64, for |v| < 2^62: exact (the truncation,
+// one less where it rounded up), without a libm call on SSE2.
+inline int64_t floor_to_int64(double v) {
+  const auto t = static_cast<int64_t>(v);
+  return static_cast<double>(t) > v ? t - 1 : t;
 }
 
 }  // namespace spinhash

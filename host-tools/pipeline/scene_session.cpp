@@ -5,30 +5,61 @@
 namespace spinhash::pipeline {
 
 bool SceneSession::init(const Database* db, const SceneConfig& cfg, std::string* error) {
-  const size_t bytes = required_scene_workspace_bytes(cfg);
-  if (bytes == 0) {
+  SceneConfig probe = cfg;
+  if (probe.max_tile_points == 0) probe.max_tile_points = 1;  // 0: sized from each tile's density
+  if (!scene_config_valid(probe)) {
     *error = "invalid scene configuration";
     return false;
   }
-  workspace_ = host::AlignedBytes(bytes);
-  const Status s = scene_.init(db, cfg, workspace_.data(), workspace_.size());
-  if (s != Status::kOk) {
-    *error = std::string("scene recognizer: ") + status_name(s);
-    return false;
-  }
+  db_ = db;
+  config_ = cfg;
+  tile_.reset();
   return true;
 }
 
-SceneResult SceneSession::recognize(const std::vector<double>& xyz) {
-  const auto start = std::chrono::steady_clock::now();
-  const uint64_t n = xyz.size() / 3u;
+void SceneSession::push(const double* xyz, size_t n) {
+  if (!tile_) {
+    TileStreamOptions options;
+    options.scene = config_;
+    tile_ = std::make_unique<TileStreamer>(options);
+    started_ = std::chrono::steady_clock::now();
+  }
+  tile_->add(xyz, n);
+}
+
+SceneResult SceneSession::flush() {
+  if (!tile_) push(nullptr, 0);
+  objects_.clear();
+  rankings_.clear();
+  uint32_t dropped = 0;
+  last_ = tile_->finish(*db_, [&](const SceneObject& o) {
+    if (objects_.size() >= config_.max_objects) {
+      ++dropped;
+      return;
+    }
+    objects_.push_back(o);
+    rankings_.emplace_back(o.ranking, o.ranking + o.ranking_count);
+  });
+  tile_.reset();
+  last_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started_).count();
+  for (size_t k = 0; k < objects_.size(); ++k) objects_[k].ranking = rankings_[k].data();
   SceneResult r;
-  if (n > 0xFFFFFFFFull)
-    r.status = Status::kTooManyPoints;  // more than any workspace holds
-  else
-    r = scene_.recognize(xyz.data(), static_cast<uint32_t>(n));
-  last_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  r.status = last_.status;
+  if (dropped > 0 && r.status == Status::kOk) r.status = Status::kTooManyObjects;
+  r.objects = objects_.data();
+  r.object_count = static_cast<uint32_t>(objects_.size());
+  r.stats = last_.stats.scene;
+  r.stats.objects_dropped += dropped;
+  r.stats.workspace_used = last_.workspace_bytes;
+  r.points_lost = last_.stats.points_outside + last_.stats.points_late + last_.stats.points_glitch +
+                  last_.stats.points_overflow;
   return r;
+}
+
+SceneResult SceneSession::recognize(const std::vector<double>& xyz) {
+  tile_.reset();
+  push(xyz.data(), xyz.size() / 3);
+  return flush();
 }
 
 std::string scene_stats_text(const SceneStats& st) {

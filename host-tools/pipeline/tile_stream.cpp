@@ -1,26 +1,18 @@
 #include "pipeline/tile_stream.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <map>
-#include <memory>
+#include <set>
 #include <stdexcept>
 
 #include "cloud/metric_source.hpp"
 #include "pipeline/object_units.hpp"
-#include "pipeline/spill_folder.hpp"
-#include "spinhash/scene_fields.h"
-
 #include "spinhash/limits.hpp"
+#include "spinhash/scene_tile.hpp"
 
 namespace spinhash::pipeline {
 namespace {
-
-namespace fs = std::filesystem;
 
 // Sizing the stream from the tile: the densest expected spot over the
 // tile's mean density (overlapping flight lines double it), and the bounds.
@@ -29,226 +21,32 @@ constexpr uint64_t kMinWindowPoints = 100000;
 constexpr uint64_t kMaxWindowPoints = kMaxSceneTilePoints;
 constexpr uint64_t kMinBufferedPoints = 200000;
 constexpr uint64_t kMaxBufferedPoints = kMaxStreamBufferedPoints;
-// A 32 m cell across the track holding fewer points than this share of the
-// tile is an outlier (a GNSS glitch), not part of the swath.
-constexpr double kOutlierCellShare = 1e-6;
-constexpr uint64_t kMinSwathCellPoints = 2;
-// A band of columns streamed at once: 2 cores (64 m) across, plus its
-// margins. Wider tiles are cut into bands, each owning its columns, so the
-// buffer never holds a row across the whole tile.
-constexpr int64_t kBandColumns = 2;
-// The spill's rows along the track: the stream's declared lag, since a row's
-// points are pushed in any order. Shallow rows let the stream run a row of
-// windows soon after its lookahead arrives, so its buffer holds little more
-// than what its windows gather.
-constexpr double kSpillRowDepth = 8.0;  // m
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-bool finite3(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
-
-// One temporary file per cell of the lattice (rows of kSpillRowDepth along
-// x, columns of a window core across, y), written through small buffers so
-// that a tile of thousands of cells keeps neither its files open nor its
-// points in memory.
-class CellSpill {
- public:
-  CellSpill(double row_depth, double column_width)
-      : row_depth_(row_depth), core_(column_width), dir_(make_spill_folder()) {}
-  ~CellSpill() { remove_spill_folder(dir_.string()); }
-  CellSpill(const CellSpill&) = delete;
-  CellSpill& operator=(const CellSpill&) = delete;
-
-  int64_t row_of(double x) const { return static_cast<int64_t>(std::floor(x / row_depth_)); }
-  int64_t cell_of(double y) const { return static_cast<int64_t>(std::floor(y / core_)); }
-  void append(const double* p) {
-    const Cell c{row_of(p[0]), cell_of(p[1])};
-    std::vector<double>& buf = cells_[c];
-    buf.insert(buf.end(), p, p + 3);
-    ++buffered_;
-    if (buf.size() >= 3 * kCellBufferPoints) write_out(c, buf);
-    if (buffered_ >= kSpillBufferPoints) finish();  // a wide tile's many cells: all out at once
-  }
-  void finish() {
-    for (auto& kv : cells_) write_out(kv.first, kv.second);
-  }
-  std::vector<int64_t> rows() const {
-    std::vector<int64_t> r;
-    for (const auto& kv : cells_)
-      if (r.empty() || r.back() != kv.first.first) r.push_back(kv.first.first);
-    return r;
-  }
-  // Hands the cell's points out in chunks (none when the cell is empty).
-  template <class F>
-  void read(int64_t row, int64_t col, size_t chunk, F&& on_chunk) const {
-    if (cells_.count({row, col}) == 0) return;
-    std::ifstream in(path({row, col}), std::ios::binary);
-    std::vector<double> buf(3 * chunk);
-    while (in) {
-      in.read(reinterpret_cast<char*>(buf.data()), static_cast<std::streamsize>(buf.size() * sizeof(double)));
-      const size_t got = static_cast<size_t>(in.gcount()) / (3 * sizeof(double));
-      if (got > 0) on_chunk(buf.data(), got);
-    }
-  }
-
- private:
-  using Cell = std::pair<int64_t, int64_t>;
-  static constexpr size_t kCellBufferPoints = 256;        // 6 KB per cell in memory
-  static constexpr size_t kSpillBufferPoints = 1u << 18;  // 6 MB over all cells, whatever the tile's size
-
-  fs::path path(const Cell& c) const {
-    return dir_ / ("r" + std::to_string(c.first) + "c" + std::to_string(c.second) + ".xyz");
-  }
-  void write_out(const Cell& c, std::vector<double>& buf) {
-    if (buf.empty()) return;
-    std::ofstream f(path(c), std::ios::binary | std::ios::app);
-    f.write(reinterpret_cast<const char*>(buf.data()),
-            static_cast<std::streamsize>(buf.size() * sizeof(double)));
-    if (!f) throw std::runtime_error("cannot write " + path(c).string());
-    buffered_ -= buf.size() / 3;
-    buf.clear();
-    buf.shrink_to_fit();
-  }
-
-  double row_depth_, core_;
-  size_t buffered_ = 0;  // points held in the cells' buffers
-  fs::path dir_;
-  std::map<Cell, std::vector<double>> cells_;  // ordered: rows, then columns
-};
-
-// What the spill pass learns of the tile.
-struct TileExtent {
-  uint64_t finite = 0, nonfinite = 0;
-  double xmin = INFINITY, xmax = -INFINITY, zmin = INFINITY;
-  std::map<int64_t, uint64_t> across;  // points per core-wide cell across the track (y)
-};
-
-void spill(host::PointSource& source, size_t chunk, uint32_t picture_points, CellSpill& cells, TileExtent& e,
-           TileStreamResult& res) {
-  const uint64_t declared = source.header().count_known ? source.header().point_count : 0;
-  const uint64_t every = picture_points > 0 && declared > picture_points ? declared / picture_points : 1;
-  std::vector<double> buf(3 * chunk);
-  for (size_t got; (got = source.read(buf.data(), chunk)) > 0;) {
-    for (size_t i = 0; i < got; ++i) {
-      const double* p = buf.data() + 3 * i;
-      if (picture_points > 0 && (res.points_read + i) % every == 0)
-        res.picture_xyz.insert(res.picture_xyz.end(), p, p + 3);
-      if (!finite3(p)) {
-        ++e.nonfinite;
-        continue;
-      }
-      cells.append(p);
-      ++e.finite;
-      e.xmin = std::min(e.xmin, p[0]);
-      e.xmax = std::max(e.xmax, p[0]);
-      e.zmin = std::min(e.zmin, p[2]);
-      ++e.across[cells.cell_of(p[1])];
-    }
-    res.points_read += got;
-  }
-  cells.finish();
-}
-
-// Cells of a grid of `cell` m over w x h m, with the snap's extra rows.
-uint32_t grid_cells(double w, double h, float cell) {
-  const double cells = (std::ceil(w / cell) + 2.0) * (std::ceil(h / cell) + 2.0);
-  return static_cast<uint32_t>(std::min(cells, 16777216.0));
-}
-
-// The columns (cells across the track) holding more than outliers.
-struct Swath {
-  int64_t lo = 0, hi = 0;
-};
-
-Swath swath_columns(const TileExtent& e) {
-  const uint64_t floor_count =
-      std::max<uint64_t>(kMinSwathCellPoints, static_cast<uint64_t>(kOutlierCellShare * e.finite));
-  Swath sw{0, -1};
-  for (const auto& kv : e.across)
-    if (kv.second >= floor_count) {
-      if (sw.hi < sw.lo) sw.lo = kv.first;
-      sw.hi = kv.first;
-    }
-  if (sw.hi < sw.lo) sw.lo = sw.hi = e.across.empty() ? 0 : e.across.begin()->first;
-  return sw;
-}
-
-// The stream's config for one band of columns [band_lo, band_hi] of the
-// tile: frame on the absolute lattice (origin at the swath's first column),
-// the band owned, its margins seen, buffers sized from the tile's density
-// over a band (never over the tile).
-StreamConfig band_config(const TileStreamOptions& o, const TileExtent& e, const Swath& sw, int64_t band_lo,
-                         int64_t band_hi) {
-  StreamConfig c;
-  c.scene = o.scene;
-  const double core = o.scene.window_core, margin = o.scene.window_margin;
-  c.origin_given = true;
-  c.origin[0] = std::floor(e.xmin / core) * core;
-  c.origin[1] = static_cast<double>(sw.lo) * core;
-  c.origin[2] = e.zmin;
-  c.heading_deg = 0.0f;  // rows along x
-  c.own_min = static_cast<float>(static_cast<double>(band_lo - sw.lo) * core);
-  c.own_max = static_cast<float>(static_cast<double>(band_hi + 1 - sw.lo) * core);
-  c.swath_min = c.own_min - static_cast<float>(margin);
-  c.swath_max = c.own_max + static_cast<float>(margin);
-  c.max_lag = static_cast<float>(kSpillRowDepth);                 // a spill row's points come in any order
-  c.max_jump = static_cast<float>(e.xmax - e.xmin + 2.0 * core);  // the tile's extent is known
-  const double width = static_cast<double>(sw.hi - sw.lo + 1) * core,
-               length = std::max(core, e.xmax - e.xmin);
-  const double density = static_cast<double>(e.finite) / (width * length) * kDensitySafety;
-  // A window gathers its core and object margin; the buffer holds a row's
-  // gathered points, its terrain lookahead and the lag, across the band and
-  // its margins (points across beyond the gathered band are forgotten once
-  // their terrain cells are summed: reserved here, seldom touched).
+// The window capacity and the buffer from the tile's density: what a
+// window's gather and a band's rows hold at the densest expected spot.
+void size_from_density(const AlongTrackOrder& order, const TileStreamOptions& o, SceneConfig* scene,
+                       uint32_t* buffered) {
+  const double core = o.scene.window_core;
+  const double width = std::max(core, order.max()[1] - order.min()[1]),
+               length = std::max(core, order.max()[0] - order.min()[0]);
+  const double density = static_cast<double>(order.points()) / (width * length) * kDensitySafety;
   const double gathered = core + 2.0 * o.scene.object_margin;
-  const double window_area = gathered * gathered;
-  const double band_width = std::min(width, static_cast<double>(kBandColumns) * core) + 2.0 * margin;
-  const double buffer_area = (core + o.scene.object_margin + margin + kSpillRowDepth) * band_width;
-  // The segmentation grid holds a whole window, the terrain grid the band's
-  // windows side by side (one strip per row), whatever their size.
-  const double seen = core + 2.0 * margin;
-  c.scene.max_terrain_cells =
-      std::max<uint32_t>(c.scene.max_terrain_cells, grid_cells(band_width, seen, o.scene.terrain_cell));
-  c.scene.max_segment_cells =
-      std::max<uint32_t>(c.scene.max_segment_cells, grid_cells(gathered, gathered, o.scene.segment_cell));
-  if (c.scene.max_tile_points == 0)
-    c.scene.max_tile_points =
-        static_cast<uint32_t>(std::clamp<double>(density * window_area, kMinWindowPoints, kMaxWindowPoints));
-  const uint64_t buffered = o.max_buffered_points > 0
-                                ? o.max_buffered_points
-                                : static_cast<uint64_t>(std::clamp<double>(
-                                      density * buffer_area, kMinBufferedPoints, kMaxBufferedPoints));
-  c.max_buffered_points = static_cast<uint32_t>(std::min<uint64_t>(buffered, kMaxBufferedPoints));
-  return c;
-}
-
-uint32_t add32(uint32_t a, uint32_t b) {
-  const uint64_t s = static_cast<uint64_t>(a) + b;
-  return s > 0xFFFFFFFFull ? 0xFFFFFFFFu : static_cast<uint32_t>(s);
-}
-
-// Sums one band's counts into the tile's, field by field from the one list
-// (scene_fields.h): counts add (32-bit ones saturate), positions along the
-// line take the furthest, the workspace is the tile's own (not a sum).
-void add_field_U32(uint32_t& into, uint32_t b) { into = add32(into, b); }
-void add_field_U64(uint64_t& into, uint64_t b) { into += b; }
-void add_field_F64(double& into, double b) { into = std::max(into, b); }
-void add_field_SIZE(size_t&, size_t) {}
-void add_field_KINDS(uint32_t (&into)[kObjectKinds], const uint32_t (&b)[kObjectKinds]) {
-  for (uint32_t k = 0; k < kObjectKinds; ++k) into[k] = add32(into[k], b[k]);
-}
-void add_field_SCENE(SceneStats& into, const SceneStats& b) {
-#define SPINHASH_ADD(kind, name, json) add_field_##kind(into.name, b.name);
-  SPINHASH_SCENE_STATS_FIELDS(SPINHASH_ADD)
-#undef SPINHASH_ADD
-}
-
-void accumulate(StreamStats& into, const StreamStats& b) {
-#define SPINHASH_ADD(kind, name, json) add_field_##kind(into.name, b.name);
-  SPINHASH_STREAM_STATS_FIELDS(SPINHASH_ADD)
-#undef SPINHASH_ADD
+  if (scene->max_tile_points == 0)
+    scene->max_tile_points = static_cast<uint32_t>(
+        std::clamp<double>(density * gathered * gathered, kMinWindowPoints, kMaxWindowPoints));
+  const StreamConfig derived = tile_stream_config(*scene, 0);  // the buffer at a window's density
+  const double window = static_cast<double>(scene->max_tile_points);
+  const double per_window = static_cast<double>(derived.max_buffered_points) / window;
+  const uint64_t want =
+      o.max_buffered_points > 0
+          ? o.max_buffered_points
+          : static_cast<uint64_t>(std::clamp<double>(density * gathered * gathered * per_window,
+                                                     kMinBufferedPoints, kMaxBufferedPoints));
+  *buffered = static_cast<uint32_t>(std::min<uint64_t>(want, kMaxBufferedPoints));
 }
 
 struct FreeDelete {
@@ -269,83 +67,138 @@ void forward(void* context, const SceneObject& object, int64_t, uint32_t) {
 
 Status worse(Status a, Status b) { return a == Status::kOk ? b : a; }
 
-// Streams one band: rows in order, each row's cells across the band and its
-// margins, only the points within the band's swath.
-Status stream_band(const Database& db, const CellSpill& cells, const StreamConfig& config, const Swath& sw,
-                   size_t chunk, void* workspace, size_t bytes, const ObjectCallback& on_object,
-                   StreamStats* stats) {
-  SceneStream stream;
-  Status status =
-      stream.init(&db, config, workspace, bytes, forward, const_cast<ObjectCallback*>(&on_object));
-  if (status != Status::kOk) return status;
-  const double core = config.scene.window_core;
-  const int64_t col_lo = sw.lo + static_cast<int64_t>(std::floor(config.swath_min / core));
-  const int64_t col_hi = sw.lo + static_cast<int64_t>(std::ceil(config.swath_max / core)) - 1;
-  const double t_lo = config.origin[1] + config.swath_min, t_hi = config.origin[1] + config.swath_max;
-  std::vector<double> kept;
-  for (int64_t row : cells.rows())
-    for (int64_t col = std::max(col_lo, sw.lo); col <= std::min(col_hi, sw.hi); ++col)
-      cells.read(row, col, chunk, [&](const double* xyz, size_t n) {
-        kept.clear();
-        for (size_t i = 0; i < n; ++i)
-          if (xyz[3 * i + 1] >= t_lo && xyz[3 * i + 1] < t_hi)
-            kept.insert(kept.end(), xyz + 3 * i, xyz + 3 * i + 3);
-        status = worse(status, stream.push(kept.data(), static_cast<uint32_t>(kept.size() / 3)));
-      });
-  status = worse(status, stream.flush());
-  accumulate(*stats, stream.stats());
-  return status;
+// The bands whose windows gather points: for each column of the order that
+// holds points, the bands whose columns or object margins meet it.
+std::set<uint32_t> bands_with_points(const AlongTrackOrder& order, const TilePlan& plan, double core) {
+  std::set<uint32_t> bands;
+  for (const auto& [column, points] : order.columns()) {
+    if (points == 0) continue;
+    const double y0 = static_cast<double>(column) * core, y1 = y0 + core;
+    const uint32_t first = tile_band_gathering(plan, y0);
+    for (uint32_t b = first; b < plan.bands; ++b) {
+      const double band_y = plan.origin[1] + static_cast<double>(b) * plan.band_width;
+      if (band_y - plan.object_margin >= y1) break;
+      bands.insert(b);
+    }
+  }
+  return bands;
 }
 
 }  // namespace
 
-TileStreamResult stream_tile(const Database& db, host::PointSource& source, const TileStreamOptions& options,
-                             const ObjectCallback& on_object) {
+PointSample::PointSample(uint32_t target, uint64_t expected) : target_(target) {
+  if (target_ > 0 && expected > target_) every_ = expected / target_;
+}
+
+void PointSample::add(const double* p) {
+  if (target_ == 0) return;
+  if (seen_++ % every_ != 0) return;
+  xyz_.insert(xyz_.end(), p, p + 3);
+  if (xyz_.size() / 3 <= 2 * target_) return;
+  // Every other kept point: those at multiples of twice the step.
+  size_t kept = 0;
+  for (size_t i = 0; i < xyz_.size(); i += 6, ++kept)
+    for (int a = 0; a < 3; ++a) xyz_[3 * kept + a] = xyz_[i + a];
+  xyz_.resize(3 * kept);
+  every_ *= 2;
+}
+
+TileStreamer::TileStreamer(const TileStreamOptions& options, uint64_t expected_points)
+    : options_(options),
+      order_(0.0, options.scene.row_depth, options.scene.window_core),
+      picture_(options.picture_points, expected_points),
+      start_(std::chrono::steady_clock::now()) {}
+
+void TileStreamer::add(const double* xyz, size_t n) {
+  if (options_.picture_points > 0)
+    for (size_t i = 0; i < n; ++i) picture_.add(xyz + 3 * i);
+  order_.add(xyz, n);
+  added_ += n;
+}
+
+TileStreamResult TileStreamer::finish(const Database& db, const ObjectCallback& on_object) {
   TileStreamResult res;
-  const auto t0 = std::chrono::steady_clock::now();
-  CellSpill cells(kSpillRowDepth, options.scene.window_core);
-  TileExtent extent;
-  host::MetricSource metric(source, options.units);
-  spill(metric, options.chunk_points, options.picture_points, cells, extent, res);
+  res.points_read = added_;
+  res.picture_xyz = picture_.take();
   for (size_t i = 0; i + 3 <= res.picture_xyz.size(); i += 3)
-    host::scale_to_file_units(options.units, &res.picture_xyz[i]);
-  res.read_ms = ms_since(t0);
-  res.stats.scene.points_nonfinite = static_cast<uint32_t>(std::min<uint64_t>(extent.nonfinite, 0xFFFFFFFFu));
-  if (extent.finite == 0) {
+    host::scale_to_file_units(options_.units, &res.picture_xyz[i]);
+  res.read_ms = ms_since(start_);
+  const auto streamed = std::chrono::steady_clock::now();
+  res.stats.points_pushed = added_;
+  res.stats.scene.points_nonfinite =
+      static_cast<uint32_t>(std::min<uint64_t>(order_.nonfinite(), 0xFFFFFFFFu));
+  res.stats.points_outside = order_.far();  // beyond 2 000 km of the tile's first point
+  if (order_.points() == 0) {
     res.status = Status::kEmptyCloud;
-    res.stats.points_pushed = res.points_read;
     return res;
   }
-  const auto t1 = std::chrono::steady_clock::now();
-  const Swath sw = swath_columns(extent);
-  for (const auto& kv : extent.across)
-    if (kv.first < sw.lo || kv.first > sw.hi) res.stats.points_outside += kv.second;  // outliers across
-  const StreamConfig first =
-      band_config(options, extent, sw, sw.lo, std::min(sw.hi, sw.lo + kBandColumns - 1));
-  res.workspace_bytes = required_stream_workspace_bytes(first);
+  SceneConfig scene = options_.scene;
+  fit_tile_grids(&scene);
+  uint32_t buffered = 0;
+  size_from_density(order_, options_, &scene, &buffered);
+  const TilePlan plan = plan_tile(scene, order_.min(), order_.max());
+  const StreamConfig config = tile_stream_config(scene, buffered);
+  res.workspace_bytes = required_stream_workspace_bytes(config);
   if (res.workspace_bytes == 0) throw std::runtime_error("invalid scene configuration for this tile");
   auto workspace = lazy_workspace(res.workspace_bytes);
-  res.status = Status::kOk;
   std::vector<RankedModel> ranking;
   const ObjectCallback owned = [&](const SceneObject& metres) {
-    const SceneObject o = in_file_units(metres, options.units, &ranking);
-    const bool mine =
-        !options.own_given || (o.center[0] >= options.own_min[0] && o.center[0] < options.own_max[0] &&
-                               o.center[1] >= options.own_min[1] && o.center[1] < options.own_max[1]);
-    if (mine)
-      on_object(o);
-    else
-      ++res.objects_not_owned;
+    const SceneObject o = in_file_units(metres, options_.units, &ranking);
+    if (!options_.owners.empty()) {
+      const uint32_t owner = owner_of(options_.owners.data(), static_cast<uint32_t>(options_.owners.size()),
+                                      o.center[0], o.center[1], options_.owner_tolerance);
+      if (owner != options_.self) {
+        ++(owner == kNoOwner ? res.objects_in_holes : res.objects_not_owned);
+        return;
+      }
+    }
+    on_object(o);
   };
-  for (int64_t lo = sw.lo; lo <= sw.hi; lo += kBandColumns) {
-    const StreamConfig band = band_config(options, extent, sw, lo, std::min(sw.hi, lo + kBandColumns - 1));
-    res.status = worse(res.status, stream_band(db, cells, band, sw, options.chunk_points, workspace.get(),
-                                               res.workspace_bytes, owned, &res.stats));
+  SceneStream stream;
+  res.status = stream.init(&db, config, workspace.get(), res.workspace_bytes, forward,
+                           const_cast<ObjectCallback*>(&owned));
+  if (res.status != Status::kOk) return res;
+  const double core = scene.window_core;
+  const double t0 = config.swath_min, t1 = config.swath_max;
+  const size_t chunk = options_.chunk_points;
+  std::vector<double> buf(3 * chunk), kept(3 * chunk);
+  for (uint32_t band : bands_with_points(order_, plan, core)) {
+    double origin[3];
+    tile_band_origin(plan, band, origin);
+    stream.reset(origin);
+    Status status = Status::kOk;
+    const auto col_lo = static_cast<int64_t>(std::floor((origin[1] + t0) / core)),
+               col_hi = static_cast<int64_t>(std::floor((origin[1] + t1) / core));
+    AlongTrackOrder::Cursor rows(order_, col_lo, col_hi);
+    for (size_t n; (n = rows.read(buf.data(), chunk)) > 0;) {
+      size_t taken = 0;
+      for (size_t i = 0; i < n; ++i) {
+        const double t = buf[3 * i + 1] - origin[1];  // across, as the stream's frame has it
+        if (t >= t0 && t < t1) std::copy_n(&buf[3 * i], 3, &kept[3 * taken++]);
+      }
+      status = worse(status, stream.push(kept.data(), static_cast<uint32_t>(taken)));
+    }
+    status = worse(status, stream.flush());
+    add_stream_stats(res.stats, stream.stats());
+    res.status = worse(res.status, status);
     ++res.bands;
   }
-  res.stats.points_pushed += extent.nonfinite;
-  res.stream_ms = ms_since(t1);
+  res.stats.points_pushed = added_;  // once, though the bands' swaths overlap
+  res.stats.points_outside += order_.far();
+  res.stats.scene.points_nonfinite =
+      static_cast<uint32_t>(std::min<uint64_t>(order_.nonfinite(), 0xFFFFFFFFu));
+  res.stream_ms = ms_since(streamed);
   return res;
+}
+
+TileStreamResult stream_tile(const Database& db, host::PointSource& source, const TileStreamOptions& options,
+                             const ObjectCallback& on_object) {
+  const uint64_t declared = source.header().count_known ? source.header().point_count : 0;
+  TileStreamer tile(options, declared);
+  host::MetricSource metric(source, options.units);
+  std::vector<double> buf(3 * options.chunk_points);
+  for (size_t got; (got = metric.read(buf.data(), options.chunk_points)) > 0;) tile.add(buf.data(), got);
+  return tile.finish(db, on_object);
 }
 
 }  // namespace spinhash::pipeline

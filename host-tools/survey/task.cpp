@@ -49,11 +49,6 @@ std::string task_key(const SurveyTask& t, double buffer, const std::string& sett
 
 }  // namespace
 
-double Rect::distance(double x, double y) const {
-  const double dx = std::max({min[0] - x, 0.0, x - max[0]}), dy = std::max({min[1] - y, 0.0, y - max[1]});
-  return std::hypot(dx, dy);
-}
-
 Rect Rect::grown(double d) const {
   Rect r = *this;
   r.min[0] -= d, r.min[1] -= d, r.max[0] += d, r.max[1] += d;
@@ -100,22 +95,6 @@ host::WorkCrs SurveyTask::work() const {
   }
   w.crs.units = units;  // as the catalogue resolved them (GeoKeys' unit codes are not in the definition)
   return w;
-}
-
-const TaskTile* owner_of(const SurveyTask& task, double x, double y) {
-  std::vector<const TaskTile*> candidates{&task.tile};
-  for (const TaskTile& n : task.neighbours) candidates.push_back(&n);
-  std::sort(candidates.begin(), candidates.end(),
-            [](const TaskTile* a, const TaskTile* b) { return a->path < b->path; });
-  for (const TaskTile* c : candidates)
-    if (c->core.holds(x, y)) return c;
-  const TaskTile* best = nullptr;
-  double best_d = kGapTolerance;
-  for (const TaskTile* c : candidates) {
-    const double d = c->core.distance(x, y);
-    if (d <= best_d && (best == nullptr || d < best_d)) best = c, best_d = d;
-  }
-  return best;
 }
 
 std::string escape_line(const std::string& s) {

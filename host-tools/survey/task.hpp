@@ -3,12 +3,14 @@
 // all a worker needs: the tile, its core, the rectangle it sees (core plus
 // the buffer) and the neighbours whose points fall in it.
 //
-// Ownership (lidR's catalogue rule, docs/survey.md): an object belongs to
-// the first tile, in path order, whose half-open core [min, max) holds its
-// centre. Cores are the headers' bounds, which are the points' extents, so
-// adjacent tiles leave thin gaps between them: a centre in no core goes to
-// the nearest core within kGapTolerance. Every tile within kGapTolerance of
-// a centre it owns is its neighbour, so each tile decides alone and all agree.
+// Ownership (the core's owner_of, spinhash/scene_ownership.hpp; lidR's
+// catalogue rule, docs/survey.md): an object belongs to the first tile, in
+// path order, whose half-open core [min, max) holds its centre. Cores are
+// the headers' bounds, which are the points' extents, so adjacent tiles
+// leave thin gaps between them: a centre in no core goes to the nearest
+// core within kGapTolerance. Every tile within kGapTolerance of a centre it
+// owns is its neighbour, so each tile decides alone and all agree
+// (survey/tile_run.hpp: owner_areas).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -32,7 +34,6 @@ constexpr double kGapTolerance = 1.0;  // m
 struct Rect {
   double min[2] = {0, 0}, max[2] = {0, 0};
   bool holds(double x, double y) const { return x >= min[0] && x < max[0] && y >= min[1] && y < max[1]; }
-  double distance(double x, double y) const;  // 0 inside or on the max edges
   Rect grown(double d) const;
   bool intersects(const Rect& o) const;
 };
@@ -62,10 +63,6 @@ struct SurveyTask {
 // One task per tile whose header was read. settings: the database's digest
 // and the recognition settings, part of every key.
 std::vector<SurveyTask> plan_survey(const Catalogue& catalogue, double buffer, const std::string& settings);
-
-// The tile that owns a centre among the task's tile and neighbours, or
-// nullptr when it lies in a hole (farther than kGapTolerance from every core).
-const TaskTile* owner_of(const SurveyTask& task, double x, double y);
 
 std::string task_text(const SurveyTask& task);
 bool parse_task_text(const std::string& text, SurveyTask* task, std::string* error);

@@ -1,5 +1,6 @@
 #include "survey/tile_run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 
@@ -77,6 +78,22 @@ void count(TileResult& r, const Database& db, const SceneObject& o) {
 
 }  // namespace
 
+std::vector<OwnedArea> owner_areas(const SurveyTask& task, uint32_t* self) {
+  std::vector<const TaskTile*> tiles{&task.tile};
+  for (const TaskTile& n : task.neighbours) tiles.push_back(&n);
+  std::stable_sort(tiles.begin(), tiles.end(),
+                   [](const TaskTile* a, const TaskTile* b) { return a->path < b->path; });
+  std::vector<OwnedArea> areas;
+  for (const TaskTile* t : tiles) {
+    if (t == &task.tile) *self = static_cast<uint32_t>(areas.size());
+    OwnedArea a;
+    std::copy(t->core.min, t->core.min + 2, a.min);
+    std::copy(t->core.max, t->core.max + 2, a.max);
+    areas.push_back(a);
+  }
+  return areas;
+}
+
 TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfig& scene) {
   const auto t0 = std::chrono::steady_clock::now();
   TileResult r;
@@ -88,16 +105,9 @@ TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfi
   BufferedSource source(task);
   pipeline::TileStreamOptions options;
   options.scene = scene;
-  options.own_given = true;  // what the tile might own; owner_of decides among its neighbours
-  const Rect own = task.tile.core.grown(kGapTolerance);
-  std::copy(own.min, own.min + 2, options.own_min);
-  std::copy(own.max, own.max + 2, options.own_max);
-  const pipeline::ObjectCallback keep = [&](const SceneObject& metres) {
-    const TaskTile* owner = owner_of(task, metres.center[0], metres.center[1]);
-    if (owner != &task.tile) {
-      ++(owner == nullptr ? r.objects_in_holes : r.objects_not_owned);
-      return;
-    }
+  options.owners = owner_areas(task, &options.self);  // metres, as the door hands the points
+  options.owner_tolerance = kGapTolerance;
+  const pipeline::ObjectCallback keep = [&](const SceneObject& metres) {  // the tile's own
     std::vector<RankedModel> ranking;
     const SceneObject o = pipeline::in_file_units(metres, task.units, &ranking);
     const auto members = survey_members(task, static_cast<uint32_t>(r.lines.size()), db, o);
@@ -111,6 +121,7 @@ TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfi
   r.status = pipeline::status_word(s.status);
   r.points_tile = source.tile_points(), r.points_buffer = source.buffer_points();
   r.objects_not_owned += s.objects_not_owned;
+  r.objects_in_holes += s.objects_in_holes;
   r.read_ms = s.read_ms, r.stream_ms = s.stream_ms;
   r.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return r;

@@ -65,13 +65,33 @@ constexpr float kMinSceneTerrainCell = 0.05f;  // m: finer grids cost cells and 
 constexpr float kMaxSceneTerrainCell = 10.0f;  // m
 constexpr float kMaxTerrainWindow = 500.0f;    // m: the terrain filter's widest opening
 constexpr float kMaxTerrainSlope = 10.0f;      // rise per m
-constexpr float kMaxTerrainDh = 100.0f;        // m: the terrain filter's height thresholds
-constexpr float kMaxGroundHeight = 10.0f;      // m above the terrain that is still ground
-constexpr float kMinSegmentCell = 0.02f;       // m
-constexpr float kMaxSegmentCell = 10.0f;       // m
-constexpr float kMaxSceneGate = 1000.0f;       // m: size gates, clearance and the layer split
-constexpr float kMaxSizeMismatch = 10.0f;      // share of a model's length and width
+constexpr float kMaxTerrainDh = 100.0f;        // m: the terrain filter's height thresholds and low band
+constexpr uint32_t kMaxTerrainWindows = 8;  // the terrain filter's openings (half-widths 1, 2, 4, ... cells)
+// A strip's terrain: blocks that say which part covers a point (coarser
+// blocks where a strip is wide), kTerrainBlocksPerReach of them across the
+// terrain filter's reach; blocks that lie within that many of each other
+// are one part, so parts lie farther apart than the filter reaches, and
+// there are at most as many as blocks kTerrainBlocksPerReach + 1 apart.
+constexpr uint32_t kMaxTerrainBlockSide = 32;
+constexpr uint32_t kMaxTerrainBlocks = kMaxTerrainBlockSide * kMaxTerrainBlockSide;
+constexpr uint32_t kTerrainBlocksPerReach = 4;
+constexpr uint32_t kMaxTerrainParts =
+    ((kMaxTerrainBlockSide + kTerrainBlocksPerReach) / (kTerrainBlocksPerReach + 1)) *
+    ((kMaxTerrainBlockSide + kTerrainBlocksPerReach) / (kTerrainBlocksPerReach + 1));
+constexpr float kMaxGroundHeight = 10.0f;  // m above the terrain that is still ground
+constexpr float kMinSegmentCell = 0.02f;   // m
+// Height bins of a segmentation cell's column: the bits of its mask.
+constexpr uint32_t kSegmentColumnBins = 32;
+constexpr float kMinColumnBin = 0.01f;     // m: SceneConfig::column_bin
+constexpr float kMaxColumnBin = 10.0f;     // m
+constexpr float kMaxSegmentCell = 10.0f;   // m
+constexpr float kMaxSceneGate = 1000.0f;   // m: size gates, clearance and the layer split
+constexpr float kMaxSizeMismatch = 10.0f;  // share of a model's length and width
 constexpr uint32_t kMaxStreamBufferedPoints = 1u << 28;
+constexpr uint32_t kMaxStripColumns = 1024;  // windows of a row sharing one terrain grid
+constexpr uint32_t kMaxBandColumns = 64;     // SceneConfig::band_columns
+// StreamConfig::jump_confirm_points: the held points' buffer.
+constexpr uint32_t kMaxJumpConfirmPoints = 64;
 constexpr float kMaxStreamExtent = 1.0e5f;  // m: swath edges, lag, jump and z offset
 // The low end of a range open at 0 (v >= it: v > 0), and the high end of
 // a range open above (max_ground_sink).

@@ -1,7 +1,10 @@
 // The scene recognizer: an airborne lidar tile in (georeferenced xyz, z up),
 // one answer per object out. Terrain (geometry/terrain.hpp), objects
 // (scene/segment.hpp), size gates, then the Recognizer on each vehicle-sized
-// object. No heap: every buffer comes from the caller's workspace, sized by
+// object. The tile API runs the stream's path (scene_stream.hpp) over a
+// tile held in memory, ordered along track band by band as every host front
+// end orders a file (scene_tile.hpp): the same windows and answers. No
+// heap: every buffer comes from the caller's workspace, sized by
 // required_scene_workspace_bytes(config).
 #pragma once
 #include <cstddef>
@@ -40,13 +43,13 @@ struct SceneConfig {
   // multiples of terrain_cell (and the core of segment_cell), so overlapping
   // windows share their grid cells. A window gathers (32 + 14)^2 m, 2.1x
   // its core: 32 m cores keep the stream's buffer a third smaller than 64 m
-  // ones for the same answers and less work. A tile that fits one window
-  // (points and grids) is one window.
+  // ones for the same answers and less work.
   float window_core = 32.0f;    // m
   float window_margin = 40.0f;  // m
   float object_margin = 7.0f;   // m
 
-  // Capacities of one window.
+  // Capacities of one window (the tile path sizes the stream's buffer from
+  // max_tile_points: scene_tile.hpp).
   uint32_t max_tile_points = 1u << 21;  // points a window holds (more: kWindowOverflow, counted)
   uint32_t max_objects = 256;           // objects of >= min_object_points points per window
   uint32_t max_terrain_cells =
@@ -54,12 +57,14 @@ struct SceneConfig {
   uint32_t max_segment_cells = 1u << 19;  // segmentation grid: 0.25 m cells -> 181 x 181 m
 
   // Terrain (progressive morphological filter).
-  float terrain_cell = 0.5f;     // m
-  float terrain_window = 24.0f;  // m: widest opening (wider than the buildings to lift off)
-  float terrain_slope = 0.35f;   // rise per m between windows (0.35: terrain to ~19 degrees)
-  float terrain_dh0 = 0.2f;      // m
-  float terrain_dh_max = 2.5f;   // m
-  float ground_height = 0.25f;   // m above the terrain that is still ground
+  float terrain_cell = 0.5f;      // m
+  float terrain_window = 24.0f;   // m: widest opening (wider than the buildings to lift off)
+  float terrain_slope = 0.35f;    // rise per m between windows (0.35: terrain to ~19 degrees)
+  float terrain_dh0 = 0.2f;       // m
+  float terrain_dh_max = 2.5f;    // m
+  float ground_height = 0.25f;    // m above the terrain that is still ground
+  float terrain_low_band = 0.3f;  // m: a cell's value is the mean of its points this close to its lowest:
+                                  // unbiased on slopes (the lowest sits downhill), steadier under noise
 
   // Segmentation: 8-connected cells. Points up to layer_split_height above
   // the terrain form the low layer (vehicles; the empty gap between parked
@@ -68,6 +73,11 @@ struct SceneConfig {
   float segment_cell = 0.25f;       // m: must be below the narrowest gap to split (0.5 m)
   float layer_split_height = 3.8f;  // m: above the tallest vehicle (buses 3.5 m), below most crowns
   uint32_t min_object_points = 30;  // smaller components are noise, not objects
+  // A cell's column in height bins of column_bin (kSegmentColumnBins of
+  // them): an empty gap of layer_gap (a multiple of the bin) parts the low
+  // layer from what is above it (a crown over a car's roof).
+  float column_bin = 0.25f;  // m
+  float layer_gap = 1.0f;    // m: more than a vehicle's own gaps (windows, roof racks)
 
   // Size gates (footprint along the object's principal axes; heights above terrain).
   float min_length = 2.2f, max_length = 13.0f;  // m: buses reach 12 m
@@ -76,6 +86,9 @@ struct SceneConfig {
   float max_clearance = 1.2f;                   // m: lowest point above the terrain; higher floats (crowns)
   float max_size_mismatch = 0.15f;              // confident only if the object's length and width are
                                                 // within this share of the best model's bounding box
+  float class_size_factor = 2.0f;               // a confident class: its leader's box within this many times
+                                                // max_size_mismatch (members of a class differ by decimetres,
+                                                // classes by metres)
   // Confident only if the best model, under its pose, does not sink into the
   // terrain by more than this (m; SceneObject::ground_gap): a look-alike
   // taller than the scanned vehicle, posed to fit its roof, does (a bus
@@ -83,6 +96,14 @@ struct SceneConfig {
   // at -0.09 m and above; a model may float (a vehicle on a trailer, a model
   // without wheels, terrain estimated low under a vehicle on a slope).
   float max_ground_sink = 0.15f;
+
+  // The tile path (this API and the host's files; SceneStream ignores
+  // them): a tile runs in bands of band_columns window columns across, each
+  // its own line, its rows of row_depth along x pushed in order (the
+  // points of a row in any order: the stream's max_lag). Wider bands hold
+  // more in the stream's buffer; deeper rows delay each row's windows.
+  uint32_t band_columns = 2;
+  float row_depth = 8.0f;  // m
 };
 
 struct SceneObject {
@@ -122,7 +143,7 @@ struct SceneStats {
   uint32_t components = 0;       // connected components, fragments included
   uint32_t objects_dropped = 0;  // past max_objects (status kTooManyObjects)
   uint32_t objects_by_kind[kObjectKinds] = {};
-  uint32_t windows = 0;                 // windows run (a tile that fits one window: 1)
+  uint32_t windows = 0;                 // windows run (those that gathered points)
   uint32_t windows_overflowed = 0;      // windows over a capacity: not recognised (kWindowOverflow)
   uint64_t recognition_hypotheses = 0;  // summed over the candidates
   uint64_t recognition_candidates = 0;
@@ -131,12 +152,17 @@ struct SceneStats {
 
 struct SceneResult {
   // kOk; kTooManyObjects with the first max_objects answered; kWindowOverflow
-  // when a window held more points than max_tile_points or more cells than
-  // its grids (its objects are not answered; stats count them).
+  // when a window held more points than max_tile_points, the stream's
+  // buffer more than it holds, or a window more cells than its grids (its
+  // objects are not answered; stats count them).
   Status status = Status::kNotOpen;
   const SceneObject* objects = nullptr;  // in the workspace; valid until the next call
   uint32_t object_count = 0;
-  SceneStats stats;
+  SceneStats stats;  // summed over the windows (points_in: each finite point once, by its window)
+  // Finite points the stream did not take (StreamStats: beyond
+  // kMaxStreamExtent of the tile's lowest corner, unconfirmed jumps, past
+  // the buffer).
+  uint64_t points_lost = 0;
 };
 
 struct SceneBuffers;  // the workspace layout (firmware-lib/scene)
@@ -150,9 +176,8 @@ class SceneRecognizer {
   Status init(const Database* db, const SceneConfig& config, void* workspace,
               size_t workspace_bytes) noexcept;
   // n points of xyz (x0 y0 z0 x1 ...), georeferenced, z up, in any order and
-  // of any extent: a tile that fits one window is one window; a larger one
-  // runs the stream's windows over it (scene_stream.hpp), each object
-  // reported once. Non-finite points are skipped and counted.
+  // of any extent, through the stream's windows (scene_tile.hpp), each
+  // object reported once. Non-finite points are skipped and counted.
   SceneResult recognize(const double* xyz, uint32_t n) noexcept;
   size_t used_bytes() const noexcept { return used_bytes_; }
 

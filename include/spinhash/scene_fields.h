@@ -61,10 +61,16 @@
   X(F32, terrain_dh0, 0.0f, kMaxTerrainDh, "", "m: the terrain filter's first height threshold")            \
   X(F32, terrain_dh_max, 0.0f, kMaxTerrainDh, "", "m: its largest height threshold (at least terrain_dh0)") \
   X(F32, ground_height, 0.0f, kMaxGroundHeight, "", "m above the terrain that is still ground")             \
+  X(F32, terrain_low_band, 0.0f, kMaxTerrainDh, "",                                                         \
+    "m: a terrain cell's value is the mean of its points this close to its lowest")                         \
   X(F32, segment_cell, kMinSegmentCell, kMaxSegmentCell, "", "m: segmentation grid cell")                   \
   X(F32, layer_split_height, kSmallestPositive, kMaxSceneGate, "",                                          \
     "m above the terrain: the low layer (vehicles) below, the high layer (crowns, roofs) above")            \
   X(U32, min_object_points, 1u, 0xFFFFFFFFu, "", "smaller components are fragments, not objects")           \
+  X(F32, column_bin, kMinColumnBin, kMaxColumnBin, "", "m: height bins of a segmentation cell's column")    \
+  X(F32, layer_gap, kMinColumnBin, kMaxSceneGate, "",                                                       \
+    "m: an empty gap this tall in a cell's column parts the low layer from what is above (a multiple of "   \
+    "column_bin)")                                                                                          \
   X(F32, min_length, 0.0f, kMaxSceneGate, "", "m: shorter is too small")                                    \
   X(F32, max_length, 0.0f, kMaxSceneGate, "", "m: longer is too large (at least min_length)")               \
   X(F32, min_width, 0.0f, kMaxSceneGate, "", "m: narrower is not vehicle-shaped (a wall)")                  \
@@ -75,8 +81,13 @@
     "m: a lowest point higher above the terrain floats (a crown)")                                          \
   X(F32, max_size_mismatch, 0.0f, kMaxSizeMismatch, "",                                                     \
     "share of the best model's length and width the object may differ by, for a confident answer")          \
+  X(F32, class_size_factor, 0.0f, kMaxSizeMismatch, "",                                                     \
+    "times max_size_mismatch the class leader's length and width may differ by, for a confident class")     \
   X(F32, max_ground_sink, 0.0f, kNoUpperBound, "",                                                          \
-    "m the best model may sink into the terrain under its pose, for a confident answer")
+    "m the best model may sink into the terrain under its pose, for a confident answer")                    \
+  X(U32, band_columns, 1u, kMaxBandColumns, "", "window columns a tile streams side by side across")        \
+  X(F32, row_depth, kSmallestPositive, kMaxStreamExtent, "",                                                \
+    "m along x: a tile is pushed row by row (its points in any order within a row)")
 
 #define SPINHASH_STREAM_CONFIG_FIELDS(X)                                                                 \
   X(BOOL, origin_given, 0, 1, "", "set by origin")                                                       \
@@ -88,6 +99,8 @@
   X(F32, own_max, -kMaxStreamExtent, kMaxStreamExtent, "", "m across track: the owned band's end")       \
   X(F32, max_lag, 0.0f, kMaxStreamExtent, "", "m a point may lag behind the furthest along track")       \
   X(F32, max_jump, kSmallestPositive, kMaxStreamExtent, "", "m ahead beyond which a point is a glitch")  \
+  X(U32, jump_confirm_points, 1u, kMaxJumpConfirmPoints, "",                                             \
+    "points that must agree before a jump past max_jump is a gap in the data, not a glitch")             \
   X(F32, max_z_offset, kSmallestPositive, kMaxStreamExtent, "",                                          \
     "m from the origin's z beyond which a "                                                              \
     "point is an outlier")                                                                               \

@@ -85,8 +85,11 @@
     "a scene window held more points than its capacity")                                                    \
   /* points pushed after flush(): refused (counted); reset() starts a new line */                           \
   X(kStreamFlushed, 47, STREAM_FLUSHED, "stream_flushed", "points pushed after the stream was flushed")     \
+  /* SceneStream: points more than max_lag behind the furthest pushed came after their windows (dropped,    \
+     counted in points_late): order them along track first */                                               \
+  X(kPointsLate, 48, POINTS_LATE, "points_late", "points came after their windows ran (out of order)")      \
   /* recognize: the query spent config.max_work; the answer is the best found so far (ranked, never         \
      confident) */                                                                                          \
-  X(kWorkCapReached, 48, WORK_CAP_REACHED, "work_cap_reached", "work cap reached: best answer so far")
+  X(kWorkCapReached, 49, WORK_CAP_REACHED, "work_cap_reached", "work cap reached: best answer so far")
 
 #endif /* SPINHASH_STATUS_LIST_H */

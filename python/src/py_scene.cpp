@@ -1,6 +1,8 @@
-// spinhash.SceneRecognizer: a SceneSession (its own workspace) over a
-// Database; recognize(tile) answers every object of an airborne tile, as
-// `spinhash scene` prints them. Releases the GIL like Recognizer.
+// spinhash.SceneRecognizer: a SceneSession over a Database, the one scene
+// path of `spinhash scene` (pipeline/tile_stream.hpp); recognize(tile)
+// answers every object of an airborne tile as the command prints them, and
+// push(chunk) ... flush() the same for a tile handed over in chunks of any
+// order (iter_cloud's), in bounded memory. Releases the GIL like Recognizer.
 #include <pybind11/stl.h>
 
 #include <memory>
@@ -50,7 +52,8 @@ void set_checked(SceneConfig* c, T SceneConfig::*member, const std::string& key,
   const T v = setting_value(static_cast<T*>(nullptr), key, value);
   SceneConfig probe;
   probe.*member = v;
-  if (!scene_config_valid(probe))
+  const bool sized = key == "max_tile_points" && v == T{0};  // from each tile's density, as the command's
+  if (!sized && !scene_config_valid(probe))
     throw py::value_error(key + " is out of range: " + std::string(py::repr(value)));
   c->*member = v;
 }
@@ -95,12 +98,48 @@ class PySceneRecognizer {
 
   py::list recognize(py::handle points) {
     const std::vector<double> xyz = points_from_array(points);
-    SceneResult r;
-    std::vector<SceneObjectCopy> objects;
+    return answer([&] { return session_.recognize(xyz); });
+  }
+
+  void push(py::handle points) {
+    const std::vector<double> xyz = points_from_array(points);
+    std::string failure;
     {
       py::gil_scoped_release unlocked;
       std::lock_guard<std::mutex> one_at_a_time(busy_);
-      r = session_.recognize(xyz);
+      try {
+        session_.push(xyz.data(), xyz.size() / 3);
+      } catch (const std::runtime_error& e) {
+        failure = e.what();
+      }
+    }
+    if (!failure.empty()) throw py::value_error("scene: " + failure);
+  }
+
+  py::list flush() {
+    return answer([&] { return session_.flush(); });
+  }
+
+  const std::string& last_status() const { return last_status_; }
+  const SceneConfig& config() const { return config_; }
+  const py::dict& last_stats() const { return last_stats_; }
+
+ private:
+  // Runs a tile without the GIL; its objects as SceneObject. A refused tile
+  // is a ValueError; a tile with more than max_objects objects a warning.
+  template <class Call>
+  py::list answer(Call call) {
+    SceneResult r;
+    std::vector<SceneObjectCopy> objects;
+    std::string failure;
+    {
+      py::gil_scoped_release unlocked;
+      std::lock_guard<std::mutex> one_at_a_time(busy_);
+      try {
+        r = call();
+      } catch (const std::runtime_error& e) {
+        failure = e.what();
+      }
       for (uint32_t k = 0; k < r.object_count; ++k) {
         const SceneObject& o = r.objects[k];
         SceneObjectCopy c{o, std::vector<RankedModel>(o.ranking, o.ranking + o.ranking_count)};
@@ -108,6 +147,7 @@ class PySceneRecognizer {
         objects.push_back(std::move(c));
       }
     }
+    if (!failure.empty()) throw py::value_error("scene: " + failure);
     last_status_ = pipeline::status_word(r.status);
     last_stats_ = scene_stats(r.stats);
     // kTooManyObjects still answers the first max_objects; an empty tile has no objects.
@@ -122,11 +162,6 @@ class PySceneRecognizer {
     return out;
   }
 
-  const std::string& last_status() const { return last_status_; }
-  const SceneConfig& config() const { return config_; }
-  const py::dict& last_stats() const { return last_stats_; }
-
- private:
   DatabasePtr db_;
   SceneConfig config_;
   std::mutex busy_;
@@ -145,6 +180,7 @@ std::unique_ptr<PySceneRecognizer> make_scene(const std::shared_ptr<PyDatabase>&
 
 SceneConfig scene_config_from(const py::object& config, const py::kwargs& kwargs) {
   SceneConfig scene;
+  scene.max_tile_points = 0;  // sized from each tile's density, as `spinhash scene`
   RecognizerConfig base;
   base.ground.ground_clearance =
       0.0f;  // the scene's terrain classifier removes the ground (as `spinhash scene`)
@@ -164,13 +200,18 @@ void bind_scene(py::module_& m) {
                                     "Finds and recognises every vehicle in an airborne lidar tile (z up), as "
                                     "`spinhash scene` does.");
   cls.def(py::init(&make_scene), py::arg("db"), py::arg("config") = py::none(),
-          "SceneRecognizer(db, config=None, top_n=5, max_tile_points=2097152, max_objects=256, **settings): "
+          "SceneRecognizer(db, config=None, top_n=5, max_tile_points=0, max_objects=256, **settings): "
           "any SceneConfig field by name (docs/api.md), the others as spinhash.Config's (ground_clearance "
-          "defaults to 0: the terrain is removed)")
+          "defaults to 0: the terrain is removed; max_tile_points 0: sized from each tile's density)")
       .def("recognize", &PySceneRecognizer::recognize, py::arg("points"),
-           "Every object of an (N, 3) float64 tile: a list of SceneObject. ValueError when the tile is "
-           "refused (window_overflow: a window held more than max_tile_points points, ...); a RuntimeWarning "
-           "when only the first max_objects were answered.")
+           "Every object of an (N, 3) float64 tile, in any order: a list of SceneObject, as `spinhash scene` "
+           "answers the tile. ValueError when the tile is refused (window_overflow: a window held more than "
+           "max_tile_points points, ...); a RuntimeWarning when only the first max_objects were answered.")
+      .def("push", &PySceneRecognizer::push, py::arg("points"),
+           "Adds an (N, 3) float64 chunk of the tile, in any order (iter_cloud's chunks as they come): "
+           "ordered along track in bounded memory; flush() answers the tile.")
+      .def("flush", &PySceneRecognizer::flush,
+           "Every object of the chunks pushed since the last flush, as recognize() answers them whole.")
       .def_property_readonly("last_status", &PySceneRecognizer::last_status,
                              "status word of the last tile ('ok', 'too_many_objects', 'empty_cloud', ...)")
       .def_property_readonly("last_stats", &PySceneRecognizer::last_stats,

@@ -11,4 +11,7 @@ namespace spinhash::python {
 SceneConfig scene_config_from(const pybind11::object& config, const pybind11::kwargs& kwargs);
 pybind11::dict scene_stats_dict(const SceneStats& stats);
 
+// spinhash.AlongTrackOrder (py_scene_order.cpp), bound with SceneStream.
+void bind_along_track_order(pybind11::module_& m);
+
 }  // namespace spinhash::python

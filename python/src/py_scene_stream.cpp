@@ -1,6 +1,9 @@
 // spinhash.SceneStream: the core's SceneStream for users who read points
 // with their own reader: push(points) returns the objects that the push
 // completed, flush() the rest; the same windows and answers as the core.
+// Points behind the declared lag are dropped by the core's contract: the
+// push warns (RuntimeWarning, last_status "points_late") and names the
+// ordering helper (spinhash.AlongTrackOrder, py_scene_order.cpp).
 #include <pybind11/stl.h>
 
 #include <memory>
@@ -96,20 +99,32 @@ class PySceneStream {
   }
 
   // Runs a push or flush without the GIL; the objects it completed, as
-  // SceneObject. kStreamFlushed is a ValueError; a lost window a warning.
+  // SceneObject. kStreamFlushed is a ValueError; late points and a lost
+  // window are warnings.
   template <class Call>
   py::list run(Call call) {
     Status s;
     std::vector<SceneObjectCopy> done;
+    uint64_t late = 0;
     {
       py::gil_scoped_release unlocked;
       std::lock_guard<std::mutex> one_at_a_time(busy_);
+      const uint64_t late_before = stream_.stats().points_late;
       s = call();
+      late = stream_.stats().points_late - late_before;
       done.swap(pending_);
     }
     last_status_ = pipeline::status_word(s);
     if (s == Status::kStreamFlushed || s == Status::kInvalidArgument || s == Status::kNotOpen)
       throw py::value_error("SceneStream: " + last_status_ + " (" + status_name(s) + ")");
+    if (late > 0) {
+      const std::string message =
+          "SceneStream: points_late: " + std::to_string(late) + " points (" +
+          std::to_string(stream_.stats().points_late) +
+          " in all) came more than max_lag behind the furthest pushed and were dropped; push in along-track "
+          "order, or order the chunks first with spinhash.AlongTrackOrder";
+      if (PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 1) < 0) throw py::error_already_set();
+    }
     if (s == Status::kWindowOverflow &&
         PyErr_WarnEx(PyExc_RuntimeWarning, "SceneStream: window_overflow: points or windows lost (see stats)",
                      1) < 0)
@@ -139,6 +154,8 @@ std::unique_ptr<PySceneStream> make_stream(const std::shared_ptr<PyDatabase>& db
       rest[item.first] = item.second;
     }
   c.scene = scene_config_from(config, rest);
+  if (c.scene.max_tile_points == 0)
+    c.scene.max_tile_points = SceneConfig{}.max_tile_points;  // a fixed window
   if (!stream_config_valid(c))
     throw py::value_error("SceneStream: invalid settings (see stream_config_valid)");
   return std::make_unique<PySceneStream>(db, c);
@@ -150,10 +167,13 @@ void bind_scene_stream(py::module_& m) {
   py::class_<PySceneStream>(
       m, "SceneStream",
       "A flight line of any length in fixed memory: push points in scan order (along-track "
-      "lag at most max_lag), get each object once, as soon as its window is complete.")
+      "lag at most max_lag), get each object once, as soon as its window is complete. Points further "
+      "behind are dropped with a RuntimeWarning (last_status 'points_late'); order chunks of any order "
+      "with spinhash.AlongTrackOrder first.")
       .def(py::init(&make_stream), py::arg("db"), py::arg("config") = py::none(),
            "SceneStream(db, config=None, heading_deg=90, swath_min=-128, swath_max=128, own_min=-128, "
-           "own_max=128, max_lag=16, max_jump=500, max_z_offset=3000, max_buffered_points=8388608, "
+           "own_max=128, max_lag=16, max_jump=500, jump_confirm_points=16, max_z_offset=3000, "
+           "max_buffered_points=8388608, "
            "origin=None, "
            "top_n=5, max_tile_points=2097152, max_objects=256, **settings)")
       .def("push", &PySceneStream::push, py::arg("points"),
@@ -162,6 +182,7 @@ void bind_scene_stream(py::module_& m) {
       .def("reset", &PySceneStream::reset, "Starts a new line with the same settings.")
       .def_property_readonly("stats", &PySceneStream::stats, "what the stream did, lost points counted")
       .def_property_readonly("last_status", &PySceneStream::last_status, "status word of the last call");
+  bind_along_track_order(m);
 }
 
 }  // namespace spinhash::python

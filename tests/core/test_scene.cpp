@@ -189,7 +189,7 @@ TEST_CASE(
     CHECK(r.object_count == 0u);
   }
   cfg.max_tile_points = n;
-  cfg.max_terrain_cells = 1000;  // 20 x 20 m at 0.5 m needs 41 x 41
+  cfg.max_terrain_cells = 1000;  // 20 x 20 m at 0.5 m needs 41 x 41 (the tile API keeps the config's grids)
   {
     SceneRun run(&db, cfg);
     REQUIRE(run.init == Status::kOk);

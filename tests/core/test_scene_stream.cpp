@@ -1,7 +1,8 @@
 // SceneStream (include/spinhash/scene_stream.hpp), on a 160 m strip of a
 // flight line with toy vehicles placed on and near the window cores' edges:
 // each vehicle reported once, named as the whole strip names it; the same
-// answers for any chunking; bad input counted, never a crash.
+// answers for any chunking; bad input counted, never a crash; points out of
+// order said so; work that follows the points over kilometres of nothing.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -148,7 +149,8 @@ TEST_CASE("stream: every vehicle of a strip is reported once, named as the whole
         st.scene.points_in);
   CHECK(st.scene.points_in_objects > 0u);
 
-  // The whole strip as one window (the tile API) for reference.
+  // The whole strip through the tile API (the stream's path over a tile in
+  // memory: its own frame, bands and rows) for reference.
   SceneConfig whole;
   whole.max_tile_points = 400000;
   std::vector<uint8_t> raw(required_scene_workspace_bytes(whole) + kBufferAlignment);
@@ -158,7 +160,8 @@ TEST_CASE("stream: every vehicle of a strip is reported once, named as the whole
   REQUIRE(scene.init(&toy.db, whole, ws, required_scene_workspace_bytes(whole)) == Status::kOk);
   const SceneResult tile = scene.recognize(xyz.data(), static_cast<uint32_t>(xyz.size() / 3));
   REQUIRE(tile.status == Status::kOk);
-  CHECK(tile.stats.windows == 1u);
+  CHECK(tile.stats.windows > 1u);
+  CHECK(tile.points_lost == 0u);
   CHECK(tile.stats.points_in == xyz.size() / 3);
   CHECK(tile.stats.points_ground + tile.stats.points_in_objects + tile.stats.points_fragments ==
         xyz.size() / 3);
@@ -257,7 +260,7 @@ TEST_CASE("stream: NaN, a GNSS glitch, late points and a push after the flush ar
                                    kEast, y + 10000.0, kUp, kEast,           y - 150.0, kUp};
   xyz.insert(xyz.begin() + static_cast<std::ptrdiff_t>(at), bad.begin(), bad.end());
   StreamRun dirty(&toy.db, strip_config());
-  CHECK(dirty.feed(xyz, 1000) == Status::kOk);
+  CHECK(dirty.feed(xyz, 1000) == Status::kPointsLate);  // the late point: dropped, and said so
   const StreamStats& st = dirty.stream.stats();
   CHECK(st.scene.points_nonfinite == 1u);
   CHECK(st.points_outside == 1u);
@@ -274,7 +277,7 @@ TEST_CASE("stream: NaN, a GNSS glitch, late points and a push after the flush ar
   dirty.stream.reset();
   dirty.objects.clear();
   CHECK(dirty.stream.stats().points_pushed == 0u);
-  CHECK(dirty.feed(xyz, 50000) == Status::kOk);
+  CHECK(dirty.feed(xyz, 50000) == Status::kPointsLate);
   CHECK(dirty.objects.size() == clean.objects.size());
 }
 
@@ -326,4 +329,46 @@ TEST_CASE("stream: invalid configs are refused; the workspace does not depend on
   CHECK(never.push(nullptr, 0) == Status::kNotOpen);
   CHECK(never.flush() == Status::kNotOpen);
   CHECK(never.stats().points_pushed == 0u);
+}
+
+TEST_CASE("stream: points pushed out of order are dropped with kPointsLate, never silently") {
+  ToyDatabase toy;
+  REQUIRE(make_toy_database(&toy));
+  const std::vector<double> xyz = strip_points();
+  const size_t n = xyz.size() / 3;
+  // The strip's second half pushed first, then its first half: the first
+  // half lies more than max_lag behind the furthest point pushed.
+  std::vector<double> swapped(xyz.begin() + static_cast<std::ptrdiff_t>(3 * (n / 2)), xyz.end());
+  swapped.insert(swapped.end(), xyz.begin(), xyz.begin() + static_cast<std::ptrdiff_t>(3 * (n / 2)));
+  StreamRun run(&toy.db, strip_config());
+  REQUIRE(run.init == Status::kOk);
+  const uint32_t second = static_cast<uint32_t>(n - n / 2);
+  CHECK(run.stream.push(swapped.data(), second) == Status::kOk);
+  CHECK(run.stream.push(swapped.data() + 3 * static_cast<size_t>(second), static_cast<uint32_t>(n / 2)) ==
+        Status::kPointsLate);
+  CHECK(run.stream.flush() == Status::kOk);
+  CHECK(run.stream.stats().points_late > 0u);
+  CHECK(run.stream.stats().points_late <= n / 2);
+}
+
+TEST_CASE(
+    "stream: work follows the points: two patches 5 km apart (78 rows of cores) run their windows, not the "
+    "rows between") {
+  ToyDatabase toy;
+  REQUIRE(make_toy_database(&toy));
+  std::vector<double> xyz = strip_points();
+  const size_t n = xyz.size() / 3;
+  std::vector<double> both = xyz;
+  for (size_t i = 0; i < n; ++i)
+    both.insert(both.end(), {xyz[3 * i], xyz[3 * i + 1] + 4992.0, xyz[3 * i + 2]});
+  StreamConfig c = strip_config();
+  c.max_jump = 10000.0f;  // the gap is data, not a glitch
+  StreamRun one(&toy.db, c), two(&toy.db, c);
+  REQUIRE(one.feed(xyz, 4096) == Status::kOk);
+  REQUIRE(two.feed(both, 4096) == Status::kOk);
+  const StreamStats &a = one.stream.stats(), &b = two.stream.stats();
+  CHECK(b.windows == 2u * a.windows);
+  CHECK(b.scene.terrain_cells == 2u * a.scene.terrain_cells);
+  CHECK(b.points_late + b.points_glitch + b.points_outside == 0u);
+  CHECK(two.objects.size() == 2u * one.objects.size());
 }

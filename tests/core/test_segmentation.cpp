@@ -9,6 +9,7 @@
 #include "geometry/terrain.hpp"
 #include "scene/segment.hpp"
 #include "support/scene_fixtures.hpp"
+#include "support/stream_terrain.hpp"
 
 using namespace spinhash;
 using namespace spinhash::test;
@@ -24,28 +25,22 @@ struct Segmented {
 
 Segmented segment(const Tile& tile, uint32_t max_objects = 64) {
   const uint32_t n = static_cast<uint32_t>(tile.ground.size());
-  std::vector<float> xyz(tile.xyz.begin(), tile.xyz.end());
-  std::vector<float> height(n);
-  std::vector<uint8_t> ground(n);
+  const StreamTerrain terrain = stream_terrain(tile.xyz, TerrainParams{});
+  REQUIRE(terrain.status == Status::kOk);
   const uint32_t cells = 1u << 16;
   Arena counter;
-  TerrainGrid tg;
   SegmentGrid sg;
-  tg.carve(counter, cells);
   sg.carve(counter, cells);
   std::vector<uint8_t> ws(counter.used() + 64);
   Arena arena(ws.data(), ws.size());
-  tg.carve(arena, cells);
   sg.carve(arena, cells);
   Segmented s;
-  REQUIRE(classify_terrain(xyz.data(), n, TerrainParams{}, tg, height.data(), ground.data(), nullptr) ==
-          Status::kOk);
   SegmentParams p;
   p.max_objects = max_objects;
   s.objects.resize(max_objects);
   s.label.resize(n);
-  s.status = segment_objects(xyz.data(), height.data(), ground.data(), n, p, sg, s.objects.data(),
-                             s.label.data(), &s.stats);
+  s.status = segment_objects(terrain.local.data(), terrain.height.data(), terrain.ground.data(), n, p, sg,
+                             s.objects.data(), s.label.data(), &s.stats);
   s.objects.resize(s.stats.objects);
   return s;
 }

@@ -1,6 +1,8 @@
-// Terrain classifier (geometry/terrain.hpp): ground recall and precision on
-// sloped terrain with a bump and a curb, objects lifted off it, heights
-// above the terrain, and a footprint larger than the grid refused.
+// Terrain classifier (geometry/terrain.hpp), run as the scene stream runs it
+// (support/stream_terrain.hpp: cell sums, parts, filter, heights): ground
+// recall and precision on sloped terrain with a bump and a curb, objects
+// lifted off it, heights above the terrain, a footprint larger than the
+// grid refused, and parts that follow the points.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -8,35 +10,15 @@
 
 #include "geometry/terrain.hpp"
 #include "support/scene_fixtures.hpp"
+#include "support/stream_terrain.hpp"
 
 using namespace spinhash;
 using namespace spinhash::test;
 
 namespace {
 
-struct Classified {
-  std::vector<float> height;
-  std::vector<uint8_t> ground;
-  TerrainStats stats;
-  Status status = Status::kNotOpen;
-};
-
-// Local float copy (the tiles are small and centred) and the classifier run
-// over a grid carved from a host buffer.
-Classified classify(const Tile& tile, const TerrainParams& p, uint32_t max_cells = 1u << 14) {
-  std::vector<float> xyz(tile.xyz.begin(), tile.xyz.end());
-  const uint32_t n = static_cast<uint32_t>(tile.ground.size());
-  Arena counter;
-  TerrainGrid g;
-  g.carve(counter, max_cells);
-  std::vector<uint8_t> ws(counter.used() + 64);
-  Arena arena(ws.data(), ws.size());
-  g.carve(arena, max_cells);
-  Classified c;
-  c.height.resize(n);
-  c.ground.resize(n);
-  c.status = classify_terrain(xyz.data(), n, p, g, c.height.data(), c.ground.data(), &c.stats);
-  return c;
+StreamTerrain classify(const Tile& tile, const TerrainParams& p, uint32_t max_cells = 1u << 14) {
+  return stream_terrain(tile.xyz, p, max_cells);
 }
 
 // A 24 x 24 m tile: terrain at 0.2 m spacing with 3 cm noise, a car-sized
@@ -60,7 +42,7 @@ TEST_CASE("terrain: ground recall and precision on 0, 8 and 15 degree slopes wit
   for (double slope : {0.0, 8.0, 15.0}) {
     CAPTURE(slope);
     const Tile tile = sample_tile(slope);
-    const Classified c = classify(tile, TerrainParams{});
+    const StreamTerrain c = classify(tile, TerrainParams{});
     REQUIRE(c.status == Status::kOk);
     // Object points within ground_height of the true terrain (the foot of a
     // wall) are ground by definition: truth is the true height above terrain.
@@ -81,14 +63,15 @@ TEST_CASE("terrain: ground recall and precision on 0, 8 and 15 degree slopes wit
     CAPTURE(precision);
     CHECK(recall >= 0.98);
     CHECK(precision >= 0.98);
-    CHECK(c.stats.points_ground == tp + fp);
-    CHECK(c.stats.windows >= 3u);
+    CHECK(c.points_ground == tp + fp);
+    CHECK(c.windows >= 3u);
+    CHECK(c.parts == 1u);  // one stretch of ground
   }
 }
 
 TEST_CASE("terrain: heights above the terrain on a 15 degree slope (car roof, building roof, crate)") {
   const Tile tile = sample_tile(15.0);
-  const Classified c = classify(tile, TerrainParams{});
+  const StreamTerrain c = classify(tile, TerrainParams{});
   REQUIRE(c.status == Status::kOk);
   float top[3] = {-1e9f, -1e9f, -1e9f};
   for (size_t i = 0; i < tile.object.size(); ++i)
@@ -113,17 +96,41 @@ TEST_CASE("terrain: heights above the terrain on a 15 degree slope (car roof, bu
 TEST_CASE("terrain: a footprint needing more cells than the grid holds is kTileTooLarge") {
   const Tile tile = sample_tile(0.0);
   // 49.2 x 49.2 cells, and up to one more each way where the grid's origin
-  // snaps down to the cell lattice (geometry/xy_frame.hpp).
+  // snaps down to the cell lattice.
   CHECK(classify(tile, TerrainParams{}, 2000).status == Status::kTileTooLarge);
   CHECK(classify(tile, TerrainParams{}, 2601).status == Status::kOk);
   TerrainParams bad;
   bad.cell = 0.0f;
-  CHECK(classify(tile, bad).status == Status::kInvalidArgument);
+  CHECK(!terrain_params_valid(bad));
+}
+
+TEST_CASE("terrain: parts follow the points: far-apart patches are filtered each on its own footprint") {
+  // Two patches of the sample tile 3 km apart across, and a lone point
+  // between them: three parts, a few thousand cells, not the 6 million of
+  // one grid over their span; each patch's heights are those it gives alone.
+  const Tile tile = sample_tile(8.0);
+  std::vector<double> near = tile.xyz, far = tile.xyz, both = tile.xyz;
+  for (size_t i = 1; i < far.size(); i += 3) far[i] += 3000.0;
+  both.insert(both.end(), far.begin(), far.end());
+  both.insert(both.end(), {5.0, 1500.0, 3.0});
+  const StreamTerrain alone_near = stream_terrain(near, TerrainParams{}),
+                      alone_far = stream_terrain(far, TerrainParams{});
+  const StreamTerrain together = stream_terrain(both, TerrainParams{});
+  REQUIRE(together.status == Status::kOk);
+  CHECK(together.parts == 3u);
+  CHECK(together.cells == alone_near.cells + alone_far.cells + 1u);
+  const size_t n = near.size() / 3;
+  bool same = true;
+  for (size_t i = 0; i < n; ++i)
+    same =
+        same && together.height[i] == alone_near.height[i] && together.height[n + i] == alone_far.height[i];
+  CHECK(same);
+  CHECK(together.ground.back() == 1u);  // the lone point is its own ground
 }
 
 namespace {
 
-// The direct scan the opening used before: 2r + 1 cells per output cell.
+// The direct scan, the opening's definition: 2r + 1 cells per output cell.
 void direct_line_filter(const std::vector<float>& in, std::vector<float>& out, uint32_t nx, uint32_t ny,
                         uint32_t r, bool along_x, bool erode) {
   const uint32_t lines = along_x ? ny : nx, len = along_x ? nx : ny, step = along_x ? 1u : nx;

@@ -1,12 +1,16 @@
-// The stream's terrain cells (scene/terrain_cells.hpp) against the grid a
-// strip's own points give (geometry/terrain.hpp): the same footprint, cell
-// values, filtered surface and heights, bit for bit, on sloped terrain with
-// a bump, a curb and vehicle-sized boxes; summed in rows as the stream does
-// (each cell once, the ring's slots reused along the track); and the
-// configuration rule that keeps every vehicle whole in a window's gather.
+// The stream's terrain cells (scene/terrain_cells.hpp) against the grid
+// their definition gives over a strip's own points (each cell's lowest z,
+// then the mean of the points within the low band of it): the same
+// footprint, cell values, filtered surface and heights, bit for bit, on
+// sloped terrain with a bump, a curb and vehicle-sized boxes; summed in
+// rows as the stream does (each cell once, the ring's slots reused along
+// the track); and the configuration rule that keeps every vehicle whole in
+// a window's gather.
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "scene/terrain_cells.hpp"
@@ -25,7 +29,7 @@ constexpr uint32_t kGridCells = 1u << 17;  // a strip's grid
 
 struct Carved {
   std::vector<uint8_t> bytes;
-  TerrainGrid grid;
+  TerrainParts grid;
   TerrainCells cells;
   PointRing ring;
 };
@@ -56,10 +60,19 @@ Tile strip_tile() {
   return tile;
 }
 
-// The grid over the points of the ring inside `rect`, as the tile API
-// builds a strip's (local floats at (s0, t0)), filtered.
-void grid_from_points(const PointRing& ring, const FrameRect& rect, double s0, double t0, TerrainGrid& g,
-                      std::vector<float>* local) {
+// The grid the definition gives over the points of the ring inside `rect`
+// (cells of the frame's lattice from t_min across): one part over the
+// cells that hold points, each cell's lowest z, then its points within the
+// low band of it, in the points' order; filtered. `local`: the points in
+// the local frame at (s0, t0).
+void grid_from_points(const PointRing& ring, const FrameRect& rect, double t_min, double s0, double t0,
+                      TerrainParts& g, std::vector<float>* local) {
+  using Cell = std::pair<int64_t, int64_t>;
+  struct Sums {
+    float lowest = NAN, sum = 0.0f, count = 0.0f;
+  };
+  std::map<Cell, Sums> cells;
+  std::vector<std::pair<Cell, float>> points;
   local->clear();
   for (uint32_t i = 0; i < ring.count; ++i) {
     double p[3];
@@ -67,17 +80,34 @@ void grid_from_points(const PointRing& ring, const FrameRect& rect, double s0, d
     if (!rect.holds(p[0], p[1])) continue;
     local->insert(local->end(),
                   {static_cast<float>(p[0] - s0), static_cast<float>(p[1] - t0), static_cast<float>(p[2])});
+    const Cell c{static_cast<int64_t>(std::floor(p[0] / kCell)),
+                 static_cast<int64_t>(std::floor((p[1] - t_min) / kCell))};
+    points.push_back({c, static_cast<float>(p[2])});
+    Sums& sums = cells[c];
+    if (std::isnan(sums.lowest) || points.back().second < sums.lowest) sums.lowest = points.back().second;
   }
-  float lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-  for (size_t i = 0; i < local->size(); i += 3)
-    for (int a = 0; a < 2; ++a) {
-      lo[a] = std::fmin(lo[a], (*local)[i + a]);
-      hi[a] = std::fmax(hi[a], (*local)[i + a]);
-    }
-  REQUIRE(terrain_begin(g, kCell, lo, hi));
-  for (size_t i = 0; i < local->size(); i += 3) terrain_add_lowest(g, local->data() + i);
-  for (size_t i = 0; i < local->size(); i += 3) terrain_add_low_band(g, local->data() + i);
-  terrain_finish(g, TerrainParams{}, nullptr);
+  for (const auto& [c, z] : points) {
+    Sums& sums = cells[c];
+    if (z > sums.lowest + TerrainParams{}.low_band) continue;
+    sums.sum += z - sums.lowest;
+    sums.count += 1.0f;
+  }
+  int64_t lo[2] = {INT64_MAX, INT64_MAX}, hi[2] = {INT64_MIN, INT64_MIN};
+  for (const auto& [c, sums] : cells) {
+    lo[0] = std::min(lo[0], c.first), hi[0] = std::max(hi[0], c.first);
+    lo[1] = std::min(lo[1], c.second), hi[1] = std::max(hi[1], c.second);
+  }
+  REQUIRE(terrain_parts_begin(g, kCell, 0.0f, 0.0f, 1u << 20, 1, 1));
+  const uint8_t part =
+      terrain_add_part(g, static_cast<float>(static_cast<double>(lo[0]) * kCell - s0),
+                       static_cast<float>(t_min + static_cast<double>(lo[1]) * kCell - t0),
+                       static_cast<uint32_t>(hi[0] - lo[0] + 1), static_cast<uint32_t>(hi[1] - lo[1] + 1));
+  REQUIRE(part == 0u);
+  g.block_part[0] = part;
+  for (const auto& [c, sums] : cells)
+    terrain_put_cell(g.part[0], static_cast<uint32_t>(c.first - lo[0]),
+                     static_cast<uint32_t>(c.second - lo[1]), sums.lowest, sums.sum, sums.count);
+  terrain_finish(g, TerrainParams{});
 }
 
 struct Snapshot {
@@ -86,12 +116,14 @@ struct Snapshot {
   std::vector<float> value, surface, height;
 };
 
-Snapshot snapshot(const TerrainGrid& g, const std::vector<float>& local) {
+Snapshot snapshot(const TerrainParts& parts, const std::vector<float>& local) {
+  REQUIRE(parts.count == 1u);  // one stretch of ground
+  const TerrainGrid& g = parts.part[0];
   Snapshot s{g.nx, g.ny, g.x0, g.y0, {}, {}, {}};
   s.value.assign(g.value, g.value + g.nx * g.ny);
   s.surface.assign(g.surface, g.surface + g.nx * g.ny);
   for (size_t i = 0; i < local.size(); i += 3)
-    s.height.push_back(local[i + 2] - terrain_height_at(g, local[i], local[i + 1]));
+    s.height.push_back(local[i + 2] - terrain_height_at(parts, local[i], local[i + 1]));
   return s;
 }
 
@@ -104,7 +136,7 @@ bool same_floats(const std::vector<float>& a, const std::vector<float>& b) {
 
 }  // namespace
 
-TEST_CASE("terrain cells: a strip's grid from the summed cells equals the grid from its points") {
+TEST_CASE("terrain cells: a strip's grid from the summed cells equals the grid its points define") {
   const Tile tile = strip_tile();
   const uint32_t n = static_cast<uint32_t>(tile.ground.size());
   Carved c;
@@ -123,10 +155,10 @@ TEST_CASE("terrain cells: a strip's grid from the summed cells equals the grid f
     CHECK(c.cells.summed_edge() == s_hi);
     const FrameRect rect{s_lo, s_hi, -30.0 - kMargin, 30.0 + kMargin};
     const double s0 = s_lo, t0 = rect.t0;
-    grid_from_points(c.ring, rect, s0, t0, c.grid, &local);
+    grid_from_points(c.ring, rect, c.cells.t_min, s0, t0, c.grid, &local);
     const Snapshot from_points = snapshot(c.grid, local);
-    REQUIRE(c.cells.fill(rect, s0, t0, kCell, c.grid) == Status::kOk);
-    terrain_finish(c.grid, TerrainParams{}, nullptr);
+    REQUIRE(c.cells.fill(rect, rect, s0, t0, terrain_reach_cells(TerrainParams{}), c.grid) == Status::kOk);
+    terrain_finish(c.grid, TerrainParams{});
     const Snapshot from_cells = snapshot(c.grid, local);
     CHECK(from_cells.nx == from_points.nx);
     CHECK(from_cells.ny == from_points.ny);
@@ -148,14 +180,16 @@ TEST_CASE("terrain cells: a strip without points is kEmptyCloud, a grid too smal
   for (uint32_t i = 0; i < n; ++i) c.ring.push(tile.xyz.data() + 3u * i);
   c.cells.start(-30.0 - kMargin);
   c.cells.sum(c.ring, -kMargin, kRow + kMargin);
-  const TerrainGrid full = c.grid;
-  c.grid.max_cells = 1000;
-  CHECK(c.cells.fill(FrameRect{-kMargin, kRow + kMargin, -70.0, 70.0}, -kMargin, -70.0, kCell, c.grid) ==
-        Status::kTileTooLarge);
-  c.grid = full;
+  const uint32_t reach = terrain_reach_cells(TerrainParams{});
+  const uint32_t full = c.grid.whole.max_cells;
+  c.grid.whole.max_cells = 1000;
+  CHECK(c.cells.fill(FrameRect{-kMargin, kRow + kMargin, -70.0, 70.0},
+                     FrameRect{-kMargin, kRow + kMargin, -70.0, 70.0}, -kMargin, -70.0, reach,
+                     c.grid) == Status::kTileTooLarge);
+  c.grid.whole.max_cells = full;
   c.cells.sum(c.ring, 200.0 - kMargin, 200.0 + kRow + kMargin);  // along the track, beyond the tile
-  CHECK(c.cells.fill(FrameRect{200.0 - kMargin, 200.0 + kRow + kMargin, -70.0, 70.0}, 200.0 - kMargin, -70.0,
-                     kCell, c.grid) == Status::kEmptyCloud);
+  const FrameRect beyond{200.0 - kMargin, 200.0 + kRow + kMargin, -70.0, 70.0};
+  CHECK(c.cells.fill(beyond, beyond, 200.0 - kMargin, -70.0, reach, c.grid) == Status::kEmptyCloud);
 }
 
 TEST_CASE("scene config: the object margin keeps every vehicle whole and stays within the terrain's") {

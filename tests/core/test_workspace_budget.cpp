@@ -19,15 +19,17 @@ namespace {
 struct WorkspaceThreshold {
   size_t default_config;  // RecognizerConfig{}
   size_t points_20000;    // RecognizerConfig{} with max_points = 20000
-  size_t scene_300000;    // SceneConfig{}: a 300 000-point tile, its grids and a default recognizer
+  size_t scene_300000;    // SceneConfig{}: 300 000-point windows, their grids, a default recognizer and
+                          // the stream's buffer the tile API sizes from them (scene_tile.hpp)
   size_t stream_1m;       // StreamConfig{}: windows of 300 000 points, 1 M points buffered
 };
-// Pointer-sized members make 64-bit layouts larger than 32-bit ones. The
-// scene's figures hold a recognizer (its config and workspace) and 256
+// Pointer-sized members make 64-bit layouts larger than 32-bit ones, and a
+// SceneObject's 8-byte aligned statistics pad differently on 32-bit ABIs.
+// The scene's figures hold a recognizer (its config and workspace) and 256
 // SceneObjects, each with its class ranking and its recognition's
 // statistics, so a statistic or a stage parameter moves them.
-constexpr WorkspaceThreshold kThreshold64 = {6453344, 5623424, 31021440, 44623536};
-constexpr WorkspaceThreshold kThreshold32 = {6453184, 5623264, 31018784, 44622640};
+constexpr WorkspaceThreshold kThreshold64 = {6453344, 5623424, 53157552, 44650408};
+constexpr WorkspaceThreshold kThreshold32 = {6453184, 5623264, 53154896, 44649512};
 // Padding and alignment may move a few bytes between ABIs of one pointer size
 // (armhf and powerpc agree today); anything larger is a real change.
 constexpr size_t kToleranceBytes = 1024;

@@ -270,14 +270,22 @@ TEST_CASE("survey: bad input has a clear message and exit status") {
 
 TEST_CASE("survey plan: ownership by half-open core, thin gaps to the nearest tile, holes to none") {
   survey::SurveyTask t;
-  t.tile = {"a.las", "a", {{0, 0}, {39.99, 39.99}}};
-  t.neighbours = {{"b.las", "b", {{40.01, 0}, {80, 39.99}}}};
-  CHECK(survey::owner_of(t, 10, 10) == &t.tile);
-  CHECK(survey::owner_of(t, 39.995, 10) == &t.tile);           // in the gap, nearer a
-  CHECK(survey::owner_of(t, 40.005, 10) == &t.neighbours[0]);  // in the gap, nearer b
-  CHECK(survey::owner_of(t, 40.0, 10) == &t.tile);             // a tie goes to the first path
-  CHECK(survey::owner_of(t, 50, 10) == &t.neighbours[0]);
-  CHECK(survey::owner_of(t, 10, 45) == nullptr);  // a hole: nobody's
+  t.tile = {"b.las", "b", {{40.01, 0}, {80, 39.99}}};
+  t.neighbours = {{"a.las", "a", {{0, 0}, {39.99, 39.99}}}};
+  uint32_t self = 99;
+  const std::vector<spinhash::OwnedArea> areas = survey::owner_areas(t, &self);  // path order: a, then b
+  REQUIRE(areas.size() == 2u);
+  CHECK(self == 1u);
+  CHECK(areas[0].max[0] == 39.99);
+  auto owner = [&](double x, double y) {
+    return spinhash::owner_of(areas.data(), 2, x, y, survey::kGapTolerance);
+  };
+  CHECK(owner(10, 10) == 0u);
+  CHECK(owner(39.995, 10) == 0u);  // in the gap, nearer a
+  CHECK(owner(40.005, 10) == 1u);  // in the gap, nearer b
+  CHECK(owner(40.0, 10) == 0u);    // a tie goes to the first path
+  CHECK(owner(50, 10) == 1u);
+  CHECK(owner(10, 45) == spinhash::kNoOwner);  // a hole: nobody's
   std::string error;
   survey::SurveyTask back;
   t.crs = "PROJCS[\"x\",\n\tUNIT[\"m\",1]]\\";
@@ -287,9 +295,9 @@ TEST_CASE("survey plan: ownership by half-open core, thin gaps to the nearest ti
   CHECK(back.units.horizontal == t.units.horizontal);
   CHECK(back.units.vertical == t.units.vertical);
   CHECK_FALSE(back.units.geographic);
-  CHECK(back.tile.path == "a.las");
+  CHECK(back.tile.path == "b.las");
   CHECK(back.neighbours.size() == 1);
-  CHECK(back.neighbours[0].core.min[0] == 40.01);
+  CHECK(back.neighbours[0].core.max[0] == 39.99);
   CHECK(back.crs == t.crs);
   CHECK_FALSE(survey::parse_task_text("spinhash-survey-task 1\nindex 0\n", &back, &error));
 }

@@ -17,8 +17,10 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "cloud/las_writer.hpp"
 #include "pipeline/json_line.hpp"
 #include "pipeline/spill_folder.hpp"
+#include "pipeline/tile_stream_order.hpp"
 #include "render/survey_picture.hpp"
 
 using namespace spinhash::host::test;
@@ -224,14 +226,25 @@ TEST_CASE("a survey stopped by SIGINT removes its spill folders and says what it
   const Fixture& f = fx();
   TempDir dir("sigint");
   const std::string temp = dir.file("tmp"), out = dir.file("out"), err = dir.file("err.txt");
+  const std::string dense = dir.file("dense.las");
   fs::create_directories(temp);
+  // A tile of twice the along-track order's memory budget, so that it
+  // spills (smaller tiles are ordered in memory and make no folder).
+  const size_t side = 1024, points = 2 * spinhash::pipeline::kOrderMemoryPoints;
+  std::vector<double> xyz;
+  xyz.reserve(3 * points);
+  for (size_t i = 0; i < points; ++i)
+    xyz.insert(xyz.end(),
+               {500000.0 + 0.1 * static_cast<double>(i % side),
+                4000000.0 + 0.1 * static_cast<double>(i / side), 0.01 * static_cast<double>(i % 7)});
+  std::string error;
+  REQUIRE_MESSAGE(spinhash::host::write_las(dense, xyz, {}, &error), error);
   const pid_t child = fork();
   if (child == 0) {
     setenv("TMPDIR", temp.c_str(), 1);
     if (freopen(err.c_str(), "w", stderr) == nullptr) _exit(127);
     execl(SPINHASH_TEST_BINARY, SPINHASH_TEST_BINARY, "survey", "--quiet", "--jobs", "1", "--db",
-          f.db.c_str(), "--out", out.c_str(), (kLaz + "/twins/simple.las").c_str(),
-          (kLaz + "/twins/autzen_trim.laz").c_str(), static_cast<char*>(nullptr));
+          f.db.c_str(), "--out", out.c_str(), dense.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
   bool spilling = false;

@@ -1,5 +1,7 @@
-"""spinhash.SceneRecognizer answers a tile as `spinhash scene` prints it:
-two vehicles scanned with their ground, side by side."""
+"""spinhash.SceneRecognizer answers a tile as `spinhash scene` prints it
+(the same path: the tile ordered along track, streamed in bands), whole or
+pushed in chunks of any order: two vehicles scanned with their ground, side
+by side."""
 import numpy as np
 import pytest
 
@@ -42,9 +44,7 @@ def test_the_scene_matches_the_cli(fleet, tile):
         assert [name for name, _ in obj.ranking] == [entry["model"] for entry in line["ranking"]]
         for (_, score), entry in zip(obj.ranking, line["ranking"]):
             assert score == pytest.approx(entry["score"], rel=1e-6)
-        # The CLI streams the file through 32 m windows: the centre comes from
-        # another window-local float frame (scene-stream.md), within 10 um.
-        np.testing.assert_allclose(obj.center, line["center"], rtol=0, atol=1e-5)
+        np.testing.assert_allclose(obj.center, line["center"], rtol=0, atol=1e-6)  # as the CLI prints it
         np.testing.assert_allclose(obj.extent, line["extent"], rtol=0, atol=1e-3)  # the CLI prints 4 digits
         if line["ground_gap"] is None:
             assert obj.ground_gap is None
@@ -66,7 +66,7 @@ def test_scene_settings_and_refusals(fleet, tile):
     db = spinhash.Database(fleet.db)
     default = spinhash.SceneRecognizer(db)
     assert default.config.ground_clearance == 0.0  # as `spinhash scene`: the terrain classifier takes the ground
-    assert (default.top_n, default.max_tile_points, default.max_objects) == (5, 1 << 21, 256)
+    assert (default.top_n, default.max_tile_points, default.max_objects) == (5, 0, 256)  # 0: from the density
     assert spinhash.SceneRecognizer(db, ground_clearance=0.2, seed=3).config.seed == 3
     top_two = spinhash.SceneRecognizer(db, top_n=2, mode="bran").recognize(points)
     assert all(len(obj.ranking) <= 2 for obj in top_two)
@@ -83,3 +83,24 @@ def test_scene_settings_and_refusals(fleet, tile):
         spinhash.SceneRecognizer(db, sigma=-1.0)
     empty = spinhash.SceneRecognizer(db)
     assert empty.recognize(np.zeros((0, 3))) == [] and empty.last_status == "empty_cloud"
+
+
+def test_chunks_pushed_as_they_come_give_the_whole_tile(fleet, tile):
+    """iter_cloud's chunks, pushed in the file's order or any other: the
+    tile's objects, as recognize() gives them for the whole cloud."""
+    path, points = tile
+    db = spinhash.Database(fleet.db)
+    whole = spinhash.SceneRecognizer(db).recognize(points)
+    scene = spinhash.SceneRecognizer(db)
+    for chunk in spinhash.iter_cloud(path, chunk_points=997):
+        assert scene.push(chunk) is None
+    chunked = scene.flush()
+    assert scene.last_status == "ok"
+    answers = [(o.kind, o.model, o.confident, o.points, tuple(o.center)) for o in whole]
+    assert [(o.kind, o.model, o.confident, o.points, tuple(o.center)) for o in chunked] == answers
+    backwards = spinhash.SceneRecognizer(db)
+    for start in reversed(range(0, len(points), 4096)):
+        backwards.push(points[start:start + 4096])
+    vehicles = sorted(o.model for o in backwards.flush() if o.kind == "vehicle")
+    assert vehicles == sorted(o.model for o in whole if o.kind == "vehicle")
+    assert scene.flush() == [] and scene.last_status == "empty_cloud"  # a flush starts a new tile

@@ -43,7 +43,8 @@ def test_every_scene_setting_is_a_keyword_and_a_property(fleet):
 
 def test_every_stream_setting_is_a_keyword(fleet):
     settings = dict(origin=(1.0, 2.0, 3.0), heading_deg=45.0, swath_min=-200.0, swath_max=200.0, own_min=-100.0,
-                    own_max=100.0, max_lag=8.0, max_jump=400.0, max_z_offset=2000.0, max_buffered_points=100000)
+                    own_max=100.0, max_lag=8.0, max_jump=400.0, jump_confirm_points=8, max_z_offset=2000.0,
+                    max_buffered_points=100000)
     # BOOLs are set by the setting they name (origin_given: origin)
     assert set(settings) == {name for kind, name in entries("SPINHASH_STREAM_CONFIG_FIELDS") if kind != "BOOL"}
     spinhash.SceneStream(spinhash.Database(fleet.db), **settings)

@@ -1,5 +1,7 @@
 """spinhash.SceneStream: the tile of test_scene.py pushed in scan order, in
-chunks of any size, answers as SceneRecognizer does; bad input is counted."""
+chunks of any size, answers as SceneRecognizer does; bad input is counted;
+points out of order are dropped with a warning, and AlongTrackOrder orders
+iter_cloud's chunks as they come so that nothing is dropped."""
 import numpy as np
 import pytest
 
@@ -64,3 +66,32 @@ def test_bad_input_is_counted_and_a_push_after_flush_refused(fleet, tile):  # no
     assert stream.stats["points_pushed"] == 0
     with pytest.raises(ValueError, match="invalid settings"):
         stream_of(fleet, ordered, max_lag=-1.0)
+
+
+def test_chunks_out_of_order_warn_and_along_track_order_keeps_them(fleet, tile, tmp_path):  # noqa: F811
+    _, points = tile
+    path = tmp_path / "shuffled.xyz"  # a file whose points come in no particular order
+    np.savetxt(path, points[np.random.default_rng(5).permutation(len(points))], fmt="%.17g")
+    as_they_come = stream_of(fleet, points)
+    with pytest.warns(RuntimeWarning, match="points_late"):
+        for chunk in spinhash.iter_cloud(path, chunk_points=4096):
+            as_they_come.push(chunk)
+    assert as_they_come.last_status == "points_late"
+    assert as_they_come.stats["points_late"] > 0
+    as_they_come.flush()
+
+    order = spinhash.AlongTrackOrder(heading_deg=0, row_depth=1, memory_points=5000)  # the stream's frame
+    for chunk in spinhash.iter_cloud(path, chunk_points=4096):
+        order.push(chunk)
+    assert order.points == len(points)
+    ordered_stream = stream_of(fleet, points)
+    objects = []
+    for chunk in order.chunks(chunk_points=4096):
+        objects += ordered_stream.push(chunk)
+    objects += ordered_stream.flush()
+    assert ordered_stream.stats["points_late"] == 0 and ordered_stream.last_status == "ok"
+    sorted_stream = stream_of(fleet, points)
+    reference = sorted_stream.push(in_scan_order(points)) + sorted_stream.flush()
+    assert sorted(answers(objects)) == sorted(answers(reference))
+    with pytest.raises(ValueError, match="row_depth"):
+        spinhash.AlongTrackOrder(row_depth=0)

@@ -1,9 +1,10 @@
 // Work per input point of the scene stream (scripts/instructions-per-point.sh):
-//   stream_runner prepare DIR [SIDE_M]  writes DIR/toy.shdb (the toy database),
-//                 DIR/strip.f64 (raw native float64 xyz, scan order): a
-//                 SIDE x SIDE m strip (default 100) of sloped terrain at
-//                 0.1 m spacing with toy vehicles, one per 300 m2 of ground,
-//                 and DIR/truth.f64 (x y model per vehicle)
+//   stream_runner prepare DIR [SIDE_M [SPACING_M]]  writes DIR/toy.shdb (the
+//                 toy database), DIR/strip.f64 (raw native float64 xyz, scan
+//                 order): a SIDE x SIDE m strip (default 100) of sloped
+//                 terrain at SPACING m (default 0.1) with toy vehicles, one
+//                 per 300 m2 of ground, and DIR/truth.f64 (x y model per
+//                 vehicle)
 //   stream_runner run DIR               pushes the strip through SceneStream
 //                 in 4 kB chunks and flushes, between spinhash_bench_begin()
 //                 and spinhash_bench_end(); prints points, objects, vehicles
@@ -55,8 +56,8 @@ SPINHASH_MARKER(spinhash_bench_recognition_end, 8)
 // them, then each window's heights on it.
 #define SPINHASH_CELLS _ZN8spinhash12TerrainCells3sumERKNS_9PointRingEdd
 #define SPINHASH_TERRAIN \
-  _ZN8spinhash19build_strip_terrainERKNS_11SceneConfigERKNS_12TerrainCellsERKNS_9FrameRectEddRNS_13WindowBuffersEPNS_10SceneStatsE
-#define SPINHASH_HEIGHTS _ZN8spinhash15terrain_heightsERKNS_11TerrainGridEPKfjfPfPh
+  _ZN8spinhash19build_strip_terrainERKNS_11SceneConfigERKNS_12TerrainCellsERKNS_9FrameRectES8_ddRNS_13WindowBuffersEPNS_10SceneStatsE
+#define SPINHASH_HEIGHTS _ZN8spinhash15terrain_heightsERKNS_12TerrainPartsEPKfjfPfPh
 #define SPINHASH_SEGMENT \
   _ZN8spinhash15segment_objectsEPKfS1_PKhjRKNS_13SegmentParamsERNS_11SegmentGridEPNS_11ObjectShapeEPjPNS_12SegmentStatsE
 #define SPINHASH_RECOGNIZE _ZN8spinhash10Recognizer9recognizeEPKfjRKNS_13ObjectTerrainE
@@ -67,8 +68,9 @@ SPINHASH_MARKER(spinhash_bench_recognition_end, 8)
 extern "C" {
 void SPINHASH_REAL(SPINHASH_CELLS)(TerrainCells* self, const PointRing& ring, double from_s, double to_s);
 Status SPINHASH_REAL(SPINHASH_TERRAIN)(const SceneConfig& c, const TerrainCells& cells, const FrameRect& seen,
-                                       double s0, double t0, WindowBuffers& b, SceneStats* st);
-uint32_t SPINHASH_REAL(SPINHASH_HEIGHTS)(const TerrainGrid& grid, const float* xyz, uint32_t n,
+                                       const FrameRect& gathered, double s0, double t0, WindowBuffers& b,
+                                       SceneStats* st);
+uint32_t SPINHASH_REAL(SPINHASH_HEIGHTS)(const TerrainParts& grid, const float* xyz, uint32_t n,
                                          float ground_height, float* height, uint8_t* ground);
 Status SPINHASH_REAL(SPINHASH_SEGMENT)(const float* xyz, const float* height, const uint8_t* ground,
                                        uint32_t n, const SegmentParams& params, SegmentGrid& grid,
@@ -83,14 +85,15 @@ void SPINHASH_WRAP(SPINHASH_CELLS)(TerrainCells* self, const PointRing& ring, do
 }
 
 Status SPINHASH_WRAP(SPINHASH_TERRAIN)(const SceneConfig& c, const TerrainCells& cells, const FrameRect& seen,
-                                       double s0, double t0, WindowBuffers& b, SceneStats* st) {
+                                       const FrameRect& gathered, double s0, double t0, WindowBuffers& b,
+                                       SceneStats* st) {
   spinhash_bench_terrain_begin();
-  const Status s = SPINHASH_REAL(SPINHASH_TERRAIN)(c, cells, seen, s0, t0, b, st);
+  const Status s = SPINHASH_REAL(SPINHASH_TERRAIN)(c, cells, seen, gathered, s0, t0, b, st);
   spinhash_bench_terrain_end();
   return s;
 }
 
-uint32_t SPINHASH_WRAP(SPINHASH_HEIGHTS)(const TerrainGrid& grid, const float* xyz, uint32_t n,
+uint32_t SPINHASH_WRAP(SPINHASH_HEIGHTS)(const TerrainParts& grid, const float* xyz, uint32_t n,
                                          float ground_height, float* height, uint8_t* ground) {
   spinhash_bench_terrain_begin();
   const uint32_t on_ground = SPINHASH_REAL(SPINHASH_HEIGHTS)(grid, xyz, n, ground_height, height, ground);
@@ -163,11 +166,11 @@ std::vector<double> place_vehicles(double side, uint32_t count) {
 }
 
 // The strip, sorted along track (x): scan order.
-std::vector<double> strip(double side, std::vector<double>* truth) {
+std::vector<double> strip(double side, double spacing, std::vector<double>* truth) {
   test::TerrainShape t;
   t.slope_deg = kSlopeDeg;
   test::Tile tile;
-  test::add_terrain_rect(tile, t, -0.5 * side, 0.5 * side, -0.5 * side, 0.5 * side, kSpacing, 0.02, 9);
+  test::add_terrain_rect(tile, t, -0.5 * side, 0.5 * side, -0.5 * side, 0.5 * side, spacing, 0.02, 9);
   const auto vehicles = static_cast<uint32_t>(std::lround(side * side / kGroundPerVehicle));
   const std::vector<double> at = place_vehicles(side, vehicles);
   for (size_t i = 0; i < at.size(); i += 3) {
@@ -195,7 +198,7 @@ bool write_doubles(const std::string& path, const std::vector<double>& v, std::s
   return host::write_file_atomically(path, bytes, error);
 }
 
-int prepare(const std::string& dir, double side) {
+int prepare(const std::string& dir, double side, double spacing) {
   test::ToyDatabase toy;
   if (!test::make_toy_database(&toy)) return fail("toy database");
   std::string error;
@@ -204,7 +207,7 @@ int prepare(const std::string& dir, double side) {
           &error))
     return fail(error);
   std::vector<double> truth;
-  const std::vector<double> xyz = strip(side, &truth);
+  const std::vector<double> xyz = strip(side, spacing, &truth);
   if (!write_doubles(dir + "/strip.f64", xyz, &error) || !write_doubles(dir + "/truth.f64", truth, &error))
     return fail(error);
   std::printf("strip: %.0f x %.0f m, %zu points, %zu vehicles\n", side, side, xyz.size() / 3,
@@ -322,11 +325,12 @@ int run(const std::string& dir, Preset preset) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if ((argc == 3 || argc == 4) && std::strcmp(argv[1], "prepare") == 0)
-    return prepare(argv[2], argc == 4 ? std::atof(argv[3]) : kDefaultSide);
+  if (argc >= 3 && argc <= 5 && std::strcmp(argv[1], "prepare") == 0)
+    return prepare(argv[2], argc >= 4 ? std::atof(argv[3]) : kDefaultSide,
+                   argc == 5 ? std::atof(argv[4]) : kSpacing);
   Preset preset = Preset::kDefault;
   if ((argc == 3 || (argc == 4 && preset_from_name(argv[3], &preset))) && std::strcmp(argv[1], "run") == 0)
     return run(argv[2], preset);
-  std::fprintf(stderr, "usage: stream_runner prepare DIR [SIDE_M] | run DIR [default|flight]\n");
+  std::fprintf(stderr, "usage: stream_runner prepare DIR [SIDE_M [SPACING_M]] | run DIR [default|flight]\n");
   return 2;
 }

@@ -1,0 +1,35 @@
+// The terrain of a cloud as the scene stream makes it, for the terrain and
+// segmentation tests: the points in the stream's buffer (PointRing, a frame
+// with s = x, t = y from (0, 0)), each cell's sums (TerrainCells::sum),
+// the parts over the cells that hold points (TerrainCells::fill), the
+// filter (terrain_finish) and every point's height (terrain_heights).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "geometry/terrain.hpp"
+#include "spinhash/status.hpp"
+
+namespace spinhash {
+namespace test {
+
+struct StreamTerrain {
+  Status status = Status::kNotOpen;
+  std::vector<float> local;  // x y z per point, as the stream's windows see them (from the lattice)
+  std::vector<float> height;
+  std::vector<uint8_t> ground;
+  uint32_t points_ground = 0;
+  uint32_t cells = 0;  // in the parts, together
+  uint32_t parts = 0;
+  uint32_t windows = 0;                  // PMF windows run
+  std::vector<float> surface_at_points;  // the terrain under each point
+};
+
+// xyz: n points (x y z) within a few kilometres of (0, 0). max_cells: the
+// parts' grid cells. kOk, kTileTooLarge (more cells needed), kInvalidArgument
+// (parameters out of range).
+StreamTerrain stream_terrain(const std::vector<double>& xyz, const TerrainParams& params,
+                             uint32_t max_cells = 1u << 17);
+
+}  // namespace test
+}  // namespace spinhash
