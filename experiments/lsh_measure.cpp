@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "blob/blob_writer.hpp"
 #include "db/lsh_tables.hpp"
 #include "db/model_features.hpp"
 #include "spinhash/limits.hpp"
@@ -68,7 +69,7 @@ bool open_with_tables(const MemoryDatabase& mdb, const host::LshTables& t, uint3
   c.params.lsh_tables = l;
   c.params.lsh_buckets = t.buckets;
   c.params.lsh_dc = t.d_c;
-  return open_content(c, &out->bytes, &out->db, error);
+  return host::open_content(c, &out->bytes, &out->db, error);
 }
 
 void measure_recall(const Database& db, const RecognizerConfig& cfg, const std::vector<ProbeFeature>& probes,

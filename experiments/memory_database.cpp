@@ -13,19 +13,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-bool open_content(const host::BlobContent& content, host::AlignedBytes* bytes, Database* db,
-                  std::string* error) {
-  std::vector<uint8_t> blob;
-  if (!host::serialize_blob(content, host::ByteOrder::kNative, &blob, error)) return false;
-  *bytes = host::AlignedBytes::copy_of(blob);
-  Status s = Database::open(bytes->data(), bytes->size(), db);
-  if (s != Status::kOk) {
-    *error = std::string("Database::open: ") + status_name(s);
-    return false;
-  }
-  return true;
-}
-
 std::unique_ptr<MemoryDatabase> build_memory_database(const std::vector<host::ModelCloud>& clouds,
                                                       const host::BuildOptions& options, bool keep_content,
                                                       std::string* error) {
@@ -34,7 +21,7 @@ std::unique_ptr<MemoryDatabase> build_memory_database(const std::vector<host::Mo
   if (!host::build_database(clouds, options, &out->content, &out->report, error)) return nullptr;
   out->build_seconds = seconds_since(start);
   start = std::chrono::steady_clock::now();
-  if (!open_content(out->content, &out->bytes, &out->db, error)) return nullptr;
+  if (!host::open_content(out->content, &out->bytes, &out->db, error)) return nullptr;
   out->serialize_seconds = seconds_since(start);
   out->blob_bytes = out->bytes.size();
   if (!keep_content) out->content = host::BlobContent{};

@@ -29,8 +29,4 @@ std::unique_ptr<MemoryDatabase> build_memory_database(const std::vector<host::Mo
                                                       const host::BuildOptions& options, bool keep_content,
                                                       std::string* error);
 
-// Serialises `content` (native order) and opens it; false with *error on failure.
-bool open_content(const host::BlobContent& content, host::AlignedBytes* bytes, Database* db,
-                  std::string* error);
-
 }  // namespace spinhash::experiment

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "mesh/vehicle_generator.hpp"
+#include "scan/ground_square.hpp"
 #include "scan/scan_simulator.hpp"
 
 namespace spinhash::experiment {
@@ -42,11 +42,7 @@ bool scan_query(const host::Mesh& mesh, const QueryScan& s, host::ScanResult* ou
   opt.ground_slope_deg = s.slope_deg;
   host::Mesh ground;
   if (s.ground) {
-    const host::Box3 box = mesh.bounding_box();
-    const double half =
-        std::max({std::abs(box.lo.x()), std::abs(box.hi.x()), std::abs(box.lo.y()), std::abs(box.hi.y())}) +
-        s.ground_margin;
-    ground = host::make_ground_patch(half, s.ground_z);
+    ground = host::ground_square_around(mesh, s.ground_margin, s.ground_z);
     opt.ground = &ground;
   }
   *out = host::simulate_scan(mesh, opt);

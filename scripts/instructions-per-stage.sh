@@ -8,7 +8,7 @@
 #   scripts/instructions-per-stage.sh [--sizes 17,56,1000] [--queries 3] [--spacings 0.05,0.10]
 #       [--out DIR] [--spinhash BIN] [--jobs N] [--check] [--reuse]
 #
-# Stages: features (FeatureExtractor::extract), lsh (LshSearcher::search),
+# Stages: features (extract_stage: the cloud, normals and spin images), lsh (LshSearcher::search),
 # verification (verify_pose, hypotheses and finalisation alike, with its
 # nearest-feature lookups), rest (the total less those: doublets, poses,
 # ranking, refinement's least squares). Writes DIR/stages.csv (out/stages) and prints,
@@ -66,7 +66,7 @@ count_stages() {  # DB PLY CGFILE
   callgrind_annotate --inclusive=yes --threshold=100 "$cg" 2>/dev/null > "$cg.txt"
   incl() { grep -F "$1" "$cg.txt" | sed -n 1p | awk '{gsub(",", "", $1); print $1 + 0}'; }
   top=$(grep -o '"ranking":\[{"model":"[^"]*"' "$cg.json" | sed 's/.*"model":"//; s/"$//')
-  echo "$total $(incl 'FeatureExtractor::extract(') $(incl 'LshSearcher::search(') $(incl 'spinhash::verify_pose(') ${top:-none}"
+  echo "$total $(incl 'spinhash::extract_stage(') $(incl 'LshSearcher::search(') $(incl 'spinhash::verify_pose(') ${top:-none}"
 }
 export -f count_stages
 export spinhash reuse
@@ -90,6 +90,8 @@ for size in "${size_list[@]}"; do
   for s in "${spacing_list[@]}"; do
     for ((q = 0; q < queries; q++)); do
       read -r total f l v top < "$out/stages.$size.$s.$q"
+      [[ "$total$f$l$v" =~ ^[0-9]+$ ]] ||
+        { echo "instructions-per-stage: a counted function is missing from $out/callgrind.$size.$s.$q.txt" >&2; exit 1; }
       echo "$size,$s,$q,$total,$f,$l,$v,$((total - f - l - v)),$top" >> "$csv"
     done
   done

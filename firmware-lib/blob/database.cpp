@@ -22,7 +22,9 @@ Status validate(const uint8_t* base, size_t size, blob_check::Sections* sections
   if (s != Status::kOk) return s;
   s = blob_check::check_features(*sections);
   if (s != Status::kOk) return s;
-  return blob_check::check_lsh(*sections);
+  s = blob_check::check_lsh(*sections);
+  if (s != Status::kOk) return s;
+  return blob_check::check_calibration(*sections);
 }
 
 // Bounded strcmp: stored names are NUL-terminated within kMaxModelNameBytes.
@@ -61,6 +63,7 @@ Status Database::open(const void* bytes, size_t size, Database* out) noexcept {
   db.lsh_offsets_ = section_as<uint32_t>(sec, blob::kLshOffsets);
   db.lsh_entries_ = section_as<uint32_t>(sec, blob::kLshEntries);
   db.nearest_field_ = section_as<uint16_t>(sec, blob::kNearestField);
+  db.calibration_ = Calibration(sec.data[blob::kCalibration]);
   *out = db;
   return Status::kOk;
 }

@@ -1,7 +1,7 @@
 // Internal stages of Database::open. Each stage may assume that every stage
 // before it succeeded (that is what makes the later reads safe), and returns
 // the first failure it finds. Order: header -> sections -> params -> zero
-// fill -> models -> features -> lsh.
+// fill -> models -> features -> lsh -> calibration.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -22,6 +22,14 @@ static_assert(offsetof(blob::SectionEntry, offset) == 8 && offsetof(blob::Sectio
 static_assert(offsetof(blob::Params, cloud_voxel) == 32 && offsetof(blob::Params, field_entry_count) == 64 &&
                   offsetof(blob::Params, reserved) == 80,
               "params layout");
+static_assert(offsetof(blob::CalibrationHeader, band_min_density) == 16 &&
+                  offsetof(blob::CalibrationHeader, scans_per_model) == 80 &&
+                  offsetof(blob::CalibrationHeader, seed) == 96 &&
+                  offsetof(blob::CalibrationHeader, reserved) == 104,
+              "calibration header layout");
+static_assert(offsetof(blob::CalibrationCell, positives) == 12 &&
+                  offsetof(blob::CalibrationCell, state) == 24,
+              "calibration cell layout");
 static_assert(offsetof(blob::ModelRecord, first_feature) == 48 &&
                   offsetof(blob::ModelRecord, grid_offset_base) == 68 &&
                   offsetof(blob::ModelRecord, bbox_max) == 96 &&
@@ -64,6 +72,15 @@ Status check_models(const Sections& s);
 Status check_features(const Sections& s);
 // LSH bits, per-table bucket offsets and entries.
 Status check_lsh(const Sections& s);
+// The Calibration section: counts and size, density bands, passes, cells.
+Status check_calibration(const Sections& s);
+
+// No bit set in n bytes.
+inline bool all_zero(const uint8_t* p, uint64_t n) {
+  uint8_t any = 0;
+  for (uint64_t i = 0; i < n; ++i) any |= p[i];
+  return any == 0u;
+}
 
 // a * b into *out unless it overflows 64 bits.
 inline bool mul_u64(uint64_t a, uint64_t b, uint64_t* out) {

@@ -12,12 +12,6 @@ namespace spinhash {
 namespace blob_check {
 namespace {
 
-bool all_zero(const uint8_t* p, uint64_t n) {
-  uint8_t any = 0;
-  for (uint64_t i = 0; i < n; ++i) any |= p[i];
-  return any == 0u;
-}
-
 // The bytes after a name's NUL (a name without one is check_models' to refuse).
 bool name_tail_zero(const char* name) {
   uint32_t k = 0;

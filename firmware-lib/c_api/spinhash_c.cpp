@@ -55,6 +55,14 @@ spinhash_status finish(const RecognizerSlot& sl, const Result& r, spinhash_resul
   out->class_ranking_count = r.status == Status::kOk ? r.class_ranking_count : 0u;
   out->class_confident = r.status == Status::kOk && r.class_confident ? 1u : 0u;
   out->class_ranking_ = r.class_ranking;
+  static_assert(SPINHASH_CALIBRATED_LEVELS == kCalibratedLevels, "the C levels are answer_levels.h's");
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) {
+    out->level_confident[l] = r.status == Status::kOk && r.levels[l].confident ? 1u : 0u;
+    out->level_evidence[l] = r.levels[l].evidence;
+  }
+  out->level = r.status == Status::kOk ? static_cast<uint32_t>(r.level) : 0u;
+  out->group_ranking_count = r.status == Status::kOk ? r.group_ranking_count : 0u;
+  out->group_ranking_ = r.group_ranking;
   to_c_stats(r.stats, &out->stats);
   out->ranking_ = r.ranking;
   out->database_ = sl.database;
@@ -132,6 +140,8 @@ uint32_t spinhash_class_group(uint32_t vehicle_class) SPINHASH_NOEXCEPT {
 
 const char* spinhash_group_name(uint32_t group) SPINHASH_NOEXCEPT { return vehicle_group_name(group); }
 
+const char* spinhash_level_name(uint32_t level) SPINHASH_NOEXCEPT { return answer_level_name(level); }
+
 spinhash_status spinhash_recognizer_init(spinhash_recognizer* rec, const spinhash_database* db,
                                          const spinhash_config* config, void* workspace,
                                          size_t workspace_bytes) SPINHASH_NOEXCEPT {
@@ -190,6 +200,20 @@ spinhash_status spinhash_result_class(const spinhash_result* result, uint32_t ra
   out->score = c.score;
   out->model = c.model;
   out->name = vehicle_class_name(c.vehicle_class);
+  return SPINHASH_OK;
+}
+
+spinhash_status spinhash_result_group(const spinhash_result* result, uint32_t rank,
+                                      spinhash_ranked_group* out) SPINHASH_NOEXCEPT {
+  if (result == nullptr || out == nullptr || result->status != SPINHASH_OK ||
+      rank >= result->group_ranking_count || result->group_ranking_ == nullptr)
+    return SPINHASH_INVALID_ARGUMENT;
+  const RankedGroup& g = static_cast<const RankedGroup*>(result->group_ranking_)[rank];
+  *out = spinhash_ranked_group{};
+  out->group = g.group;
+  out->score = g.score;
+  out->model = g.model;
+  out->name = vehicle_group_name(g.group);
   return SPINHASH_OK;
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "recognize/level_evidence.hpp"
 #include "recognize/residual_structure.hpp"
 #include "recognize/visible_surface.hpp"
 #include "util/far.hpp"
@@ -154,6 +155,7 @@ bool is_confident(const Result& r, const RecognizerConfig& cfg, uint32_t feature
 Status confidence_stage(SearchContext& ctx) {
   Result& result = ctx.result;
   result.confident = false;
+  result.levels[level_index(AnswerLevel::kModel)] = LevelAnswer{};
   if (result.ranking_count == 0 || !result.ranking[0].has_pose) return Status::kOk;
   const uint32_t first = result.ranking[0].model;
   const RigidPose& pose = ctx.buf.best[first].pose;
@@ -162,10 +164,9 @@ Status confidence_stage(SearchContext& ctx) {
   const float band = ctx.features.ground_band;  // m above the terrain removed with the ground
   const ExtentFit fit = extent_fit(ctx.query, ctx.db.model(first), pose, hidden_ends(ctx.db, first, band));
   st.scan_density = scan_density(ctx.stats, fit);
-  if (!dense_enough_for_model(ctx.params, st.scan_density)) return Status::kOk;
-  if (!is_confident(result, ctx.params, ctx.query.count, fit, 0.0f)) return Status::kOk;
-  result.confident =
-      is_confident(result, ctx.params, ctx.query.count, fit, residual_structure(ctx, first, pose));
+  // The model level's evidence against the database's calibrated threshold
+  // for this density (the parameters above are its priors and prerequisites).
+  assess_model_level(ctx, fit, AnswerPass::kFull);
   return Status::kOk;
 }
 

@@ -11,6 +11,7 @@
 #include "spinhash/internal/lsh_search.hpp"
 #include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"
+#include "spinhash/vehicle_class.hpp"
 #include "util/rng.hpp"
 
 namespace spinhash {
@@ -53,6 +54,7 @@ struct RecognizerBuffers {
   uint32_t carried_models[kMaxCarriedPoses] = {};
   RigidPose carried_poses[kMaxCarriedPoses];
   uint32_t carried_count = 0;
+  RankedGroup groups[kVehicleGroupCount];  // Result::group_ranking
 };
 
 // The leading model as BRAN's stop on evidence follows it (evidence_stop.cpp).

@@ -6,6 +6,7 @@
 #include <limits>
 #include <new>
 
+#include "recognize/level_evidence.hpp"
 #include "spinhash/answered.hpp"
 #include "spinhash/limits.hpp"
 #include "util/angle_math.hpp"
@@ -196,6 +197,17 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
   out.class_confident =
       r.class_confident && out.class_count > 0 &&
       size_agrees(o, db.model(out.classes[0].model), c.class_size_factor * c.max_size_mismatch);
+  out.group_count = r.group_ranking_count;
+  for (uint32_t j = 0; j < r.group_ranking_count && j < kVehicleGroupCount; ++j)
+    out.groups[j] = r.group_ranking[j];
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) out.levels[l] = r.levels[l];
+  out.levels[level_index(AnswerLevel::kModel)].confident = out.confident;
+  out.levels[level_index(AnswerLevel::kClass)].confident = out.class_confident;
+  AnswerLeaders first;
+  first.model = out.ranking;
+  first.vehicle_class = out.class_count > 0 ? out.classes : nullptr;
+  first.group = out.group_count > 0 ? out.groups : nullptr;
+  out.level = answer_level(db, out.levels, first);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "blob/calibration_content.hpp"
 #include "spinhash/blob_format.hpp"
 
 namespace spinhash {
@@ -20,6 +21,7 @@ struct BlobContent {
   std::vector<uint32_t> lsh_offsets;      // lsh_tables * (lsh_buckets + 1)
   std::vector<uint32_t> lsh_entries;      // lsh_tables * feature_count
   std::vector<uint16_t> nearest_field;    // field_entry_count
+  CalibrationContent calibration = priors_calibration();
 };
 
 }  // namespace host

@@ -8,7 +8,7 @@ struct Expected {
   uint32_t id;
   const char* name;
   uint64_t elements;  // what the params call for
-  size_t actual;      // what the vector holds
+  uint64_t actual;    // what the vector holds
   uint64_t element_bytes;
 };
 
@@ -22,6 +22,19 @@ bool plan_blob_layout(const BlobContent& c, BlobLayout* layout, std::string* err
   const uint64_t n = p.feature_count;
   const uint64_t dims = static_cast<uint64_t>(p.bins_alpha) * p.bins_beta;
   const uint64_t tables = p.lsh_tables;
+  // The calibration's size follows from its own header: what the vectors hold, counted alike.
+  blob::CalibrationHeader held = c.calibration.header;
+  held.pass_count = static_cast<uint32_t>(c.calibration.passes.size());
+  held.band_count =
+      held.pass_count * held.level_count == 0u
+          ? 0u
+          : static_cast<uint32_t>(c.calibration.cells.size() / (held.pass_count * held.level_count));
+  if (static_cast<uint64_t>(held.pass_count) * held.level_count * held.band_count !=
+      c.calibration.cells.size()) {
+    *error = "calibration holds " + std::to_string(c.calibration.cells.size()) +
+             " cells, not a whole table per pass";
+    return false;
+  }
   const Expected expected[blob::kSectionIdCount] = {
       {blob::kParams, "params", 1u, 1u, sizeof(blob::Params)},
       {blob::kModels, "models", p.model_count, c.models.size(), sizeof(blob::ModelRecord)},
@@ -35,6 +48,8 @@ bool plan_blob_layout(const BlobContent& c, BlobLayout* layout, std::string* err
        c.lsh_offsets.size(), sizeof(uint32_t)},
       {blob::kLshEntries, "lsh_entries", tables * n, c.lsh_entries.size(), sizeof(uint32_t)},
       {blob::kNearestField, "nearest_field", p.field_entry_count, c.nearest_field.size(), sizeof(uint16_t)},
+      {blob::kCalibration, "calibration", calibration_bytes(c.calibration.header), calibration_bytes(held),
+       1u},
   };
   uint64_t end = sizeof(blob::Header) + blob::kSectionIdCount * sizeof(blob::SectionEntry);
   for (uint32_t i = 0; i < blob::kSectionIdCount; ++i) {

@@ -63,5 +63,36 @@ void swap_fields(blob::LshBit* b, bool swap) {
   swap_in_place(&b->threshold, swap);
 }
 
+void swap_fields(blob::CalibrationHeader* h, bool swap) {
+  swap_in_place(&h->pass_count, swap);
+  swap_in_place(&h->level_count, swap);
+  swap_in_place(&h->band_count, swap);
+  swap_in_place(&h->target_precision, swap);
+  swap_array_in_place(h->band_min_density, swap);
+  swap_in_place(&h->scans_per_model, swap);
+  swap_in_place(&h->models_left_out, swap);
+  swap_in_place(&h->clutter_scans, swap);
+  swap_in_place(&h->scans_per_left_out, swap);
+  swap_in_place(&h->seed, swap);
+}
+
+void swap_fields(blob::CalibrationPass* p, bool swap) {
+  swap_in_place(&p->pass, swap);
+  swap_in_place(&p->source, swap);
+  swap_in_place(&p->runs, swap);
+  swap_in_place(&p->reserved, swap);
+}
+
+void swap_fields(blob::CalibrationCell* c, bool swap) {
+  swap_in_place(&c->threshold, swap);
+  swap_in_place(&c->precision, swap);
+  swap_in_place(&c->recall, swap);
+  swap_in_place(&c->positives, swap);
+  swap_in_place(&c->negatives, swap);
+  swap_in_place(&c->flagged, swap);
+  swap_in_place(&c->state, swap);
+  swap_in_place(&c->reserved, swap);
+}
+
 }  // namespace host
 }  // namespace spinhash

@@ -11,6 +11,9 @@ void swap_fields(blob::SectionEntry* e, bool swap);
 void swap_fields(blob::Params* p, bool swap);
 void swap_fields(blob::ModelRecord* m, bool swap);
 void swap_fields(blob::LshBit* b, bool swap);
+void swap_fields(blob::CalibrationHeader* h, bool swap);
+void swap_fields(blob::CalibrationPass* p, bool swap);
+void swap_fields(blob::CalibrationCell* c, bool swap);
 
 }  // namespace host
 }  // namespace spinhash

@@ -79,6 +79,11 @@ void write_payloads(const BlobContent& c, const BlobLayout& l, ImageWriter* w) {
   w->put_all(at(blob::kLshOffsets), c.lsh_offsets);
   w->put_all(at(blob::kLshEntries), c.lsh_entries);
   w->put_all(at(blob::kNearestField), c.nearest_field);
+  offset = at(blob::kCalibration);
+  w->put(offset, c.calibration.header);
+  offset += sizeof(blob::CalibrationHeader);
+  w->put_all(offset, c.calibration.passes);
+  w->put_all(offset + c.calibration.passes.size() * sizeof(blob::CalibrationPass), c.calibration.cells);
 }
 
 // Checksums over the bytes as written (so they verify on the target), table,
@@ -139,6 +144,18 @@ bool serialize_blob(const BlobContent& c, ByteOrder order, std::vector<uint8_t>*
   } else {
     out->assign(total, 0u);
     build_image(c, layout, true, out->data());
+  }
+  return true;
+}
+
+bool open_content(const BlobContent& content, AlignedBytes* bytes, Database* db, std::string* error) {
+  std::vector<uint8_t> blob;
+  if (!serialize_blob(content, ByteOrder::kNative, &blob, error)) return false;
+  *bytes = AlignedBytes::copy_of(blob);
+  const Status s = Database::open(bytes->data(), bytes->size(), db);
+  if (s != Status::kOk) {
+    *error = std::string("Database::open: ") + status_name(s);
+    return false;
   }
   return true;
 }

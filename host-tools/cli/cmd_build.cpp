@@ -40,6 +40,17 @@ int run_build(const BuildArgs& a) {
       "largest LSH bucket %u, %.1f s\n",
       a.output.c_str(), summary.models, summary.features, static_cast<unsigned long long>(summary.bytes),
       static_cast<double>(summary.bytes) / summary.features, summary.report.max_bucket, summary.seconds);
+  if (summary.calibrated)
+    std::fprintf(
+        stderr,
+        "spinhash build: calibrated on %llu runs: %u scans per model, %u models left out (%u scans each), "
+        "%u clutter scans, %u threads, %.1f s (spinhash info prints the thresholds)\n",
+        static_cast<unsigned long long>(summary.calibration_runs), summary.calibration.drawn.scans_per_model,
+        summary.calibration.drawn.models_left_out, summary.calibration.drawn.scans_per_left_out,
+        summary.calibration.drawn.clutter_scans, summary.calibration.jobs, summary.calibration.seconds);
+  else
+    std::fprintf(stderr,
+                 "spinhash build: not calibrated (--no-calibration): the recognizer's priors decide\n");
   return kExitOk;
 }
 

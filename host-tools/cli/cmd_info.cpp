@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "cli/calibration_report.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_line.hpp"
 #include "cli/report_keys.hpp"
@@ -65,6 +66,7 @@ void print_text(const Database& db, uint64_t bytes) {
                 static_cast<double>(r.bbox_max[1] - r.bbox_min[1]),
                 static_cast<double>(r.bbox_max[2] - r.bbox_min[2]));
   }
+  print_calibration(db.calibration());
 }
 
 std::string num(float v) { return json_number(static_cast<double>(v), 7); }
@@ -116,7 +118,8 @@ std::string info_json(const Database& db, uint64_t bytes) {
                                            json_member(k::kReach, num(p.field_reach)),
                                            json_member(k::kSlots, num(p.field_slots)),
                                            json_member(k::kEntries, num(p.field_entry_count))})),
-       json_member(k::kModelList, model_list_json(db)), json_version_member()});
+       json_member(k::kModelList, model_list_json(db)),
+       json_member(k::kCalibration, calibration_json(db.calibration())), json_version_member()});
 }
 
 int run_info(const InfoArgs& a) {

@@ -1,9 +1,14 @@
 // spinhash verify DB.shdb [MESH_OR_DIR...] [--format text|json]: integrity (the core's full
-// validation) and, given the meshes, every model recognised first from its
-// own simulated scans.
+// validation, the calibration's consistency included) and, given the
+// meshes, every model recognised first from its own simulated scans and a
+// small re-run of the calibration scans against what the blob's calibration
+// expects.
 #include <cstdio>
 #include <memory>
 
+#include "blob/blob_content_of.hpp"
+#include "calib/calibration_check.hpp"
+#include "calib/calibration_runs.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_line.hpp"
 #include "cli/report_keys.hpp"
@@ -38,6 +43,8 @@ struct VerifyArgs {
   bool quiet = false;
   std::string format = "text";
   RecognizerConfig config;
+  uint32_t calibration_scans = 1;      // per model, in the calibration re-run
+  uint32_t calibration_left_out = 16;  // models recognised left out in it
 };
 
 // One self-recognition scan whose own model was not ranked first.
@@ -52,7 +59,57 @@ struct VerifyReport {
   uint32_t scans = 0, hits = 0;
   std::vector<std::string> missing;  // meshes whose model is not in the database
   std::vector<Miss> misses;
+  std::vector<calib::LevelCheck> calibration;  // the re-run, when made
+  std::string calibration_skipped;             // why not, when meshes were given
 };
+
+bool fitted(const Database& db) { return db.calibration().fitted(AnswerPass::kFull); }
+
+// New calibration runs (the build's seed + 1) of every model against the
+// blob's full pass. Needs a mesh for every model.
+bool recheck_calibration(const VerifyArgs& a, const Database& db, const std::vector<ModelMesh>& meshes,
+                         VerifyReport* report, std::string* error) {
+  std::vector<const host::Mesh*> by_model(db.model_count(), nullptr);
+  for (const ModelMesh& m : meshes) {
+    const int32_t i = db.find_model(m.name.c_str());
+    if (i >= 0) by_model[static_cast<size_t>(i)] = &m.mesh;
+  }
+  for (const host::Mesh* m : by_model)
+    if (m == nullptr) {
+      report->calibration_skipped = "not every model has a mesh";
+      return true;
+    }
+  calib::RunSettings runs;
+  runs.scans_per_model = a.calibration_scans;
+  runs.left_out_scans = a.calibration_scans;
+  runs.max_left_out = a.calibration_left_out;
+  runs.clutter_scans = std::max(16u, a.calibration_left_out);
+  runs.seed = db.calibration().header().seed + 1u;
+  runs.recognizer = a.config;
+  runs.quiet = a.quiet;
+  std::vector<host::CalibrationRun> records;
+  calib::RunSummary summary;
+  if (!calib::run_calibration(host::content_of(db), by_model, runs, &records, &summary, error)) return false;
+  report->calibration = calib::check_calibration(db.calibration(), AnswerPass::kFull, records);
+  return true;
+}
+
+bool calibration_agrees(const VerifyReport& r) {
+  for (const calib::LevelCheck& k : r.calibration)
+    if (!k.agrees) return false;
+  return true;
+}
+
+void print_calibration_check(const VerifyReport& r) {
+  for (const calib::LevelCheck& k : r.calibration)
+    std::printf(
+        "calibration  %-8s %4u flagged, %3u wrong: precision %.4f (expected %.4f), recall %.4f (expected "
+        "%.4f): "
+        "%s\n",
+        answer_level_name(static_cast<uint32_t>(k.level)), k.flagged, k.wrong, k.observed_precision,
+        k.expected_precision, k.observed_recall, k.expected_recall,
+        k.agrees ? "agrees" : "DISAGREES beyond sampling error");
+}
 
 // Scans `m` `queries` times from random sides and poses; counts top-1 hits.
 void self_recognise(const VerifyArgs& a, const ModelMesh& m, const Database& db, RecognitionSession& s,
@@ -80,14 +137,27 @@ void self_recognise(const VerifyArgs& a, const ModelMesh& m, const Database& db,
   }
 }
 
+std::string check_json(const calib::LevelCheck& c) {
+  namespace k = verify_keys;
+  return json_object({json_member(k::kLevel, json_string(answer_level_name(static_cast<uint32_t>(c.level)))),
+                      json_member(k::kFlagged, std::to_string(c.flagged)),
+                      json_member(k::kWrong, std::to_string(c.wrong)),
+                      json_member(k::kPrecision, json_number(c.observed_precision, 6)),
+                      json_member(k::kExpectedPrecision, json_number(c.expected_precision, 6)),
+                      json_member(k::kRecall, json_number(c.observed_recall, 6)),
+                      json_member(k::kExpectedRecall, json_number(c.expected_recall, 6)),
+                      json_member(k::kAgrees, c.agrees ? "true" : "false")});
+}
+
 std::string verify_json(const VerifyArgs& a, const Database* db, const VerifyReport& r,
                         const std::string& error) {
   namespace k = verify_keys;
   if (db == nullptr)
     return json_object({json_member(k::kIntegrity, json_string("failed")),
                         json_member(k::kError, json_string(error)), json_version_member()});
-  std::vector<std::string> missing, misses;
+  std::vector<std::string> missing, misses, checks;
   for (const std::string& name : r.missing) missing.push_back(json_string(name));
+  for (const calib::LevelCheck& c : r.calibration) checks.push_back(check_json(c));
   for (const Miss& m : r.misses)
     misses.push_back(json_object(
         {json_member(k::kModel, json_string(m.model)), json_member(k::kScan, std::to_string(m.scan)),
@@ -100,7 +170,9 @@ std::string verify_json(const VerifyArgs& a, const Database* db, const VerifyRep
        json_member(k::kMode, json_string(mode_name(a.config.mode))),
        json_member(k::kNoise, json_number(a.noise, 6)), json_member(k::kScans, std::to_string(r.scans)),
        json_member(k::kHits, std::to_string(r.hits)), json_member(k::kMissing, json_array(missing)),
-       json_member(k::kMisses, json_array(misses)), json_version_member()});
+       json_member(k::kMisses, json_array(misses)),
+       json_member(k::kCalibration, json_string(fitted(*db) ? "fitted" : "priors")),
+       json_member(k::kCalibrationCheck, json_array(checks)), json_version_member()});
 }
 
 int run_verify(const VerifyArgs& a) {
@@ -114,8 +186,10 @@ int run_verify(const VerifyArgs& a) {
     return kExitError;
   }
   if (!json)
-    std::printf("integrity     ok (%u models, %u features, all sections and checksums valid)\n",
-                file.db.model_count(), file.db.feature_count());
+    std::printf(
+        "integrity     ok (%u models, %u features, all sections and checksums valid; calibration %s)\n",
+        file.db.model_count(), file.db.feature_count(),
+        fitted(file.db) ? "fitted" : "none: the priors decide");
   std::vector<ModelMesh> meshes;
   RecognitionSession session;
   if (!a.meshes.empty() &&
@@ -134,12 +208,22 @@ int run_verify(const VerifyArgs& a) {
     }
     progress.tick(static_cast<uint32_t>(i + 1));
   }
-  if (json)
+  if (!meshes.empty() && fitted(file.db) && !recheck_calibration(a, file.db, meshes, &report, &error)) {
+    print_error("verify", error);
+    return kExitError;
+  }
+  if (!report.calibration_skipped.empty())
+    std::fprintf(stderr, "spinhash verify: calibration not re-run: %s\n", report.calibration_skipped.c_str());
+  if (json) {
     std::printf("%s\n", verify_json(a, &file.db, report, "").c_str());
-  else if (!a.meshes.empty())
+  } else if (!a.meshes.empty()) {
     std::printf("self-recognition %u/%u scans ranked their own model first (%s, noise %.3g m)\n", report.hits,
                 report.scans, mode_name(a.config.mode), a.noise);
-  return report.hits == report.scans && report.missing.empty() ? kExitOk : kExitCheckFailed;
+    print_calibration_check(report);
+  }
+  return report.hits == report.scans && report.missing.empty() && calibration_agrees(report)
+             ? kExitOk
+             : kExitCheckFailed;
 }
 
 }  // namespace
@@ -156,6 +240,14 @@ void add_verify_command(CLI::App& app, int* exit_code) {
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--scan-seed", a->scan_seed, "seed of the verification scans")->capture_default_str();
+  cmd->add_option("--calibration-scans", a->calibration_scans,
+                  "calibration re-run (a fitted blob, with meshes): scans per model")
+      ->check(CLI::Range(1u, 100u))
+      ->capture_default_str();
+  cmd->add_option("--calibration-left-out", a->calibration_left_out,
+                  "calibration re-run: models also recognised with a database built without them")
+      ->check(CLI::Range(0u, kMaxModels))
+      ->capture_default_str();
   cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
   cmd->add_option("--format", a->format, "text, or json: one JSON object on one line")
       ->check(CLI::IsMember({"text", "json"}))

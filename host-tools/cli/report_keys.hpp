@@ -41,11 +41,84 @@ constexpr const char* kName = "name";
 constexpr const char* kClass = "class";  // the model's vehicle class (vehicle_classes.h)
 constexpr const char* kGroup = "group";  // its class's group (vehicle_classes.h)
 constexpr const char* kExtent = "extent";
-constexpr const char* kAll[] = {
-    kFormat, kBytes,        kBytesPerFeature, kFingerprint, kModels, kFeatures,     kSpinImages,   kBins,
-    kRadius, kSupportAngle, kQuantScale,      kSampling,    kVoxel,  kNormalRadius, kBasisSpacing, kLsh,
-    kTables, kBits,         kBuckets,         kDc,          kGrid,   kCell,         kOffsets,      kField,
-    kReach,  kSlots,        kEntries,         kModelList,   kName,   kClass,        kGroup,        kExtent};
+// object: target_precision, scans_per_model, models_left_out, clutter_scans, seed, bands, passes
+constexpr const char* kCalibration = "calibration";
+constexpr const char* kTargetPrecision = "target_precision";
+constexpr const char* kScansPerModel = "scans_per_model";
+constexpr const char* kModelsLeftOut = "models_left_out";
+constexpr const char* kClutterScans = "clutter_scans";
+constexpr const char* kScansPerLeftOut = "scans_per_left_out";
+constexpr const char* kSeed = "seed";
+constexpr const char* kBands = "bands";    // the density bands' lower edges, points per m^2
+constexpr const char* kPasses = "passes";  // [{pass, source, runs, levels}]
+constexpr const char* kPass = "pass";
+constexpr const char* kSource = "source";  // "fitted" or "priors"
+constexpr const char* kRuns = "runs";
+constexpr const char* kLevels = "levels";  // [{level, cells}]
+constexpr const char* kLevel = "level";
+constexpr const char* kCells =
+    "cells";  // per band: [{state, threshold, precision, recall, positives, negatives, flagged}]
+constexpr const char* kState = "state";
+constexpr const char* kThreshold = "threshold";
+constexpr const char* kPrecision = "precision";
+constexpr const char* kRecall = "recall";
+constexpr const char* kPositives = "positives";
+constexpr const char* kNegatives = "negatives";
+constexpr const char* kFlagged = "flagged";
+constexpr const char* kAll[] = {kFormat,
+                                kBytes,
+                                kBytesPerFeature,
+                                kFingerprint,
+                                kModels,
+                                kFeatures,
+                                kSpinImages,
+                                kBins,
+                                kRadius,
+                                kSupportAngle,
+                                kQuantScale,
+                                kSampling,
+                                kVoxel,
+                                kNormalRadius,
+                                kBasisSpacing,
+                                kLsh,
+                                kTables,
+                                kBits,
+                                kBuckets,
+                                kDc,
+                                kGrid,
+                                kCell,
+                                kOffsets,
+                                kField,
+                                kReach,
+                                kSlots,
+                                kEntries,
+                                kModelList,
+                                kName,
+                                kClass,
+                                kGroup,
+                                kExtent,
+                                kCalibration,
+                                kTargetPrecision,
+                                kScansPerModel,
+                                kModelsLeftOut,
+                                kClutterScans,
+                                kScansPerLeftOut,
+                                kSeed,
+                                kBands,
+                                kPasses,
+                                kPass,
+                                kSource,
+                                kRuns,
+                                kLevels,
+                                kLevel,
+                                kCells,
+                                kState,
+                                kThreshold,
+                                kPrecision,
+                                kRecall,
+                                kPositives,
+                                kNegatives,
+                                kFlagged};
 }  // namespace info_keys
 
 namespace verify_keys {
@@ -63,8 +136,42 @@ constexpr const char* kModel = "model";
 constexpr const char* kScan = "scan";
 constexpr const char* kRankedFirst = "ranked_first";
 constexpr const char* kStatus = "status";
-constexpr const char* kAll[] = {kIntegrity, kError,   kModels, kFeatures, kMode, kNoise,       kScans,
-                                kHits,      kMissing, kMisses, kModel,    kScan, kRankedFirst, kStatus};
+constexpr const char* kCalibration = "calibration";  // "fitted" or "priors"
+// [{level, flagged, wrong, precision, expected_precision, recall, expected_recall, agrees}]: the
+// calibration re-run (empty without meshes or a fitted calibration)
+constexpr const char* kCalibrationCheck = "calibration_check";
+constexpr const char* kLevel = "level";
+constexpr const char* kFlagged = "flagged";
+constexpr const char* kWrong = "wrong";
+constexpr const char* kPrecision = "precision";
+constexpr const char* kExpectedPrecision = "expected_precision";
+constexpr const char* kRecall = "recall";
+constexpr const char* kExpectedRecall = "expected_recall";
+constexpr const char* kAgrees = "agrees";
+constexpr const char* kAll[] = {kIntegrity,
+                                kError,
+                                kModels,
+                                kFeatures,
+                                kMode,
+                                kNoise,
+                                kScans,
+                                kHits,
+                                kMissing,
+                                kMisses,
+                                kModel,
+                                kScan,
+                                kRankedFirst,
+                                kStatus,
+                                kCalibration,
+                                kCalibrationCheck,
+                                kLevel,
+                                kFlagged,
+                                kWrong,
+                                kPrecision,
+                                kExpectedPrecision,
+                                kRecall,
+                                kExpectedRecall,
+                                kAgrees};
 }  // namespace verify_keys
 
 // The class keys of `recognize` and `scene` JSON lines: one list, in

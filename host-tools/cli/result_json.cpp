@@ -3,6 +3,7 @@
 #include "cli/json_line.hpp"
 #include "cli/report_keys.hpp"
 #include "pipeline/class_json.hpp"
+#include "pipeline/level_json.hpp"
 #include "pipeline/object_json.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/status_word.hpp"
@@ -53,6 +54,7 @@ std::string result_json(const std::string& query, const Database& db, const Resu
   const bool ok = has_answer(r.status);
   s += "," +
        pipeline::class_json(db, r.class_ranking, ok ? r.class_ranking_count : 0u, ok && r.class_confident);
+  s += "," + pipeline::level_json(db, pipeline::level_view(r));
   s += ",\"crs\":" + (crs.empty() ? std::string("null") : json_string(crs));
   s += ",\"time_ms\":" + json_number(time_ms, 4) +
        ",\"hypotheses\":" + std::to_string(r.stats.draws.hypotheses);

@@ -11,6 +11,7 @@ const char* status_word(Status s);
 
 // {"query":..,"status":..,"ranking":[{"model":..,"score":..},..],"pose":[16]|null,
 //  "confident":..,"group_size":..,"class":..,"class_confident":..,"class_ranking":[..],
+//  "group":..,"group_ranking":[..],"levels":{..},"level":..,
 //  "time_ms":..,"hypotheses":..} plus "error" when not ok and a "stats" object.
 
 // crs: the query file's coordinate reference system (the pose's

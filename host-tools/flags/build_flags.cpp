@@ -3,6 +3,41 @@
 #include "spinhash/limits.hpp"
 
 namespace spinhash::flags {
+namespace {
+
+// The calibration flags (pipeline::CalibrationSettings).
+void add_calibration_flags(CLI::App* cmd, pipeline::CalibrationSettings* c) {
+  cmd->add_flag("!--no-calibration", c->enabled,
+                "skip the calibration scans: the recognizer's priors decide every level's flag (quick test "
+                "databases)");
+  cmd->add_option("--target-precision", c->fit.target_precision,
+                  "precision each level's flag is fitted to on the calibration runs")
+      ->check(CLI::Range(0.5, 1.0))
+      ->capture_default_str();
+  cmd->add_option(
+         "--calibration-scans", c->runs.scans_per_model,
+         "calibration scans per model (0: 32 up to 64 models, 2048 / models above, at least 2); a model "
+         "left out gets more, up to 32, so that the left-out models give about 2048 runs")
+      ->check(CLI::Range(0u, 1000u))
+      ->capture_default_str();
+  cmd->add_option(
+         "--calibration-left-out-scans", c->runs.left_out_scans,
+         "calibration scans of each model left out (0: as many as --calibration-scans, more up to 32 so "
+         "that the left-out models give about 2048 runs)")
+      ->check(CLI::Range(0u, 1000u))
+      ->capture_default_str();
+  cmd->add_option("--calibration-max-left-out", c->runs.max_left_out,
+                  "models also recognised with a database built without them (a class-stratified sample when "
+                  "there are more)")
+      ->check(CLI::Range(0u, kMaxModels))
+      ->capture_default_str();
+  cmd->add_option("--calibration-seed", c->runs.seed, "seed of the calibration scans")->capture_default_str();
+  cmd->add_option("--jobs", c->runs.jobs, "threads of the calibration (0: every hardware thread)")
+      ->check(CLI::Range(0u, 1024u))
+      ->capture_default_str();
+}
+
+}  // namespace
 
 void add_build_flags(CLI::App* cmd, pipeline::BuildSettings* s) {
   FeatureParams& f = s->options.features;
@@ -54,6 +89,7 @@ void add_build_flags(CLI::App* cmd, pipeline::BuildSettings* s) {
          "manifest of 'MODEL_NAME CLASS' lines; without it a model's class is its folder's name or "
          "its name's first word when that is a class (pickup/x.obj, sedan-03.obj), else unclassified")
       ->check(CLI::ExistingFile);
+  add_calibration_flags(cmd, &s->calibration);
   cmd->add_flag("--quiet", s->quiet, "no progress on stderr");
 }
 

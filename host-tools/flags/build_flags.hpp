@@ -1,4 +1,4 @@
-// The feature, LSH and scan flags of `build` (also used by `experiment`).
+// The feature, LSH, scan and calibration flags of `build` (also used by `experiment`).
 #pragma once
 #include <CLI/CLI.hpp>
 

@@ -15,6 +15,22 @@ void report_progress(uint32_t done, uint32_t /*total*/, void* user) {
   static_cast<Progress*>(user)->tick(done);
 }
 
+// Runs the calibration scans of every model and fits the section from them.
+bool calibrate(const std::vector<ModelMesh>& meshes, const CalibrationSettings& s, bool quiet,
+               host::BlobContent* content, BuildSummary* summary, std::string* error) {
+  std::vector<const host::Mesh*> models;
+  for (const ModelMesh& m : meshes) models.push_back(&m.mesh);
+  calib::RunSettings runs = s.runs;
+  runs.quiet = quiet;
+  std::vector<host::CalibrationRun> records;
+  if (!calib::run_calibration(*content, models, runs, &records, &summary->calibration, error)) return false;
+  if (!host::fit_calibration(records, s.fit, summary->calibration.drawn, &content->calibration, error))
+    return false;
+  summary->calibrated = true;
+  summary->calibration_runs = records.size();
+  return true;
+}
+
 }  // namespace
 
 bool build_database_file(const std::vector<ModelMesh>& meshes, const BuildSettings& s,
@@ -26,6 +42,8 @@ bool build_database_file(const std::vector<ModelMesh>& meshes, const BuildSettin
   host::BlobContent content;
   Progress progress("features", static_cast<uint32_t>(clouds.size()), s.quiet);
   if (!host::build_database(clouds, s.options, &content, &summary->report, error, report_progress, &progress))
+    return false;
+  if (s.calibration.enabled && !calibrate(meshes, s.calibration, s.quiet, &content, summary, error))
     return false;
   std::vector<uint8_t> bytes;
   if (!host::serialize_blob(content, s.byte_order, &bytes, error)) return false;

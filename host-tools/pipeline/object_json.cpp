@@ -4,6 +4,7 @@
 
 #include "pipeline/class_json.hpp"
 #include "pipeline/json_line.hpp"
+#include "pipeline/level_json.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/status_word.hpp"
 #include "pipeline/version.hpp"
@@ -49,6 +50,7 @@ std::vector<JsonMember> object_members(const std::string& tile, uint32_t k, cons
       {"group_size", std::to_string(o.group_size)},
   };
   for (JsonMember& m : class_members(db, o.classes, o.class_count, o.class_confident)) members.push_back(m);
+  for (JsonMember& m : level_members(db, level_view(o))) members.push_back(m);
   const std::vector<JsonMember> rest = {
       {"score", ranked ? json_number(o.ranking[0].score) : "null"},
       {"ranking", ranking_json(db, o)},

@@ -19,8 +19,8 @@ struct JsonMember {
 // The keys of SPINHASH_SCENE_OBJECT_KEYS (spinhash/scene_fields.h), in its
 // order: "tile", "object", "kind", "status", "model", "confident",
 // "group_size", "class", "class_confident", "class_ranking" (class_json.hpp),
-// "score", "ranking", "pose", "ground_gap", "points", "center", "extent",
-// "heading_deg" (tests/host/test_field_mirrors.cpp checks `scene`'s lines
+// "group", "group_ranking", "levels", "level" (level_json.hpp), "score", "ranking", "pose", "ground_gap",
+// "points", "center", "extent", "heading_deg" (tests/host/test_field_mirrors.cpp checks `scene`'s lines
 // against the list, tests/python/test_scene_fields.py Python's SceneObject).
 std::vector<JsonMember> object_members(const std::string& tile, uint32_t k, const Database& db,
                                        const SceneObject& o);

@@ -53,6 +53,8 @@ SceneObject typed_example(RankedModel* ranked) {
   o.ranking_count = 1;
   o.class_count = 1;
   o.classes[0].score = 0.5f;
+  o.group_count = 1;
+  o.groups[0].score = 0.5f;
   o.ground_gap = 0.25f;
   o.heading_deg = 12.5f;
   o.points = 7;

@@ -1,18 +1,19 @@
-// On-disk layout of a spinhash database blob (.shdb), format v4.
+// On-disk layout of a spinhash database blob (.shdb), format v5.
 // docs/blob-format.md is the normative description; these structs mirror it.
 // All integers and floats are stored in the byte order named by the header.
 #pragma once
 #include <cstdint>
 
+#include "spinhash/answer_levels.h"
 #include "spinhash/limits.hpp"
 
 namespace spinhash {
 namespace blob {
 
 constexpr char kMagic[8] = {'S', 'P', 'I', 'N', 'H', 'S', 'H', 'D'};
-// v4: a vehicle class per model; v3: normals up within 45 degrees of
-// vertical; v2: the nearest-feature field.
-constexpr uint32_t kFormatVersion = 4;
+// v5: the Calibration section; v4: a vehicle class per model; v3: normals
+// up within 45 degrees of vertical; v2: the nearest-feature field.
+constexpr uint32_t kFormatVersion = 5;
 constexpr uint32_t kByteOrderMark = 0x01020304u;  // reads 0x04030201 on the other byte order
 constexpr uint32_t kSectionAlignment = 64;
 
@@ -41,8 +42,9 @@ enum SectionId : uint32_t {
   kLshOffsets = 9,     // uint32[lsh_tables * (lsh_buckets + 1)], CSR per table
   kLshEntries = 10,    // uint32[lsh_tables * feature_count], feature indices
   kNearestField = 11,  // uint16[field_entry_count], per-model voxel slots (NearestField below)
+  kCalibration = 12,   // CalibrationHeader, CalibrationPass[pass_count], CalibrationCell[...] (below)
 };
-constexpr uint32_t kSectionIdCount = 11;
+constexpr uint32_t kSectionIdCount = 12;
 
 // 32 bytes each, immediately after the header.
 struct SectionEntry {
@@ -135,6 +137,71 @@ inline uint64_t mix64(uint64_t x) {  // splitmix64 finaliser
 inline uint32_t bucket_of(uint64_t key, uint32_t table, uint32_t buckets) {
   return static_cast<uint32_t>(mix64(key ^ (static_cast<uint64_t>(table + 1) * kTableSalt)) & (buckets - 1u));
 }
+
+// Calibration (kCalibration): per pass of the recognizer, per calibrated
+// answer level (answer_levels.h: vehicle, group, class, model) and per band
+// of scan density, the evidence threshold of the level's flag and what the
+// build's fit expects of it. The payload is the header, then pass_count
+// CalibrationPass records, then pass_count x kCalibratedLevels x band_count
+// cells, pass-major, then level, then band (densest last).
+constexpr uint32_t kMaxCalibrationPasses = 4;
+constexpr uint32_t kMaxDensityBands = 16;
+
+// 128 bytes.
+struct CalibrationHeader {
+  uint32_t pass_count;     // 1..kMaxCalibrationPasses
+  uint32_t level_count;    // kCalibratedLevels
+  uint32_t band_count;     // 1..kMaxDensityBands
+  float target_precision;  // (0, 1]: the precision each fitted threshold reaches on the runs
+  // Band b holds densities in [band_min_density[b], band_min_density[b + 1])
+  // points per m^2 (RecognitionStats::scan_density); the last band is open
+  // above. band_min_density[0] == 0, strictly increasing; entries from
+  // band_count on are zero.
+  float band_min_density[kMaxDensityBands];
+  uint32_t scans_per_model;     // calibration scans of each model (0: not fitted)
+  uint32_t models_left_out;     // models recognised with a database that lacks them
+  uint32_t clutter_scans;       // scans of trees, walls, crates and buildings
+  uint32_t scans_per_left_out;  // scans of each model left out (at least scans_per_model)
+  uint64_t seed;                // of the calibration scans
+  uint8_t reserved[24];         // zero
+};
+static_assert(sizeof(CalibrationHeader) == 128, "calibration header is 128 bytes");
+
+// Where a pass's thresholds come from.
+enum CalibrationSource : uint32_t {
+  kSourcePriors = 0,  // none fitted: the recognizer's settings decide (its cells are all zero)
+  kSourceFitted = 1,  // fitted by the build from the database's own models
+};
+
+// 16 bytes.
+struct CalibrationPass {
+  uint32_t pass;      // id in SPINHASH_CALIBRATION_PASSES; pass record i holds pass i
+  uint32_t source;    // CalibrationSource
+  uint32_t runs;      // recognitions the fit drew on (0 for priors)
+  uint32_t reserved;  // zero
+};
+static_assert(sizeof(CalibrationPass) == 16, "calibration pass is 16 bytes");
+
+// What a cell says.
+enum CalibrationState : uint32_t {
+  kCellPriors = 0,       // a priors pass's cell: all fields zero
+  kCellFitted = 1,       // confident when evidence >= threshold
+  kCellTooFew = 2,       // never confident: too few calibration runs in the band
+  kCellUnreachable = 3,  // never confident: no threshold reaches the target precision
+};
+
+// 32 bytes.
+struct CalibrationCell {
+  float threshold;     // evidence at or above which the level is confident (kCellFitted)
+  float precision;     // on the calibration runs in the band at that threshold, in [0, 1]
+  float recall;        // share of the band's right answers flagged, in [0, 1]
+  uint32_t positives;  // runs in the band whose answer at this level was right
+  uint32_t negatives;  // runs in the band whose answer at this level was wrong
+  uint32_t flagged;    // runs in the band at or above the threshold
+  uint32_t state;      // CalibrationState
+  uint32_t reserved;   // zero
+};
+static_assert(sizeof(CalibrationCell) == 32, "calibration cell is 32 bytes");
 
 }  // namespace blob
 }  // namespace spinhash

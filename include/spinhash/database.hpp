@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "spinhash/blob_format.hpp"
+#include "spinhash/calibration.hpp"
 #include "spinhash/config.hpp"
 #include "spinhash/status.hpp"
 
@@ -43,6 +44,8 @@ class Database {
   const uint32_t* lsh_entries() const noexcept { return lsh_entries_; }  // offsets index this
   bool has_nearest_field() const noexcept { return params_->field_entry_count > 0u; }
   const uint16_t* nearest_field() const noexcept { return nearest_field_; }  // blob_format.hpp
+  // The thresholds of the answer levels' flags (calibration.hpp).
+  const Calibration& calibration() const noexcept { return calibration_; }
 
   // Model index whose name equals `name`, or -1.
   int32_t find_model(const char* name) const noexcept;
@@ -61,6 +64,7 @@ class Database {
   const uint32_t* lsh_offsets_ = nullptr;
   const uint32_t* lsh_entries_ = nullptr;
   const uint16_t* nearest_field_ = nullptr;
+  Calibration calibration_;
 };
 
 // CRC-32C (Castagnoli, reflected, init and xorout 0xFFFFFFFF), as in the blob.

@@ -4,7 +4,9 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
+#include "spinhash/calibration.hpp"
 #include "spinhash/config.hpp"
 #include "spinhash/database.hpp"
 #include "spinhash/features.hpp"
@@ -37,6 +39,25 @@ struct RankedClass {
   float score = 0.0f;          // its best model's score (RankedModel::score)
   uint32_t model = 0;          // that model (database index)
   uint32_t best_rank = 0;      // that model's place in Result::ranking
+};
+
+// One vehicle group of the database (vehicle_group_of() of its classes),
+// scored by its best model: what a scan too sparse or too unlike every model
+// for a class still tells (a light vehicle, not a bus).
+struct RankedGroup {
+  uint32_t group = 0;      // VehicleGroup id
+  float score = 0.0f;      // its best model's score (RankedModel::score)
+  uint32_t model = 0;      // that model (database index)
+  uint32_t best_rank = 0;  // that model's place in Result::ranking
+};
+
+// A calibrated level's evidence and flag (answer_levels.h): the flag is the
+// evidence at or above the database's threshold for the scan's density
+// (Database::calibration()), or the recognizer's priors without a fitted
+// table. Evidence is -infinity when a prerequisite of the level fails.
+struct LevelAnswer {
+  float evidence = -std::numeric_limits<float>::infinity();
+  bool confident = false;
 };
 
 // What each stage did (the stages of stage_fields.h that count something).
@@ -114,7 +135,9 @@ struct Result {
   Status status = Status::kNotOpen;
   const RankedModel* ranking = nullptr;  // in the workspace; valid until the next call
   uint32_t ranking_count = 0;            // models that got a score, best first
-  bool confident = false;                // the first model is named confidently (ConfidenceParams)
+  // The first model is named confidently: the model level's flag
+  // (levels[level_index(AnswerLevel::kModel)].confident).
+  bool confident = false;
   // Look-alike group: the first group_size models of the ranking score within
   // min_margin x sqrt(features) log-likelihood of the first (spread_margin_factor
   // times that when stats.candidates.spread: among many look-alikes), so the
@@ -125,11 +148,19 @@ struct Result {
   // score; ties by class id); in the workspace like `ranking`.
   const RankedClass* class_ranking = nullptr;
   uint32_t class_ranking_count = 0;
-  // The first class leads the next by min_margin x sqrt(features), its best
-  // model explains the scan as `confident` asks (without the look-alike,
-  // extent-shortfall and density tests: a class is told apart on less) and
-  // the scan carries enough evidence (docs/api.md, section 3).
+  // The first class is named confidently: the class level's flag
+  // (levels[level_index(AnswerLevel::kClass)].confident; docs/api.md).
   bool class_confident = false;
+  // The groups of the ranked models, best first (ties by group id), like
+  // class_ranking.
+  const RankedGroup* group_ranking = nullptr;
+  uint32_t group_ranking_count = 0;
+  // Per calibrated level, vehicle .. model (index level_index()).
+  LevelAnswer levels[kCalibratedLevels];
+  // The most specific confident level whose coarser levels are all
+  // confident and consistent (the model is of the first class, which is of
+  // the first group); kNone when not even the vehicle level is.
+  AnswerLevel level = AnswerLevel::kNone;
   RecognitionStats stats;
 };
 

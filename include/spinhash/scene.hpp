@@ -124,6 +124,14 @@ struct SceneObject {
   RankedClass classes[kVehicleClassCount] = {};
   uint32_t class_count = 0;
   bool class_confident = false;  // Result::class_confident and the class leader's size agrees
+  // The group level (Result::group_ranking).
+  RankedGroup groups[kVehicleGroupCount] = {};
+  uint32_t group_count = 0;
+  // Result::levels, with the model and class flags as `confident` and
+  // `class_confident` (the size tests added), and the level they give
+  // (Result::level).
+  LevelAnswer levels[kCalibratedLevels] = {};
+  AnswerLevel level = AnswerLevel::kNone;
   // The best model's bottom above the terrain under its pose, m (mean of its
   // box's four bottom corners; < 0: sunk into it); NaN without a ranking or
   // without terrain under it.

@@ -151,6 +151,10 @@
   K("class", "vehicle_class")             \
   K("class_confident", "class_confident") \
   K("class_ranking", "class_ranking")     \
+  K("group", "group")                     \
+  K("group_ranking", "group_ranking")     \
+  K("levels", "levels")                   \
+  K("level", "level")                     \
   K("score", "score")                     \
   K("ranking", "ranking")                 \
   K("pose", "pose")                       \

@@ -22,6 +22,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "spinhash/answer_levels.h"
 #include "spinhash/config_fields.h"
 #include "spinhash/stage_fields.h"
 #include "spinhash/status_list.h"
@@ -112,9 +113,22 @@ typedef struct spinhash_result {
    * confidence.min_margin x sqrt(features) on enough evidence (docs/api.md). */
   uint32_t class_ranking_count;
   uint32_t class_confident;
+  /* The answer levels (SPINHASH_ANSWER_LEVELS, answer_levels.h): per
+   * calibrated level, vehicle .. model at index id - 1, its flag (the
+   * database's calibrated threshold at the scan's density; the model
+   * level's is `confident`, the class level's `class_confident`) and its
+   * evidence (-infinity when a prerequisite of the level failed); `level`,
+   * the id of the most specific confident level whose coarser levels are
+   * confident and consistent (0: none; spinhash_level_name). The groups of
+   * the ranked models, best first (spinhash_result_group). */
+  uint32_t level_confident[SPINHASH_CALIBRATED_LEVELS];
+  float level_evidence[SPINHASH_CALIBRATED_LEVELS];
+  uint32_t level;
+  uint32_t group_ranking_count;
   spinhash_stats stats;
   const void* ranking_;               /* private */
   const void* class_ranking_;         /* private */
+  const void* group_ranking_;         /* private */
   const spinhash_database* database_; /* private: for model names */
 } spinhash_result;
 
@@ -137,6 +151,14 @@ typedef struct spinhash_ranked_class {
   uint32_t model;         /* that model */
   const char* name;       /* the class's name, e.g. "pickup" */
 } spinhash_ranked_class;
+
+/* One ranked vehicle group: scored by its best model. */
+typedef struct spinhash_ranked_group {
+  uint32_t group;   /* id in SPINHASH_VEHICLE_GROUPS (vehicle_classes.h) */
+  float score;      /* its best model's score */
+  uint32_t model;   /* that model */
+  const char* name; /* the group's name, e.g. "light" */
+} spinhash_ranked_group;
 
 /* Log levels passed to the hook. */
 #define SPINHASH_LOG_ERROR 1
@@ -175,6 +197,10 @@ uint32_t spinhash_class_group(uint32_t vehicle_class) SPINHASH_NOEXCEPT;
 /* Name of group id `group` ("light", ...); "unknown" outside the list. */
 const char* spinhash_group_name(uint32_t group) SPINHASH_NOEXCEPT;
 
+/* Name of answer level id `level` ("none", "vehicle", "group", "class",
+ * "model"; answer_levels.h); "unknown" outside the list. */
+const char* spinhash_level_name(uint32_t level) SPINHASH_NOEXCEPT;
+
 /* Carves every buffer from the workspace; the database must outlive rec. */
 spinhash_status spinhash_recognizer_init(spinhash_recognizer* rec, const spinhash_database* db,
                                          const spinhash_config* config, void* workspace,
@@ -190,6 +216,9 @@ spinhash_status spinhash_result_entry(const spinhash_result* result, uint32_t ra
 /* Class `rank` (0 = best) of a successful result. */
 spinhash_status spinhash_result_class(const spinhash_result* result, uint32_t rank,
                                       spinhash_ranked_class* out) SPINHASH_NOEXCEPT;
+/* Group `rank` (0 = best) of a successful result. */
+spinhash_status spinhash_result_group(const spinhash_result* result, uint32_t rank,
+                                      spinhash_ranked_group* out) SPINHASH_NOEXCEPT;
 
 #ifdef __cplusplus
 }

@@ -66,6 +66,8 @@
   X(kBlobUnknownSection, 28, BLOB_UNKNOWN_SECTION, "blob_unknown_section", "blob section id unknown")       \
   /* padding, a reserved field or a name's tail not zero */                                                 \
   X(kBlobNotZeroed, 29, BLOB_NOT_ZEROED, "blob_not_zeroed", "blob padding or reserved bytes not zero")      \
+  /* the Calibration section's counts, bands, passes or cells inconsistent */                               \
+  X(kBlobBadCalibration, 30, BLOB_BAD_CALIBRATION, "blob_bad_calibration", "blob calibration inconsistent") \
   /* recognize: no finite points */                                                                         \
   X(kEmptyCloud, 40, EMPTY_CLOUD, "empty_cloud", "empty cloud")                                             \
   /* more points than config.max_points (refused) */                                                        \

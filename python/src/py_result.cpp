@@ -48,9 +48,60 @@ py::object first_class(const RankedClass* classes, uint32_t count) {
   return count > 0 ? py::object(py::str(vehicle_class_name(classes[0].vehicle_class))) : py::none();
 }
 
+py::list group_list(const Database& db, const RankedGroup* groups, uint32_t count) {
+  py::list out;
+  for (uint32_t i = 0; i < count; ++i)
+    out.append(py::make_tuple(vehicle_group_name(groups[i].group), static_cast<double>(groups[i].score),
+                              pipeline::model_name(db, groups[i].model)));
+  return out;
+}
+
+py::object first_group(const RankedGroup* groups, uint32_t count) {
+  return count > 0 ? py::object(py::str(vehicle_group_name(groups[0].group))) : py::none();
+}
+
+// Per calibrated level its flag and evidence (None when a prerequisite
+// failed), under the level's name.
+py::dict level_dict(const LevelAnswer* levels) {
+  py::dict d;
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) {
+    const LevelAnswer a = levels != nullptr ? levels[l] : LevelAnswer{};
+    py::dict one;
+    one["confident"] = py::bool_(a.confident);
+    one["evidence"] = std::isfinite(a.evidence) ? py::object(py::float_(static_cast<double>(a.evidence)))
+                                                : py::object(py::none());
+    d[answer_level_name(l + 1u)] = one;
+  }
+  return d;
+}
+
+template <typename Out>
+void set_levels(const Database& db, const RankedGroup* groups, uint32_t count, const LevelAnswer* levels,
+                AnswerLevel level, Out* out) {
+  out->group = first_group(groups, count);
+  out->group_ranking = group_list(db, groups, count);
+  out->levels = level_dict(levels);
+  out->level = answer_level_name(static_cast<uint32_t>(level));
+}
+
 py::object best_pose(const std::vector<RankedModel>& ranking) {
   if (ranking.empty() || !ranking[0].has_pose) return py::none();
   return pose_matrix(ranking[0].pose);
+}
+
+// The answer levels' attributes, alike on Result and SceneObject.
+template <typename T>
+void def_levels(py::class_<T>& c) {
+  c.def_readonly("group", &T::group,
+                 "the first group's name (the CLI's \"group\"), e.g. 'light'; None without a ranking")
+      .def_readonly("group_ranking", &T::group_ranking,
+                    "[(group name, score, best model's name), ...], best first")
+      .def_readonly("levels", &T::levels,
+                    "{level name: {'confident': bool, 'evidence': float or None}} for 'vehicle', 'group', "
+                    "'class' and 'model' (the CLI's \"levels\")")
+      .def_readonly("level", &T::level,
+                    "the most specific confident level whose coarser levels are confident and consistent: "
+                    "'model', 'class', 'group', 'vehicle' or 'none'");
 }
 
 }  // namespace
@@ -63,6 +114,9 @@ ResultCopy copy_result(const Result& r, double time_ms) {
   c.result.class_ranking = nullptr;
   if (r.status == Status::kOk && r.class_ranking != nullptr)
     c.classes.assign(r.class_ranking, r.class_ranking + r.class_ranking_count);
+  c.result.group_ranking = nullptr;
+  if (r.status == Status::kOk && r.group_ranking != nullptr)
+    c.groups.assign(r.group_ranking, r.group_ranking + r.group_ranking_count);
   c.time_ms = time_ms;
   return c;
 }
@@ -79,6 +133,9 @@ PyResult make_result(const Database& db, const ResultCopy& r) {
   out.vehicle_class = first_class(r.classes.data(), classes);
   out.class_confident = r.result.status == Status::kOk && r.result.class_confident;
   out.class_ranking = class_list(db, r.classes.data(), classes);
+  const bool ok = r.result.status == Status::kOk;
+  set_levels(db, r.groups.data(), static_cast<uint32_t>(r.groups.size()), ok ? r.result.levels : nullptr,
+             ok ? r.result.level : AnswerLevel::kNone, &out);
   out.stats = stats_dict(r.result.stats);
   out.time_ms = r.time_ms;
   return out;
@@ -99,6 +156,7 @@ PySceneObject make_scene_object(const Database& db, const SceneObjectCopy& c) {
   out.vehicle_class = first_class(o.classes, o.class_count);
   out.class_confident = o.class_confident;
   out.class_ranking = class_list(db, o.classes, o.class_count);
+  set_levels(db, o.groups, o.group_count, o.levels, o.level, &out);
   out.ground_gap =
       std::isfinite(o.ground_gap) ? py::object(py::float_(static_cast<double>(o.ground_gap))) : py::none();
   out.points = o.points;
@@ -110,21 +168,23 @@ PySceneObject make_scene_object(const Database& db, const SceneObjectCopy& c) {
 }
 
 void bind_result(py::module_& m) {
-  py::class_<PyResult>(m, "Result", "One recognition: the fields of the CLI's JSON line.")
+  py::class_<PyResult> result(m, "Result", "One recognition: the fields of the CLI's JSON line.");
+  result
       .def_readonly("status", &PyResult::status,
                     "'ok', 'empty_cloud', 'not_enough_features', ... (as the CLI)")
       .def_readonly("error", &PyResult::error, "why, when status is not 'ok'; else None")
       .def_readonly("ranking", &PyResult::ranking, "[(model name, score), ...], best first")
       .def_readonly("pose", &PyResult::pose,
                     "4x4 float64, model frame -> query frame, of the best model; None without one")
-      .def_readonly("confident", &PyResult::confident, "the best model explains enough of the query")
+      .def_readonly("confident", &PyResult::confident,
+                    "the model level's flag: the best model is the scanned one")
       .def_readonly("group_size", &PyResult::group_size,
                     "leading models the scan does not tell apart (within min_margin); 1: the first "
                     "stands alone")
       .def_readonly("vehicle_class", &PyResult::vehicle_class,
                     "the first class's name (the CLI's \"class\"), e.g. 'pickup'; None without a ranking")
       .def_readonly("class_confident", &PyResult::class_confident,
-                    "the first class leads the next by min_margin on enough evidence")
+                    "the class level's flag: the first class is the vehicle's")
       .def_readonly("class_ranking", &PyResult::class_ranking,
                     "[(class name, score, best model's name), ...], best first")
       .def_readonly("stats", &PyResult::stats, "the CLI's \"stats\" object as a dict")
@@ -143,8 +203,10 @@ void bind_result(py::module_& m) {
                ", vehicle_class=" + std::string(py::repr(r.vehicle_class)) +
                ", class_confident=" + (r.class_confident ? "True" : "False") + ")";
       });
-  py::class_<PySceneObject>(m, "SceneObject",
-                            "One object of a tile: the fields of a line of `spinhash scene`.")
+  def_levels(result);
+  py::class_<PySceneObject> object(m, "SceneObject",
+                                   "One object of a tile: the fields of a line of `spinhash scene`.");
+  object
       .def_readonly("kind", &PySceneObject::kind,
                     "'vehicle', 'too small', 'too large', 'not vehicle-shaped', 'unknown'")
       .def_readonly("status", &PySceneObject::status, "status of its recognition ('ok' when not recognised)")
@@ -174,6 +236,7 @@ void bind_result(py::module_& m) {
                ", confident=" + (o.confident ? "True" : "False") + ", points=" + std::to_string(o.points) +
                ")";
       });
+  def_levels(object);
 }
 
 }  // namespace spinhash::python

@@ -16,6 +16,7 @@ struct ResultCopy {
   Result result;
   std::vector<RankedModel> ranking;
   std::vector<RankedClass> classes;  // class_ranking
+  std::vector<RankedGroup> groups;   // group_ranking
   double time_ms = 0.0;
 };
 ResultCopy copy_result(const Result& r, double time_ms);
@@ -30,6 +31,10 @@ struct PyResult {
   pybind11::object vehicle_class;  // the first class's name (the CLI's "class"), or None
   bool class_confident = false;
   pybind11::list class_ranking;  // (class name, score, model name), best first
+  pybind11::object group;        // the first group's name (the CLI's "group"), or None
+  pybind11::list group_ranking;  // (group name, score, model name), best first
+  pybind11::dict levels;         // {"vehicle": {"confident":.., "evidence":..}, ...} (the CLI's "levels")
+  pybind11::str level;           // the CLI's "level": "model", "class", "group", "vehicle" or "none"
   pybind11::dict stats;          // SPINHASH_STATS_FIELDS under the CLI's JSON keys
   double time_ms = 0.0;
 };
@@ -53,7 +58,11 @@ struct PySceneObject {
   pybind11::object vehicle_class;  // as PyResult
   bool class_confident = false;
   pybind11::list class_ranking;
-  pybind11::object ground_gap;  // m: best model's bottom above the terrain, or None
+  pybind11::object group;        // the first group's name (the CLI's "group"), or None
+  pybind11::list group_ranking;  // (group name, score, model name), best first
+  pybind11::dict levels;         // {"vehicle": {"confident":.., "evidence":..}, ...} (the CLI's "levels")
+  pybind11::str level;           // the CLI's "level": "model", "class", "group", "vehicle" or "none"
+  pybind11::object ground_gap;   // m: best model's bottom above the terrain, or None
   uint32_t points = 0;
   pybind11::tuple center;  // georeferenced footprint centre, z mid-height
   pybind11::tuple extent;  // m: length, width, height above terrain

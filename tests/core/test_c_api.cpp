@@ -124,6 +124,25 @@ TEST_CASE("C API: the golden blob opens, recognises in float and double, and nam
   CHECK(spinhash_result_class(&r32, r32.class_ranking_count, &beyond) == SPINHASH_INVALID_ARGUMENT);
   CHECK(spinhash_result_class(&r32, 0, nullptr) == SPINHASH_INVALID_ARGUMENT);
   CHECK(spinhash_result_class(nullptr, 0, &beyond) == SPINHASH_INVALID_ARGUMENT);
+
+  // The answer levels: the model and class flags are the levels', the level
+  // is a name of answer_levels.h, the first group is the first class's.
+  CHECK(r32.level_confident[SPINHASH_CALIBRATED_LEVELS - 1] == r32.confident);
+  CHECK(r32.level_confident[SPINHASH_CALIBRATED_LEVELS - 2] == r32.class_confident);
+  CHECK(r32.level < SPINHASH_ANSWER_LEVEL_COUNT);
+  CHECK(r64.level == r32.level);
+  CHECK(std::strcmp(spinhash_level_name(0u), "none") == 0);
+  CHECK(std::strcmp(spinhash_level_name(4u), "model") == 0);
+  CHECK(std::strcmp(spinhash_level_name(SPINHASH_ANSWER_LEVEL_COUNT), "unknown") == 0);
+  REQUIRE(r32.group_ranking_count >= 1u);
+  CHECK(r32.group_ranking_count <= SPINHASH_GROUP_COUNT);
+  spinhash_ranked_group group = {0u, 0.0f, 0u, ""}, no_group;
+  REQUIRE(spinhash_result_group(&r32, 0, &group) == SPINHASH_OK);
+  CHECK(std::strcmp(group.name, "light") == 0);
+  CHECK(group.group == spinhash_class_group(first.vehicle_class));
+  CHECK(group.score == first.score);
+  CHECK(spinhash_result_group(&r32, r32.group_ranking_count, &no_group) == SPINHASH_INVALID_ARGUMENT);
+  CHECK(spinhash_result_group(&r32, 0, nullptr) == SPINHASH_INVALID_ARGUMENT);
 }
 
 TEST_CASE("C API: bad arguments are statuses, never crashes") {

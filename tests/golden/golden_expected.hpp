@@ -5,7 +5,7 @@
 namespace spinhash {
 namespace golden {
 
-constexpr uint64_t kBlobBytes = 258008;  // each byte order
+constexpr uint64_t kBlobBytes = 258320;  // each byte order
 constexpr uint32_t kQueryPoints = 21259;
 const GoldenQuery kGoldenQueries[] = {
     {0,

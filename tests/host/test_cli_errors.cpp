@@ -43,7 +43,7 @@ struct Fixture {
 
   Fixture() {
     REQUIRE(run("generate --count 2 -o " + q(meshes)).exit_code == kExitOk);
-    REQUIRE(run("build --quiet -o " + q(good_db) + " " + q(meshes)).exit_code == kExitOk);
+    REQUIRE(run("build --quiet --no-calibration -o " + q(good_db) + " " + q(meshes)).exit_code == kExitOk);
     const std::string mesh = fs::directory_iterator(meshes)->path().string();
     REQUIRE(run("scan " + q(mesh) + " -o " + q(query) + " --views 2 --spacing 0.08 --seed 3").exit_code ==
             kExitOk);
@@ -105,13 +105,13 @@ TEST_CASE("build refuses meshes that won't load, empty or degenerate meshes and 
     CAPTURE(b.name);
     const std::string input = make_bad_input(dir, b);
     const std::string out = dir.file("new.shdb");
-    const Run r = f.run("build --quiet -o " + f.q(out) + " " + f.q(input));
+    const Run r = f.run("build --quiet --no-calibration -o " + f.q(out) + " " + f.q(input));
     CHECK(r.exit_code == kExitError);
     CHECK(contains(r.err, fs::path(b.name).stem().string()));  // the file or the model it names
     CHECK_FALSE(fs::exists(out));
   }
-  const Run missing =
-      f.run("build --quiet -o " + f.q(dir.file("x.shdb")) + " " + f.q(dir.file("missing.obj")));
+  const Run missing = f.run("build --quiet --no-calibration -o " + f.q(dir.file("x.shdb")) + " " +
+                            f.q(dir.file("missing.obj")));
   CHECK(missing.exit_code == kExitError);
   CHECK(contains(missing.err, "missing.obj"));
 }
@@ -125,7 +125,8 @@ TEST_CASE("a failed build never clobbers an existing good database") {
     write_bytes(target, f.good_bytes);
     const std::string input = make_bad_input(dir, b);
     // The good meshes first, so loading gets going before the bad input fails.
-    const Run r = f.run("build --quiet -o " + f.q(target) + " " + f.q(f.meshes) + " " + f.q(input));
+    const Run r =
+        f.run("build --quiet --no-calibration -o " + f.q(target) + " " + f.q(f.meshes) + " " + f.q(input));
     CHECK(r.exit_code == kExitError);
     CHECK(read_bytes(target) == f.good_bytes);
   }
@@ -145,9 +146,11 @@ TEST_CASE("outputs that cannot be written are errors with a message") {
   };
   const Case cases[] = {
       {"build into a missing directory",
-       "build --quiet -o " + f.q(dir.file("no/such/dir/db.shdb")) + " " + f.q(f.meshes)},
-      {"build under a file", "build --quiet -o " + f.q(under_file + ".shdb") + " " + f.q(f.meshes)},
-      {"build onto a directory", "build --quiet -o " + f.q(dir.path().string()) + " " + f.q(f.meshes)},
+       "build --quiet --no-calibration -o " + f.q(dir.file("no/such/dir/db.shdb")) + " " + f.q(f.meshes)},
+      {"build under a file",
+       "build --quiet --no-calibration -o " + f.q(under_file + ".shdb") + " " + f.q(f.meshes)},
+      {"build onto a directory",
+       "build --quiet --no-calibration -o " + f.q(dir.path().string()) + " " + f.q(f.meshes)},
       {"scan under a file",
        "scan " + f.q(fs::directory_iterator(f.meshes)->path().string()) + " -o " + f.q(under_file + ".ply")},
       {"generate under a file", "generate --count 1 -o " + f.q(under_file)},
@@ -242,6 +245,10 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
   std::string v1 = f.good_bytes;
   const uint32_t format1 = 1;
   std::memcpy(&v1[offsetof(spinhash::blob::Header, version)], &format1, sizeof format1);
+  // A format-4 header: a blob without the calibration section.
+  std::string v4 = f.good_bytes;
+  const uint32_t format4 = 4;
+  std::memcpy(&v4[offsetof(spinhash::blob::Header, version)], &format4, sizeof format4);
   struct Case {
     const char* name;
     std::string bytes;
@@ -252,6 +259,7 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
       {"truncated.shdb", f.good_bytes.substr(0, f.good_bytes.size() / 2), Status::kBlobTruncated},
       {"magic.shdb", magic, Status::kBlobBadMagic},
       {"format1.shdb", v1, Status::kBlobUnsupportedVersion},
+      {"format4.shdb", v4, Status::kBlobUnsupportedVersion},
   };
   for (const Case& k : cases) {
     CAPTURE(k.name);
@@ -269,7 +277,10 @@ TEST_CASE("verify, info and recognize on a corrupt database fail with the status
   // The older format says which it is and how to get the current one.
   const Run old = f.run("info " + f.q(dir.file("format1.shdb")));
   CHECK(contains(old.err,
-                 "format 1; this spinhash reads format 4: rebuild it from its meshes with `spinhash build`"));
+                 "format 1; this spinhash reads format 5: rebuild it from its meshes with `spinhash build`"));
+  const Run uncalibrated = f.run("recognize --db " + f.q(dir.file("format4.shdb")) + " " + f.q(f.query));
+  CHECK(contains(uncalibrated.err,
+                 "format 4; this spinhash reads format 5: rebuild it from its meshes with `spinhash build`"));
   write_bytes(dir.file("empty.shdb"), "");
   const Run empty = f.run("verify " + f.q(dir.file("empty.shdb")));
   CHECK(empty.exit_code == kExitError);
@@ -280,8 +291,9 @@ namespace {
 
 // Offsets of single bytes that Database::open refuses by its zero checks
 // (docs/blob-format.md, "Alignment and padding"): every byte between the
-// section table and the first payload, the first padding byte after each
-// payload that has one, and reserved fields.
+// section table and the first payload (none when the table ends on a
+// 64-byte boundary), the first and last padding bytes after each payload
+// that has padding, and reserved fields.
 std::vector<size_t> zero_fill_offsets(const std::string& blob) {
   using spinhash::blob::Header;
   using spinhash::blob::SectionEntry;
@@ -295,8 +307,11 @@ std::vector<size_t> zero_fill_offsets(const std::string& blob) {
   std::vector<size_t> at;
   for (size_t i = table_end; i < first; ++i) at.push_back(i);
   for (const SectionEntry& e : table)  // the last payload ends the blob: no padding after it
-    if (e.size % spinhash::blob::kSectionAlignment != 0u && e.offset + e.size < blob.size())
-      at.push_back(static_cast<size_t>(e.offset + e.size));
+    if (e.size % spinhash::blob::kSectionAlignment != 0u && e.offset + e.size < blob.size()) {
+      const size_t end = static_cast<size_t>(e.offset + e.size), aligned = (end / 64u + 1u) * 64u;
+      at.push_back(end);
+      at.push_back(aligned - 1u);
+    }
   at.push_back(offsetof(Header, reserved));
   at.push_back(sizeof h + offsetof(SectionEntry, reserved2));
   return at;
@@ -308,7 +323,7 @@ TEST_CASE("verify refuses a changed padding or reserved byte, as Database::open 
   const Fixture& f = fx();
   TempDir dir("cli-zero-fill");
   const std::vector<size_t> offsets = zero_fill_offsets(f.good_bytes);
-  REQUIRE(offsets.size() > 16u);
+  REQUIRE(offsets.size() >= 12u);
   const std::string path = dir.file("changed.shdb");
   for (size_t at : offsets) {
     CAPTURE(at);
@@ -322,7 +337,7 @@ TEST_CASE("verify refuses a changed padding or reserved byte, as Database::open 
     CHECK(contains(r.err, spinhash::status_name(in_header ? spinhash::Status::kBlobHeaderChecksum
                                                           : spinhash::Status::kBlobNotZeroed)));
   }
-  // The first padding byte after the table: recognize and info refuse it too.
+  // The first padding byte: recognize and info refuse it too.
   std::string changed = f.good_bytes;
   changed[offsets[0]] ^= 0x80;
   write_bytes(path, changed);

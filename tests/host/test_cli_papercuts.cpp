@@ -35,7 +35,7 @@ struct Fixture {
 
   Fixture() {
     REQUIRE(run("generate --count 2 -o " + q(meshes)).exit_code == kExitOk);
-    REQUIRE(run("build --quiet -o " + q(db) + " " + q(meshes)).exit_code == kExitOk);
+    REQUIRE(run("build --quiet --no-calibration -o " + q(db) + " " + q(meshes)).exit_code == kExitOk);
     const std::string mesh = meshes + "/" + fs::path(first_mesh()).filename().string();
     const CliRun scan =
         run("scan " + q(mesh) + " -o " + q(query) +
@@ -155,8 +155,8 @@ TEST_CASE("build names every unreadable mesh at once and writes nothing") {
   write_bytes(dir.file("flat-c.obj"), "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
   const std::string out = dir.file("new.shdb");
   const CliRun r =
-      f.run("build --quiet -o " + f.q(out) + " " + f.q(dir.file("broken-a.obj")) + " " + f.q(f.meshes) + " " +
-            f.q(dir.file("broken-b.ply")) + " " + f.q(dir.file("flat-c.obj")));
+      f.run("build --quiet --no-calibration -o " + f.q(out) + " " + f.q(dir.file("broken-a.obj")) + " " +
+            f.q(f.meshes) + " " + f.q(dir.file("broken-b.ply")) + " " + f.q(dir.file("flat-c.obj")));
   CHECK(r.exit_code == kExitError);
   for (const char* name : {"broken-a.obj", "broken-b.ply", "flat-c.obj"})
     CHECK_MESSAGE(contains(r.err, name), std::string(name));
@@ -175,7 +175,8 @@ TEST_CASE("build takes a generated binary PLY vehicle whose first body byte is a
   REQUIRE(body != std::string::npos);
   bytes[body + 11] = '\n';  // the low byte of the first x: moves it by about 1e-7 of itself
   write_bytes(mesh, bytes);
-  const CliRun r = f.run("build --quiet -o " + f.q(dir.file("ply.shdb")) + " " + f.q(meshes));
+  const CliRun r =
+      f.run("build --quiet --no-calibration -o " + f.q(dir.file("ply.shdb")) + " " + f.q(meshes));
   INFO(r.err);
   CHECK(r.exit_code == kExitOk);  // Assimp 5.2.5: "mIndices[0] is out of range"
   CHECK(fs::exists(dir.file("ply.shdb")));

@@ -24,7 +24,8 @@ struct Pipeline {
   Pipeline() {
     REQUIRE(run_spinhash(dir, "generate --count " + std::to_string(kVehicles) + " -o " + shell_quoted(meshes))
                 .exit_code == 0);
-    CliRun b = run_spinhash(dir, "build --quiet -o " + shell_quoted(db) + " " + shell_quoted(meshes));
+    CliRun b = run_spinhash(
+        dir, "build --quiet --no-calibration -o " + shell_quoted(db) + " " + shell_quoted(meshes));
     INFO(b.err);
     REQUIRE(b.exit_code == 0);
   }
@@ -170,7 +171,7 @@ TEST_CASE(
   std::filesystem::rename(gen + "/van-00.obj", folder + "/hilux.obj");
   const std::string db = dir.file("c.shdb"), manifest = dir.file("classes.txt");
   write_bytes(manifest, "# model class\ntruck-00 bus  # a manifest overrides the name\n");
-  CliRun b = run_spinhash(dir, "build --quiet --classes " + shell_quoted(manifest) + " -o " +
+  CliRun b = run_spinhash(dir, "build --quiet --no-calibration --classes " + shell_quoted(manifest) + " -o " +
                                    shell_quoted(db) + " " + shell_quoted(gen) + " " + shell_quoted(folder));
   INFO(b.err);
   REQUIRE(b.exit_code == 0);
@@ -179,8 +180,8 @@ TEST_CASE(
   CHECK(contains(info.out, "{\"name\":\"truck-00\",\"class\":\"bus\""));
   CHECK(contains(info.out, "{\"name\":\"hilux\",\"class\":\"pickup\""));
   write_bytes(manifest, "truck-00 lorry\nnobody sedan\nsedan-00\n");
-  CliRun bad = run_spinhash(dir, "build --quiet --classes " + shell_quoted(manifest) + " -o " +
-                                     shell_quoted(dir.file("bad.shdb")) + " " + shell_quoted(gen));
+  CliRun bad = run_spinhash(dir, "build --quiet --no-calibration --classes " + shell_quoted(manifest) +
+                                     " -o " + shell_quoted(dir.file("bad.shdb")) + " " + shell_quoted(gen));
   CHECK(bad.exit_code == 1);
   CHECK(contains(bad.err, "classes.txt:1: unknown class 'lorry'"));
   CHECK(contains(bad.err, "classes.txt:2: no model named 'nobody'"));

@@ -17,6 +17,8 @@
 #include "cli/report_keys.hpp"
 #include "cli_runner.hpp"
 #include "config/field_table.hpp"
+#include "pipeline/level_json.hpp"
+#include "spinhash/answer_levels.h"
 #include "spinhash/config_fields.h"
 #include "spinhash/limits.hpp"
 #include "spinhash/scene_fields.h"
@@ -206,7 +208,8 @@ TEST_CASE("every key of info and verify --format json is in their output and in 
   const t::TempDir dir("field-mirrors-json");
   const std::string meshes = dir.file("meshes"), db = dir.file("two.shdb");
   REQUIRE(t::run_spinhash(dir, "generate --count 2 -o " + t::shell_quoted(meshes)).exit_code == 0);
-  REQUIRE(t::run_spinhash(dir, "build --quiet -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
+  REQUIRE(t::run_spinhash(
+              dir, "build --quiet --no-calibration -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
               .exit_code == 0);
   write_bytes(dir.file("bad.shdb"), "not a database");
   const std::string docs = read_bytes(SPINHASH_SOURCE_DIR "/docs/cli.md");
@@ -226,7 +229,15 @@ TEST_CASE("every key of info and verify --format json is in their output and in 
                                t::shell_quoted(db) + " " + t::shell_quoted(meshes));
   const t::CliRun corrupt =
       t::run_spinhash(dir, "verify --format json " + t::shell_quoted(dir.file("bad.shdb")));
-  const std::string all = verify.out + noisy.out + corrupt.out;
+  // A calibrated blob's verify re-runs its calibration (calibration_check).
+  const std::string calibrated = dir.file("calibrated.shdb");
+  REQUIRE(t::run_spinhash(dir, "build --quiet --calibration-scans 2 --calibration-left-out-scans 2 -o " +
+                                   t::shell_quoted(calibrated) + " " + t::shell_quoted(meshes))
+              .exit_code == 0);
+  const t::CliRun rerun =
+      t::run_spinhash(dir, "verify --quiet --queries 1 --calibration-left-out 1 --format json " +
+                               t::shell_quoted(calibrated) + " " + t::shell_quoted(meshes));
+  const std::string all = verify.out + noisy.out + corrupt.out + rerun.out;
   for (const char* key : spinhash::cli::verify_keys::kAll) {
     INFO("verify key ", std::string(key));
     CHECK(t::contains(all, "\"" + std::string(key) + "\":"));
@@ -240,7 +251,8 @@ TEST_CASE(
   const t::TempDir dir("field-mirrors-class");
   const std::string meshes = dir.file("meshes"), db = dir.file("two.shdb"), q = dir.file("q.ply");
   REQUIRE(t::run_spinhash(dir, "generate --count 2 -o " + t::shell_quoted(meshes)).exit_code == 0);
-  REQUIRE(t::run_spinhash(dir, "build --quiet -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
+  REQUIRE(t::run_spinhash(
+              dir, "build --quiet --no-calibration -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
               .exit_code == 0);
   REQUIRE(t::run_spinhash(dir, "scan " + t::shell_quoted(meshes + "/van-00.obj") + " --random-pose -o " +
                                    t::shell_quoted(q))
@@ -269,6 +281,18 @@ TEST_CASE(
   }
   SPINHASH_VEHICLE_GROUPS(SPINHASH_GROUP_DOCUMENTED)
 #undef SPINHASH_GROUP_DOCUMENTED
+  for (const char* key : spinhash::pipeline::level_keys::kAll) {
+    INFO("level key ", std::string(key));
+    CHECK(t::contains(rec.out, "\"" + std::string(key) + "\":"));
+    CHECK(t::contains(docs, "`" + std::string(key) + "`"));
+  }
+#define SPINHASH_LEVEL_DOCUMENTED(id, Name, name, help) \
+  {                                                     \
+    INFO("level " name);                                \
+    CHECK(t::contains(docs, "`" name "`"));             \
+  }
+  SPINHASH_ANSWER_LEVELS(SPINHASH_LEVEL_DOCUMENTED)
+#undef SPINHASH_LEVEL_DOCUMENTED
 }
 
 TEST_CASE(
@@ -356,7 +380,8 @@ TEST_CASE("scene's lines carry the object keys of scene_fields.h in order, then 
   const t::TempDir dir("field-mirrors-object-keys");
   const std::string meshes = dir.file("meshes"), db = dir.file("two.shdb"), tile = dir.file("tile.las");
   REQUIRE(t::run_spinhash(dir, "generate --count 2 -o " + t::shell_quoted(meshes)).exit_code == 0);
-  REQUIRE(t::run_spinhash(dir, "build --quiet -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
+  REQUIRE(t::run_spinhash(
+              dir, "build --quiet --no-calibration -o " + t::shell_quoted(db) + " " + t::shell_quoted(meshes))
               .exit_code == 0);
   REQUIRE(t::run_spinhash(dir, "scan " + t::shell_quoted(meshes + "/van-00.obj") + " --ground 12 -o " +
                                    t::shell_quoted(tile))

@@ -114,7 +114,8 @@ struct Survey {
   int across = 0;
   Survey() {
     REQUIRE(run_spinhash(dir, "generate --count 12 -o " + shell_quoted(dir.file("fleet"))).exit_code == 0);
-    REQUIRE(run_spinhash(dir, "build --quiet -o " + shell_quoted(db) + " " + shell_quoted(dir.file("fleet")))
+    REQUIRE(run_spinhash(dir, "build --quiet --no-calibration -o " + shell_quoted(db) + " " +
+                                  shell_quoted(dir.file("fleet")))
                 .exit_code == 0);
     const CliRun s =
         run_spinhash(dir, "scan-scene " + shell_quoted(dir.file("fleet")) + " -o " + shell_quoted(scene) +
@@ -171,7 +172,10 @@ TEST_CASE("survey: the GeoJSON parses as a FeatureCollection, the GeoPackage ope
   const std::string check =
       "python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); "
       "assert d[\"type\"]==\"FeatureCollection\"; assert len(d[\"features\"])==int(sys.argv[2]); "
-      "assert all(len(f[\"geometry\"][\"coordinates\"][0])==5 for f in d[\"features\"])' " +
+      "assert all(len(f[\"geometry\"][\"coordinates\"][0])==5 for f in d[\"features\"]); "
+      "assert all(f[\"properties\"][\"level\"] in (\"none\",\"vehicle\",\"group\",\"class\",\"model\") "
+      "and set(f[\"properties\"][\"levels\"])=={\"vehicle\",\"group\",\"class\",\"model\"} "
+      "for f in d[\"features\"])' " +
       shell_quoted(geo) + " " + std::to_string(n);
   CHECK(std::system(check.c_str()) == 0);
   CHECK(strict_json_lines(s.dir, s.output("full", "detections.jsonl")));
@@ -181,6 +185,12 @@ TEST_CASE("survey: the GeoJSON parses as a FeatureCollection, the GeoPackage ope
     const std::string info = "ogrinfo -so " + shell_quoted(gpkg) +
                              " detections | grep -q 'Feature Count: " + std::to_string(n) + "$'";
     CHECK(std::system(info.c_str()) == 0);
+    // The answer levels: the level a text column, the levels a JSON one.
+    for (const char* column : {"level: String", "levels: String", "group: String"}) {
+      CAPTURE(column);
+      const std::string has = "ogrinfo -so " + shell_quoted(gpkg) + " detections | grep -q '^" + column + "'";
+      CHECK(std::system(has.c_str()) == 0);
+    }
   }
 }
 

@@ -48,7 +48,7 @@ class Fleet:
         self.meshes = root / "fleet"
         self.db = root / "fleet.shdb"
         run_cli("generate", "--count", 6, "-o", self.meshes)
-        run_cli("build", "--quiet", "-o", self.db, self.meshes)
+        run_cli("build", "--quiet", "--no-calibration", "-o", self.db, self.meshes)
 
     def scan(self, model, name, *options):
         """`spinhash scan` of one vehicle into root/name (the extension picks PLY or LAS)."""

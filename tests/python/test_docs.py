@@ -86,7 +86,8 @@ def test_the_settings_table_is_the_config():
 
 def test_the_class_level_is_documented_and_every_class_named():
     """docs/python.md names the class attributes; CLASS_NAMES is vehicle_classes.h's list, in id order."""
-    for attribute in ("vehicle_class", "class_confident", "class_ranking", "CLASS_NAMES"):
+    for attribute in ("vehicle_class", "class_confident", "class_ranking", "group", "group_ranking", "levels",
+                      "level", "CLASS_NAMES"):
         assert f"`{attribute}`" in DOC or f"`spinhash.{attribute}`" in DOC
         if attribute != "CLASS_NAMES":
             assert hasattr(spinhash.Result, attribute) and hasattr(spinhash.SceneObject, attribute)

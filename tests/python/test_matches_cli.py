@@ -27,6 +27,7 @@ def assert_same_answer(result, line):
     assert result.group_size == line["group_size"]
     assert result.group_size >= (1 if result.ranking else 0)
     assert_same_classes(result, line)
+    assert_same_levels(result, line)
     assert_same_stats(result.stats, line["stats"])
 
 
@@ -39,6 +40,24 @@ def assert_same_classes(answer, line):
     for (_, score, _), entry in zip(answer.class_ranking, line["class_ranking"]):
         assert score == pytest.approx(entry["score"], rel=1e-6, abs=1e-9)
     assert all(c in spinhash.CLASS_NAMES for c, _, _ in answer.class_ranking)
+
+
+def assert_same_levels(answer, line):
+    """The answer levels: the CLI's group, group_ranking, levels and level."""
+    assert answer.group == line["group"]
+    assert [(g, m) for g, _, m in answer.group_ranking] == \
+        [(entry["group"], entry["model"]) for entry in line["group_ranking"]]
+    assert list(answer.levels) == list(line["levels"]) == ["vehicle", "group", "class", "model"]
+    for name, level in answer.levels.items():
+        assert level["confident"] == line["levels"][name]["confident"]
+        if line["levels"][name]["evidence"] is None:
+            assert level["evidence"] is None
+        else:
+            assert level["evidence"] == pytest.approx(line["levels"][name]["evidence"], rel=1e-5, abs=1e-6)
+    assert answer.levels["model"]["confident"] == answer.confident
+    assert answer.levels["class"]["confident"] == answer.class_confident
+    assert answer.level == line["level"]
+    assert answer.level in ("none", "vehicle", "group", "class", "model")
 
 
 @pytest.mark.parametrize("mode", ["bran", "sran", "sind"])
@@ -96,4 +115,4 @@ def test_database_describes_itself_as_info_does(fleet):
     assert f"{db.info['bins_alpha']}x{db.info['bins_beta']} bins" in text
     field = f"nearest field {db.info['field_cell']:g} m voxels, reach {db.info['field_reach']:g} m, "
     assert field + f"{db.info['field_slots']} slots, {db.info['field_entry_count']} entries" in text
-    assert db.info["format_version"] == 4 and db.info["field_entry_count"] > 0
+    assert db.info["format_version"] == 5 and db.info["field_entry_count"] > 0

@@ -41,6 +41,11 @@ def test_the_scene_matches_the_cli(fleet, tile):
         assert (obj.vehicle_class, obj.class_confident) == (line["class"], line["class_confident"])
         assert [(c, m) for c, _, m in obj.class_ranking] == \
             [(entry["class"], entry["model"]) for entry in line["class_ranking"]]
+        assert (obj.group, obj.level) == (line["group"], line["level"])
+        assert {name: level["confident"] for name, level in obj.levels.items()} == \
+            {name: level["confident"] for name, level in line["levels"].items()}
+        assert obj.levels["model"]["confident"] == obj.confident
+        assert obj.levels["class"]["confident"] == obj.class_confident
         assert [name for name, _ in obj.ranking] == [entry["model"] for entry in line["ranking"]]
         for (_, score), entry in zip(obj.ranking, line["ranking"]):
             assert score == pytest.approx(entry["score"], rel=1e-6)

@@ -1,0 +1,209 @@
+#include "recognize/level_evidence.hpp"
+
+#include <cmath>
+
+#include "recognize/classes.hpp"
+#include "recognize/rank_by_first.hpp"
+#include "recognize/residual_structure.hpp"
+#include "spinhash/vehicle_class.hpp"
+
+namespace spinhash {
+namespace {
+
+// The settings with no margin: what is_confident() and
+// is_class_confident() then test are the prerequisites alone.
+RecognizerConfig without_margin(const RecognizerConfig& cfg) {
+  RecognizerConfig c = cfg;
+  c.confidence.min_margin = 0.0f;
+  return c;
+}
+
+// confident_margin()'s factors but density: the margin of a unit min_margin
+// for a scan whose density is not measured.
+float shape_factor(const Result& r, const RecognizerConfig& cfg) {
+  Result unit = r;
+  unit.stats.confidence.scan_density = 0.0f;
+  RecognizerConfig c = cfg;
+  c.confidence.min_margin = 1.0f;
+  return confident_margin(unit, c);
+}
+
+uint32_t group_of_class(uint32_t vehicle_class) {
+  return static_cast<uint32_t>(vehicle_group_of(vehicle_class));
+}
+
+float lead_per_feature(float first, float second, uint32_t features) {
+  return (first - second) / std::sqrt(static_cast<float>(features));
+}
+
+float span(float lo, float hi) { return hi > lo ? hi - lo : 0.0f; }
+
+}  // namespace
+
+float model_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
+                     float residual_f) {
+  if (features == 0u || !is_confident(r, without_margin(cfg), features, fit, residual_f)) return kNoEvidence;
+  if (r.ranking_count < 2u) return kUnopposed;
+  const float shape = shape_factor(r, cfg);
+  if (!(shape > 0.0f)) return kNoEvidence;
+  return lead_per_feature(r.ranking[0].score, r.ranking[1].score, features) / shape;
+}
+
+float class_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
+                     float density, bool within_envelope) {
+  if (features == 0u || !within_envelope ||
+      !is_class_confident(r, without_margin(cfg), features, fit, density))
+    return kNoEvidence;
+  return lead_per_feature(r.class_ranking[0].score, r.class_ranking[1].score, features);
+}
+
+uint32_t rank_groups(const Database& db, const Result& r, RankedGroup* out) {
+  const auto group_of = [&db](uint32_t model) { return group_of_class(db.model(model).vehicle_class); };
+  return rank_by_first_model(r, group_of, &RankedGroup::group, kVehicleGroupCount, out);
+}
+
+ClassEnvelope group_envelope(const Database& db, uint32_t group) {
+  ClassEnvelope e;
+  for (uint32_t c = 0; c < kVehicleClassCount; ++c) {
+    if (group_of_class(c) != group) continue;
+    const ClassEnvelope k = class_envelope(db, c);
+    if (k.members == 0u) continue;
+    if (e.members == 0u) {
+      e = k;
+      continue;
+    }
+    e.length_max = k.length_max > e.length_max ? k.length_max : e.length_max;
+    e.width_max = k.width_max > e.width_max ? k.width_max : e.width_max;
+    e.height_min = k.height_min < e.height_min ? k.height_min : e.height_min;
+    e.height_max = k.height_max > e.height_max ? k.height_max : e.height_max;
+    e.members += k.members;
+  }
+  return e;
+}
+
+float group_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
+                     float density, bool within_envelope) {
+  if (features == 0u || !within_envelope || r.group_ranking_count == 0u) return kNoEvidence;
+  if (r.group_ranking[0].group == static_cast<uint32_t>(VehicleGroup::kNone)) return kNoEvidence;
+  if (!is_class_confident(r, without_margin(cfg), features, fit, density)) return kNoEvidence;
+  if (r.group_ranking_count < 2u) return kUnopposed;
+  return lead_per_feature(r.group_ranking[0].score, r.group_ranking[1].score, features);
+}
+
+float vehicle_evidence(const Result& r, uint32_t features, const ExtentFit& fit,
+                       const blob::ModelRecord& model) {
+  if (features == 0u || r.ranking_count == 0u || !r.ranking[0].has_pose) return kNoEvidence;
+  const float top = span(model.bbox_min[0], model.bbox_max[0]) * span(model.bbox_min[1], model.bbox_max[1]);
+  if (!(top > 0.0f) || !(fit.seen_area > 0.0f)) return kNoEvidence;
+  const float seen = fit.seen_area < top ? fit.seen_area / top : 1.0f;
+  return r.ranking[0].score / static_cast<float>(features) + std::log(seen);
+}
+
+bool prior_confident(AnswerLevel level, float evidence, float density, const RecognizerConfig& cfg) {
+  const ConfidenceParams& c = cfg.confidence;
+  switch (level) {
+    case AnswerLevel::kModel: {
+      if (!dense_enough_for_model(cfg, density)) return false;
+      const float sparse =
+          density > 0.0f && density < c.full_model_density ? std::sqrt(c.full_model_density / density) : 1.0f;
+      return evidence >= c.min_margin * sparse;
+    }
+    case AnswerLevel::kClass:
+    case AnswerLevel::kGroup: return evidence >= c.min_margin;
+    case AnswerLevel::kVehicle: return evidence >= c.min_mean_log_likelihood;
+    default: return false;
+  }
+}
+
+bool level_confident(const Database& db, AnswerPass pass, AnswerLevel level, float evidence, float density,
+                     const RecognizerConfig& cfg) {
+  const Calibration& c = db.calibration();
+  return c.fitted(pass) ? c.confident(pass, level, evidence, density)
+                        : prior_confident(level, evidence, density, cfg);
+}
+
+AnswerLevel answer_level(const Database& db, const LevelAnswer* levels, const AnswerLeaders& first) {
+  const auto confident = [levels](AnswerLevel l) { return levels[level_index(l)].confident; };
+  if (!confident(AnswerLevel::kVehicle)) return AnswerLevel::kNone;
+  if (!confident(AnswerLevel::kGroup) || first.group == nullptr) return AnswerLevel::kVehicle;
+  if (!confident(AnswerLevel::kClass) || first.vehicle_class == nullptr ||
+      group_of_class(first.vehicle_class->vehicle_class) != first.group->group)
+    return AnswerLevel::kGroup;
+  if (!confident(AnswerLevel::kModel) || first.model == nullptr ||
+      db.model(first.model->model).vehicle_class != first.vehicle_class->vehicle_class)
+    return AnswerLevel::kClass;
+  return AnswerLevel::kModel;
+}
+
+AnswerLevel answer_level(const Database& db, const Result& r) {
+  AnswerLeaders first;
+  first.model = r.ranking_count > 0u ? r.ranking : nullptr;
+  first.vehicle_class = r.class_ranking_count > 0u ? r.class_ranking : nullptr;
+  first.group = r.group_ranking_count > 0u ? r.group_ranking : nullptr;
+  return answer_level(db, r.levels, first);
+}
+
+void assess_model_level(const SearchContext& ctx, const ExtentFit& fit, AnswerPass pass) {
+  Result& r = ctx.result;
+  LevelAnswer& model = r.levels[level_index(AnswerLevel::kModel)];
+  model = LevelAnswer{};
+  const uint32_t n = ctx.query.count;
+  if (r.ranking_count > 0u && r.ranking[0].has_pose) {
+    model.evidence =
+        model_evidence(r, ctx.params, n, fit, 0.0f);  // the residuals only for what passes the rest
+    if (model.evidence > kNoEvidence) {
+      const uint32_t first = r.ranking[0].model;
+      model.evidence =
+          model_evidence(r, ctx.params, n, fit, residual_structure(ctx, first, ctx.buf.best[first].pose));
+    }
+  }
+  model.confident = level_confident(ctx.db, pass, AnswerLevel::kModel, model.evidence,
+                                    r.stats.confidence.scan_density, ctx.params);
+  r.confident = model.confident;
+}
+
+void assess_coarse_levels(const SearchContext& ctx, AnswerPass pass) {
+  Result& r = ctx.result;
+  const Database& db = ctx.db;
+  const RecognizerConfig& cfg = ctx.params;
+  const FeatureSet& fs = ctx.features;
+  const uint32_t n = ctx.query.count;
+  r.group_ranking = ctx.buf.groups;
+  r.group_ranking_count = rank_groups(db, r, ctx.buf.groups);
+  LevelAnswer& vehicle = r.levels[level_index(AnswerLevel::kVehicle)];
+  LevelAnswer& group = r.levels[level_index(AnswerLevel::kGroup)];
+  LevelAnswer& vclass = r.levels[level_index(AnswerLevel::kClass)];
+  vehicle = group = vclass = LevelAnswer{};
+  if (r.ranking_count > 0u && r.ranking[0].has_pose) {
+    const uint32_t first = r.ranking[0].model;
+    const ExtentFit fit = extent_fit(ctx.query, db.model(first), ctx.buf.best[first].pose,
+                                     hidden_ends(db, first, fs.ground_band));
+    vehicle.evidence = vehicle_evidence(r, n, fit, db.model(first));
+  }
+  if (r.class_ranking_count > 0u && r.ranking[r.class_ranking[0].best_rank].has_pose) {
+    const RankedClass& first = r.class_ranking[0];
+    const uint32_t leader = r.ranking[first.best_rank].model;
+    const RigidPose& pose = ctx.buf.best[leader].pose;
+    const ExtentFit fit =
+        extent_fit(ctx.query, db.model(leader), pose, hidden_ends(db, leader, fs.ground_band));
+    const float density = scan_density(r.stats, fit);
+    const ScanShape shape = measure_scan(ctx.query, db.model(leader), pose, fs.top_above_terrain,
+                                         fs.terrain_sigma, cfg.refine.sigma_surface, density);
+    const float ends = cfg.confidence.max_extent_overhang;
+    vclass.evidence =
+        class_evidence(r, cfg, n, fit, density,
+                       within_envelope(shape, class_envelope(db, first.vehicle_class), ends, cfg.classes));
+    if (r.group_ranking_count > 0u)
+      group.evidence = group_evidence(
+          r, cfg, n, fit, density,
+          within_envelope(shape, group_envelope(db, r.group_ranking[0].group), ends, cfg.classes));
+  }
+  const float density = r.stats.confidence.scan_density;
+  vehicle.confident = level_confident(db, pass, AnswerLevel::kVehicle, vehicle.evidence, density, cfg);
+  group.confident = level_confident(db, pass, AnswerLevel::kGroup, group.evidence, density, cfg);
+  vclass.confident = level_confident(db, pass, AnswerLevel::kClass, vclass.evidence, density, cfg);
+  r.class_confident = vclass.confident;
+  r.level = answer_level(db, r);
+}
+
+}  // namespace spinhash

@@ -1,0 +1,70 @@
+// spinhash build's calibration end to end on a small generated fleet: the
+// blob holds a fitted table that info prints for every level and band, the
+// same whatever the thread count, and verify re-runs it.
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <string>
+
+#include "cli_runner.hpp"
+#include "spinhash/calibration.hpp"
+
+using namespace spinhash::host::test;
+
+namespace {
+
+// Few runs: every band of this fleet is too small for a 0.99 target, which
+// is what info must then say.
+const char* kSmall =
+    "--quiet --calibration-scans 3 --calibration-left-out-scans 3 --calibration-max-left-out 3 "
+    "--calibration-seed 5 ";
+
+}  // namespace
+
+TEST_CASE("build calibrates every level; info prints each band; the blob does not depend on the threads") {
+  const TempDir dir("calibration-build");
+  const std::string meshes = dir.file("fleet"), one = dir.file("one.shdb"), two = dir.file("two.shdb");
+  REQUIRE(run_spinhash(dir, "generate --count 4 -o " + shell_quoted(meshes)).exit_code == 0);
+  const CliRun a = run_spinhash(
+      dir, std::string("build ") + kSmall + "--jobs 1 -o " + shell_quoted(one) + " " + shell_quoted(meshes));
+  INFO(a.err);
+  REQUIRE(a.exit_code == 0);
+  CHECK(contains(a.err, "calibrated on"));
+  const CliRun b = run_spinhash(
+      dir, std::string("build ") + kSmall + "--jobs 2 -o " + shell_quoted(two) + " " + shell_quoted(meshes));
+  REQUIRE(b.exit_code == 0);
+  CHECK(read_bytes(one) == read_bytes(two));
+
+  const CliRun info = run_spinhash(dir, "info " + shell_quoted(one));
+  REQUIRE(info.exit_code == 0);
+  CHECK(contains(info.out, "calibration   target precision 0.99: 3 scans per model, 3 models left out"));
+  for (uint32_t l = 1; l <= spinhash::kCalibratedLevels; ++l)
+    for (const char* band : {"0-15", "15-30", "30-60", "60-120", "120-240", "240+"}) {
+      char row[64];
+      std::snprintf(row, sizeof row, "  %-6s %-8s %-12s", "full", spinhash::answer_level_name(l), band);
+      CAPTURE(row);
+      CHECK(contains(info.out, row));
+    }
+  CHECK(contains(info.out, "never: too few runs"));
+
+  const CliRun json = run_spinhash(dir, "info --format json " + shell_quoted(one));
+  REQUIRE(json.exit_code == 0);
+  CHECK(contains(json.out, "\"source\":\"fitted\""));
+  CHECK(contains(json.out, "\"bands\":[0,15,30,60,120,240]"));
+  for (uint32_t l = 1; l <= spinhash::kCalibratedLevels; ++l)
+    CHECK(
+        contains(json.out, std::string("{\"level\":\"") + spinhash::answer_level_name(l) + "\",\"cells\":["));
+
+  // A blob built without calibration says so; verify re-runs a fitted one.
+  const std::string bare = dir.file("bare.shdb");
+  REQUIRE(run_spinhash(dir,
+                       "build --quiet --no-calibration -o " + shell_quoted(bare) + " " + shell_quoted(meshes))
+              .exit_code == 0);
+  CHECK(contains(run_spinhash(dir, "info " + shell_quoted(bare)).out, "calibration   none"));
+  const CliRun verify =
+      run_spinhash(dir, "verify --quiet --queries 1 --calibration-left-out 2 --format json " +
+                            shell_quoted(one) + " " + shell_quoted(meshes));
+  INFO(verify.err);
+  CHECK(contains(verify.out, "\"calibration\":\"fitted\""));
+  CHECK(contains(verify.out, "{\"level\":\"model\",\"flagged\":"));
+}
