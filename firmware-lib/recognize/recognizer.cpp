@@ -8,6 +8,9 @@
 // starting from the first pass's leading poses (carry.hpp). The first
 // pass's spin images overwrite its loaded points, so the full pass loads
 // the cloud again; its features are its own (another voxel, more of them).
+// Each pass's flags are decided by its own calibrated table (the first
+// pass's answers stop the query only when confident by the first pass's
+// table, or by its priors in a database without one).
 #include <new>
 
 #include "recognize/carry.hpp"
@@ -122,12 +125,13 @@ namespace {
 // the instruction scripts toggle callgrind on Recognizer::run*, and a
 // nested match would toggle it off.
 void recognize_pass(const Database& db, RecognizerBuffers& b, size_t used_bytes, const CloudView& cloud,
-                    const ObjectTerrain& terrain, const RecognizerConfig& pass, uint64_t work_before,
-                    Result* result) {
+                    const ObjectTerrain& terrain, const RecognizerConfig& pass, AnswerPass answer_pass,
+                    uint64_t work_before, Result* result) {
   result->stats.workspace_used = used_bytes;
   SearchContext ctx(db, pass, b, *result);
   ctx.terrain = terrain;
   ctx.work_before = work_before;
+  ctx.answer_pass = answer_pass;
   result->status = b.extractor.load(cloud, &ctx.features, &result->stats.extract);
   if (result->status == Status::kOk) result->status = run_stages(ctx);
   CascadeStats& c = result->stats.cascade;
@@ -153,7 +157,7 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
   b.carried_count = 0;
   uint64_t first_work = 0;
   if (config_.cascade) {
-    recognize_pass(*db_, b, used_bytes_, cloud, terrain, b.first_pass, 0, &result);
+    recognize_pass(*db_, b, used_bytes_, cloud, terrain, b.first_pass, AnswerPass::kFirst, 0, &result);
     first_work = result.stats.cascade.work;
     const bool answered =
         (result.status == Status::kOk && result.confident) || result.status == Status::kWorkCapReached;
@@ -165,7 +169,8 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
     }
     result = Result{};
   }
-  recognize_pass(*db_, b, used_bytes_, cloud, terrain, config_, first_work, &result);
+  recognize_pass(*db_, b, used_bytes_, cloud, terrain, config_, calibration_pass(config_), first_work,
+                 &result);
   CascadeStats& c = result.stats.cascade;
   c.passes = config_.cascade ? 2u : 1u;
   c.answered_by = 1;

@@ -91,6 +91,8 @@ struct SearchContext {
   EvidenceState evidence;
   uint32_t trial_scale = 1;  // BRAN's draws' budget x this (a sparse scan's; candidates.cpp)
   uint64_t work_before = 0;  // work units the cascade's earlier passes spent (work_meter.hpp)
+  // Whose calibrated thresholds decide this pass's flags (level_evidence.hpp).
+  AnswerPass answer_pass = AnswerPass::kFull;
 
   SearchContext(const Database& database, const RecognizerConfig& pass, RecognizerBuffers& buffers,
                 Result& answer);

@@ -5,7 +5,9 @@
 // built without them (unknown: leave-one-model-out, derived from the full
 // content, db/leave_one_out.hpp); and scans of clutter. Every recognition
 // records its density and each level's evidence and rightness
-// (db/calibration_fit.hpp). On all threads, the runs in a fixed order
+// (db/calibration_fit.hpp), once for each calibrated pass: the full pass
+// (the recognizer's settings, the cascade off) and the cascade's first pass
+// (its first_* settings) recognise every scan. On all threads, the runs in a fixed order
 // whatever their number.
 #pragma once
 #include <cstdint>
@@ -32,7 +34,7 @@ struct RunSettings {
   uint32_t clutter_scans = 0;   // 0: default_clutter_scans()
   uint64_t seed = 1;            // of every draw
   uint32_t jobs = 0;            // threads; 0: every hardware thread
-  RecognizerConfig recognizer;  // the full pass's settings
+  RecognizerConfig recognizer;  // the passes' settings: the full pass's, and first_* the first pass's
   bool quiet = false;           // no progress on stderr
 };
 

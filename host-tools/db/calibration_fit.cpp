@@ -201,15 +201,24 @@ bool fit_calibration(const std::vector<CalibrationRun>& runs, const FitOptions& 
   if (!check_options(options, error)) return false;
   const uint32_t min_runs =
       options.min_band_runs > 0u ? options.min_band_runs : default_min_band_runs(options.target_precision);
-  uint64_t known = 0, unknown = 0;
+  // The runs of each pass; the passes fitted: the full pass and every later
+  // pass up to the last with runs (a pass between without runs keeps its
+  // priors: its record says so and its cells are empty).
+  std::vector<std::vector<CalibrationRun>> by_pass(kAnswerPassCount);
   for (const CalibrationRun& r : runs) {
-    known += r.kind == RunKind::kKnown ? 1u : 0u;
-    unknown += r.kind == RunKind::kUnknown ? 1u : 0u;
+    const uint32_t p = static_cast<uint32_t>(r.pass);
+    if (p >= kAnswerPassCount) {
+      *error = "calibration run of an unknown pass";
+      return false;
+    }
+    by_pass[p].push_back(r);
   }
-  const double unknown_weight = unknown > 0u && known > 0u ? static_cast<double>(known) / unknown : 1.0;
+  uint32_t pass_count = 1;  // the full pass's table, fitted even from no runs (never confident)
+  for (uint32_t p = 1; p < kAnswerPassCount; ++p)
+    if (!by_pass[p].empty()) pass_count = p + 1u;
   const uint32_t bands = static_cast<uint32_t>(options.band_edges.size());
   CalibrationContent c;
-  c.header.pass_count = 1;
+  c.header.pass_count = pass_count;
   c.header.level_count = kCalibratedLevels;
   c.header.band_count = bands;
   c.header.target_precision = options.target_precision;
@@ -219,14 +228,29 @@ bool fit_calibration(const std::vector<CalibrationRun>& runs, const FitOptions& 
   c.header.clutter_scans = provenance.clutter_scans;
   c.header.scans_per_left_out = provenance.scans_per_left_out;
   c.header.seed = provenance.seed;
-  c.passes.push_back(blob::CalibrationPass{static_cast<uint32_t>(AnswerPass::kFull), blob::kSourceFitted,
-                                           static_cast<uint32_t>(runs.size()), 0u});
-  for (uint32_t l = 0; l < kCalibratedLevels; ++l) {
-    LevelFitter fitter(runs, options.band_edges, static_cast<AnswerLevel>(l + 1u), unknown_weight,
-                       options.target_precision, min_runs);
-    for (const Block& block : fitter.fit())
-      for (uint32_t b = block.first; b <= block.last; ++b)
-        c.cells.push_back(make_cell(fitter.samples(b, b), block.fit));
+  for (uint32_t p = 0; p < pass_count; ++p) {
+    const std::vector<CalibrationRun>& pass_runs = by_pass[p];
+    if (pass_runs.empty() && p != static_cast<uint32_t>(AnswerPass::kFull)) {
+      c.passes.push_back(blob::CalibrationPass{p, blob::kSourcePriors, 0u, 0u});
+      c.cells.resize(c.cells.size() + static_cast<size_t>(kCalibratedLevels) * bands,
+                     blob::CalibrationCell{});
+      continue;
+    }
+    uint64_t known = 0, unknown = 0;
+    for (const CalibrationRun& r : pass_runs) {
+      known += r.kind == RunKind::kKnown ? 1u : 0u;
+      unknown += r.kind == RunKind::kUnknown ? 1u : 0u;
+    }
+    const double unknown_weight = unknown > 0u && known > 0u ? static_cast<double>(known) / unknown : 1.0;
+    c.passes.push_back(
+        blob::CalibrationPass{p, blob::kSourceFitted, static_cast<uint32_t>(pass_runs.size()), 0u});
+    for (uint32_t l = 0; l < kCalibratedLevels; ++l) {
+      LevelFitter fitter(pass_runs, options.band_edges, static_cast<AnswerLevel>(l + 1u), unknown_weight,
+                         options.target_precision, min_runs);
+      for (const Block& block : fitter.fit())
+        for (uint32_t b = block.first; b <= block.last; ++b)
+          c.cells.push_back(make_cell(fitter.samples(b, b), block.fit));
+    }
   }
   *out = std::move(c);
   return true;

@@ -35,6 +35,7 @@ enum class RunKind : uint8_t {
 };
 
 struct CalibrationRun {
+  AnswerPass pass = AnswerPass::kFull;  // the pass whose answer this is
   RunKind kind = RunKind::kKnown;
   float density = 0.0f;                    // RecognitionStats::scan_density
   float evidence[kCalibratedLevels] = {};  // Result::levels[l].evidence
@@ -57,7 +58,10 @@ struct FitProvenance {
   uint64_t seed = 0;
 };
 
-// A section with one fitted pass (full); false with *error for bad options.
+// A section with a fitted table for the full pass and every other pass the
+// runs hold (in id order, each fitted from its own runs alone; a pass
+// before the last without runs is left to its priors); false with *error
+// for bad options or a run of an unknown pass.
 bool fit_calibration(const std::vector<CalibrationRun>& runs, const FitOptions& options,
                      const FitProvenance& provenance, CalibrationContent* out, std::string* error);
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "spinhash/calibration.hpp"
 #include "spinhash/config.hpp"
 
 namespace spinhash {
@@ -30,6 +31,23 @@ inline void apply_first_pass(const RecognizerConfig& c, RecognizerConfig* pass) 
   pass->draws.verify_features = c.first_verify_features;
   pass->draws.max_trials = c.first_trials;
   pass->confidence.min_margin = c.first_min_margin;
+}
+
+// The calibrated table that decides a one-pass run's flags: the first
+// pass's when the config runs its own first pass's settings (the flight
+// preset), else the full pass's. The cascade's first pass is always the
+// first pass's.
+inline AnswerPass calibration_pass(const RecognizerConfig& c) {
+  RecognizerConfig first;
+  apply_first_pass(c, &first);
+  const bool same = !c.cascade && c.extract.query_cloud_voxel == first.extract.query_cloud_voxel &&
+                    c.max_features == first.max_features &&
+                    c.candidates.max_bucket_scan == first.candidates.max_bucket_scan &&
+                    c.candidates.top_w == first.candidates.top_w &&
+                    c.draws.verify_features == first.draws.verify_features &&
+                    c.draws.max_trials == first.draws.max_trials &&
+                    c.confidence.min_margin == first.confidence.min_margin;
+  return same ? AnswerPass::kFirst : AnswerPass::kFull;
 }
 
 // Sets the fields a preset names; every other field keeps its value.

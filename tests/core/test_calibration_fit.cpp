@@ -239,6 +239,56 @@ TEST_CASE("the fit does not depend on the runs' order, and its section opens") {
   CHECK(db.calibration().band_count() == o.band_edges.size());
 }
 
+TEST_CASE("each pass's table is fitted from its own runs alone") {
+  // The full pass separates at 2, the first pass only at 6: the same scans
+  // answered with less evidence.
+  std::vector<host::CalibrationRun> runs;
+  for (int e = 1; e <= 20; ++e) {
+    host::CalibrationRun full = run(host::RunKind::kKnown, 100.0f, static_cast<float>(e), e >= 2);
+    host::CalibrationRun first = run(host::RunKind::kKnown, 100.0f, static_cast<float>(e), e >= 6);
+    first.pass = AnswerPass::kFirst;
+    runs.push_back(full);
+    runs.push_back(first);
+  }
+  const host::CalibrationContent c = fit(runs, options({0.0f}, 0.99f, 5));
+  REQUIRE(c.passes.size() == 2u);
+  CHECK(c.header.pass_count == 2u);
+  CHECK(c.passes[0].pass == static_cast<uint32_t>(AnswerPass::kFull));
+  CHECK(c.passes[1].pass == static_cast<uint32_t>(AnswerPass::kFirst));
+  CHECK(c.passes[0].runs == 20u);
+  CHECK(c.passes[1].runs == 20u);
+  REQUIRE(c.cells.size() == 2u * kCalibratedLevels);
+  CHECK(cell(c, AnswerLevel::kModel, 0).threshold == 2.0f);
+  CHECK(c.cells[kCalibratedLevels + level_index(AnswerLevel::kModel)].threshold == 6.0f);
+  host::BlobContent content = host::make_tiny_blob_content(3, 20, 5);
+  content.calibration = c;
+  const std::vector<uint8_t> bytes = spinhash::test::write_native(content);
+  REQUIRE_FALSE(bytes.empty());
+  spinhash::test::BlobPatch patch(bytes);
+  Database db;
+  REQUIRE(patch.open(&db) == Status::kOk);
+  CHECK(db.calibration().fitted(AnswerPass::kFirst));
+  CHECK(db.calibration().confident(AnswerPass::kFull, AnswerLevel::kModel, 3.0f, 100.0f));
+  CHECK_FALSE(db.calibration().confident(AnswerPass::kFirst, AnswerLevel::kModel, 3.0f, 100.0f));
+  CHECK(db.calibration().confident(AnswerPass::kFirst, AnswerLevel::kModel, 6.0f, 100.0f));
+}
+
+TEST_CASE("a section of the full pass alone leaves the first pass to its priors") {
+  std::vector<host::CalibrationRun> runs;
+  for (int e = 1; e <= 20; ++e)
+    runs.push_back(run(host::RunKind::kKnown, 100.0f, static_cast<float>(e), true));
+  const host::CalibrationContent c = fit(runs, options({0.0f}, 0.9f, 5));
+  REQUIRE(c.passes.size() == 1u);
+  host::BlobContent content = host::make_tiny_blob_content(3, 20, 5);
+  content.calibration = c;
+  const std::vector<uint8_t> bytes = spinhash::test::write_native(content);
+  spinhash::test::BlobPatch patch(bytes);
+  Database db;
+  REQUIRE(patch.open(&db) == Status::kOk);
+  CHECK(db.calibration().fitted(AnswerPass::kFull));
+  CHECK_FALSE(db.calibration().fitted(AnswerPass::kFirst));
+}
+
 TEST_CASE("bad fit options are refused with a reason") {
   host::CalibrationContent c;
   std::string error;

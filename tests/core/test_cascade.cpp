@@ -1,12 +1,15 @@
 // The cascade (RecognizerConfig::cascade, recognizer.cpp): a clear view is
 // answered by the first pass alone; an unsure one goes on to the full pass,
 // which is the full preset's own pass plus the first pass's carried poses;
-// the work cap stops a query with its best answer so far.
+// the work cap stops a query with its best answer so far; the first pass's
+// answer ends the query when its own calibrated table flags it.
 #include <doctest/doctest.h>
 
+#include <string>
 #include <vector>
 
 #include "blob/aligned_bytes.hpp"
+#include "blob/blob_writer.hpp"
 #include "recognize/work_meter.hpp"
 #include "spinhash/presets.hpp"
 #include "spinhash/recognizer.hpp"
@@ -156,4 +159,82 @@ TEST_CASE("cascade: the work cap ends a query with its best answer so far, never
   CHECK(first.result.stats.cascade.passes == 1u);
   CHECK(first.result.stats.cascade.answered_by == 0u);
   CHECK(first.result.ranking_count == 0u);
+}
+
+namespace {
+
+// A calibrated cell that flags every evidence (`always`), or one that
+// flags none.
+blob::CalibrationCell calibrated_cell(bool always) {
+  blob::CalibrationCell c{};
+  if (!always) {
+    c.state = blob::kCellUnreachable;
+    return c;
+  }
+  c.state = blob::kCellFitted;
+  c.threshold = -1e30f;  // below every finite evidence
+  c.precision = 1.0f;
+  c.recall = 1.0f;
+  c.positives = 1u;
+  c.flagged = 1u;
+  return c;
+}
+
+// The toy database with a calibration of both passes, one density band:
+// the full pass's table flags every level's evidence; the first pass's
+// flags every one (`first_flags`) or none.
+bool make_calibrated_toy(test::ToyDatabase* out, bool first_flags) {
+  host::BlobContent content;
+  host::BuildReport report;
+  std::string error;
+  if (!host::build_database(test::toy_clouds(), host::BuildOptions(), &content, &report, &error))
+    return false;
+  host::CalibrationContent& c = content.calibration;
+  c = host::CalibrationContent{};
+  c.header.pass_count = kAnswerPassCount;
+  c.header.level_count = kCalibratedLevels;
+  c.header.band_count = 1;
+  c.header.target_precision = 0.99f;
+  c.header.scans_per_model = 1;
+  for (uint32_t p = 0; p < kAnswerPassCount; ++p) {
+    c.passes.push_back(blob::CalibrationPass{p, blob::kSourceFitted, 1u, 0u});
+    const bool flags = p == static_cast<uint32_t>(AnswerPass::kFirst) ? first_flags : true;
+    for (uint32_t l = 0; l < kCalibratedLevels; ++l) c.cells.push_back(calibrated_cell(flags));
+  }
+  std::vector<uint8_t> bytes;
+  if (!host::serialize_blob(content, host::ByteOrder::kNative, &bytes, &error)) return false;
+  out->bytes = host::AlignedBytes::copy_of(bytes);
+  return Database::open(out->bytes.data(), out->bytes.size(), &out->db) == Status::kOk;
+}
+
+}  // namespace
+
+TEST_CASE("cascade: the first pass stops the query only when confident by the first pass's own table") {
+  const uint32_t m = 1;  // the clear view the priors answer in the first pass
+  test::ToyDatabase never_first, always_first;
+  REQUIRE(make_calibrated_toy(&never_first, false));
+  REQUIRE(make_calibrated_toy(&always_first, true));
+  REQUIRE(never_first.db.calibration().fitted(AnswerPass::kFirst));
+
+  // The first pass's table flags nothing: the query goes on to the full
+  // pass, whose own table flags its answer.
+  const Run escalated = recognize_toy(never_first, RecognizerConfig{}, m, true);
+  REQUIRE(escalated.result.status == Status::kOk);
+  CHECK(escalated.result.stats.cascade.passes == 2u);
+  CHECK(escalated.result.stats.cascade.answered_by == 1u);
+  CHECK(escalated.result.confident);
+
+  // The first pass's table flags its answer: the query ends there.
+  const Run stopped = recognize_toy(always_first, RecognizerConfig{}, m, true);
+  REQUIRE(stopped.result.status == Status::kOk);
+  CHECK(stopped.result.stats.cascade.passes == 1u);
+  CHECK(stopped.result.stats.cascade.answered_by == 0u);
+  CHECK(stopped.result.confident);
+
+  // The flight preset runs the first pass's settings alone, and its flags
+  // are the first pass's table's; the full preset's the full pass's.
+  CHECK(calibration_pass(preset_config(Preset::kFlight)) == AnswerPass::kFirst);
+  CHECK(calibration_pass(preset_config(Preset::kFull)) == AnswerPass::kFull);
+  CHECK_FALSE(recognize_toy(never_first, preset_config(Preset::kFlight), m, true).result.confident);
+  CHECK(recognize_toy(never_first, preset_config(Preset::kFull), m, true).result.confident);
 }
