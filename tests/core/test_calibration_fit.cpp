@@ -56,6 +56,15 @@ const blob::CalibrationCell& cell(const host::CalibrationContent& c, AnswerLevel
   return c.cells[level_index(level) * c.header.band_count + band];
 }
 
+// A tiny database's blob (native byte order) with the section `c`.
+std::vector<uint8_t> tiny_blob_with(const host::CalibrationContent& c) {
+  host::BlobContent content = host::make_tiny_blob_content(3, 20, 5);
+  content.calibration = c;
+  std::vector<uint8_t> bytes = spinhash::test::write_native(content);
+  REQUIRE_FALSE(bytes.empty());
+  return bytes;
+}
+
 }  // namespace
 
 TEST_CASE("the threshold is the smallest evidence whose flagged runs are right with the target precision") {
@@ -228,11 +237,7 @@ TEST_CASE("the fit does not depend on the runs' order, and its section opens") {
   const host::CalibrationContent b = fit(runs, o);
   REQUIRE(a.cells.size() == b.cells.size());
   CHECK(std::memcmp(a.cells.data(), b.cells.data(), a.cells.size() * sizeof(blob::CalibrationCell)) == 0);
-  host::BlobContent content = host::make_tiny_blob_content(3, 20, 5);
-  content.calibration = a;
-  const std::vector<uint8_t> bytes = spinhash::test::write_native(content);
-  REQUIRE_FALSE(bytes.empty());
-  spinhash::test::BlobPatch patch(bytes);
+  spinhash::test::BlobPatch patch(tiny_blob_with(a));
   Database db;
   REQUIRE(patch.open(&db) == Status::kOk);
   CHECK(db.calibration().fitted(AnswerPass::kFull));
@@ -260,11 +265,7 @@ TEST_CASE("each pass's table is fitted from its own runs alone") {
   REQUIRE(c.cells.size() == 2u * kCalibratedLevels);
   CHECK(cell(c, AnswerLevel::kModel, 0).threshold == 2.0f);
   CHECK(c.cells[kCalibratedLevels + level_index(AnswerLevel::kModel)].threshold == 6.0f);
-  host::BlobContent content = host::make_tiny_blob_content(3, 20, 5);
-  content.calibration = c;
-  const std::vector<uint8_t> bytes = spinhash::test::write_native(content);
-  REQUIRE_FALSE(bytes.empty());
-  spinhash::test::BlobPatch patch(bytes);
+  spinhash::test::BlobPatch patch(tiny_blob_with(c));
   Database db;
   REQUIRE(patch.open(&db) == Status::kOk);
   CHECK(db.calibration().fitted(AnswerPass::kFirst));
@@ -279,10 +280,7 @@ TEST_CASE("a section of the full pass alone leaves the first pass to its priors"
     runs.push_back(run(host::RunKind::kKnown, 100.0f, static_cast<float>(e), true));
   const host::CalibrationContent c = fit(runs, options({0.0f}, 0.9f, 5));
   REQUIRE(c.passes.size() == 1u);
-  host::BlobContent content = host::make_tiny_blob_content(3, 20, 5);
-  content.calibration = c;
-  const std::vector<uint8_t> bytes = spinhash::test::write_native(content);
-  spinhash::test::BlobPatch patch(bytes);
+  spinhash::test::BlobPatch patch(tiny_blob_with(c));
   Database db;
   REQUIRE(patch.open(&db) == Status::kOk);
   CHECK(db.calibration().fitted(AnswerPass::kFull));
