@@ -17,7 +17,10 @@ Interval wilson(double p, double n) {
   if (!(n > 0.0)) return Interval{};
   const double z2 = kZ * kZ, centre = (p + z2 / (2.0 * n)) / (1.0 + z2 / n);
   const double half = kZ * std::sqrt(p * (1.0 - p) / n + z2 / (4.0 * n * n)) / (1.0 + z2 / n);
-  return Interval{std::max(0.0, centre - half), std::min(1.0, centre + half)};
+  // At a share of 0 or 1 the interval's end is exactly that share (centre
+  // and half cancel there, but not always to the last bit).
+  return Interval{p <= 0.0 ? 0.0 : std::max(0.0, centre - half),
+                  p >= 1.0 ? 1.0 : std::min(1.0, centre + half)};
 }
 
 // Sums of weights, for a share and its effective number of runs.
