@@ -8,9 +8,12 @@
 // starting from the first pass's leading poses (carry.hpp). The first
 // pass's spin images overwrite its loaded points, so the full pass loads
 // the cloud again; its features are its own (another voxel, more of them).
-// Each pass's flags are decided by its own calibrated table (the first
-// pass's answers stop the query only when confident by the first pass's
-// table, or by its priors in a database without one).
+// Each pass's flags are decided by its own calibrated table. The first
+// pass's answer stops the query when it is confident (by the first pass's
+// table, or by its priors in a database without one) or when the agree
+// table (fitted on the first pass's evidence against "the full pass names
+// the same model") says the full pass would not change it; either way its
+// flags stay the first pass's own.
 #include <new>
 
 #include "recognize/carry.hpp"
@@ -144,6 +147,16 @@ void recognize_pass(const Database& db, RecognizerBuffers& b, size_t used_bytes,
   keep_leading_poses(ctx);
 }
 
+// The agree table says the full pass would name the first pass's model
+// (false without a fitted agree table: the first pass's flag decides alone).
+bool full_pass_agrees(const Database& db, const Result& first) {
+  const Calibration& c = db.calibration();
+  if (first.status != Status::kOk || !c.fitted(AnswerPass::kAgree)) return false;
+  return c.confident(AnswerPass::kAgree, AnswerLevel::kModel,
+                     first.levels[level_index(AnswerLevel::kModel)].evidence,
+                     first.stats.confidence.scan_density);
+}
+
 }  // namespace
 
 Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noexcept {
@@ -159,9 +172,10 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
   if (config_.cascade) {
     recognize_pass(*db_, b, used_bytes_, cloud, terrain, b.first_pass, AnswerPass::kFirst, 0, &result);
     first_work = result.stats.cascade.work;
-    const bool answered =
-        (result.status == Status::kOk && result.confident) || result.status == Status::kWorkCapReached;
-    if (answered) {
+    const bool confident = result.status == Status::kOk && result.confident;
+    const bool agrees = !confident && full_pass_agrees(*db_, result);
+    if (confident || agrees || result.status == Status::kWorkCapReached) {
+      result.stats.cascade.stopped_on_agreement = agrees;
       result.stats.cascade.passes = 1;
       result.stats.cascade.answered_by = 0;
       result.stats.cascade.first_work = first_work;

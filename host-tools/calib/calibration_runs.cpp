@@ -38,8 +38,8 @@ struct Shared {
   pipeline::Progress* progress = nullptr;
 };
 
-host::CalibrationRun record(AnswerPass pass, host::RunKind kind, const Result& r, int64_t model,
-                            uint32_t vehicle_class) {
+// A run of `pass` with r's density and evidence; its rightness is the caller's.
+host::CalibrationRun evidence_of(AnswerPass pass, host::RunKind kind, const Result& r) {
   host::CalibrationRun run;
   run.pass = pass;
   run.kind = kind;
@@ -47,8 +47,25 @@ host::CalibrationRun record(AnswerPass pass, host::RunKind kind, const Result& r
   for (uint32_t l = 0; l < kCalibratedLevels; ++l)
     run.evidence[l] =
         r.status == Status::kOk ? r.levels[l].evidence : -std::numeric_limits<float>::infinity();
+  return run;
+}
+
+host::CalibrationRun record(AnswerPass pass, host::RunKind kind, const Result& r, int64_t model,
+                            uint32_t vehicle_class) {
+  host::CalibrationRun run = evidence_of(pass, kind, r);
   judge(r, kind == host::RunKind::kClutter, model, vehicle_class, run.right);
   return run;
+}
+
+// What a result names at each level: -1 for nothing (a failed search, no
+// ranking); at the vehicle level 1 when it names a posed model.
+void answers(const Result& r, int64_t out[kCalibratedLevels]) {
+  const bool ok = r.status == Status::kOk;
+  out[level_index(AnswerLevel::kVehicle)] = ok && r.ranking_count > 0u && r.ranking[0].has_pose ? 1 : -1;
+  out[level_index(AnswerLevel::kGroup)] = ok && r.group_ranking_count > 0u ? r.group_ranking[0].group : -1;
+  out[level_index(AnswerLevel::kClass)] =
+      ok && r.class_ranking_count > 0u ? r.class_ranking[0].vehicle_class : -1;
+  out[level_index(AnswerLevel::kModel)] = ok && r.ranking_count > 0u ? r.ranking[0].model : -1;
 }
 
 // One recogniser per calibrated pass over one database: the full pass
@@ -63,11 +80,14 @@ struct PassSessions {
     apply_first_pass(settings, &first_pass);
     return full.init(db, full_pass, error) && first.init(db, first_pass, error);
   }
-  // Both passes' records of one scan.
+  // Both passes' records of one scan, and the agree record of the pair.
   void recognize(host::RunKind kind, const std::vector<double>& xyz, int64_t model, uint32_t vehicle_class,
                  std::vector<host::CalibrationRun>* out) {
-    out->push_back(record(AnswerPass::kFull, kind, full.recognize(xyz), model, vehicle_class));
-    out->push_back(record(AnswerPass::kFirst, kind, first.recognize(xyz), model, vehicle_class));
+    const Result full_result = full.recognize(xyz);
+    const Result first_result = first.recognize(xyz);
+    out->push_back(record(AnswerPass::kFull, kind, full_result, model, vehicle_class));
+    out->push_back(record(AnswerPass::kFirst, kind, first_result, model, vehicle_class));
+    out->push_back(agree_record(kind, first_result, full_result));
   }
 };
 
@@ -200,6 +220,15 @@ void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class,
     right[level_index(AnswerLevel::kClass)] = r.class_ranking[0].vehicle_class == vehicle_class;
   if (r.ranking_count > 0u && model >= 0)
     right[level_index(AnswerLevel::kModel)] = static_cast<int64_t>(r.ranking[0].model) == model;
+}
+
+host::CalibrationRun agree_record(host::RunKind kind, const Result& first, const Result& full) {
+  host::CalibrationRun run = evidence_of(AnswerPass::kAgree, kind, first);
+  int64_t a[kCalibratedLevels], b[kCalibratedLevels];
+  answers(first, a);
+  answers(full, b);
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) run.right[l] = a[l] == b[l];
+  return run;
 }
 
 bool run_calibration(const host::BlobContent& full, const std::vector<const host::Mesh*>& meshes,

@@ -7,7 +7,8 @@
 // records its density and each level's evidence and rightness
 // (db/calibration_fit.hpp), once for each calibrated pass: the full pass
 // (the recognizer's settings, the cascade off) and the cascade's first pass
-// (its first_* settings) recognise every scan. On all threads, the runs in a fixed order
+// (its first_* settings) recognise every scan, and the pair gives the
+// agree record (agree_record()). On all threads, the runs in a fixed order
 // whatever their number.
 #pragma once
 #include <cstdint>
@@ -63,6 +64,13 @@ std::vector<uint32_t> left_out_models(const std::vector<blob::ModelRecord>& mode
 // `clutter`: nothing is right.
 void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class,
            bool right[kCalibratedLevels]);
+
+// The agree pass's record of one scan: the first pass's density and
+// evidence; right at a level when the first pass's answer there is the full
+// pass's (the same model, class, group; at the vehicle level, both name a
+// posed model or neither does), whatever the truth. A failed search names
+// nothing.
+host::CalibrationRun agree_record(host::RunKind kind, const Result& first, const Result& full);
 
 struct RunSummary {
   host::FitProvenance drawn;  // scans per model, models left out, ..., seed

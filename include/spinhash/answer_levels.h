@@ -36,8 +36,9 @@
 
 #define SPINHASH_CALIBRATION_PASSES(P)                                       \
   P(0, Full, "full", "the recognizer's configured settings (the full pass)") \
-  P(1, First, "first", "the cascade's first pass: the first_* settings")
+  P(1, First, "first", "the cascade's first pass: the first_* settings")     \
+  P(2, Agree, "agree", "the cascade's stop: the first pass's answer is the full pass's")
 
-#define SPINHASH_CALIBRATION_PASS_COUNT 2
+#define SPINHASH_CALIBRATION_PASS_COUNT 3
 
 #endif /* SPINHASH_ANSWER_LEVELS_H */

@@ -92,6 +92,7 @@
   S(U32, carried, carry.carried, "carried")                                                 \
   S(U32, passes, cascade.passes, "passes")                                                  \
   S(U32, answered_by, cascade.answered_by, "answered_by")                                   \
+  S(BOOL, stopped_on_agreement, cascade.stopped_on_agreement, "stopped_on_agreement")       \
   S(U64, first_pass_work, cascade.first_work, "first_pass_work")                            \
   S(U64, full_pass_work, cascade.full_work, "full_pass_work")                               \
   S(U64, work, cascade.work, "work")                                                        \

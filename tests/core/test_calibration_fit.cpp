@@ -274,6 +274,55 @@ TEST_CASE("each pass's table is fitted from its own runs alone") {
   CHECK(db.calibration().confident(AnswerPass::kFirst, AnswerLevel::kModel, 6.0f, 100.0f));
 }
 
+TEST_CASE("the agree table: the first pass's evidence against agreement, to its own target, no outsiders") {
+  // Agreement below evidence 10 is a coin's toss; from 10 on the two passes
+  // always agree, on known, left-out and clutter scans alike. A full-pass
+  // table would hold the left-out and clutter runs at the model level under
+  // the outsider rate and find no threshold; agreement has no outsiders.
+  std::vector<host::CalibrationRun> runs;
+  const host::RunKind kinds[] = {host::RunKind::kKnown, host::RunKind::kUnknown, host::RunKind::kClutter};
+  for (int e = 1; e <= 300; ++e) {
+    host::CalibrationRun r = run(kinds[e % 3], 100.0f, static_cast<float>(e), e >= 10 || e % 2 == 0);
+    r.pass = AnswerPass::kAgree;
+    runs.push_back(r);
+    host::CalibrationRun full = run(host::RunKind::kKnown, 100.0f, static_cast<float>(e), true);
+    runs.push_back(full);
+  }
+  host::FitOptions o = options({0.0f}, 0.99f, 0);
+  o.agree_precision = 0.995f;
+  const host::CalibrationContent c = fit(runs, o);
+  REQUIRE(c.passes.size() == 3u);  // the first pass without runs keeps its priors
+  CHECK(c.passes[1].source == blob::kSourcePriors);
+  CHECK(c.passes[2].pass == static_cast<uint32_t>(AnswerPass::kAgree));
+  CHECK(c.passes[2].source == blob::kSourceFitted);
+  CHECK(c.passes[2].runs == 300u);
+  CHECK(c.passes[2].target_precision == 0.995f);
+  CHECK(c.passes[0].target_precision == 0.0f);  // the header's
+  const blob::CalibrationCell& model = c.cells[2u * kCalibratedLevels + level_index(AnswerLevel::kModel)];
+  CHECK(model.state == blob::kCellFitted);
+  CHECK(model.threshold <= 10.0f);
+  CHECK(model.threshold > 1.0f);
+  CHECK(model.precision >= 0.995f);
+  spinhash::test::BlobPatch patch(tiny_blob_with(c));
+  Database db;
+  REQUIRE(patch.open(&db) == Status::kOk);
+  CHECK(db.calibration().fitted(AnswerPass::kAgree));
+  CHECK(db.calibration().target_precision(AnswerPass::kAgree) == 0.995f);
+  CHECK(db.calibration().target_precision(AnswerPass::kFull) == 0.99f);
+  CHECK(db.calibration().confident(AnswerPass::kAgree, AnswerLevel::kModel, 10.0f, 100.0f));
+  CHECK_FALSE(db.calibration().confident(AnswerPass::kAgree, AnswerLevel::kModel, 1.0f, 100.0f));
+
+  // Certainty asked of runs whose strongest pair disagrees: never confident.
+  o.agree_precision = 1.0f;
+  o.min_band_runs = 5;
+  for (host::CalibrationRun& r : runs)
+    if (r.pass == AnswerPass::kAgree && r.evidence[0] == 300.0f)
+      for (bool& right : r.right) right = false;
+  const host::CalibrationContent strict = fit(runs, o);
+  CHECK(strict.cells[2u * kCalibratedLevels + level_index(AnswerLevel::kModel)].state ==
+        blob::kCellUnreachable);
+}
+
 TEST_CASE("a section of the full pass alone leaves the first pass to its priors") {
   std::vector<host::CalibrationRun> runs;
   for (int e = 1; e <= 20; ++e)

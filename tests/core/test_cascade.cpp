@@ -180,10 +180,14 @@ blob::CalibrationCell calibrated_cell(bool always) {
   return c;
 }
 
+// The agree table of make_calibrated_toy().
+enum class AgreeTable { kAbsent, kNever, kAlways };
+
 // The toy database with a calibration of both passes, one density band:
 // the full pass's table flags every level's evidence; the first pass's
-// flags every one (`first_flags`) or none.
-bool make_calibrated_toy(test::ToyDatabase* out, bool first_flags) {
+// flags every one (`first_flags`) or none; the agree table, when there is
+// one, likewise.
+bool make_calibrated_toy(test::ToyDatabase* out, bool first_flags, AgreeTable agree = AgreeTable::kNever) {
   host::BlobContent content;
   host::BuildReport report;
   std::string error;
@@ -191,14 +195,18 @@ bool make_calibrated_toy(test::ToyDatabase* out, bool first_flags) {
     return false;
   host::CalibrationContent& c = content.calibration;
   c = host::CalibrationContent{};
-  c.header.pass_count = kAnswerPassCount;
+  const uint32_t passes = agree == AgreeTable::kAbsent ? 2u : 3u;
+  c.header.pass_count = passes;
   c.header.level_count = kCalibratedLevels;
   c.header.band_count = 1;
   c.header.target_precision = 0.99f;
   c.header.scans_per_model = 1;
-  for (uint32_t p = 0; p < kAnswerPassCount; ++p) {
-    c.passes.push_back(blob::CalibrationPass{p, blob::kSourceFitted, 1u, 0u});
-    const bool flags = p == static_cast<uint32_t>(AnswerPass::kFirst) ? first_flags : true;
+  for (uint32_t p = 0; p < passes; ++p) {
+    const bool is_agree = p == static_cast<uint32_t>(AnswerPass::kAgree);
+    c.passes.push_back(blob::CalibrationPass{p, blob::kSourceFitted, 1u, is_agree ? 0.995f : 0.0f});
+    const bool flags = p == static_cast<uint32_t>(AnswerPass::kFirst) ? first_flags
+                       : is_agree                                     ? agree == AgreeTable::kAlways
+                                                                      : true;
     for (uint32_t l = 0; l < kCalibratedLevels; ++l) c.cells.push_back(calibrated_cell(flags));
   }
   std::vector<uint8_t> bytes;
@@ -222,6 +230,7 @@ TEST_CASE("cascade: the first pass stops the query only when confident by the fi
   REQUIRE(escalated.result.status == Status::kOk);
   CHECK(escalated.result.stats.cascade.passes == 2u);
   CHECK(escalated.result.stats.cascade.answered_by == 1u);
+  CHECK_FALSE(escalated.result.stats.cascade.stopped_on_agreement);
   CHECK(escalated.result.confident);
 
   // The first pass's table flags its answer: the query ends there.
@@ -229,6 +238,7 @@ TEST_CASE("cascade: the first pass stops the query only when confident by the fi
   REQUIRE(stopped.result.status == Status::kOk);
   CHECK(stopped.result.stats.cascade.passes == 1u);
   CHECK(stopped.result.stats.cascade.answered_by == 0u);
+  CHECK_FALSE(stopped.result.stats.cascade.stopped_on_agreement);  // confident: the agree table is not asked
   CHECK(stopped.result.confident);
 
   // The flight preset runs the first pass's settings alone, and its flags
@@ -237,4 +247,42 @@ TEST_CASE("cascade: the first pass stops the query only when confident by the fi
   CHECK(calibration_pass(preset_config(Preset::kFull)) == AnswerPass::kFull);
   CHECK_FALSE(recognize_toy(never_first, preset_config(Preset::kFlight), m, true).result.confident);
   CHECK(recognize_toy(never_first, preset_config(Preset::kFull), m, true).result.confident);
+}
+
+TEST_CASE("cascade: the agree table stops an unsure first pass; its flags stay the first pass's own") {
+  const uint32_t m = 1;
+  test::ToyDatabase agrees, never_agrees, no_agree_table;
+  REQUIRE(make_calibrated_toy(&agrees, false, AgreeTable::kAlways));
+  REQUIRE(make_calibrated_toy(&never_agrees, false, AgreeTable::kNever));
+  REQUIRE(make_calibrated_toy(&no_agree_table, false, AgreeTable::kAbsent));
+  REQUIRE(agrees.db.calibration().fitted(AnswerPass::kAgree));
+  REQUIRE_FALSE(no_agree_table.db.calibration().fitted(AnswerPass::kAgree));
+
+  // The first pass is not confident by its table, but the full pass would
+  // name the same model: the query ends after the first pass, unflagged.
+  const Run stopped = recognize_toy(agrees, RecognizerConfig{}, m, true);
+  REQUIRE(stopped.result.status == Status::kOk);
+  const CascadeStats& c = stopped.result.stats.cascade;
+  CHECK(c.passes == 1u);
+  CHECK(c.answered_by == 0u);
+  CHECK(c.stopped_on_agreement);
+  CHECK(c.full_work == 0u);
+  CHECK_FALSE(stopped.result.confident);
+  CHECK_FALSE(stopped.result.class_confident);
+  CHECK(stopped.result.level == AnswerLevel::kNone);
+  // Its answer is the first pass's: the flight preset's ranking.
+  const Run flight = recognize_toy(agrees, preset_config(Preset::kFlight), m, true);
+  CHECK(flight.models == stopped.models);
+  CHECK(flight.scores == stopped.scores);
+
+  // An agree table that never agrees, or none (the first pass's flag
+  // decides alone): on to the full pass.
+  for (const test::ToyDatabase* db : {&never_agrees, &no_agree_table}) {
+    const Run escalated = recognize_toy(*db, RecognizerConfig{}, m, true);
+    REQUIRE(escalated.result.status == Status::kOk);
+    CHECK(escalated.result.stats.cascade.passes == 2u);
+    CHECK(escalated.result.stats.cascade.answered_by == 1u);
+    CHECK_FALSE(escalated.result.stats.cascade.stopped_on_agreement);
+    CHECK(escalated.result.confident);
+  }
 }
