@@ -1,14 +1,10 @@
 #include "survey/gpkg_writer.hpp"
 
-#include <cpl_error.h>
-#include <gdal.h>
-#include <ogr_api.h>
-#include <ogr_srs_api.h>
+#include "survey/gdal_library.hpp"
 
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
-#include <mutex>
 
 namespace spinhash::survey {
 namespace {
@@ -20,8 +16,6 @@ constexpr const char* kNativeWkt =
     "UNIT[\"metre\",1],AXIS[\"x\",EAST],AXIS[\"y\",NORTH]]";
 constexpr const char* kLayer = "detections";
 constexpr const char* kFootprint = "footprint";
-
-std::once_flag registered;
 
 size_t skip_space(const std::string& s, size_t i) {
   while (i < s.size() && (s[i] == ' ' || s[i] == '\n' || s[i] == '\r' || s[i] == '\t')) ++i;
@@ -125,78 +119,81 @@ OGRFieldType field_type(ColumnType t) {
 }
 
 struct Closer {
-  void operator()(void* ds) const { GDALClose(static_cast<GDALDatasetH>(ds)); }
+  const GdalLibrary* g;
+  void operator()(void* ds) const { g->GDALClose(static_cast<GDALDatasetH>(ds)); }
 };
 
-bool fail(std::string* error, const std::string& what) {
-  *error = what + (CPLGetLastErrorMsg()[0] != '\0' ? std::string(": ") + CPLGetLastErrorMsg() : "");
+bool fail(const GdalLibrary& g, std::string* error, const std::string& what) {
+  *error = what + (g.CPLGetLastErrorMsg()[0] != '\0' ? std::string(": ") + g.CPLGetLastErrorMsg() : "");
   return false;
 }
 
-bool set_field(OGRFeatureH f, int index, ColumnType type, const std::string& raw) {
+bool set_field(const GdalLibrary& g, OGRFeatureH f, int index, ColumnType type, const std::string& raw) {
   if (raw == "null") {
-    OGR_F_SetFieldNull(f, index);
+    g.OGR_F_SetFieldNull(f, index);
     return true;
   }
   switch (type) {
-    case ColumnType::kString: OGR_F_SetFieldString(f, index, unquote(raw).c_str()); break;
-    case ColumnType::kJson: OGR_F_SetFieldString(f, index, raw.c_str()); break;  // our JSON, as written
+    case ColumnType::kString: g.OGR_F_SetFieldString(f, index, unquote(raw).c_str()); break;
+    case ColumnType::kJson: g.OGR_F_SetFieldString(f, index, raw.c_str()); break;  // our JSON, as written
     case ColumnType::kInteger:
-      OGR_F_SetFieldInteger64(f, index, std::strtoll(raw.c_str(), nullptr, 10));
+      g.OGR_F_SetFieldInteger64(f, index, std::strtoll(raw.c_str(), nullptr, 10));
       break;
-    case ColumnType::kBoolean: OGR_F_SetFieldInteger(f, index, raw == "true" ? 1 : 0); break;
-    case ColumnType::kReal: OGR_F_SetFieldDouble(f, index, std::strtod(raw.c_str(), nullptr)); break;
+    case ColumnType::kBoolean: g.OGR_F_SetFieldInteger(f, index, raw == "true" ? 1 : 0); break;
+    case ColumnType::kReal: g.OGR_F_SetFieldDouble(f, index, std::strtod(raw.c_str(), nullptr)); break;
   }
   return true;
 }
 
-bool add_feature(OGRLayerH layer, const std::vector<Column>& columns, const std::string& feature,
-                 std::string* error) {
+bool add_feature(const GdalLibrary& g, OGRLayerH layer, const std::vector<Column>& columns,
+                 const std::string& feature, std::string* error) {
   const size_t at = feature.rfind("\"properties\":");
   std::vector<std::pair<std::string, std::string>> members;
   if (at == std::string::npos ||
       !json_object_members(feature.substr(at + 13, feature.size() - at - 14), &members))
-    return fail(error, "a detection that is not a GeoJSON feature");
-  OGRFeatureH f = OGR_F_Create(OGR_L_GetLayerDefn(layer));
+    return fail(g, error, "a detection that is not a GeoJSON feature");
+  OGRFeatureH f = g.OGR_F_Create(g.OGR_L_GetLayerDefn(layer));
   for (const auto& m : members) {
     for (size_t c = 0; c < columns.size(); ++c)
-      if (columns[c].name == m.first) set_field(f, static_cast<int>(c), columns[c].type, m.second);
+      if (columns[c].name == m.first) set_field(g, f, static_cast<int>(c), columns[c].type, m.second);
     if (m.first != kFootprint) continue;
     const std::vector<double> xy = ring_numbers(m.second);
-    OGRGeometryH ring = OGR_G_CreateGeometry(wkbLinearRing);
-    for (size_t i = 0; i + 1 < xy.size(); i += 2) OGR_G_AddPoint_2D(ring, xy[i], xy[i + 1]);
-    OGRGeometryH polygon = OGR_G_CreateGeometry(wkbPolygon);
-    OGR_G_AddGeometryDirectly(polygon, ring);
-    OGR_F_SetGeometryDirectly(f, polygon);
+    OGRGeometryH ring = g.OGR_G_CreateGeometry(wkbLinearRing);
+    for (size_t i = 0; i + 1 < xy.size(); i += 2) g.OGR_G_AddPoint_2D(ring, xy[i], xy[i + 1]);
+    OGRGeometryH polygon = g.OGR_G_CreateGeometry(wkbPolygon);
+    g.OGR_G_AddGeometryDirectly(polygon, ring);
+    g.OGR_F_SetGeometryDirectly(f, polygon);
   }
-  const bool ok = OGR_L_CreateFeature(layer, f) == OGRERR_NONE;
-  OGR_F_Destroy(f);
-  return ok || fail(error, "GDAL cannot add a detection");
+  const bool ok = g.OGR_L_CreateFeature(layer, f) == OGRERR_NONE;
+  g.OGR_F_Destroy(f);
+  return ok || fail(g, error, "GDAL cannot add a detection");
 }
 
-bool write_layer(GDALDatasetH ds, const std::vector<std::string>& features,
+bool write_layer(const GdalLibrary& g, GDALDatasetH ds, const std::vector<std::string>& features,
                  const std::vector<Column>& columns, const std::string& native_crs, std::string* error) {
-  OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
-  OSRSetAxisMappingStrategy(srs, OAMS_TRADITIONAL_GIS_ORDER);  // x easting, y northing
-  if (OSRSetFromUserInput(srs, native_crs.empty() ? kNativeWkt : native_crs.c_str()) != OGRERR_NONE) {
-    OSRDestroySpatialReference(srs);
-    return fail(error, "GDAL does not read the CRS " + native_crs.substr(0, 80));
+  OGRSpatialReferenceH srs = g.OSRNewSpatialReference(nullptr);
+  g.OSRSetAxisMappingStrategy(srs, OAMS_TRADITIONAL_GIS_ORDER);  // x easting, y northing
+  if (g.OSRSetFromUserInput(srs, native_crs.empty() ? kNativeWkt : native_crs.c_str()) != OGRERR_NONE) {
+    g.OSRDestroySpatialReference(srs);
+    return fail(g, error, "GDAL does not read the CRS " + native_crs.substr(0, 80));
   }
-  OGRLayerH layer = GDALDatasetCreateLayer(ds, kLayer, srs, wkbPolygon, nullptr);
-  OSRDestroySpatialReference(srs);
-  if (layer == nullptr) return fail(error, "GDAL cannot make the layer");
+  OGRLayerH layer = g.GDALDatasetCreateLayer(ds, kLayer, srs, wkbPolygon, nullptr);
+  g.OSRDestroySpatialReference(srs);
+  if (layer == nullptr) return fail(g, error, "GDAL cannot make the layer");
   for (const Column& c : columns) {
-    OGRFieldDefnH d = OGR_Fld_Create(c.name.c_str(), field_type(c.type));
-    if (c.type == ColumnType::kBoolean) OGR_Fld_SetSubType(d, OFSTBoolean);
-    if (c.type == ColumnType::kJson) OGR_Fld_SetSubType(d, OFSTJSON);
-    const bool ok = OGR_L_CreateField(layer, d, TRUE) == OGRERR_NONE;
-    OGR_Fld_Destroy(d);
-    if (!ok) return fail(error, "GDAL cannot make the column " + c.name);
+    OGRFieldDefnH d = g.OGR_Fld_Create(c.name.c_str(), field_type(c.type));
+    if (c.type == ColumnType::kBoolean) g.OGR_Fld_SetSubType(d, OFSTBoolean);
+    if (c.type == ColumnType::kJson) g.OGR_Fld_SetSubType(d, OFSTJSON);
+    const bool ok = g.OGR_L_CreateField(layer, d, TRUE) == OGRERR_NONE;
+    g.OGR_Fld_Destroy(d);
+    if (!ok) return fail(g, error, "GDAL cannot make the column " + c.name);
   }
-  if (GDALDatasetStartTransaction(ds, FALSE) != OGRERR_NONE) return fail(error, "GDAL cannot start writing");
+  if (g.GDALDatasetStartTransaction(ds, FALSE) != OGRERR_NONE)
+    return fail(g, error, "GDAL cannot start writing");
   for (const std::string& feature : features)
-    if (!add_feature(layer, columns, feature, error)) return false;
-  return GDALDatasetCommitTransaction(ds) == OGRERR_NONE || fail(error, "GDAL cannot write the detections");
+    if (!add_feature(g, layer, columns, feature, error)) return false;
+  return g.GDALDatasetCommitTransaction(ds) == OGRERR_NONE ||
+         fail(g, error, "GDAL cannot write the detections");
 }
 
 }  // namespace
@@ -230,20 +227,23 @@ bool json_object_members(const std::string& text, std::vector<std::pair<std::str
 
 bool write_geopackage(const std::vector<std::string>& features, const std::vector<Column>& columns,
                       const std::string& gpkg, const std::string& native_crs, std::string* error) {
-  std::call_once(registered, [] { GDALAllRegister(); });
-  CPLErrorReset();
-  GDALDriverH driver = GDALGetDriverByName("GPKG");
-  if (driver == nullptr) return fail(error, "GDAL has no GeoPackage driver");
+  const GdalLibrary* library = gdal_library(error);
+  if (library == nullptr) return false;
+  const GdalLibrary& g = *library;
+  g.CPLErrorReset();
+  GDALDriverH driver = g.GDALGetDriverByName("GPKG");
+  if (driver == nullptr) return fail(g, error, "GDAL has no GeoPackage driver");
   const std::string temp = gpkg + ".tmp.gpkg";
   std::remove(temp.c_str());
   bool ok = false;
-  CPLPushErrorHandler(CPLQuietErrorHandler);  // messages come back through *error, not stderr
+  g.CPLPushErrorHandler(g.CPLQuietErrorHandler);  // messages come back through *error, not stderr
   {
-    std::unique_ptr<void, Closer> ds(GDALCreate(driver, temp.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
-    ok = ds ? write_layer(ds.get(), features, columns, native_crs, error)
-            : fail(error, "GDAL cannot write " + gpkg);
+    std::unique_ptr<void, Closer> ds(g.GDALCreate(driver, temp.c_str(), 0, 0, 0, GDT_Unknown, nullptr),
+                                     Closer{&g});
+    ok = ds ? write_layer(g, ds.get(), features, columns, native_crs, error)
+            : fail(g, error, "GDAL cannot write " + gpkg);
   }
-  CPLPopErrorHandler();
+  g.CPLPopErrorHandler();
   if (ok && std::rename(temp.c_str(), gpkg.c_str()) != 0) {
     *error = "cannot rename " + temp + " to " + gpkg;
     ok = false;

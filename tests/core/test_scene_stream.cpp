@@ -40,19 +40,8 @@ std::vector<double> strip_points() {
   add_terrain_rect(tile, t, -10.0, 10.0, -5.0, 155.0, 0.25, 0.02, 3);
   for (const Placed& c : kCars) add_model(tile, t, toy_vehicle_points(c.model, 0.1f), c.x, c.y, c.yaw, 0.35);
   remove_occluded_ground(tile);
-  const size_t n = tile.xyz.size() / 3;
-  std::vector<size_t> order(n);
-  for (size_t i = 0; i < n; ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](size_t a, size_t b) { return tile.xyz[3 * a + 1] < tile.xyz[3 * b + 1]; });
-  std::vector<double> xyz;
-  xyz.reserve(3 * n);
-  for (size_t i : order) {
-    xyz.push_back(tile.xyz[3 * i] + kEast);
-    xyz.push_back(tile.xyz[3 * i + 1] + kNorth);
-    xyz.push_back(tile.xyz[3 * i + 2] + kUp);
-  }
-  return xyz;
+  const double georef[3] = {kEast, kNorth, kUp};
+  return in_scan_order(tile, 1, georef);
 }
 
 struct Reported {

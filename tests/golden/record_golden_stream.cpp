@@ -5,7 +5,6 @@
 // them see them too.
 #include "golden/record_golden_stream.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -46,14 +45,7 @@ std::vector<double> strip_local() {
   test::add_box(tile, t, 20.0, 5.0, 0.4, 1.0, 1.0, 0.8, 0.0, kVehicleSpacing);   // a crate: too small
   test::add_box(tile, t, 72.0, -6.5, 0.0, 8.0, 0.3, 2.0, 0.0, kVehicleSpacing);  // a wall: too thin
   test::remove_occluded_ground(tile);
-  const size_t n = tile.xyz.size() / 3;
-  std::vector<size_t> order(n);
-  for (size_t i = 0; i < n; ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](size_t a, size_t b) { return tile.xyz[3 * a] < tile.xyz[3 * b]; });
-  std::vector<double> xyz;
-  for (size_t i : order) xyz.insert(xyz.end(), tile.xyz.begin() + 3 * i, tile.xyz.begin() + 3 * i + 3);
-  return xyz;
+  return test::in_scan_order(tile, 0);
 }
 
 // Quantises to golden_stream.i16; returns false if a coordinate does not fit int16.

@@ -34,12 +34,10 @@ TEST_CASE("calibration check: every flag right agrees with cells that expect eve
     cell.flagged = 1u;
     c.cells.push_back(cell);
   }
-  std::vector<uint8_t> bytes;
-  std::string error;
-  REQUIRE(host::serialize_blob(content, host::ByteOrder::kNative, &bytes, &error));
-  host::AlignedBytes aligned = host::AlignedBytes::copy_of(bytes);
+  host::AlignedBytes bytes;
   Database db;
-  REQUIRE(Database::open(aligned.data(), aligned.size(), &db) == Status::kOk);
+  std::string error;
+  REQUIRE_MESSAGE(host::open_content(content, &bytes, &db, &error), error);
   // Run counts at which the 99.9 % Wilson interval of an observed share of
   // 1 computes its upper end one ulp below 1 (15, 244) and at which it does not (16).
   for (uint32_t n : {15u, 16u, 244u}) {

@@ -180,6 +180,22 @@ TEST_CASE("an empty survey's GeoPackage has its schema; its overview is small") 
   GDALClose(ds);
 }
 
+TEST_CASE("GDAL is loaded only by a command that writes a GeoPackage, not at every start") {
+  TempDir dir("gdal-load");
+  const std::string log = dir.file("loader.txt");
+  const auto loads_gdal = [&](const std::string& args) {
+    const std::string cmd = "LD_DEBUG=libs '" SPINHASH_TEST_BINARY "' " + args + " > /dev/null 2> " + q(log);
+    CHECK(std::system(cmd.c_str()) != -1);
+    return contains(read_bytes(log), "libgdal");
+  };
+  CHECK_FALSE(loads_gdal("--version"));
+  if (!samples()) return;
+  const Fixture& f = fx();
+  CHECK_FALSE(loads_gdal("scene --db " + q(f.db) + " " + q(kLas + "/versions/1.2_3.las")));
+  CHECK(loads_gdal("survey --quiet --db " + q(f.db) + " --out " + q(dir.file("out")) + " " +
+                   q(kLas + "/versions/1.2_3.las")));
+}
+
 TEST_CASE("the overview's tile names never overlap, even for tiles that overlap") {
   spinhash::host::SurveyPictureTile a, b, c;
   a.min[0] = 0, a.min[1] = 0, a.max[0] = 100, a.max[1] = 100, a.name = "tile-a";

@@ -1,5 +1,6 @@
 #include "support/scene_fixtures.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "support/geometry_fixtures.hpp"
@@ -117,6 +118,22 @@ int add_model(Tile& tile, const TerrainShape& t, const std::vector<double>& mode
     tile.add(cx + ca * x1 - sa * z1, cy + y1, base + sa * x1 + ca * z1, false, id);
   }
   return id;
+}
+
+std::vector<double> in_scan_order(const Tile& tile, int axis, const double offset[3]) {
+  const size_t n = tile.xyz.size() / 3;
+  std::vector<size_t> order(n);
+  for (size_t i = 0; i < n; ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return tile.xyz[3 * a + axis] < tile.xyz[3 * b + axis]; });
+  std::vector<double> xyz;
+  xyz.reserve(3 * n);
+  for (size_t i : order)
+    for (int k = 0; k < 3; ++k) {
+      const double v = tile.xyz[3 * i + k];
+      xyz.push_back(offset != nullptr ? v + offset[k] : v);
+    }
+  return xyz;
 }
 
 }  // namespace test

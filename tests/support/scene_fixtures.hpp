@@ -54,5 +54,9 @@ int add_tree(Tile& tile, const TerrainShape& t, double cx, double cy, double tru
 int add_model(Tile& tile, const TerrainShape& t, const std::vector<double>& model, double cx, double cy,
               double yaw, double min_z);
 
+// The tile's points in scan order: sorted along `axis` (0 x, 1 y), ties kept
+// in the order they were added, each shifted by `offset` (georeferencing).
+std::vector<double> in_scan_order(const Tile& tile, int axis, const double offset[3] = nullptr);
+
 }  // namespace test
 }  // namespace spinhash

@@ -13,7 +13,6 @@
 // qemu-user. The link wraps the three stages (-Wl,--wrap, tests/CMakeLists.txt)
 // so that each call runs between markers of its own: the plugin counts a
 // stage's instructions where callgrind gives its inclusive count.
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -180,15 +179,7 @@ std::vector<double> strip(double side, double spacing, std::vector<double>* trut
     truth->insert(truth->end(), {at[i], at[i + 1], static_cast<double>(model)});
   }
   test::remove_occluded_ground(tile);
-  const size_t n = tile.xyz.size() / 3;
-  std::vector<size_t> order(n);
-  for (size_t i = 0; i < n; ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](size_t a, size_t b) { return tile.xyz[3 * a] < tile.xyz[3 * b]; });
-  std::vector<double> xyz;
-  xyz.reserve(3 * n);
-  for (size_t i : order) xyz.insert(xyz.end(), tile.xyz.begin() + 3 * i, tile.xyz.begin() + 3 * i + 3);
-  return xyz;
+  return test::in_scan_order(tile, 0);
 }
 
 // Raw native float64: written and read on little-endian machines alike.
