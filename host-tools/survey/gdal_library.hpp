@@ -12,18 +12,42 @@
 
 #include <string>
 
-#define SPINHASH_GDAL_FUNCTIONS(F)                                                                          \
-  F(CPLErrorReset)                                                                                          \
-  F(CPLGetLastErrorMsg) F(CPLPushErrorHandler) F(CPLPopErrorHandler) F(CPLQuietErrorHandler)                \
-      F(GDALAllRegister) F(GDALGetDriverByName) F(GDALCreate) F(GDALClose) F(GDALDatasetCreateLayer)        \
-          F(GDALDatasetStartTransaction) F(GDALDatasetCommitTransaction) F(OSRNewSpatialReference)          \
-              F(OSRDestroySpatialReference) F(OSRSetAxisMappingStrategy) F(OSRSetFromUserInput)             \
-                  F(OGR_L_CreateField) F(OGR_L_CreateFeature) F(OGR_L_GetLayerDefn) F(OGR_Fld_Create)       \
-                      F(OGR_Fld_Destroy) F(OGR_Fld_SetSubType) F(OGR_F_Create) F(OGR_F_Destroy)             \
-                          F(OGR_F_SetFieldNull) F(OGR_F_SetFieldString) F(OGR_F_SetFieldInteger)            \
-                              F(OGR_F_SetFieldInteger64) F(OGR_F_SetFieldDouble)                            \
-                                  F(OGR_F_SetGeometryDirectly) F(OGR_G_CreateGeometry) F(OGR_G_AddPoint_2D) \
-                                      F(OGR_G_AddGeometryDirectly)
+// clang-format off
+#define SPINHASH_GDAL_FUNCTIONS(F) \
+  F(CPLErrorReset) \
+  F(CPLGetLastErrorMsg) \
+  F(CPLPushErrorHandler) \
+  F(CPLPopErrorHandler) \
+  F(CPLQuietErrorHandler) \
+  F(GDALAllRegister) \
+  F(GDALGetDriverByName) \
+  F(GDALCreate) \
+  F(GDALClose) \
+  F(GDALDatasetCreateLayer) \
+  F(GDALDatasetStartTransaction) \
+  F(GDALDatasetCommitTransaction) \
+  F(OSRNewSpatialReference) \
+  F(OSRDestroySpatialReference) \
+  F(OSRSetAxisMappingStrategy) \
+  F(OSRSetFromUserInput) \
+  F(OGR_L_CreateField) \
+  F(OGR_L_CreateFeature) \
+  F(OGR_L_GetLayerDefn) \
+  F(OGR_Fld_Create) \
+  F(OGR_Fld_Destroy) \
+  F(OGR_Fld_SetSubType) \
+  F(OGR_F_Create) \
+  F(OGR_F_Destroy) \
+  F(OGR_F_SetFieldNull) \
+  F(OGR_F_SetFieldString) \
+  F(OGR_F_SetFieldInteger) \
+  F(OGR_F_SetFieldInteger64) \
+  F(OGR_F_SetFieldDouble) \
+  F(OGR_F_SetGeometryDirectly) \
+  F(OGR_G_CreateGeometry) \
+  F(OGR_G_AddPoint_2D) \
+  F(OGR_G_AddGeometryDirectly)
+// clang-format on
 
 namespace spinhash::survey {
 
