@@ -110,15 +110,15 @@ struct CarryStats {
 // pass that answered; this one, every pass's work (work units,
 // firmware-lib/recognize/work_meter.hpp).
 struct CascadeStats {
-  uint32_t passes = 0;       // passes run: 1, or 2 when the first pass was not confident
+  uint32_t passes = 0;       // passes run: 1, or 2 when the first pass did not stop the query
   uint32_t answered_by = 0;  // the pass that answered: 0 the first (flight), 1 the full
-  // The first pass answered, not confident, because the database's agree
-  // table says the full pass would name the same model.
-  bool stopped_on_agreement = false;
   uint64_t first_work = 0;   // work of the first pass (0 when the cascade is off)
   uint64_t full_work = 0;    // work of the full pass (0 when the first pass answered)
   uint64_t work = 0;         // the query's total, which RecognizerConfig::max_work caps
   bool work_capped = false;  // max_work was reached (Status::kWorkCapReached)
+  // The first pass answered, not confident, because the database's agree
+  // table says the full pass would name the same model.
+  bool stopped_on_agreement = false;
 };
 
 struct RecognitionStats {
