@@ -37,7 +37,13 @@ struct Answer {
   }
 };
 
-bool right(const host::CalibrationRun& r, AnswerLevel l) { return r.right[level_index(l)]; }
+// The run's rightness at vehicle, group, class and model.
+void check_right(const host::CalibrationRun& r, bool vehicle, bool group, bool vehicle_class, bool model) {
+  CHECK(r.right[level_index(AnswerLevel::kVehicle)] == vehicle);
+  CHECK(r.right[level_index(AnswerLevel::kGroup)] == group);
+  CHECK(r.right[level_index(AnswerLevel::kClass)] == vehicle_class);
+  CHECK(r.right[level_index(AnswerLevel::kModel)] == model);
+}
 
 }  // namespace
 
@@ -59,26 +65,18 @@ TEST_CASE("agree record: a pair that disagrees is wrong at that level even when 
   // pass a look-alike of the same class. The truth plays no part.
   const Answer first(3, 1, 0, 4.5f, 80.0f);
   const Answer full(5, 1, 0, 9.0f, 80.0f);
-  const host::CalibrationRun r = calib::agree_record(host::RunKind::kKnown, first.result, full.result);
-  CHECK_FALSE(right(r, AnswerLevel::kModel));
-  CHECK(right(r, AnswerLevel::kClass));
-  CHECK(right(r, AnswerLevel::kGroup));
-  CHECK(right(r, AnswerLevel::kVehicle));
+  check_right(calib::agree_record(host::RunKind::kKnown, first.result, full.result), true, true, true, false);
 
   // Both wrong the same way on a vehicle left out of the database, or on
   // clutter: they agree.
   const Answer look_alike(5, 2, 1, 1.0f, 30.0f);
-  const host::CalibrationRun unknown =
-      calib::agree_record(host::RunKind::kUnknown, look_alike.result, look_alike.result);
-  for (uint32_t l = 0; l < kCalibratedLevels; ++l) CHECK(unknown.right[l]);
+  check_right(calib::agree_record(host::RunKind::kUnknown, look_alike.result, look_alike.result), true, true,
+              true, true);
 
   // Another class and group: wrong at every level but the vehicle's.
   const Answer other(7, 4, 2, 9.0f, 80.0f);
-  const host::CalibrationRun apart = calib::agree_record(host::RunKind::kClutter, first.result, other.result);
-  CHECK_FALSE(right(apart, AnswerLevel::kModel));
-  CHECK_FALSE(right(apart, AnswerLevel::kClass));
-  CHECK_FALSE(right(apart, AnswerLevel::kGroup));
-  CHECK(right(apart, AnswerLevel::kVehicle));
+  check_right(calib::agree_record(host::RunKind::kClutter, first.result, other.result), true, false, false,
+              false);
 }
 
 TEST_CASE("agree record: a failed first pass is never flagged and agrees only with a failed full pass") {
