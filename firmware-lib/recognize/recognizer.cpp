@@ -12,8 +12,8 @@
 // pass's answer stops the query when it is confident (by the first pass's
 // table, or by its priors in a database without one) or when the agree
 // table (fitted on the first pass's evidence against "the full pass names
-// the same model") says the full pass would not change it; either way its
-// flags stay the first pass's own.
+// the truth where the first pass does not") says stopping loses no right
+// answer; either way its flags stay the first pass's own.
 #include <new>
 
 #include "recognize/carry.hpp"
@@ -147,7 +147,7 @@ void recognize_pass(const Database& db, RecognizerBuffers& b, size_t used_bytes,
   keep_leading_poses(ctx);
 }
 
-// The agree table says the full pass would name the first pass's model
+// The agree table says stopping after the first pass loses no right model
 // (false without a fitted agree table: the first pass's flag decides alone).
 bool full_pass_agrees(const Database& db, const Result& first) {
   const Calibration& c = db.calibration();

@@ -57,17 +57,6 @@ host::CalibrationRun record(AnswerPass pass, host::RunKind kind, const Result& r
   return run;
 }
 
-// What a result names at each level: -1 for nothing (a failed search, no
-// ranking); at the vehicle level 1 when it names a posed model.
-void answers(const Result& r, int64_t out[kCalibratedLevels]) {
-  const bool ok = r.status == Status::kOk;
-  out[level_index(AnswerLevel::kVehicle)] = ok && r.ranking_count > 0u && r.ranking[0].has_pose ? 1 : -1;
-  out[level_index(AnswerLevel::kGroup)] = ok && r.group_ranking_count > 0u ? r.group_ranking[0].group : -1;
-  out[level_index(AnswerLevel::kClass)] =
-      ok && r.class_ranking_count > 0u ? r.class_ranking[0].vehicle_class : -1;
-  out[level_index(AnswerLevel::kModel)] = ok && r.ranking_count > 0u ? r.ranking[0].model : -1;
-}
-
 // One recogniser per calibrated pass over one database: the full pass
 // alone (the cascade off) and the cascade's first pass alone.
 struct PassSessions {
@@ -87,7 +76,7 @@ struct PassSessions {
     const Result first_result = first.recognize(xyz);
     out->push_back(record(AnswerPass::kFull, kind, full_result, model, vehicle_class));
     out->push_back(record(AnswerPass::kFirst, kind, first_result, model, vehicle_class));
-    out->push_back(agree_record(kind, first_result, full_result));
+    out->push_back(agree_record(kind, first_result, full_result, model, vehicle_class));
   }
 };
 
@@ -222,12 +211,14 @@ void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class,
     right[level_index(AnswerLevel::kModel)] = static_cast<int64_t>(r.ranking[0].model) == model;
 }
 
-host::CalibrationRun agree_record(host::RunKind kind, const Result& first, const Result& full) {
+host::CalibrationRun agree_record(host::RunKind kind, const Result& first, const Result& full, int64_t model,
+                                  uint32_t vehicle_class) {
   host::CalibrationRun run = evidence_of(AnswerPass::kAgree, kind, first);
-  int64_t a[kCalibratedLevels], b[kCalibratedLevels];
-  answers(first, a);
-  answers(full, b);
-  for (uint32_t l = 0; l < kCalibratedLevels; ++l) run.right[l] = a[l] == b[l];
+  const bool clutter = kind == host::RunKind::kClutter;
+  bool first_right[kCalibratedLevels], full_right[kCalibratedLevels];
+  judge(first, clutter, model, vehicle_class, first_right);
+  judge(full, clutter, model, vehicle_class, full_right);
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) run.right[l] = first_right[l] || !full_right[l];
   return run;
 }
 

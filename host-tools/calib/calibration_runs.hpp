@@ -66,11 +66,12 @@ void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class,
            bool right[kCalibratedLevels]);
 
 // The agree pass's record of one scan: the first pass's density and
-// evidence; right at a level when the first pass's answer there is the full
-// pass's (the same model, class, group; at the vehicle level, both name a
-// posed model or neither does), whatever the truth. A failed search names
-// nothing.
-host::CalibrationRun agree_record(host::RunKind kind, const Result& first, const Result& full);
+// evidence; wrong at a level only when stopping there would lose a right
+// answer: the full pass names the truth at that level (judge()) and the
+// first pass does not. Where both are right, both wrong, or only the first
+// is right, the stop loses nothing.
+host::CalibrationRun agree_record(host::RunKind kind, const Result& first, const Result& full, int64_t model,
+                                  uint32_t vehicle_class);
 
 struct RunSummary {
   host::FitProvenance drawn;  // scans per model, models left out, ..., seed

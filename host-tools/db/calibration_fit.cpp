@@ -26,8 +26,9 @@ struct Fit {
   double precision = 0.0, recall = 0.0;
 };
 
-// The agree table's question (does the first pass's answer match the full
-// pass's?) has an answer on every run: it has no outsiders.
+// The agree table's question (would stopping after the first pass lose a
+// right answer the full pass gives?) has an answer on every run: it has no
+// outsiders.
 bool is_outsider(AnswerPass pass, RunKind kind, AnswerLevel level) {
   if (pass == AnswerPass::kAgree) return false;
   return kind == RunKind::kClutter || (level == AnswerLevel::kModel && kind == RunKind::kUnknown);
@@ -126,7 +127,7 @@ class LevelFitter {
   // An unknown vehicle is never right at the model level: there the
   // outsider rate bounds it, and precision is that of the answers whose
   // model could be named. Elsewhere, and at every level of the agree table
-  // (both passes may name the same wrong model), it weighs unknown_weight_.
+  // (where a left-out vehicle loses nothing by the stop), it weighs unknown_weight_.
   double weight(RunKind kind) const {
     if (kind != RunKind::kUnknown) return 1.0;
     return level_ == AnswerLevel::kModel && pass_ != AnswerPass::kAgree ? 0.0 : unknown_weight_;

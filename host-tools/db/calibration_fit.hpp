@@ -19,7 +19,8 @@
 // the target at no threshold, is never confident.
 //
 // The agree pass's runs carry the first pass's evidence and, per level,
-// whether its answer there is the full pass's on the same scan: its table
+// whether stopping after the first pass loses no right answer there (wrong
+// only when the full pass names the truth and the first pass does not): its table
 // is fitted the same way to agree_precision, over known, unknown and
 // clutter runs alike (no outsiders; the unknown runs weighed as at the
 // group and class levels).
@@ -45,14 +46,14 @@ struct CalibrationRun {
   RunKind kind = RunKind::kKnown;
   float density = 0.0f;                    // RecognitionStats::scan_density
   float evidence[kCalibratedLevels] = {};  // Result::levels[l].evidence
-  bool right[kCalibratedLevels] = {};  // the answer at that level names the truth (agree: the full pass's)
+  bool right[kCalibratedLevels] = {};  // the answer at that level names the truth (agree: loses no right one)
 };
 
 struct FitOptions {
   float target_precision = 0.99f;
-  // The agree table's (the cascade's stop): the cascade's answer differs
-  // from the full pass's on at most about 1 - agree_precision of the queries
-  // it stops early, so it stays within the accuracy target of the full pass.
+  // The agree table's (the cascade's stop): stopping early loses a right
+  // answer the full pass would give on at most about 1 - agree_precision of
+  // the queries it stops, so it stays within the accuracy target of the full pass.
   float agree_precision = 0.995f;
   // Lower edges of the density bands, points per m^2: 0 first, increasing.
   std::vector<float> band_edges{0.0f, 15.0f, 30.0f, 60.0f, 120.0f, 240.0f};

@@ -16,7 +16,8 @@ void add_calibration_flags(CLI::App* cmd, pipeline::CalibrationSettings* c) {
       ->capture_default_str();
   cmd->add_option("--agree-precision", c->fit.agree_precision,
                   "precision the cascade's stop is fitted to: the share of the queries the first pass "
-                  "answers on which the full pass would have given the same model")
+                  "answers on which stopping loses no right answer (the full pass names the truth only "
+                  "where the first pass does too)")
       ->check(CLI::Range(0.5, 1.0))
       ->capture_default_str();
   cmd->add_option(

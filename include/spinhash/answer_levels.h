@@ -37,7 +37,8 @@
 #define SPINHASH_CALIBRATION_PASSES(P)                                       \
   P(0, Full, "full", "the recognizer's configured settings (the full pass)") \
   P(1, First, "first", "the cascade's first pass: the first_* settings")     \
-  P(2, Agree, "agree", "the cascade's stop: the first pass's answer is the full pass's")
+  P(2, Agree, "agree",                                                       \
+    "the cascade's stop: stopping after the first pass loses no right answer at that level")
 
 #define SPINHASH_CALIBRATION_PASS_COUNT 3
 

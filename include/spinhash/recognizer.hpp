@@ -117,7 +117,7 @@ struct CascadeStats {
   uint64_t work = 0;         // the query's total, which RecognizerConfig::max_work caps
   bool work_capped = false;  // max_work was reached (Status::kWorkCapReached)
   // The first pass answered, not confident, because the database's agree
-  // table says the full pass would name the same model.
+  // table says stopping there loses no right answer the full pass would give.
   bool stopped_on_agreement = false;
 };
 

@@ -274,11 +274,12 @@ TEST_CASE("each pass's table is fitted from its own runs alone") {
   CHECK(db.calibration().confident(AnswerPass::kFirst, AnswerLevel::kModel, 6.0f, 100.0f));
 }
 
-TEST_CASE("the agree table: the first pass's evidence against agreement, to its own target, no outsiders") {
-  // Agreement below evidence 10 is a coin's toss; from 10 on the two passes
-  // always agree, on known, left-out and clutter scans alike. A full-pass
-  // table would hold the left-out and clutter runs at the model level under
-  // the outsider rate and find no threshold; agreement has no outsiders.
+TEST_CASE("the agree table: the first pass's evidence against a stop that loses nothing, no outsiders") {
+  // Below evidence 10 the stop loses a right answer on every other run;
+  // from 10 on it loses none, on known, left-out and clutter scans alike. A
+  // full-pass table would hold the left-out and clutter runs at the model
+  // level under the outsider rate and find no threshold; the stop has no
+  // outsiders.
   std::vector<host::CalibrationRun> runs;
   const host::RunKind kinds[] = {host::RunKind::kKnown, host::RunKind::kUnknown, host::RunKind::kClutter};
   for (int e = 1; e <= 300; ++e) {

@@ -258,8 +258,8 @@ TEST_CASE("cascade: the agree table stops an unsure first pass; its flags stay t
   REQUIRE(agrees.db.calibration().fitted(AnswerPass::kAgree));
   REQUIRE_FALSE(no_agree_table.db.calibration().fitted(AnswerPass::kAgree));
 
-  // The first pass is not confident by its table, but the full pass would
-  // name the same model: the query ends after the first pass, unflagged.
+  // The first pass is not confident by its table, but stopping loses no
+  // right answer: the query ends after the first pass, unflagged.
   const Run stopped = recognize_toy(agrees, RecognizerConfig{}, m, true);
   REQUIRE(stopped.result.status == Status::kOk);
   const CascadeStats& c = stopped.result.stats.cascade;

@@ -1,16 +1,23 @@
 // The agree pass's calibration record (calib/calibration_runs): a scan's
-// first-pass evidence, right at a level exactly when the first pass's
-// answer there is the full pass's, whatever the truth.
+// first-pass evidence, wrong at a level only when the full pass names the
+// truth there and the first pass does not (stopping would lose a right
+// answer).
 #include <doctest/doctest.h>
 
 #include <limits>
 
 #include "calib/calibration_runs.hpp"
 #include "spinhash/calibration.hpp"
+#include "spinhash/vehicle_class.hpp"
 
 using namespace spinhash;
 
 namespace {
+
+constexpr uint32_t kSedan = static_cast<uint32_t>(VehicleClass::kSedan);
+constexpr uint32_t kTruck = static_cast<uint32_t>(VehicleClass::kTruck);
+const uint32_t kLight = static_cast<uint32_t>(vehicle_group_of(kSedan));
+const uint32_t kHeavy = static_cast<uint32_t>(vehicle_group_of(kTruck));
 
 // A result naming `model` of `vehicle_class` in `group` first, with evidence
 // `evidence` at every level and scan density `density`.
@@ -47,52 +54,50 @@ void check_right(const host::CalibrationRun& r, bool vehicle, bool group, bool v
 
 }  // namespace
 
-TEST_CASE("agree record: the first pass's evidence, right where the two passes name the same") {
-  const Answer first(3, 1, 0, 4.5f, 80.0f);
-  const Answer full(3, 1, 0, 9.0f, 120.0f);
-  const host::CalibrationRun r = calib::agree_record(host::RunKind::kKnown, first.result, full.result);
+TEST_CASE(
+    "agree record: the first pass's evidence; right when both passes "
+    "name the truth") {
+  const Answer first(3, kSedan, kLight, 4.5f, 80.0f);
+  const Answer full(3, kSedan, kLight, 9.0f, 120.0f);
+  const host::CalibrationRun r =
+      calib::agree_record(host::RunKind::kKnown, first.result, full.result, 3, kSedan);
   CHECK(r.pass == AnswerPass::kAgree);
   CHECK(r.kind == host::RunKind::kKnown);
   CHECK(r.density == 80.0f);  // the first pass's: the stop decides on it
-  for (uint32_t l = 0; l < kCalibratedLevels; ++l) {
-    CHECK(r.evidence[l] == 4.5f);
-    CHECK(r.right[l]);
-  }
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) CHECK(r.evidence[l] == 4.5f);
+  check_right(r, true, true, true, true);
 }
 
-TEST_CASE("agree record: a pair that disagrees is wrong at that level even when the first answer is right") {
-  // The scan is of model 3 (class 1): the first pass names it, the full
-  // pass a look-alike of the same class. The truth plays no part.
-  const Answer first(3, 1, 0, 4.5f, 80.0f);
-  const Answer full(5, 1, 0, 9.0f, 80.0f);
-  check_right(calib::agree_record(host::RunKind::kKnown, first.result, full.result), true, true, true, false);
-
-  // Both wrong the same way on a vehicle left out of the database, or on
-  // clutter: they agree.
-  const Answer look_alike(5, 2, 1, 1.0f, 30.0f);
-  check_right(calib::agree_record(host::RunKind::kUnknown, look_alike.result, look_alike.result), true, true,
-              true, true);
-
-  // Another class and group: wrong at every level but the vehicle's.
-  const Answer other(7, 4, 2, 9.0f, 80.0f);
-  check_right(calib::agree_record(host::RunKind::kClutter, first.result, other.result), true, false, false,
-              false);
+TEST_CASE(
+    "agree record: wrong only where the full pass names the truth and "
+    "the first pass does not") {
+  // A sedan, model 3: the first pass names a look-alike of its class, the
+  // full pass the sedan. Stopping loses the model.
+  const Answer look_alike(5, kSedan, kLight, 4.5f, 80.0f);
+  const Answer right(3, kSedan, kLight, 9.0f, 80.0f);
+  check_right(calib::agree_record(host::RunKind::kKnown, look_alike.result, right.result, 3, kSedan), true,
+              true, true, false);
+  // The other way round the stop gains the model: nothing lost.
+  check_right(calib::agree_record(host::RunKind::kKnown, right.result, look_alike.result, 3, kSedan), true,
+              true, true, true);
+  // Both wrong, even differently (a vehicle left out of the database, or
+  // clutter): nothing to lose.
+  const Answer truck(7, kTruck, kHeavy, 9.0f, 80.0f);
+  check_right(calib::agree_record(host::RunKind::kUnknown, look_alike.result, truck.result, -1, kSedan), true,
+              true, true, true);
+  check_right(calib::agree_record(host::RunKind::kClutter, look_alike.result, truck.result, -1, 0u), true,
+              true, true, true);
 }
 
-TEST_CASE("agree record: a failed first pass is never flagged and agrees only with a failed full pass") {
-  Answer failed(3, 1, 0, 4.5f, 80.0f);
+TEST_CASE(
+    "agree record: a failed first pass is never flagged and loses what "
+    "the full pass finds") {
+  Answer failed(3, kSedan, kLight, 4.5f, 80.0f);
   failed.result.status = Status::kWorkCapReached;
-  const Answer full(3, 1, 0, 9.0f, 80.0f);
-  const host::CalibrationRun r = calib::agree_record(host::RunKind::kKnown, failed.result, full.result);
-  for (uint32_t l = 0; l < kCalibratedLevels; ++l) {
+  const Answer full(3, kSedan, kLight, 9.0f, 80.0f);
+  const host::CalibrationRun r =
+      calib::agree_record(host::RunKind::kKnown, failed.result, full.result, 3, kSedan);
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l)
     CHECK(r.evidence[l] == -std::numeric_limits<float>::infinity());
-    CHECK_FALSE(r.right[l]);
-  }
-  Answer none(3, 1, 0, 4.5f, 80.0f);
-  none.result.ranking_count = none.result.class_ranking_count = none.result.group_ranking_count = 0;
-  Answer none_full = none;
-  none_full.result.ranking = none_full.model;  // its own arrays, not the copy source's
-  const host::CalibrationRun both =
-      calib::agree_record(host::RunKind::kClutter, none.result, none_full.result);
-  for (uint32_t l = 0; l < kCalibratedLevels; ++l) CHECK(both.right[l]);
+  check_right(r, true, false, false, false);
 }
