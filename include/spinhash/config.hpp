@@ -60,7 +60,7 @@ constexpr uint32_t kFlightMaxFeatures = 256;     // s: query features kept (even
 constexpr uint32_t kFlightMaxBucketScan = 512;   // LSH entries scanned per query feature
 constexpr uint32_t kFlightTopW = 30;             // W: candidates per query feature
 constexpr uint32_t kFlightVerifyFeatures = 128;  // query features scored per hypothesis
-constexpr uint32_t kFlightMaxTrials = 800;       // BRAN's draws: half the full pass's
+constexpr uint32_t kFlightMaxTrials = 700;       // BRAN's draws: the median query in 50 M, right first held
 // The first pass's confidence margin (ConfidenceParams::min_margin): its
 // confident answer ends the query, so it must be right as often as the full
 // pass's on fewer, coarser features.
