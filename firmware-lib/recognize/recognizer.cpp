@@ -13,11 +13,15 @@
 // table, or by its priors in a database without one) or when the agree
 // table (fitted on the first pass's evidence against "the full pass names
 // the truth where the first pass does not") says stopping loses no right
-// answer; either way its flags stay the first pass's own.
+// answer; either way its flags stay the first pass's own. A full pass that
+// the work cap stops before it poses any model answers with the first
+// pass's leading models instead, unflagged like every capped answer.
 #include <new>
 
 #include "recognize/carry.hpp"
+#include "recognize/classes.hpp"
 #include "recognize/config_check.hpp"
+#include "recognize/level_evidence.hpp"
 #include "recognize/search_context.hpp"
 #include "recognize/sparse_search.hpp"
 #include "recognize/stages.hpp"
@@ -157,6 +161,46 @@ bool full_pass_agrees(const Database& db, const Result& first) {
                      first.stats.confidence.scan_density);
 }
 
+// Keeps the first pass's answer while the full pass reuses the buffers its
+// rankings live in: the Result and its first kMaxCarriedPoses models.
+void keep_first_answer(RecognizerBuffers& b, const Result& first) {
+  b.first_answer = first;
+  const uint32_t n = first.ranking_count < kMaxCarriedPoses ? first.ranking_count : kMaxCarriedPoses;
+  for (uint32_t i = 0; i < n; ++i) b.first_ranking[i] = first.ranking[i];
+  b.first_answer.ranking = b.first_ranking;
+  b.first_answer.ranking_count = n;
+  if (b.first_answer.group_size > n) b.first_answer.group_size = n;
+}
+
+// The full pass was capped before it posed any model: its answer names
+// none, the first pass's does.
+bool capped_without_pose(const Result& full) {
+  return full.status == Status::kWorkCapReached && (full.ranking_count == 0u || !full.ranking[0].has_pose);
+}
+
+// Replaces the capped full pass's answer with the kept first pass's: its
+// leading models, their class and group rankings rebuilt from them, no
+// flag (a partial search's answer); the cascade's counts stay the query's.
+void answer_with_first_pass(const Database& db, RecognizerBuffers& b, Result* result) {
+  const CascadeStats both = result->stats.cascade;
+  *result = b.first_answer;
+  result->status = Status::kWorkCapReached;
+  if (result->class_ranking_count > 0u) {
+    result->class_ranking = b.classes;
+    result->class_ranking_count = rank_classes(db, *result, b.classes);
+  }
+  if (result->group_ranking_count > 0u) {
+    result->group_ranking = b.groups;
+    result->group_ranking_count = rank_groups(db, *result, b.groups);
+  }
+  result->confident = false;
+  result->class_confident = false;
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) result->levels[l].confident = false;
+  result->level = AnswerLevel::kNone;
+  result->stats.cascade = both;
+  result->stats.cascade.answered_by = 0;
+}
+
 }  // namespace
 
 Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noexcept {
@@ -181,6 +225,7 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
       result.stats.cascade.first_work = first_work;
       return result;
     }
+    keep_first_answer(b, result);
     result = Result{};
   }
   recognize_pass(*db_, b, used_bytes_, cloud, terrain, config_, calibration_pass(config_), first_work,
@@ -190,6 +235,7 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
   c.answered_by = 1;
   c.first_work = first_work;
   c.full_work = c.work - first_work;
+  if (config_.cascade && capped_without_pose(result)) answer_with_first_pass(*db_, b, &result);
   return result;
 }
 

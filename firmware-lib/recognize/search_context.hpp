@@ -54,6 +54,13 @@ struct RecognizerBuffers {
   uint32_t carried_models[kMaxCarriedPoses] = {};
   RigidPose carried_poses[kMaxCarriedPoses];
   uint32_t carried_count = 0;
+  // The first pass's answer, kept while the full pass runs: the answer a
+  // capped full pass that names no posed model falls back to
+  // (recognizer.cpp). Its ranking is the first kMaxCarriedPoses models; the
+  // rest, and its class and group rankings, live in buffers the full pass
+  // reuses.
+  Result first_answer;
+  RankedModel first_ranking[kMaxCarriedPoses];
   RankedGroup groups[kVehicleGroupCount];  // Result::group_ranking
 };
 

@@ -23,6 +23,8 @@ struct Run {
   Result result;
   std::vector<uint32_t> models;
   std::vector<float> scores;
+  std::vector<bool> posed;
+  std::vector<uint32_t> classes;  // the class ranking's
 };
 
 // Recognises toy model `m`'s noisy view (from the side, or with `airborne`
@@ -41,7 +43,10 @@ Run recognize_toy(const test::ToyDatabase& toy, const RecognizerConfig& cfg, uin
   for (uint32_t i = 0; i < run.result.ranking_count; ++i) {
     run.models.push_back(run.result.ranking[i].model);
     run.scores.push_back(run.result.ranking[i].score);
+    run.posed.push_back(run.result.ranking[i].has_pose);
   }
+  for (uint32_t i = 0; i < run.result.class_ranking_count; ++i)
+    run.classes.push_back(run.result.class_ranking[i].vehicle_class);
   return run;
 }
 
@@ -159,6 +164,50 @@ TEST_CASE("cascade: the work cap ends a query with its best answer so far, never
   CHECK(first.result.stats.cascade.passes == 1u);
   CHECK(first.result.stats.cascade.answered_by == 0u);
   CHECK(first.result.ranking_count == 0u);
+}
+
+// A full pass the cap stops before its first hypothesis, without carried
+// poses, names no posed model: the query answers with the first pass's
+// leading models, still capped and unflagged, its stats those of both passes.
+TEST_CASE("cascade: a full pass capped before it poses a model answers with the first pass's models") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  RecognizerConfig cascade;
+  cascade.carry.enabled = false;
+  const Run side = recognize_toy(toy, cascade, 2u);
+  REQUIRE(side.result.stats.cascade.passes == 2u);
+  const Run flight = recognize_toy(toy, preset_config(Preset::kFlight), 2u);  // the first pass alone
+  REQUIRE(flight.result.ranking_count >= 1u);
+  REQUIRE(flight.posed[0]);
+  cascade.max_work = side.result.stats.cascade.first_work + 1u;
+  const Run early = recognize_toy(toy, cascade, 2u);
+  CHECK(early.result.status == Status::kWorkCapReached);
+  // The answer's stage counts are the first pass's.
+  CHECK(early.result.stats.draws.trials == flight.result.stats.draws.trials);
+  CHECK(early.result.stats.carry.carried == 0u);
+  const CascadeStats& c = early.result.stats.cascade;
+  CHECK(c.passes == 2u);
+  CHECK(c.answered_by == 0u);
+  CHECK(c.work_capped);
+  CHECK(c.first_work == flight.result.stats.cascade.work);
+  CHECK(c.full_work > 0u);
+  CHECK(c.work == c.first_work + c.full_work);
+  REQUIRE(early.result.ranking_count >= 1u);
+  if (early.models.empty()) return;  // REQUIRE does not end the test without exceptions
+  CHECK(early.posed[0]);
+  CHECK(early.models[0] == flight.models[0]);
+  CHECK(early.scores[0] == flight.scores[0]);
+  const size_t kept = early.models.size();
+  REQUIRE(kept == (flight.models.size() < kMaxCarriedPoses ? flight.models.size() : kMaxCarriedPoses));
+  if (kept > flight.models.size()) return;
+  CHECK(std::vector<uint32_t>(flight.models.begin(), flight.models.begin() + kept) == early.models);
+  CHECK_FALSE(early.result.confident);
+  CHECK_FALSE(early.result.class_confident);
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) CHECK_FALSE(early.result.levels[l].confident);
+  CHECK(early.result.level == AnswerLevel::kNone);
+  REQUIRE_FALSE(early.classes.empty());
+  REQUIRE_FALSE(flight.classes.empty());
+  if (!early.classes.empty() && !flight.classes.empty()) CHECK(early.classes[0] == flight.classes[0]);
 }
 
 namespace {
