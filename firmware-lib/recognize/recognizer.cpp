@@ -5,7 +5,8 @@
 // flight preset's); a confident answer ends the query. Otherwise the full
 // pass runs at the config's own settings in the same buffers (the
 // workspace is carved for the full pass; the first uses a part of each),
-// starting from the first pass's leading poses (carry.hpp). The first
+// with carry.enabled starting from the first pass's leading poses
+// (carry.hpp). The first
 // pass's spin images overwrite its loaded points, so the full pass loads
 // the cloud again; its features are its own (another voxel, more of them).
 // Each pass's flags are decided by its own calibrated table. The first

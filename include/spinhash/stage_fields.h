@@ -129,9 +129,12 @@
   X(U32, max_sparse_bucket_scan, 4096u, 1u, kMaxBucketScan, "",                                              \
     "... up to this many; the query's total stays max_features x max_bucket_scan")
 
-#define SPINHASH_PARAMS_carry(X)                                                                            \
-  X(BOOL, enabled, true, 0, 1, "", "carry the first pass's leading poses into the full pass (the cascade)") \
-  X(U32, carry_models, 8u, 0u, kMaxCarriedPoses, "",                                                        \
+#define SPINHASH_PARAMS_carry(X)                                                                             \
+  X(BOOL, enabled, false, 0, 1, "",                                                                          \
+    "carry the first pass's leading poses into the full pass (the cascade; off: carried poses let a "        \
+    "look-alike outrank the model the full pass's own draws find, without them an escalated query gets the " \
+    "full pass alone's answer)")                                                                             \
+  X(U32, carry_models, 8u, 0u, kMaxCarriedPoses, "",                                                         \
     "leading models of the first pass whose poses the full pass verifies first")
 
 #define SPINHASH_PARAMS_draws(X)                                                                             \

@@ -1,6 +1,7 @@
 // The cascade (RecognizerConfig::cascade, recognizer.cpp): a clear view is
 // answered by the first pass alone; an unsure one goes on to the full pass,
-// which is the full preset's own pass plus the first pass's carried poses;
+// which is the full preset's own pass (plus, with carry.enabled, the first
+// pass's carried poses);
 // the work cap stops a query with its best answer so far; the first pass's
 // answer ends the query when its own calibrated table flags it.
 #include <doctest/doctest.h>
@@ -82,7 +83,9 @@ TEST_CASE("cascade: an unsure first pass goes on to the full pass, which starts 
   REQUIRE(test::make_toy_database(&toy));
   const uint32_t m = 2;
   // A side view: the first pass's few coarse features do not make it sure.
-  const Run escalated = recognize_toy(toy, RecognizerConfig{}, m);
+  RecognizerConfig carried;
+  carried.carry.enabled = true;
+  const Run escalated = recognize_toy(toy, carried, m);
   REQUIRE(escalated.result.status == Status::kOk);
   REQUIRE(escalated.result.ranking_count >= 1);
   CHECK(escalated.result.ranking[0].model == m);
@@ -97,9 +100,7 @@ TEST_CASE("cascade: an unsure first pass goes on to the full pass, which starts 
 
   // Without the carried poses, the full pass is the full preset's: the
   // shared workspace carries nothing else from the first pass.
-  RecognizerConfig uncarried;
-  uncarried.carry.enabled = false;
-  const Run plain = recognize_toy(toy, uncarried, m);
+  const Run plain = recognize_toy(toy, RecognizerConfig{}, m);  // carrying is off by default
   const Run full = recognize_toy(toy, preset_config(Preset::kFull), m);
   REQUIRE(plain.result.stats.cascade.passes == 2u);
   CHECK(plain.result.stats.carry.carried == 0u);
@@ -142,6 +143,7 @@ TEST_CASE("cascade: the work cap ends a query with its best answer so far, never
   // answers with them.
   {
     RecognizerConfig cascade;
+    cascade.carry.enabled = true;
     const Run side = recognize_toy(toy, cascade, 2u);
     REQUIRE(side.result.stats.cascade.passes == 2u);
     cascade.max_work = side.result.stats.cascade.first_work + 1u;
@@ -172,8 +174,7 @@ TEST_CASE("cascade: the work cap ends a query with its best answer so far, never
 TEST_CASE("cascade: a full pass capped before it poses a model answers with the first pass's models") {
   test::ToyDatabase toy;
   REQUIRE(test::make_toy_database(&toy));
-  RecognizerConfig cascade;
-  cascade.carry.enabled = false;
+  RecognizerConfig cascade;  // carrying off, the default
   const Run side = recognize_toy(toy, cascade, 2u);
   REQUIRE(side.result.stats.cascade.passes == 2u);
   const Run flight = recognize_toy(toy, preset_config(Preset::kFlight), 2u);  // the first pass alone
