@@ -128,6 +128,15 @@ Result Recognizer::recognize(const double* xyz, uint32_t count) noexcept {
 
 namespace {
 
+// Clears every flag of an answer at every level (a partial search's answer
+// is ranked, never flagged).
+void clear_flags(Result* result) {
+  result->confident = false;
+  result->class_confident = false;
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) result->levels[l].confident = false;
+  result->level = AnswerLevel::kNone;
+}
+
 // One pass of the stages with `pass`'s settings; `work_before`: what the
 // earlier passes spent (the cap counts the query's total). Not named run*:
 // the instruction scripts toggle callgrind on Recognizer::run*, and a
@@ -145,10 +154,7 @@ void recognize_pass(const Database& db, RecognizerBuffers& b, size_t used_bytes,
   CascadeStats& c = result->stats.cascade;
   c.work = work_before + pass_work(result->stats, pass);
   c.work_capped = result->status == Status::kWorkCapReached;
-  if (c.work_capped) {  // a partial search: its answer is never flagged
-    result->confident = false;
-    result->class_confident = false;
-  }
+  if (c.work_capped) clear_flags(result);  // a partial search: its answer is never flagged
   keep_leading_poses(ctx);
 }
 
@@ -194,10 +200,7 @@ void answer_with_first_pass(const Database& db, RecognizerBuffers& b, Result* re
     result->group_ranking = b.groups;
     result->group_ranking_count = rank_groups(db, *result, b.groups);
   }
-  result->confident = false;
-  result->class_confident = false;
-  for (uint32_t l = 0; l < kCalibratedLevels; ++l) result->levels[l].confident = false;
-  result->level = AnswerLevel::kNone;
+  clear_flags(result);
   result->stats.cascade = both;
   result->stats.cascade.answered_by = 0;
 }

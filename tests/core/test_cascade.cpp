@@ -137,6 +137,11 @@ TEST_CASE("cascade: the work cap ends a query with its best answer so far, never
   CHECK(capped.result.stats.draws.budget_exhausted);
   CHECK_FALSE(capped.result.confident);
   CHECK_FALSE(capped.result.class_confident);
+  // No level is flagged either, the coarse ones included, though the whole
+  // search flags one.
+  CHECK(whole.result.level != AnswerLevel::kNone);
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) CHECK_FALSE(capped.result.levels[l].confident);
+  CHECK(capped.result.level == AnswerLevel::kNone);
   REQUIRE(capped.result.ranking_count >= 1);  // the best answer so far
   // An escalated query whose full pass reaches the cap before its draws
   // still verifies the first pass's poses on the full pass's features and
