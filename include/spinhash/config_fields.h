@@ -44,8 +44,8 @@
   X(BOOL, has_viewpoint, 0, 1, "", "set by --viewpoint")                                                     \
   X(VEC3D, viewpoint, 0, 0, "", "set by --viewpoint X Y Z: sensor position, normals turn towards it")        \
   X(BOOL, cascade, 0, 1, "!--no-cascade",                                                                    \
-    "a first pass at the first_* settings, the full pass only when it does not stop the query (confident, "  \
-    "or the agree table's)")                                                                                 \
+    "the full pass alone, without the cascade's first pass at the first_* settings (which ends a query "     \
+    "when confident or by the agree table)")                                                                 \
   X(F32, first_query_voxel, 0.0f, 100.0f, "--first-voxel",                                                   \
     "the first pass's query voxel, m (0: the database's)")                                                   \
   X(U32, first_features, 2u, kMaxQueryFeaturesLimit, "--first-features",                                     \
