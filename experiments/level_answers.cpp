@@ -1,12 +1,13 @@
 #include "level_answers.hpp"
 
+#include "spinhash/answered.hpp"
 #include "spinhash/vehicle_class.hpp"
 
 namespace spinhash::experiment {
 
 LevelAnswers level_answers(const Result& r) {
   LevelAnswers a;
-  if (r.status != Status::kOk || r.ranking_count == 0) return a;
+  if (!has_answer(r.status) || r.ranking_count == 0) return a;
   a.ranked = true;
   a.model = r.ranking[0].model;
   a.model_confident = r.confident;

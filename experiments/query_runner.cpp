@@ -1,4 +1,5 @@
 #include "query_runner.hpp"
+#include "spinhash/answered.hpp"
 
 #include <algorithm>
 
@@ -32,7 +33,7 @@ Outcome recognise(pipeline::RecognitionSession& session, const Query& q) {
   o.trials = r.stats.draws.trials;
   o.surface_coverage = r.stats.confidence.surface_coverage;
   o.scan_density = r.stats.confidence.scan_density;
-  if (r.status != Status::kOk) return o;
+  if (!has_answer(r.status)) return o;
   o.ranked = r.ranking_count;
   if (r.ranking_count > 0) {
     o.best_model = r.ranking[0].model;

@@ -5,13 +5,15 @@
 #
 #   scripts/instructions-per-query.sh [--sizes 56,1000] [--queries 3] [--modes bran,sran,sind]
 #       [--sran-queries-large 1] [--spacing 0.05] [--out DIR] [--spinhash BIN]
-#       [--target aarch64|arm --target-build DIR]
+#       [--preset default|flight|full] [--target aarch64|arm --target-build DIR]
 #
 # Counts cover Recognizer::run (feature extraction through ranking), not
 # process start-up or database loading. SRAN is linear in the models and
 # ~50x slower under callgrind: at sizes above 100 it runs only the first
 # --sran-queries-large queries. --spacing: the queries' point spacing (m;
-# 0.10 is an airborne sensor's at about 40 m). --target also counts each query on an
+# 0.10 is an airborne sensor's at about 40 m). --preset: the recognizer's
+# named configuration (include/spinhash/presets.hpp; default: the cascade).
+# --target also counts each query on an
 # emulated target: DIR's cross-built tests/worst_case_runner (`query` mode, the
 # same default config) under qemu-user with scripts/qemu/insn_count.c, a TCG
 # plugin that counts the instructions of the recognition (Debian ships no
@@ -20,14 +22,14 @@
 set -euo pipefail
 source "$(dirname "$0")/lib/fleet_db.sh"
 
-usage() { sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
 sizes="56,1000" queries=3 modes="bran,sran,sind" sran_large=1 out="out/instructions"
 sran_large_from=100
 noise=0.05 spacing=0.05
 root=$(cd "$(dirname "$0")/.." && pwd)
 spinhash="${SPINHASH:-}"
-target="" target_build=""
+target="" target_build="" preset="default"
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --sizes) sizes="$2"; shift 2 ;;
@@ -37,6 +39,7 @@ while [[ $# -gt 0 ]]; do
     --spacing) spacing="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --spinhash) spinhash="$2"; shift 2 ;;
+    --preset) preset="$2"; shift 2 ;;
     --target) target="$2"; shift 2 ;;
     --target-build) target_build="$2"; shift 2 ;;
     *) usage ;;
@@ -59,7 +62,7 @@ target_count() {  # DB PLY MODE TOP HYPOTHESES
   python3 -c 'import sys; b = open(sys.argv[1], "rb").read(); e = b"end_header\n"
 open(sys.argv[2], "wb").write(b[b.index(e) + len(e):])' "$2" "$raw"
   local line
-  line=$("${qemu[@]}" "$runner" query "$1" "$raw" "$3" 2>&1)
+  line=$("${qemu[@]}" "$runner" query "$1" "$raw" "$3" "preset=$preset" 2>&1)
   # The target must rank the same model first. Its hypothesis count may
   # differ: libm's float results differ across targets, and with them a
   # few poses (docs/budgets.md); the count it drew is then said.
@@ -98,14 +101,14 @@ for size in "${size_list[@]}"; do
     n=$queries
     [[ "$mode" == sran && $size -gt $sran_large_from && $sran_large -lt $n ]] && n=$sran_large
     for ((q = 0; q < n; q++)); do
-      json=$("$spinhash" recognize --db "$db" --mode "$mode" --top 1 "$out/q$q.ply")
+      json=$("$spinhash" recognize --db "$db" --preset "$preset" --mode "$mode" --top 1 "$out/q$q.ply")
       ms=$(grep -o '"time_ms":[0-9.e+]*' <<< "$json" | cut -d: -f2)
       hyp=$(grep -o '"hypotheses":[0-9]*' <<< "$json" | sed -n 1p | cut -d: -f2)
       top=$(grep -o '"ranking":\[{"model":"[^"]*"' <<< "$json" | sed 's/.*"model":"//; s/"$//')
       cg="$out/callgrind.$size.$mode.$q"
       echo "instructions-per-query: $size models, $mode, query $q (callgrind)" >&2
       valgrind --tool=callgrind --toggle-collect='spinhash::Recognizer::run*' --callgrind-out-file="$cg" \
-        "$spinhash" recognize --db "$db" --mode "$mode" --top 1 "$out/q$q.ply" >/dev/null 2>"$cg.log"
+        "$spinhash" recognize --db "$db" --preset "$preset" --mode "$mode" --top 1 "$out/q$q.ply" >/dev/null 2>"$cg.log"
       ir=$(awk '/^(summary|totals):/ {print $2; exit}' "$cg")
       tir=$(target_count "$db" "$out/q$q.ply" "$mode" "$top" "$hyp")
       echo "$size,$features,$mode,$q,$ir,$ms,$hyp,$top,$(cat "$out/q$q.model"),$tir" >> "$csv"

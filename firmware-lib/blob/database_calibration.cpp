@@ -13,6 +13,7 @@ namespace blob_check {
 namespace {
 
 bool unit_interval(float v) { return std::isfinite(v) && v >= 0.0f && v <= 1.0f; }
+bool valid_target(float t) { return std::isfinite(t) && t > 0.0f && t <= 1.0f; }
 
 uint64_t payload_bytes(const blob::CalibrationHeader& h) {
   const uint64_t cells = static_cast<uint64_t>(h.pass_count) * h.level_count * h.band_count;
@@ -32,8 +33,7 @@ Status check_bands(const blob::CalibrationHeader& h) {
   if (!all_zero(h.reserved, sizeof(h.reserved))) return Status::kBlobNotZeroed;
   for (uint32_t b = h.band_count; b < blob::kMaxDensityBands; ++b)
     if (h.band_min_density[b] != 0.0f) return Status::kBlobNotZeroed;
-  if (!(std::isfinite(h.target_precision) && h.target_precision > 0.0f && h.target_precision <= 1.0f))
-    return Status::kBlobBadCalibration;
+  if (!valid_target(h.target_precision)) return Status::kBlobBadCalibration;
   if (h.band_min_density[0] != 0.0f) return Status::kBlobBadCalibration;
   for (uint32_t b = 1; b < h.band_count; ++b) {
     const float v = h.band_min_density[b];
@@ -42,11 +42,18 @@ Status check_bands(const blob::CalibrationHeader& h) {
   return Status::kOk;
 }
 
+// The precision a pass's fitted cells reach: its own, or the header's.
+float pass_target(const blob::CalibrationHeader& h, const blob::CalibrationPass& p) {
+  return p.target_precision > 0.0f ? p.target_precision : h.target_precision;
+}
+
 Status check_pass(const blob::CalibrationPass& p, uint32_t index) {
-  if (p.reserved != 0u) return Status::kBlobNotZeroed;
   if (p.pass != index || p.pass >= kAnswerPassCount) return Status::kBlobBadCalibration;
-  if (p.source == blob::kSourcePriors) return p.runs == 0u ? Status::kOk : Status::kBlobBadCalibration;
-  return p.source == blob::kSourceFitted ? Status::kOk : Status::kBlobBadCalibration;
+  if (p.source == blob::kSourcePriors)
+    return p.runs == 0u && p.target_precision == 0.0f ? Status::kOk : Status::kBlobBadCalibration;
+  if (p.source != blob::kSourceFitted) return Status::kBlobBadCalibration;
+  return p.target_precision == 0.0f || valid_target(p.target_precision) ? Status::kOk
+                                                                        : Status::kBlobBadCalibration;
 }
 
 // One cell of a fitted table on its own.
@@ -103,7 +110,7 @@ Status check_calibration(const Sections& s) {
     if (st != Status::kOk) return st;
     for (uint32_t l = 0; l < kCalibratedLevels; ++l) {
       st = check_level(cells + (static_cast<size_t>(p) * kCalibratedLevels + l) * h.band_count, h.band_count,
-                       passes[p].source == blob::kSourceFitted, h.target_precision);
+                       passes[p].source == blob::kSourceFitted, pass_target(h, passes[p]));
       if (st != Status::kOk) return st;
     }
   }

@@ -81,6 +81,12 @@ bool Calibration::fitted(AnswerPass pass) const noexcept {
   return p < pass_count() && passes_[p].source == blob::kSourceFitted;
 }
 
+float Calibration::target_precision(AnswerPass pass) const noexcept {
+  const uint32_t p = static_cast<uint32_t>(pass);
+  if (p >= pass_count()) return 0.0f;
+  return passes_[p].target_precision > 0.0f ? passes_[p].target_precision : header_->target_precision;
+}
+
 const blob::CalibrationCell* Calibration::cell(AnswerPass pass, AnswerLevel level,
                                                uint32_t band) const noexcept {
   const uint32_t p = static_cast<uint32_t>(pass);

@@ -119,7 +119,7 @@ Status FeatureExtractor::init(const FeatureParams& params, const ExtractorCapaci
 Status FeatureExtractor::extract(const CloudView& cloud, const OrientationHint& hint, FeatureSet* out,
                                  ExtractStats* stats) noexcept {
   const Status s = load(cloud, out, stats);
-  return s != Status::kOk ? s : describe(hint, ExtractParams{}, out, stats);
+  return s != Status::kOk ? s : describe(hint, ExtractParams{}, cap_.max_features, out, stats);
 }
 
 Status FeatureExtractor::load(const CloudView& cloud, FeatureSet* out, ExtractStats* stats) noexcept {
@@ -158,8 +158,8 @@ Status FeatureExtractor::drop_ground(const GroundParams& params, FeatureSet* out
   return Status::kOk;
 }
 
-Status FeatureExtractor::describe(const OrientationHint& hint, const ExtractParams& params, FeatureSet* out,
-                                  ExtractStats* stats) noexcept {
+Status FeatureExtractor::describe(const OrientationHint& hint, const ExtractParams& params,
+                                  uint32_t max_features, FeatureSet* out, ExtractStats* stats) noexcept {
   if (impl_ == nullptr || out == nullptr || stats == nullptr) return Status::kNotOpen;
   Impl& m = *impl_;
   const uint32_t n = m.loaded;
@@ -201,8 +201,9 @@ Status FeatureExtractor::describe(const OrientationHint& hint, const ExtractPara
   m.voxel_grid.build(m.equalised, ne, basis_spacing);
   uint32_t nb = select_basis_points(m.voxel_grid, m.equalised, m.has_normal, m.basis);
   stats->basis_points = nb;
-  stats->features_thinned = nb > cap_.max_features;
-  nb = thin_evenly(m.basis, nb, cap_.max_features);
+  const uint32_t keep = max_features < cap_.max_features ? max_features : cap_.max_features;
+  stats->features_thinned = nb > keep;
+  nb = thin_evenly(m.basis, nb, keep);
 
   const SpinImageParams sp = spin_params(params_);
   const uint32_t dims = spin_dims(params_);

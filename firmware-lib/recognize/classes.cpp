@@ -36,7 +36,7 @@ Status classes_stage(SearchContext& ctx) {
   result.class_ranking_count = rank_classes(ctx.db, result, ctx.buf.classes);
   // The class, group and vehicle levels against the database's calibrated
   // thresholds (is_class_confident() and the envelope are their prerequisites).
-  assess_coarse_levels(ctx, AnswerPass::kFull);
+  assess_coarse_levels(ctx, ctx.answer_pass);
   return Status::kOk;
 }
 

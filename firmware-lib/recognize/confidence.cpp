@@ -166,7 +166,7 @@ Status confidence_stage(SearchContext& ctx) {
   st.scan_density = scan_density(ctx.stats, fit);
   // The model level's evidence against the database's calibrated threshold
   // for this density (the parameters above are its priors and prerequisites).
-  assess_model_level(ctx, fit, AnswerPass::kFull);
+  assess_model_level(ctx, fit, ctx.answer_pass);
   return Status::kOk;
 }
 

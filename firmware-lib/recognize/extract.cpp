@@ -20,7 +20,8 @@ void reset(ModelBest& best) {
 Status extract_stage(SearchContext& ctx) {
   RecognizerBuffers& b = ctx.buf;
   FeatureSet& fs = ctx.features;
-  const Status s = b.extractor.describe(ctx.hint, ctx.params.extract, &fs, &ctx.stats.extract);
+  const Status s =
+      b.extractor.describe(ctx.hint, ctx.params.extract, ctx.max_features, &fs, &ctx.stats.extract);
   if (s != Status::kOk) return s;
   if (ctx.terrain.top >= 0.0f) {  // the caller's terrain stands for the object ground removal's
     fs.top_above_terrain = ctx.terrain.top;

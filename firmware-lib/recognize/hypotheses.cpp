@@ -1,5 +1,7 @@
 #include "recognize/hypotheses.hpp"
 
+#include "recognize/work_meter.hpp"
+
 #include "match/pose_from_doublet.hpp"
 #include "recognize/evidence_stop.hpp"
 #include "spinhash/limits.hpp"
@@ -82,7 +84,7 @@ bool draw_for_model(SearchContext& ctx, uint32_t model, uint32_t trials, const H
 PairOutcome evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l,
                           const DoubletShape& shape, uint32_t fu, uint32_t fv, const HypothesisCaps& caps) {
   DrawsStats& st = ctx.stats.draws;
-  if (st.pair_checks >= ctx.params.draws.max_pair_checks) {
+  if (st.pair_checks >= ctx.params.draws.max_pair_checks || work_capped(ctx)) {
     st.budget_exhausted = true;
     return PairOutcome::kBudgetSpent;
   }

@@ -9,6 +9,7 @@
 #include "match/likelihood.hpp"
 #include "spinhash/features.hpp"
 #include "spinhash/internal/lsh_search.hpp"
+#include "spinhash/limits.hpp"
 #include "spinhash/recognizer.hpp"
 #include "spinhash/vehicle_class.hpp"
 #include "util/rng.hpp"
@@ -47,7 +48,20 @@ struct RecognizerBuffers {
   CellGrid feature_grid;                    // the query features (visible_surface.cpp)
   ResidualSample* residuals = nullptr;      // max_features (residual_structure.cpp)
   RankedClass classes[kVehicleClassCount];  // Result::class_ranking
-  RankedGroup groups[kVehicleGroupCount];   // Result::group_ranking
+  // The cascade (recognizer.cpp): the first pass's settings, derived once at
+  // init(), and the leading poses it hands to the full pass (carry.cpp).
+  RecognizerConfig first_pass{};
+  uint32_t carried_models[kMaxCarriedPoses] = {};
+  RigidPose carried_poses[kMaxCarriedPoses];
+  uint32_t carried_count = 0;
+  // The first pass's answer, kept while the full pass runs: the answer a
+  // capped full pass that names no posed model falls back to
+  // (recognizer.cpp). Its ranking is the first kMaxCarriedPoses models; the
+  // rest, and its class and group rankings, live in buffers the full pass
+  // reuses.
+  Result first_answer;
+  RankedModel first_ranking[kMaxCarriedPoses];
+  RankedGroup groups[kVehicleGroupCount];  // Result::group_ranking
 };
 
 // The leading model as BRAN's stop on evidence follows it (evidence_stop.cpp).
@@ -83,6 +97,9 @@ struct SearchContext {
   const float* cumulative = nullptr;  // doublet draw weights (running sums); null = uniform
   EvidenceState evidence;
   uint32_t trial_scale = 1;  // BRAN's draws' budget x this (a sparse scan's; candidates.cpp)
+  uint64_t work_before = 0;  // work units the cascade's earlier passes spent (work_meter.hpp)
+  // Whose calibrated thresholds decide this pass's flags (level_evidence.hpp).
+  AnswerPass answer_pass = AnswerPass::kFull;
 
   SearchContext(const Database& database, const RecognizerConfig& pass, RecognizerBuffers& buffers,
                 Result& answer);

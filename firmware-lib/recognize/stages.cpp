@@ -1,6 +1,7 @@
 #include "recognize/stages.hpp"
 
 #include "recognize/candidates.hpp"
+#include "recognize/carry.hpp"
 #include "recognize/classes.hpp"
 #include "recognize/confidence.hpp"
 #include "recognize/draws.hpp"
@@ -10,6 +11,7 @@
 #include "recognize/pose_transfer.hpp"
 #include "recognize/ranking.hpp"
 #include "recognize/refinement.hpp"
+#include "recognize/work_meter.hpp"
 
 namespace spinhash {
 namespace {
@@ -64,13 +66,19 @@ Status run_stage(StageId id, SearchContext& ctx) {
 }
 
 Status run_stages(SearchContext& ctx) {
+  bool capped = false;
   for (uint32_t i = 0; i < kStageCount; ++i) {
     const StageId id = kStageOrder[i];
-    if (!stage_enabled(id, ctx.params)) continue;
+    if (!stage_enabled(id, ctx.params) || (capped && !stage_answers(id))) continue;
     const Status s = run_stage(id, ctx);
     if (s != Status::kOk) return s;
+    capped = capped || work_capped(ctx);
   }
-  return Status::kOk;
+  return capped ? Status::kWorkCapReached : Status::kOk;
+}
+
+bool stage_answers(StageId id) {
+  return id == StageId::carry || id == StageId::rank || id == StageId::confidence || id == StageId::classes;
 }
 
 }  // namespace spinhash

@@ -29,8 +29,16 @@ const char* stage_name(StageId id);
 bool stage_enabled(StageId id, const StageParams& params);
 // Runs one stage.
 Status run_stage(StageId id, SearchContext& ctx);
+// The stages that turn what the search found into the answer (carry: the
+// first pass's poses on the full pass's features, at most kMaxCarriedPoses
+// verifications; rank, confidence, classes): they still run once the work
+// cap is reached, so a full pass capped before its draws answers with the
+// first pass's leaders.
+bool stage_answers(StageId id);
 // Runs the enabled stages of ctx.params in order; the first status other
-// than kOk ends the pass and is returned.
+// than kOk ends the pass and is returned. Once the query's work reaches
+// max_work (work_meter.hpp), only the stages that answer run, and the pass
+// returns kWorkCapReached with the best answer found so far.
 Status run_stages(SearchContext& ctx);
 
 }  // namespace spinhash

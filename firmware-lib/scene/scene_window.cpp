@@ -7,6 +7,7 @@
 #include <new>
 
 #include "recognize/level_evidence.hpp"
+#include "spinhash/answered.hpp"
 #include "spinhash/limits.hpp"
 #include "util/angle_math.hpp"
 #include "util/heap_sort.hpp"
@@ -168,7 +169,7 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
   out.stats = r.stats;
   stats->recognition_hypotheses += r.stats.draws.hypotheses;
   stats->recognition_candidates += r.stats.candidates.kept;
-  if (r.status != Status::kOk || r.ranking_count == 0) {
+  if (!has_answer(r.status) || r.ranking_count == 0) {
     out.kind = ObjectKind::kUnknown;
     return;
   }

@@ -80,7 +80,7 @@ void swap_fields(blob::CalibrationPass* p, bool swap) {
   swap_in_place(&p->pass, swap);
   swap_in_place(&p->source, swap);
   swap_in_place(&p->runs, swap);
-  swap_in_place(&p->reserved, swap);
+  swap_in_place(&p->target_precision, swap);
 }
 
 void swap_fields(blob::CalibrationCell* c, bool swap) {

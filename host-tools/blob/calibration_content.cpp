@@ -12,7 +12,7 @@ CalibrationContent priors_calibration() {
   c.header.band_count = 1;
   c.header.target_precision = 1.0f;  // no fit: nothing was targeted below certainty
   c.passes.push_back(
-      blob::CalibrationPass{static_cast<uint32_t>(AnswerPass::kFull), blob::kSourcePriors, 0u, 0u});
+      blob::CalibrationPass{static_cast<uint32_t>(AnswerPass::kFull), blob::kSourcePriors, 0u, 0.0f});
   c.cells.assign(kCalibratedLevels, blob::CalibrationCell{});
   return c;
 }

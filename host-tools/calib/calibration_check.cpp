@@ -43,6 +43,7 @@ std::vector<LevelCheck> check_calibration(const Calibration& c, AnswerPass pass,
                                           const std::vector<host::CalibrationRun>& runs) {
   double known = 0.0, unknown = 0.0;
   for (const host::CalibrationRun& r : runs) {
+    if (r.pass != pass) continue;
     known += r.kind == host::RunKind::kKnown ? 1.0 : 0.0;
     unknown += r.kind == host::RunKind::kUnknown ? 1.0 : 0.0;
   }
@@ -51,9 +52,11 @@ std::vector<LevelCheck> check_calibration(const Calibration& c, AnswerPass pass,
   for (uint32_t l = 1; l <= kCalibratedLevels; ++l) {
     const AnswerLevel level = static_cast<AnswerLevel>(l);
     LevelCheck k;
+    k.pass = pass;
     k.level = level;
     Tally precision, recall;
     for (const host::CalibrationRun& r : runs) {
+      if (r.pass != pass) continue;
       const blob::CalibrationCell* cell = c.cell(pass, level, c.band_of(r.density));
       if (cell == nullptr) continue;
       const double w = r.kind == host::RunKind::kUnknown ? unknown_weight : 1.0;

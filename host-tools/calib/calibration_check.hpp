@@ -10,6 +10,7 @@
 namespace spinhash::calib {
 
 struct LevelCheck {
+  AnswerPass pass = AnswerPass::kFull;
   AnswerLevel level = AnswerLevel::kNone;
   uint32_t runs = 0;     // runs with this level's answer right or wrong
   uint32_t flagged = 0;  // of them, at or above their band's threshold
@@ -26,7 +27,8 @@ struct LevelCheck {
   bool agrees = true;
 };
 
-// Per calibrated level of `pass` (fitted), the check of `runs`.
+// Per calibrated level of `pass` (fitted), the check of `runs` of that pass
+// (the others are passed over).
 std::vector<LevelCheck> check_calibration(const Calibration& c, AnswerPass pass,
                                           const std::vector<host::CalibrationRun>& runs);
 

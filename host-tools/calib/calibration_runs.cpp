@@ -11,6 +11,7 @@
 #include "db/leave_one_out.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/recognition_session.hpp"
+#include "spinhash/presets.hpp"
 #include "spinhash/vehicle_class.hpp"
 
 namespace spinhash::calib {
@@ -37,23 +38,54 @@ struct Shared {
   pipeline::Progress* progress = nullptr;
 };
 
-host::CalibrationRun record(host::RunKind kind, const Result& r, int64_t model, uint32_t vehicle_class) {
+// A run of `pass` with r's density and evidence; its rightness is the caller's.
+host::CalibrationRun evidence_of(AnswerPass pass, host::RunKind kind, const Result& r) {
   host::CalibrationRun run;
+  run.pass = pass;
   run.kind = kind;
   run.density = r.status == Status::kOk ? r.stats.confidence.scan_density : 0.0f;
   for (uint32_t l = 0; l < kCalibratedLevels; ++l)
     run.evidence[l] =
         r.status == Status::kOk ? r.levels[l].evidence : -std::numeric_limits<float>::infinity();
+  return run;
+}
+
+host::CalibrationRun record(AnswerPass pass, host::RunKind kind, const Result& r, int64_t model,
+                            uint32_t vehicle_class) {
+  host::CalibrationRun run = evidence_of(pass, kind, r);
   judge(r, kind == host::RunKind::kClutter, model, vehicle_class, run.right);
   return run;
 }
 
+// One recogniser per calibrated pass over one database: the full pass
+// alone (the cascade off) and the cascade's first pass alone.
+struct PassSessions {
+  pipeline::RecognitionSession full, first;
+
+  bool init(const Database* db, const RecognizerConfig& settings, std::string* error) {
+    RecognizerConfig full_pass = settings;
+    full_pass.cascade = false;
+    RecognizerConfig first_pass;
+    apply_first_pass(settings, &first_pass);
+    return full.init(db, full_pass, error) && first.init(db, first_pass, error);
+  }
+  // Both passes' records of one scan, and the agree record of the pair.
+  void recognize(host::RunKind kind, const std::vector<double>& xyz, int64_t model, uint32_t vehicle_class,
+                 std::vector<host::CalibrationRun>* out) {
+    const Result full_result = full.recognize(xyz);
+    const Result first_result = first.recognize(xyz);
+    out->push_back(record(AnswerPass::kFull, kind, full_result, model, vehicle_class));
+    out->push_back(record(AnswerPass::kFirst, kind, first_result, model, vehicle_class));
+    out->push_back(agree_record(kind, first_result, full_result, model, vehicle_class));
+  }
+};
+
 // The scans of model m: known runs, and unknown ones when it is left out.
-bool run_model(Shared& sh, pipeline::RecognitionSession& known, uint32_t m,
-               std::vector<host::CalibrationRun>* out, std::string* error) {
+bool run_model(Shared& sh, PassSessions& known, uint32_t m, std::vector<host::CalibrationRun>* out,
+               std::string* error) {
   host::AlignedBytes bytes;
   Database lomo;
-  pipeline::RecognitionSession unknown;
+  PassSessions unknown;
   if (sh.leave_out[m]) {
     host::BlobContent content;
     if (!host::without_model(sh.full, m, &content) || !host::open_content(content, &bytes, &lomo, error) ||
@@ -67,27 +99,26 @@ bool run_model(Shared& sh, pipeline::RecognitionSession& known, uint32_t m,
   const uint32_t scans = sh.leave_out[m] ? sh.left_out_scans : sh.scans;
   for (uint32_t s = 0; s < scans; ++s) {
     if (!scan_vehicle(*sh.meshes[m], draw_scan(sh.settings.seed, m, s), &xyz, error)) return false;
-    if (s < sh.scans) out->push_back(record(host::RunKind::kKnown, known.recognize(xyz), m, vehicle_class));
-    if (sh.leave_out[m])
-      out->push_back(record(host::RunKind::kUnknown, unknown.recognize(xyz), -1, vehicle_class));
+    if (s < sh.scans) known.recognize(host::RunKind::kKnown, xyz, m, vehicle_class, out);
+    if (sh.leave_out[m]) unknown.recognize(host::RunKind::kUnknown, xyz, -1, vehicle_class, out);
   }
   return true;
 }
 
-bool run_clutter(Shared& sh, pipeline::RecognitionSession& known, uint32_t c,
-                 std::vector<host::CalibrationRun>* out, std::string* error) {
+bool run_clutter(Shared& sh, PassSessions& known, uint32_t c, std::vector<host::CalibrationRun>* out,
+                 std::string* error) {
   const uint32_t object = static_cast<uint32_t>(sh.meshes.size()) + c;
   std::vector<double> xyz;
   if (!scan_clutter(static_cast<ClutterKind>(c % kClutterKinds), draw_scan(sh.settings.seed, object, 0), &xyz,
                     error))
     return false;
-  out->push_back(record(host::RunKind::kClutter, known.recognize(xyz), -1, 0u));
+  known.recognize(host::RunKind::kClutter, xyz, -1, 0u, out);
   return true;
 }
 
 void work(Shared& sh, std::vector<std::vector<host::CalibrationRun>>* results,
           std::vector<std::string>* errors) {
-  pipeline::RecognitionSession known;
+  PassSessions known;
   const uint32_t models = static_cast<uint32_t>(sh.meshes.size());
   const uint32_t items = models + sh.clutter;
   std::string init_error;
@@ -178,6 +209,17 @@ void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class,
     right[level_index(AnswerLevel::kClass)] = r.class_ranking[0].vehicle_class == vehicle_class;
   if (r.ranking_count > 0u && model >= 0)
     right[level_index(AnswerLevel::kModel)] = static_cast<int64_t>(r.ranking[0].model) == model;
+}
+
+host::CalibrationRun agree_record(host::RunKind kind, const Result& first, const Result& full, int64_t model,
+                                  uint32_t vehicle_class) {
+  host::CalibrationRun run = evidence_of(AnswerPass::kAgree, kind, first);
+  const bool clutter = kind == host::RunKind::kClutter;
+  bool first_right[kCalibratedLevels], full_right[kCalibratedLevels];
+  judge(first, clutter, model, vehicle_class, first_right);
+  judge(full, clutter, model, vehicle_class, full_right);
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) run.right[l] = first_right[l] || !full_right[l];
+  return run;
 }
 
 bool run_calibration(const host::BlobContent& full, const std::vector<const host::Mesh*>& meshes,

@@ -5,7 +5,10 @@
 // built without them (unknown: leave-one-model-out, derived from the full
 // content, db/leave_one_out.hpp); and scans of clutter. Every recognition
 // records its density and each level's evidence and rightness
-// (db/calibration_fit.hpp). On all threads, the runs in a fixed order
+// (db/calibration_fit.hpp), once for each calibrated pass: the full pass
+// (the recognizer's settings, the cascade off) and the cascade's first pass
+// (its first_* settings) recognise every scan, and the pair gives the
+// agree record (agree_record()). On all threads, the runs in a fixed order
 // whatever their number.
 #pragma once
 #include <cstdint>
@@ -32,7 +35,7 @@ struct RunSettings {
   uint32_t clutter_scans = 0;   // 0: default_clutter_scans()
   uint64_t seed = 1;            // of every draw
   uint32_t jobs = 0;            // threads; 0: every hardware thread
-  RecognizerConfig recognizer;  // the full pass's settings
+  RecognizerConfig recognizer;  // the passes' settings: the full pass's, and first_* the first pass's
   bool quiet = false;           // no progress on stderr
 };
 
@@ -61,6 +64,14 @@ std::vector<uint32_t> left_out_models(const std::vector<blob::ModelRecord>& mode
 // `clutter`: nothing is right.
 void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class,
            bool right[kCalibratedLevels]);
+
+// The agree pass's record of one scan: the first pass's density and
+// evidence; wrong at a level only when stopping there would lose a right
+// answer: the full pass names the truth at that level (judge()) and the
+// first pass does not. Where both are right, both wrong, or only the first
+// is right, the stop loses nothing.
+host::CalibrationRun agree_record(host::RunKind kind, const Result& first, const Result& full, int64_t model,
+                                  uint32_t vehicle_class);
 
 struct RunSummary {
   host::FitProvenance drawn;  // scans per model, models left out, ..., seed

@@ -44,10 +44,11 @@ std::string pass_json(const Calibration& c, uint32_t p) {
     levels.push_back(json_object({json_member(k::kLevel, json_string(answer_level_name(l))),
                                   json_member(k::kCells, json_array(cells))}));
   }
-  return json_object(
-      {json_member(k::kPass, json_string(answer_pass_name(rec.pass))),
-       json_member(k::kSource, json_string(rec.source == blob::kSourceFitted ? "fitted" : "priors")),
-       json_member(k::kRuns, num(rec.runs)), json_member(k::kLevels, json_array(levels))});
+  const bool fitted = rec.source == blob::kSourceFitted;
+  return json_object({json_member(k::kPass, json_string(answer_pass_name(rec.pass))),
+                      json_member(k::kSource, json_string(fitted ? "fitted" : "priors")),
+                      json_member(k::kTargetPrecision, fitted ? num(c.target_precision(pass)) : "null"),
+                      json_member(k::kRuns, num(rec.runs)), json_member(k::kLevels, json_array(levels))});
 }
 
 }  // namespace
@@ -87,6 +88,9 @@ void print_calibration(const Calibration& c) {
       std::printf("  %-6s priors: the recognizer's settings decide\n", answer_pass_name(rec.pass));
       continue;
     }
+    if (rec.target_precision > 0.0f)
+      std::printf("  %-6s fitted to precision %g\n", answer_pass_name(rec.pass),
+                  static_cast<double>(rec.target_precision));
     for (uint32_t l = 1; l <= kCalibratedLevels; ++l)
       for (uint32_t b = 0; b < c.band_count(); ++b) {
         const blob::CalibrationCell& cell = *c.cell(pass, static_cast<AnswerLevel>(l), b);

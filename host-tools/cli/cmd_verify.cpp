@@ -65,8 +65,17 @@ struct VerifyReport {
 
 bool fitted(const Database& db) { return db.calibration().fitted(AnswerPass::kFull); }
 
-// New calibration runs (the build's seed + 1) of every model against the
-// blob's full pass. Needs a mesh for every model.
+// "full, first": the passes with a fitted table.
+std::string fitted_passes(const Database& db) {
+  std::string out;
+  for (uint32_t p = 0; p < kAnswerPassCount; ++p)
+    if (db.calibration().fitted(static_cast<AnswerPass>(p)))
+      out += (out.empty() ? "" : ", ") + std::string(answer_pass_name(p));
+  return out;
+}
+
+// New calibration runs (the build's seed + 1) of every model against each
+// of the blob's fitted passes. Needs a mesh for every model.
 bool recheck_calibration(const VerifyArgs& a, const Database& db, const std::vector<ModelMesh>& meshes,
                          VerifyReport* report, std::string* error) {
   std::vector<const host::Mesh*> by_model(db.model_count(), nullptr);
@@ -90,7 +99,12 @@ bool recheck_calibration(const VerifyArgs& a, const Database& db, const std::vec
   std::vector<host::CalibrationRun> records;
   calib::RunSummary summary;
   if (!calib::run_calibration(host::content_of(db), by_model, runs, &records, &summary, error)) return false;
-  report->calibration = calib::check_calibration(db.calibration(), AnswerPass::kFull, records);
+  for (uint32_t p = 0; p < kAnswerPassCount; ++p) {
+    const AnswerPass pass = static_cast<AnswerPass>(p);
+    if (!db.calibration().fitted(pass)) continue;
+    const std::vector<calib::LevelCheck> checks = calib::check_calibration(db.calibration(), pass, records);
+    report->calibration.insert(report->calibration.end(), checks.begin(), checks.end());
+  }
   return true;
 }
 
@@ -103,11 +117,12 @@ bool calibration_agrees(const VerifyReport& r) {
 void print_calibration_check(const VerifyReport& r) {
   for (const calib::LevelCheck& k : r.calibration)
     std::printf(
-        "calibration  %-8s %4u flagged, %3u wrong: precision %.4f (expected %.4f), recall %.4f (expected "
+        "calibration  %-5s %-8s %4u flagged, %3u wrong: precision %.4f (expected %.4f), recall %.4f "
+        "(expected "
         "%.4f): "
         "%s\n",
-        answer_level_name(static_cast<uint32_t>(k.level)), k.flagged, k.wrong, k.observed_precision,
-        k.expected_precision, k.observed_recall, k.expected_recall,
+        answer_pass_name(static_cast<uint32_t>(k.pass)), answer_level_name(static_cast<uint32_t>(k.level)),
+        k.flagged, k.wrong, k.observed_precision, k.expected_precision, k.observed_recall, k.expected_recall,
         k.agrees ? "agrees" : "DISAGREES beyond sampling error");
 }
 
@@ -139,7 +154,8 @@ void self_recognise(const VerifyArgs& a, const ModelMesh& m, const Database& db,
 
 std::string check_json(const calib::LevelCheck& c) {
   namespace k = verify_keys;
-  return json_object({json_member(k::kLevel, json_string(answer_level_name(static_cast<uint32_t>(c.level)))),
+  return json_object({json_member(k::kPass, json_string(answer_pass_name(static_cast<uint32_t>(c.pass)))),
+                      json_member(k::kLevel, json_string(answer_level_name(static_cast<uint32_t>(c.level)))),
                       json_member(k::kFlagged, std::to_string(c.flagged)),
                       json_member(k::kWrong, std::to_string(c.wrong)),
                       json_member(k::kPrecision, json_number(c.observed_precision, 6)),
@@ -189,7 +205,7 @@ int run_verify(const VerifyArgs& a) {
     std::printf(
         "integrity     ok (%u models, %u features, all sections and checksums valid; calibration %s)\n",
         file.db.model_count(), file.db.feature_count(),
-        fitted(file.db) ? "fitted" : "none: the priors decide");
+        fitted(file.db) ? ("fitted: " + fitted_passes(file.db)).c_str() : "none: the priors decide");
   std::vector<ModelMesh> meshes;
   RecognitionSession session;
   if (!a.meshes.empty() &&

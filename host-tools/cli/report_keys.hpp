@@ -50,7 +50,7 @@ constexpr const char* kClutterScans = "clutter_scans";
 constexpr const char* kScansPerLeftOut = "scans_per_left_out";
 constexpr const char* kSeed = "seed";
 constexpr const char* kBands = "bands";    // the density bands' lower edges, points per m^2
-constexpr const char* kPasses = "passes";  // [{pass, source, runs, levels}]
+constexpr const char* kPasses = "passes";  // [{pass, source, target_precision, runs, levels}]
 constexpr const char* kPass = "pass";
 constexpr const char* kSource = "source";  // "fitted" or "priors"
 constexpr const char* kRuns = "runs";
@@ -137,9 +137,10 @@ constexpr const char* kScan = "scan";
 constexpr const char* kRankedFirst = "ranked_first";
 constexpr const char* kStatus = "status";
 constexpr const char* kCalibration = "calibration";  // "fitted" or "priors"
-// [{level, flagged, wrong, precision, expected_precision, recall, expected_recall, agrees}]: the
-// calibration re-run (empty without meshes or a fitted calibration)
+// [{pass, level, flagged, wrong, precision, expected_precision, recall, expected_recall, agrees}]:
+// the calibration re-run, every fitted pass (empty without meshes or a fitted calibration)
 constexpr const char* kCalibrationCheck = "calibration_check";
+constexpr const char* kPass = "pass";  // "full", "first" (answer_levels.h)
 constexpr const char* kLevel = "level";
 constexpr const char* kFlagged = "flagged";
 constexpr const char* kWrong = "wrong";
@@ -148,29 +149,18 @@ constexpr const char* kExpectedPrecision = "expected_precision";
 constexpr const char* kRecall = "recall";
 constexpr const char* kExpectedRecall = "expected_recall";
 constexpr const char* kAgrees = "agrees";
-constexpr const char* kAll[] = {kIntegrity,
-                                kError,
-                                kModels,
-                                kFeatures,
-                                kMode,
-                                kNoise,
-                                kScans,
-                                kHits,
-                                kMissing,
-                                kMisses,
-                                kModel,
-                                kScan,
-                                kRankedFirst,
-                                kStatus,
-                                kCalibration,
-                                kCalibrationCheck,
-                                kLevel,
-                                kFlagged,
-                                kWrong,
-                                kPrecision,
-                                kExpectedPrecision,
-                                kRecall,
-                                kExpectedRecall,
+constexpr const char* kAll[] = {kIntegrity,   kError,
+                                kModels,      kFeatures,
+                                kMode,        kNoise,
+                                kScans,       kHits,
+                                kMissing,     kMisses,
+                                kModel,       kScan,
+                                kRankedFirst, kStatus,
+                                kCalibration, kCalibrationCheck,
+                                kPass,        kLevel,
+                                kFlagged,     kWrong,
+                                kPrecision,   kExpectedPrecision,
+                                kRecall,      kExpectedRecall,
                                 kAgrees};
 }  // namespace verify_keys
 

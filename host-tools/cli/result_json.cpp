@@ -7,6 +7,7 @@
 #include "pipeline/object_json.hpp"
 #include "pipeline/recognition_session.hpp"
 #include "pipeline/status_word.hpp"
+#include "spinhash/answered.hpp"
 #include "spinhash/config_fields.h"
 
 namespace spinhash::cli {
@@ -49,8 +50,8 @@ std::string result_json(const std::string& query, const Database& db, const Resu
   s += "],\"pose\":";
   s += r.ranking_count > 0 && r.ranking[0].has_pose ? pose_json(r.ranking[0].pose) : std::string("null");
   s += std::string(",\"confident\":") + (r.confident ? "true" : "false");
-  s += ",\"group_size\":" + std::to_string(r.status == Status::kOk ? r.group_size : 0u);
-  const bool ok = r.status == Status::kOk;
+  s += ",\"group_size\":" + std::to_string(has_answer(r.status) ? r.group_size : 0u);
+  const bool ok = has_answer(r.status);
   s += "," +
        pipeline::class_json(db, r.class_ranking, ok ? r.class_ranking_count : 0u, ok && r.class_confident);
   s += "," + pipeline::level_json(db, pipeline::level_view(r));

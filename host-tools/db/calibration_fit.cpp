@@ -26,7 +26,11 @@ struct Fit {
   double precision = 0.0, recall = 0.0;
 };
 
-bool is_outsider(RunKind kind, AnswerLevel level) {
+// The agree table's question (would stopping after the first pass lose a
+// right answer the full pass gives?) has an answer on every run: it has no
+// outsiders.
+bool is_outsider(AnswerPass pass, RunKind kind, AnswerLevel level) {
+  if (pass == AnswerPass::kAgree) return false;
   return kind == RunKind::kClutter || (level == AnswerLevel::kModel && kind == RunKind::kUnknown);
 }
 
@@ -87,10 +91,11 @@ bool ordered(const Fit& sparser, const Fit& denser) {
 
 class LevelFitter {
  public:
-  LevelFitter(const std::vector<CalibrationRun>& runs, const std::vector<float>& edges, AnswerLevel level,
-              double unknown_weight, float target, uint32_t min_runs)
+  LevelFitter(const std::vector<CalibrationRun>& runs, const std::vector<float>& edges, AnswerPass pass,
+              AnswerLevel level, double unknown_weight, float target, uint32_t min_runs)
       : runs_(runs),
         edges_(edges),
+        pass_(pass),
         level_(level),
         unknown_weight_(unknown_weight),
         target_(target),
@@ -121,10 +126,11 @@ class LevelFitter {
 
   // An unknown vehicle is never right at the model level: there the
   // outsider rate bounds it, and precision is that of the answers whose
-  // model could be named. Elsewhere it weighs unknown_weight_.
+  // model could be named. Elsewhere, and at every level of the agree table
+  // (where a left-out vehicle loses nothing by the stop), it weighs unknown_weight_.
   double weight(RunKind kind) const {
     if (kind != RunKind::kUnknown) return 1.0;
-    return level_ == AnswerLevel::kModel ? 0.0 : unknown_weight_;
+    return level_ == AnswerLevel::kModel && pass_ != AnswerPass::kAgree ? 0.0 : unknown_weight_;
   }
 
   std::vector<Sample> samples(uint32_t first, uint32_t last) const {
@@ -133,7 +139,7 @@ class LevelFitter {
     for (const CalibrationRun& r : runs_) {
       const uint32_t b = band_of(r.density);
       if (b < first || b > last) continue;
-      s.push_back(Sample{r.evidence[l], r.right[l], is_outsider(r.kind, level_), weight(r.kind)});
+      s.push_back(Sample{r.evidence[l], r.right[l], is_outsider(pass_, r.kind, level_), weight(r.kind)});
     }
     return s;
   }
@@ -146,6 +152,7 @@ class LevelFitter {
 
   const std::vector<CalibrationRun>& runs_;
   const std::vector<float>& edges_;
+  AnswerPass pass_;
   AnswerLevel level_;
   double unknown_weight_;
   float target_;
@@ -173,8 +180,9 @@ blob::CalibrationCell make_cell(const std::vector<Sample>& band, const Fit& fit)
 }
 
 bool check_options(const FitOptions& o, std::string* error) {
-  if (!(o.target_precision > 0.0f && o.target_precision <= 1.0f)) {
-    *error = "target precision must be in (0, 1]";
+  if (!(o.target_precision > 0.0f && o.target_precision <= 1.0f) ||
+      !(o.agree_precision > 0.0f && o.agree_precision <= 1.0f)) {
+    *error = "target and agree precision must be in (0, 1]";
     return false;
   }
   if (o.band_edges.empty() || o.band_edges.size() > blob::kMaxDensityBands || o.band_edges[0] != 0.0f) {
@@ -199,17 +207,24 @@ uint32_t default_min_band_runs(float target) {
 bool fit_calibration(const std::vector<CalibrationRun>& runs, const FitOptions& options,
                      const FitProvenance& provenance, CalibrationContent* out, std::string* error) {
   if (!check_options(options, error)) return false;
-  const uint32_t min_runs =
-      options.min_band_runs > 0u ? options.min_band_runs : default_min_band_runs(options.target_precision);
-  uint64_t known = 0, unknown = 0;
+  // The runs of each pass; the passes fitted: the full pass and every later
+  // pass up to the last with runs (a pass between without runs keeps its
+  // priors: its record says so and its cells are empty).
+  std::vector<std::vector<CalibrationRun>> by_pass(kAnswerPassCount);
   for (const CalibrationRun& r : runs) {
-    known += r.kind == RunKind::kKnown ? 1u : 0u;
-    unknown += r.kind == RunKind::kUnknown ? 1u : 0u;
+    const uint32_t p = static_cast<uint32_t>(r.pass);
+    if (p >= kAnswerPassCount) {
+      *error = "calibration run of an unknown pass";
+      return false;
+    }
+    by_pass[p].push_back(r);
   }
-  const double unknown_weight = unknown > 0u && known > 0u ? static_cast<double>(known) / unknown : 1.0;
+  uint32_t pass_count = 1;  // the full pass's table, fitted even from no runs (never confident)
+  for (uint32_t p = 1; p < kAnswerPassCount; ++p)
+    if (!by_pass[p].empty()) pass_count = p + 1u;
   const uint32_t bands = static_cast<uint32_t>(options.band_edges.size());
   CalibrationContent c;
-  c.header.pass_count = 1;
+  c.header.pass_count = pass_count;
   c.header.level_count = kCalibratedLevels;
   c.header.band_count = bands;
   c.header.target_precision = options.target_precision;
@@ -219,14 +234,34 @@ bool fit_calibration(const std::vector<CalibrationRun>& runs, const FitOptions& 
   c.header.clutter_scans = provenance.clutter_scans;
   c.header.scans_per_left_out = provenance.scans_per_left_out;
   c.header.seed = provenance.seed;
-  c.passes.push_back(blob::CalibrationPass{static_cast<uint32_t>(AnswerPass::kFull), blob::kSourceFitted,
-                                           static_cast<uint32_t>(runs.size()), 0u});
-  for (uint32_t l = 0; l < kCalibratedLevels; ++l) {
-    LevelFitter fitter(runs, options.band_edges, static_cast<AnswerLevel>(l + 1u), unknown_weight,
-                       options.target_precision, min_runs);
-    for (const Block& block : fitter.fit())
-      for (uint32_t b = block.first; b <= block.last; ++b)
-        c.cells.push_back(make_cell(fitter.samples(b, b), block.fit));
+  for (uint32_t p = 0; p < pass_count; ++p) {
+    const std::vector<CalibrationRun>& pass_runs = by_pass[p];
+    if (pass_runs.empty() && p != static_cast<uint32_t>(AnswerPass::kFull)) {
+      c.passes.push_back(blob::CalibrationPass{p, blob::kSourcePriors, 0u, 0.0f});
+      c.cells.resize(c.cells.size() + static_cast<size_t>(kCalibratedLevels) * bands,
+                     blob::CalibrationCell{});
+      continue;
+    }
+    uint64_t known = 0, unknown = 0;
+    for (const CalibrationRun& r : pass_runs) {
+      known += r.kind == RunKind::kKnown ? 1u : 0u;
+      unknown += r.kind == RunKind::kUnknown ? 1u : 0u;
+    }
+    const double unknown_weight = unknown > 0u && known > 0u ? static_cast<double>(known) / unknown : 1.0;
+    const AnswerPass pass = static_cast<AnswerPass>(p);
+    const bool agree = pass == AnswerPass::kAgree;  // its own target, in its record
+    const float target = agree ? options.agree_precision : options.target_precision;
+    const uint32_t min_runs =
+        options.min_band_runs > 0u ? options.min_band_runs : default_min_band_runs(target);
+    c.passes.push_back(blob::CalibrationPass{p, blob::kSourceFitted, static_cast<uint32_t>(pass_runs.size()),
+                                             agree ? target : 0.0f});
+    for (uint32_t l = 0; l < kCalibratedLevels; ++l) {
+      LevelFitter fitter(pass_runs, options.band_edges, pass, static_cast<AnswerLevel>(l + 1u),
+                         unknown_weight, target, min_runs);
+      for (const Block& block : fitter.fit())
+        for (uint32_t b = block.first; b <= block.last; ++b)
+          c.cells.push_back(make_cell(fitter.samples(b, b), block.fit));
+    }
   }
   *out = std::move(c);
   return true;

@@ -14,6 +14,12 @@ void add_calibration_flags(CLI::App* cmd, pipeline::CalibrationSettings* c) {
                   "precision each level's flag is fitted to on the calibration runs")
       ->check(CLI::Range(0.5, 1.0))
       ->capture_default_str();
+  cmd->add_option("--agree-precision", c->fit.agree_precision,
+                  "precision the cascade's stop is fitted to: the share of the queries the first pass "
+                  "answers on which stopping loses no right answer (the full pass names the truth only "
+                  "where the first pass does too)")
+      ->check(CLI::Range(0.5, 1.0))
+      ->capture_default_str();
   cmd->add_option(
          "--calibration-scans", c->runs.scans_per_model,
          "calibration scans per model (0: 32 up to 64 models, 2048 / models above, at least 2); a model "

@@ -54,9 +54,10 @@ void add_preset(CLI::App* cmd, RecognizerConfig* c) {
            preset_from_name(name.c_str(), &preset);
            apply_preset(preset, c);
          },
-         "a named configuration (include/spinhash/presets.hpp): default, full (every stage at the default's "
-         "settings) or "
-         "flight (a third of the default's instructions); the other flags and --set override its fields")
+         "a named configuration (include/spinhash/presets.hpp): default (the cascade: a flight pass, the "
+         "full "
+         "pass when it is not confident), full (the full pass alone) or flight (the flight pass alone); the "
+         "other flags and --set override its fields")
       ->check(CLI::IsMember({"default", "flight", "full"}));
 }
 

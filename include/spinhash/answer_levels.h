@@ -34,8 +34,12 @@
 #define SPINHASH_ANSWER_LEVEL_COUNT 5
 #define SPINHASH_CALIBRATED_LEVELS 4
 
-#define SPINHASH_CALIBRATION_PASSES(P) P(0, Full, "full", "the recognizer's configured settings")
+#define SPINHASH_CALIBRATION_PASSES(P)                                       \
+  P(0, Full, "full", "the recognizer's configured settings (the full pass)") \
+  P(1, First, "first", "the cascade's first pass: the first_* settings")     \
+  P(2, Agree, "agree",                                                       \
+    "the cascade's stop: stopping after the first pass loses no right answer at that level")
 
-#define SPINHASH_CALIBRATION_PASS_COUNT 1
+#define SPINHASH_CALIBRATION_PASS_COUNT 3
 
 #endif /* SPINHASH_ANSWER_LEVELS_H */

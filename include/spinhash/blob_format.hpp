@@ -175,10 +175,12 @@ enum CalibrationSource : uint32_t {
 
 // 16 bytes.
 struct CalibrationPass {
-  uint32_t pass;      // id in SPINHASH_CALIBRATION_PASSES; pass record i holds pass i
-  uint32_t source;    // CalibrationSource
-  uint32_t runs;      // recognitions the fit drew on (0 for priors)
-  uint32_t reserved;  // zero
+  uint32_t pass;    // id in SPINHASH_CALIBRATION_PASSES; pass record i holds pass i
+  uint32_t source;  // CalibrationSource
+  uint32_t runs;    // recognitions the fit drew on (0 for priors)
+  // The precision this pass's fitted thresholds reach, in (0, 1]; 0: the
+  // header's (always 0 for priors).
+  float target_precision;
 };
 static_assert(sizeof(CalibrationPass) == 16, "calibration pass is 16 bytes");
 

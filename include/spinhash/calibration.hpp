@@ -59,6 +59,9 @@ class Calibration {
 
   // The pass has a fitted table (else the recognizer's priors decide it).
   bool fitted(AnswerPass pass) const noexcept;
+  // The precision the pass's table was fitted to: its record's own, else
+  // the header's (0 without the pass).
+  float target_precision(AnswerPass pass) const noexcept;
   // The cell of (pass, level, band), or null: no such pass in the section,
   // level none, or band out of range.
   const blob::CalibrationCell* cell(AnswerPass pass, AnswerLevel level, uint32_t band) const noexcept;

@@ -51,6 +51,27 @@ struct StageParams {
 #undef SPINHASH_CXX_STAGE_MEMBER
 };
 
+// The cascade's first pass: the flight settings (presets.hpp), cheap enough
+// that a query it answers confidently costs a third of the full pass. Each
+// value is at most the full pass's (a larger one is cut to it: the
+// workspace is carved for the full pass).
+constexpr float kFlightQueryVoxel = 0.18f;       // m: the query's density voxel (fewer points described)
+constexpr uint32_t kFlightMaxFeatures = 256;     // s: query features kept (evenly thinned)
+constexpr uint32_t kFlightMaxBucketScan = 512;   // LSH entries scanned per query feature
+constexpr uint32_t kFlightTopW = 30;             // W: candidates per query feature
+constexpr uint32_t kFlightVerifyFeatures = 128;  // query features scored per hypothesis
+constexpr uint32_t kFlightMaxTrials = 700;       // BRAN's draws: the median query in 50 M, right first held
+// The first pass's confidence margin (ConfidenceParams::min_margin): its
+// confident answer ends the query, so it must be right as often as the full
+// pass's on fewer, coarser features.
+constexpr float kFirstPassMinMargin = 1.2f;
+// Work units a query may spend (work_meter.hpp; 68-109 aarch64
+// instructions a unit): a bound on the worst query that no query of the
+// fleet's accuracy sets reaches. 4 000 000 holds the instruction
+// benchmark's worst query under 300 M aarch64 instructions but ends a sixth of
+// the dense noisy fleet scans (docs/budgets.md).
+constexpr uint64_t kDefaultMaxWork = 12000000u;
+
 // Recognition settings: the mode, the seed, the capacities that size the
 // workspace (max_*), the viewpoint (config_fields.h), and the stages'
 // parameters (StageParams). Defaults are the paper's setting where it gives
@@ -69,6 +90,20 @@ struct RecognizerConfig : StageParams {
   // Optional sensor position in input coordinates: normals are turned towards it.
   bool has_viewpoint = false;
   double viewpoint[3] = {0.0, 0.0, 0.0};
+
+  // The cascade (recognizer.cpp): a first pass at these settings (the
+  // flight preset's); when its answer is not confident, the full pass (the
+  // fields above) seeded with the first pass's leading poses.
+  bool cascade = true;
+  float first_query_voxel = kFlightQueryVoxel;
+  uint32_t first_features = kFlightMaxFeatures;
+  uint32_t first_bucket_scan = kFlightMaxBucketScan;
+  uint32_t first_top_w = kFlightTopW;
+  uint32_t first_verify_features = kFlightVerifyFeatures;
+  uint32_t first_trials = kFlightMaxTrials;
+  float first_min_margin = kFirstPassMinMargin;
+  // The hard cap over both passes (work_meter.hpp).
+  uint64_t max_work = kDefaultMaxWork;
 };
 
 }  // namespace spinhash

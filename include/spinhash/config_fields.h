@@ -42,7 +42,26 @@
   X(U32, max_spin_dims, 1u, kMaxSpinDims, "--max-spin-dims",                                                 \
     "largest spin image (bins) the workspace supports")                                                      \
   X(BOOL, has_viewpoint, 0, 1, "", "set by --viewpoint")                                                     \
-  X(VEC3D, viewpoint, 0, 0, "", "set by --viewpoint X Y Z: sensor position, normals turn towards it")
+  X(VEC3D, viewpoint, 0, 0, "", "set by --viewpoint X Y Z: sensor position, normals turn towards it")        \
+  X(BOOL, cascade, 0, 1, "!--no-cascade",                                                                    \
+    "the full pass alone, without the cascade's first pass at the first_* settings (which ends a query "     \
+    "when confident or by the agree table)")                                                                 \
+  X(F32, first_query_voxel, 0.0f, 100.0f, "--first-voxel",                                                   \
+    "the first pass's query voxel, m (0: the database's)")                                                   \
+  X(U32, first_features, 2u, kMaxQueryFeaturesLimit, "--first-features",                                     \
+    "the first pass's query features (at most max_features)")                                                \
+  X(U32, first_bucket_scan, 1u, kMaxBucketScan, "--first-bucket-scan",                                       \
+    "the first pass's LSH entries scanned per feature (at most max_bucket_scan)")                            \
+  X(U32, first_top_w, 1u, kMaxCandidates, "--first-top-w",                                                   \
+    "the first pass's candidates per feature (at most top_w)")                                               \
+  X(U32, first_verify_features, 1u, kMaxQueryFeaturesLimit, "--first-verify-features",                       \
+    "the first pass's features per hypothesis")                                                              \
+  X(U32, first_trials, 0u, kMaxTrials, "--first-trials", "the first pass's doublet draws (BRAN)")            \
+  X(F32, first_min_margin, 0.0f, 1e6f, "--first-min-margin",                                                 \
+    "the first pass's confidence margin: stricter than the full pass's, since its answer ends the query")    \
+  X(U64, max_work, 1u, kMaxQueryWork, "--max-work",                                                          \
+    "work units a query may spend over both passes (work_meter.hpp); reached: the best answer so far, "      \
+    "status work_cap_reached")
 
 #define SPINHASH_STATS_FIELDS(S)                                                            \
   S(U32, points_in, extract.points_in, "points")                                            \
@@ -70,7 +89,15 @@
   S(BOOL, bucket_scan_truncated, candidates.bucket_scan_truncated, "bucket_scan_truncated") \
   S(U64, workspace_used, workspace_used, "workspace_used")                                  \
   S(F32, surface_coverage, confidence.surface_coverage, "surface_coverage")                 \
-  S(F32, scan_density, confidence.scan_density, "scan_density")
+  S(F32, scan_density, confidence.scan_density, "scan_density")                             \
+  S(U32, carried, carry.carried, "carried")                                                 \
+  S(U32, passes, cascade.passes, "passes")                                                  \
+  S(U32, answered_by, cascade.answered_by, "answered_by")                                   \
+  S(BOOL, stopped_on_agreement, cascade.stopped_on_agreement, "stopped_on_agreement")       \
+  S(U64, first_pass_work, cascade.first_work, "first_pass_work")                            \
+  S(U64, full_pass_work, cascade.full_work, "full_pass_work")                               \
+  S(U64, work, cascade.work, "work")                                                        \
+  S(BOOL, work_capped, cascade.work_capped, "work_capped")
 
 /* C types of the kinds (spinhash.h). */
 #define SPINHASH_CTYPE_MODE int32_t

@@ -86,9 +86,10 @@ class FeatureExtractor {
   // stands on the ground.
   Status drop_ground(const GroundParams& params, FeatureSet* out, uint32_t* dropped) noexcept;
   // The loaded points' features, by `params` (ExtractParams' query_* fields
-  // override the database's voxel and spacing).
-  Status describe(const OrientationHint& hint, const ExtractParams& params, FeatureSet* out,
-                  ExtractStats* stats) noexcept;
+  // override the database's voxel and spacing), at most `max_features` of
+  // them (and at most the capacity's).
+  Status describe(const OrientationHint& hint, const ExtractParams& params, uint32_t max_features,
+                  FeatureSet* out, ExtractStats* stats) noexcept;
 
  private:
   struct Impl;  // buffers, placed in the arena by init()

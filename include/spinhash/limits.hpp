@@ -20,6 +20,11 @@ constexpr float kMaxGroundClearance = 10.0f;
 constexpr uint32_t kTrialExtension = 4;
 // Largest DrawsParams::max_trials: the extended budget fits uint32.
 constexpr uint32_t kMaxTrials = 0xFFFFFFFFu / kTrialExtension;
+// RecognizerConfig::max_work: work units (work_meter.hpp) a query may spend.
+constexpr uint64_t kMaxQueryWork = 1ull << 40;
+// CarryParams::carry_models: the first pass's leading poses kept for the
+// full pass (an array in the workspace).
+constexpr uint32_t kMaxCarriedPoses = 16;
 // Bounds of the stages' counts (stage_fields.h): each sizes an array or
 // bounds a loop of its stage.
 constexpr uint32_t kMaxTransferModels = 64;    // TransferParams::transfer_models

@@ -103,14 +103,34 @@ struct ConfidenceStats {
   float scan_density = 0.0f;
 };
 
+struct CarryStats {
+  uint32_t carried = 0;  // first-pass poses verified on the full pass's features
+};
+// The cascade (RecognizerConfig::cascade): the stage blocks above count the
+// pass that answered; this one, every pass's work (work units,
+// firmware-lib/recognize/work_meter.hpp).
+struct CascadeStats {
+  uint32_t passes = 0;       // passes run: 1, or 2 when the first pass did not stop the query
+  uint32_t answered_by = 0;  // the pass that answered: 0 the first (flight), 1 the full
+  uint64_t first_work = 0;   // work of the first pass (0 when the cascade is off)
+  uint64_t full_work = 0;    // work of the full pass (0 when the first pass answered)
+  uint64_t work = 0;         // the query's total, which RecognizerConfig::max_work caps
+  bool work_capped = false;  // max_work was reached (Status::kWorkCapReached)
+  // The first pass answered, not confident, because the database's agree
+  // table says stopping there loses no right answer the full pass would give.
+  bool stopped_on_agreement = false;
+};
+
 struct RecognitionStats {
   ExtractStats extract;
   GroundStats ground;
   CandidatesStats candidates;
+  CarryStats carry;
   DrawsStats draws;
   TransferStats transfer;
   RefineStats refine;
   ConfidenceStats confidence;
+  CascadeStats cascade;
   size_t workspace_used = 0;
 };
 

@@ -37,6 +37,7 @@
   S(ground, Ground, "drops the terrain under the object and a band above it (z up)")                         \
   S(extract, Extract, "describes the object's points as oriented spin-image features")                       \
   S(candidates, Candidates, "finds each query feature's nearest model features (BRAN, SIND: the LSH index)") \
+  S(carry, Carry, "verifies the cascade's first-pass leading poses on the full pass's features (BRAN)")      \
   S(draws, Draws, "draws doublets, poses them and verifies the poses (BRAN, SRAN)")                          \
   S(transfer, Transfer, "lends the leading poses to the look-alikes of their models (BRAN)")                 \
   S(focus, Focus, "gives the leading models a short RANSAC of their own on spread candidates (BRAN)")        \
@@ -127,6 +128,14 @@
     "a sparse scan's lookups scan this many times max_bucket_scan entries (crowded buckets) ...")            \
   X(U32, max_sparse_bucket_scan, 4096u, 1u, kMaxBucketScan, "",                                              \
     "... up to this many; the query's total stays max_features x max_bucket_scan")
+
+#define SPINHASH_PARAMS_carry(X)                                                                             \
+  X(BOOL, enabled, false, 0, 1, "",                                                                          \
+    "carry the first pass's leading poses into the full pass (the cascade; off: carried poses let a "        \
+    "look-alike outrank the model the full pass's own draws find, without them an escalated query gets the " \
+    "full pass alone's answer)")                                                                             \
+  X(U32, carry_models, 8u, 0u, kMaxCarriedPoses, "",                                                         \
+    "leading models of the first pass whose poses the full pass verifies first")
 
 #define SPINHASH_PARAMS_draws(X)                                                                             \
   X(F32, d_min, 0.5f, 0.0f, 100.0f, "--d-min", "d_min of eq. 3, m")                                          \

@@ -89,6 +89,9 @@
   X(kStreamFlushed, 47, STREAM_FLUSHED, "stream_flushed", "points pushed after the stream was flushed")     \
   /* SceneStream: points more than max_lag behind the furthest pushed came after their windows (dropped,    \
      counted in points_late): order them along track first */                                               \
-  X(kPointsLate, 48, POINTS_LATE, "points_late", "points came after their windows ran (out of order)")
+  X(kPointsLate, 48, POINTS_LATE, "points_late", "points came after their windows ran (out of order)")      \
+  /* recognize: the query spent config.max_work; the answer is the best found so far (ranked, never         \
+     confident) */                                                                                          \
+  X(kWorkCapReached, 49, WORK_CAP_REACHED, "work_cap_reached", "work cap reached: best answer so far")
 
 #endif /* SPINHASH_STATUS_LIST_H */

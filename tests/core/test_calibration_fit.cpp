@@ -56,6 +56,15 @@ const blob::CalibrationCell& cell(const host::CalibrationContent& c, AnswerLevel
   return c.cells[level_index(level) * c.header.band_count + band];
 }
 
+// A tiny database's blob (native byte order) with the section `c`.
+std::vector<uint8_t> tiny_blob_with(const host::CalibrationContent& c) {
+  host::BlobContent content = host::make_tiny_blob_content(3, 20, 5);
+  content.calibration = c;
+  std::vector<uint8_t> bytes = spinhash::test::write_native(content);
+  REQUIRE_FALSE(bytes.empty());
+  return bytes;
+}
+
 }  // namespace
 
 TEST_CASE("the threshold is the smallest evidence whose flagged runs are right with the target precision") {
@@ -228,15 +237,104 @@ TEST_CASE("the fit does not depend on the runs' order, and its section opens") {
   const host::CalibrationContent b = fit(runs, o);
   REQUIRE(a.cells.size() == b.cells.size());
   CHECK(std::memcmp(a.cells.data(), b.cells.data(), a.cells.size() * sizeof(blob::CalibrationCell)) == 0);
-  host::BlobContent content = host::make_tiny_blob_content(3, 20, 5);
-  content.calibration = a;
-  const std::vector<uint8_t> bytes = spinhash::test::write_native(content);
-  REQUIRE_FALSE(bytes.empty());
-  spinhash::test::BlobPatch patch(bytes);
+  spinhash::test::BlobPatch patch(tiny_blob_with(a));
   Database db;
   REQUIRE(patch.open(&db) == Status::kOk);
   CHECK(db.calibration().fitted(AnswerPass::kFull));
   CHECK(db.calibration().band_count() == o.band_edges.size());
+}
+
+TEST_CASE("each pass's table is fitted from its own runs alone") {
+  // The full pass separates at 2, the first pass only at 6: the same scans
+  // answered with less evidence.
+  std::vector<host::CalibrationRun> runs;
+  for (int e = 1; e <= 20; ++e) {
+    host::CalibrationRun full = run(host::RunKind::kKnown, 100.0f, static_cast<float>(e), e >= 2);
+    host::CalibrationRun first = run(host::RunKind::kKnown, 100.0f, static_cast<float>(e), e >= 6);
+    first.pass = AnswerPass::kFirst;
+    runs.push_back(full);
+    runs.push_back(first);
+  }
+  const host::CalibrationContent c = fit(runs, options({0.0f}, 0.99f, 5));
+  REQUIRE(c.passes.size() == 2u);
+  CHECK(c.header.pass_count == 2u);
+  CHECK(c.passes[0].pass == static_cast<uint32_t>(AnswerPass::kFull));
+  CHECK(c.passes[1].pass == static_cast<uint32_t>(AnswerPass::kFirst));
+  CHECK(c.passes[0].runs == 20u);
+  CHECK(c.passes[1].runs == 20u);
+  REQUIRE(c.cells.size() == 2u * kCalibratedLevels);
+  CHECK(cell(c, AnswerLevel::kModel, 0).threshold == 2.0f);
+  CHECK(c.cells[kCalibratedLevels + level_index(AnswerLevel::kModel)].threshold == 6.0f);
+  spinhash::test::BlobPatch patch(tiny_blob_with(c));
+  Database db;
+  REQUIRE(patch.open(&db) == Status::kOk);
+  CHECK(db.calibration().fitted(AnswerPass::kFirst));
+  CHECK(db.calibration().confident(AnswerPass::kFull, AnswerLevel::kModel, 3.0f, 100.0f));
+  CHECK_FALSE(db.calibration().confident(AnswerPass::kFirst, AnswerLevel::kModel, 3.0f, 100.0f));
+  CHECK(db.calibration().confident(AnswerPass::kFirst, AnswerLevel::kModel, 6.0f, 100.0f));
+}
+
+TEST_CASE("the agree table: the first pass's evidence against a stop that loses nothing, no outsiders") {
+  // Below evidence 10 the stop loses a right answer on every other run;
+  // from 10 on it loses none, on known, left-out and clutter scans alike. A
+  // full-pass table would hold the left-out and clutter runs at the model
+  // level under the outsider rate and find no threshold; the stop has no
+  // outsiders.
+  std::vector<host::CalibrationRun> runs;
+  const host::RunKind kinds[] = {host::RunKind::kKnown, host::RunKind::kUnknown, host::RunKind::kClutter};
+  for (int e = 1; e <= 300; ++e) {
+    host::CalibrationRun r = run(kinds[e % 3], 100.0f, static_cast<float>(e), e >= 10 || e % 2 == 0);
+    r.pass = AnswerPass::kAgree;
+    runs.push_back(r);
+    host::CalibrationRun full = run(host::RunKind::kKnown, 100.0f, static_cast<float>(e), true);
+    runs.push_back(full);
+  }
+  host::FitOptions o = options({0.0f}, 0.99f, 0);
+  o.agree_precision = 0.995f;
+  const host::CalibrationContent c = fit(runs, o);
+  REQUIRE(c.passes.size() == 3u);  // the first pass without runs keeps its priors
+  CHECK(c.passes[1].source == blob::kSourcePriors);
+  CHECK(c.passes[2].pass == static_cast<uint32_t>(AnswerPass::kAgree));
+  CHECK(c.passes[2].source == blob::kSourceFitted);
+  CHECK(c.passes[2].runs == 300u);
+  CHECK(c.passes[2].target_precision == 0.995f);
+  CHECK(c.passes[0].target_precision == 0.0f);  // the header's
+  const blob::CalibrationCell& model = c.cells[2u * kCalibratedLevels + level_index(AnswerLevel::kModel)];
+  CHECK(model.state == blob::kCellFitted);
+  CHECK(model.threshold <= 10.0f);
+  CHECK(model.threshold > 1.0f);
+  CHECK(model.precision >= 0.995f);
+  spinhash::test::BlobPatch patch(tiny_blob_with(c));
+  Database db;
+  REQUIRE(patch.open(&db) == Status::kOk);
+  CHECK(db.calibration().fitted(AnswerPass::kAgree));
+  CHECK(db.calibration().target_precision(AnswerPass::kAgree) == 0.995f);
+  CHECK(db.calibration().target_precision(AnswerPass::kFull) == 0.99f);
+  CHECK(db.calibration().confident(AnswerPass::kAgree, AnswerLevel::kModel, 10.0f, 100.0f));
+  CHECK_FALSE(db.calibration().confident(AnswerPass::kAgree, AnswerLevel::kModel, 1.0f, 100.0f));
+
+  // Certainty asked of runs whose strongest pair disagrees: never confident.
+  o.agree_precision = 1.0f;
+  o.min_band_runs = 5;
+  for (host::CalibrationRun& r : runs)
+    if (r.pass == AnswerPass::kAgree && r.evidence[0] == 300.0f)
+      for (bool& right : r.right) right = false;
+  const host::CalibrationContent strict = fit(runs, o);
+  CHECK(strict.cells[2u * kCalibratedLevels + level_index(AnswerLevel::kModel)].state ==
+        blob::kCellUnreachable);
+}
+
+TEST_CASE("a section of the full pass alone leaves the first pass to its priors") {
+  std::vector<host::CalibrationRun> runs;
+  for (int e = 1; e <= 20; ++e)
+    runs.push_back(run(host::RunKind::kKnown, 100.0f, static_cast<float>(e), true));
+  const host::CalibrationContent c = fit(runs, options({0.0f}, 0.9f, 5));
+  REQUIRE(c.passes.size() == 1u);
+  spinhash::test::BlobPatch patch(tiny_blob_with(c));
+  Database db;
+  REQUIRE(patch.open(&db) == Status::kOk);
+  CHECK(db.calibration().fitted(AnswerPass::kFull));
+  CHECK_FALSE(db.calibration().fitted(AnswerPass::kFirst));
 }
 
 TEST_CASE("bad fit options are refused with a reason") {

@@ -62,7 +62,7 @@ host::CalibrationContent fitted_calibration() {
   c.header.models_left_out = 3;
   c.header.clutter_scans = 8;
   c.header.seed = 0x0102030405060708ull;
-  c.passes.push_back(blob::CalibrationPass{0u, blob::kSourceFitted, 40u, 0u});
+  c.passes.push_back(blob::CalibrationPass{0u, blob::kSourceFitted, 40u, 0.0f});
   const blob::CalibrationCell cells[] = {
       fitted(-2.0f, 0.96f, 0.7f),    fitted(-2.5f, 0.97f, 0.8f),    fitted(-2.5f, 0.99f, 0.9f),   // vehicle
       never(blob::kCellUnreachable), fitted(1.5f, 0.95f, 0.5f),     fitted(1.0f, 1.0f, 0.75f),    // group
@@ -240,6 +240,11 @@ TEST_CASE("calibration counts, bands, passes and cells out of their rules are kB
       {"band edges not increasing", [](BlobPatch& b) { header(b).band_min_density[2] = 20.0f; }},
       {"a pass of another id", [](BlobPatch& b) { pass(b).pass = 1; }},
       {"a pass of no known source", [](BlobPatch& b) { pass(b).source = 2; }},
+      {"a pass's own target NaN", [](BlobPatch& b) { pass(b).target_precision = kNaN; }},
+      {"a pass's own target negative", [](BlobPatch& b) { pass(b).target_precision = -0.5f; }},
+      {"a pass's own target above 1", [](BlobPatch& b) { pass(b).target_precision = 1.5f; }},
+      {"a pass's own target above a fitted cell's precision",
+       [](BlobPatch& b) { pass(b).target_precision = 0.999f; }},
       {"a priors pass that counts runs",
        [](BlobPatch& b) {
          pass(b).source = blob::kSourcePriors;  // its cells are not zero either; the runs come first
@@ -282,13 +287,35 @@ TEST_CASE("a priors pass with anything in its cells is kBlobBadCalibration") {
   pass(runs).runs = 5;
   runs.reseal();
   CHECK(runs.open() == Status::kBlobBadCalibration);
+  BlobPatch target(bytes);
+  pass(target).target_precision = 0.99f;
+  target.reseal();
+  CHECK(target.open() == Status::kBlobBadCalibration);
+}
+
+TEST_CASE("a pass's own target replaces the header's: its cells reach it, not the header's") {
+  Database db;
+  BlobPatch header_target(fitted_blob());
+  REQUIRE(header_target.open(&db) == Status::kOk);
+  CHECK(db.calibration().target_precision(AnswerPass::kFull) == kTarget);
+  CHECK(db.calibration().target_precision(AnswerPass::kFirst) == 0.0f);  // no such pass in the section
+  // The header asks more than the cells reach; the pass's own target, what they do.
+  BlobPatch own(fitted_blob());
+  header(own).target_precision = 0.999f;
+  pass(own).target_precision = kTarget;
+  own.reseal();
+  REQUIRE(own.open(&db) == Status::kOk);
+  CHECK(db.calibration().target_precision(AnswerPass::kFull) == kTarget);
+  BlobPatch header_only(fitted_blob());
+  header(header_only).target_precision = 0.999f;
+  header_only.reseal();
+  CHECK(header_only.open() == Status::kBlobBadCalibration);
 }
 
 TEST_CASE("non-zero reserved calibration bytes and unused band edges are kBlobNotZeroed") {
   const Corruption cases[] = {
       {"header reserved, last byte", [](BlobPatch& b) { header(b).reserved[23] = 1; }},
       {"an unused band edge", [](BlobPatch& b) { header(b).band_min_density[kBands] = 500.0f; }},
-      {"pass reserved", [](BlobPatch& b) { pass(b).reserved = 1; }},
       {"cell reserved", [](BlobPatch& b) { cell(b, 4, 2).reserved = 0x80000000u; }},
   };
   check_corruptions(cases, Status::kBlobNotZeroed);

@@ -10,6 +10,7 @@
 
 #include "blob/aligned_bytes.hpp"
 #include "recognize/confidence.hpp"
+#include "spinhash/presets.hpp"
 #include "spinhash/recognizer.hpp"
 #include "support/geometry_fixtures.hpp"
 #include "support/toy_database.hpp"
@@ -321,10 +322,12 @@ TEST_CASE("a near twin outside the database is not confident: its residuals are 
   constexpr double kStretch = 1.04;  // the twin: 0.18 m longer, ends 9 cm off once centred
   constexpr double kNoise = 0.02;    // m, along the rays
   const double t[3] = {-300.0, 80.0, 5.0};
+  // The full pass's residual test: at the cascade's first-pass voxel
+  // (0.18 m) a 9 cm twin's residuals are noise.
   auto run = [&](double stretch, float residual_f) {
     std::vector<double> model = test::toy_vehicle_points(kModel, 0.05f);
     for (size_t i = 0; i < model.size(); i += 3) model[i] *= stretch;
-    RecognizerConfig cfg;
+    RecognizerConfig cfg = preset_config(Preset::kFull);
     cfg.confidence.max_residual_f = residual_f;
     host::AlignedBytes ws(required_workspace_bytes(cfg));
     Recognizer r;

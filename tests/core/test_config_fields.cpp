@@ -105,7 +105,9 @@ static_assert(member_count<TransferStats>() == listed_stats("transfer."),
 static_assert(member_count<RefineStats>() == listed_stats("refine."), "RefineStats and refine.* differ");
 static_assert(member_count<ConfidenceStats>() == listed_stats("confidence."),
               "ConfidenceStats and confidence.* differ");
-static_assert(member_count<RecognitionStats>() == listed_stats("") + 7u,
+static_assert(member_count<CarryStats>() == listed_stats("carry."), "CarryStats and carry.* differ");
+static_assert(member_count<CascadeStats>() == listed_stats("cascade."), "CascadeStats and cascade.* differ");
+static_assert(member_count<RecognitionStats>() == listed_stats("") + 9u,
               "RecognitionStats and SPINHASH_STATS_FIELDS (config_fields.h) list different fields");
 
 // Each stage's struct has exactly its list's fields, of the list's types,
@@ -458,8 +460,11 @@ TEST_CASE("the stage table runs the stages of stage_fields.h in their order, eac
 #undef SPINHASH_STAGE_NAME
   };
   REQUIRE(kStageCount == sizeof(listed) / sizeof(listed[0]));
-  StageParams off;
+  StageParams on;  // every switch on: carry's is off by default
+  on.carry.enabled = true;
+  StageParams off = on;
   off.ground.enabled = false;
+  off.carry.enabled = false;
   off.transfer.enabled = false;
   off.focus.enabled = false;
   for (uint32_t i = 0; i < kStageCount; ++i) {
@@ -467,8 +472,10 @@ TEST_CASE("the stage table runs the stages of stage_fields.h in their order, eac
     const StageId id = kStageOrder[i];
     CHECK(std::string(stage_name(id)) == listed[i]);
     CHECK(static_cast<uint32_t>(id) == i);
-    CHECK(stage_enabled(id, StageParams{}));
     const std::string name = listed[i];
-    CHECK(stage_enabled(id, off) == !(name == "ground" || name == "transfer" || name == "focus"));
+    CHECK(stage_enabled(id, on));
+    CHECK(stage_enabled(id, StageParams{}) == (name != "carry"));
+    CHECK(stage_enabled(id, off) ==
+          !(name == "ground" || name == "carry" || name == "transfer" || name == "focus"));
   }
 }

@@ -39,14 +39,23 @@ std::vector<std::string> changed_fields(const RecognizerConfig& a, const Recogni
 
 }  // namespace
 
-TEST_CASE("presets: default and full are RecognizerConfig{} and flight changes only its named fields") {
+TEST_CASE(
+    "presets: default is RecognizerConfig{} (the cascade), full its full pass alone, flight its first") {
   CHECK(changed_fields(preset_config(Preset::kDefault), RecognizerConfig{}).empty());
-  CHECK(changed_fields(preset_config(Preset::kFull), RecognizerConfig{}).empty());
+  CHECK(RecognizerConfig{}.cascade);
+  CHECK(changed_fields(preset_config(Preset::kFull), RecognizerConfig{}) ==
+        std::vector<std::string>{"cascade"});
   const RecognizerConfig flight = preset_config(Preset::kFlight);
-  const std::vector<std::string> expected = {"max_features",          "extract.query_cloud_voxel",
-                                             "candidates.top_w",      "candidates.max_bucket_scan",
-                                             "draws.verify_features", "draws.max_trials"};
+  const std::vector<std::string> expected = {"max_features",
+                                             "cascade",
+                                             "extract.query_cloud_voxel",
+                                             "candidates.top_w",
+                                             "candidates.max_bucket_scan",
+                                             "draws.verify_features",
+                                             "draws.max_trials",
+                                             "confidence.min_margin"};
   CHECK(changed_fields(flight, RecognizerConfig{}) == expected);
+  CHECK(flight.confidence.min_margin == kFirstPassMinMargin);
   CHECK(flight.draws.max_trials == kFlightMaxTrials);
   CHECK(flight.extract.query_cloud_voxel == kFlightQueryVoxel);
   CHECK(flight.max_features == kFlightMaxFeatures);

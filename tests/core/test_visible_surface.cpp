@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "blob/aligned_bytes.hpp"
+#include "spinhash/presets.hpp"
 #include "spinhash/recognizer.hpp"
 #include "support/geometry_fixtures.hpp"
 #include "support/toy_database.hpp"
@@ -44,9 +45,11 @@ struct LookAlikes {
     REQUIRE(test::make_database(clouds, &toy));
   }
 
-  // toy_query's view, or with `airborne` toy_airborne_query's (the whole top).
+  // toy_query's view, or with `airborne` toy_airborne_query's (the whole
+  // top), by the full pass (the coverage of its 1 024 features: the
+  // cascade's first pass thins them to 256).
   Result recognize(const std::vector<double>& model, uint64_t seed, bool airborne = false) {
-    RecognizerConfig cfg;
+    const RecognizerConfig cfg = preset_config(Preset::kFull);
     ws = host::AlignedBytes(required_workspace_bytes(cfg));
     Recognizer r;
     REQUIRE(r.init(&toy.db, cfg, ws.data(), ws.size()) == Status::kOk);

@@ -17,8 +17,10 @@ using spinhash::host::test::read_bytes;
 using spinhash::host::test::TempDir;
 
 // BRAN's rows of an accuracy run's per_query.csv, and those whose
-// surface_coverage is a whole unoccluded top's (over 0.8, at most 1) and
-// whose scan_density is a 0.05 m scan's (hundreds of points per m^2 of the
+// surface_coverage is a whole unoccluded top's (over 0.7, at most 1: the
+// cascade's first pass, which answers these clear views, measures it on its
+// 0.18 m features, which cover a top more coarsely than the full pass's)
+// and whose scan_density is a 0.05 m scan's (hundreds of points per m^2 of the
 // model's top). SIND's rows carry 0 for both: no pose.
 struct BranRows {
   size_t rows = 0, covered = 0, dense = 0;
@@ -29,7 +31,7 @@ BranRows bran_rows(const CsvColumns& per_query) {
     if (per_query.cell(i, "mode") != "bran") continue;
     const double coverage = per_query.number(i, "surface_coverage");
     r.rows += 1;
-    r.covered += coverage > 0.8 && coverage <= 1.0 ? 1u : 0u;
+    r.covered += coverage > 0.7 && coverage <= 1.0 ? 1u : 0u;
     r.dense += per_query.number(i, "scan_density") > 100.0 ? 1u : 0u;
   }
   return r;

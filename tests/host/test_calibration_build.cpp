@@ -17,7 +17,7 @@ namespace {
 // is what info must then say.
 const char* kSmall =
     "--quiet --calibration-scans 3 --calibration-left-out-scans 3 --calibration-max-left-out 3 "
-    "--calibration-seed 5 ";
+    "--calibration-seed 5 --agree-precision 0.98 ";
 
 }  // namespace
 
@@ -41,15 +41,20 @@ TEST_CASE("build calibrates every level; info prints each band; the blob does no
   for (uint32_t l = 1; l <= spinhash::kCalibratedLevels; ++l)
     for (const char* band : {"0-15", "15-30", "30-60", "60-120", "120-240", "240+"}) {
       char row[64];
-      std::snprintf(row, sizeof row, "  %-6s %-8s %-12s", "full", spinhash::answer_level_name(l), band);
-      CAPTURE(row);
-      CHECK(contains(info.out, row));
+      for (const char* pass : {"full", "first", "agree"}) {  // a table per pass, and the cascade's stop
+        std::snprintf(row, sizeof row, "  %-6s %-8s %-12s", pass, spinhash::answer_level_name(l), band);
+        CAPTURE(row);
+        CHECK(contains(info.out, row));
+      }
     }
   CHECK(contains(info.out, "never: too few runs"));
+  CHECK(contains(info.out, "  agree  fitted to precision 0.98\n"));
 
   const CliRun json = run_spinhash(dir, "info --format json " + shell_quoted(one));
   REQUIRE(json.exit_code == 0);
-  CHECK(contains(json.out, "\"source\":\"fitted\""));
+  CHECK(contains(json.out, "{\"pass\":\"full\",\"source\":\"fitted\""));
+  CHECK(contains(json.out, "{\"pass\":\"first\",\"source\":\"fitted\",\"target_precision\":0.99,"));
+  CHECK(contains(json.out, "{\"pass\":\"agree\",\"source\":\"fitted\",\"target_precision\":0.98,"));
   CHECK(contains(json.out, "\"bands\":[0,15,30,60,120,240]"));
   for (uint32_t l = 1; l <= spinhash::kCalibratedLevels; ++l)
     CHECK(
@@ -66,5 +71,7 @@ TEST_CASE("build calibrates every level; info prints each band; the blob does no
                             shell_quoted(one) + " " + shell_quoted(meshes));
   INFO(verify.err);
   CHECK(contains(verify.out, "\"calibration\":\"fitted\""));
-  CHECK(contains(verify.out, "{\"level\":\"model\",\"flagged\":"));
+  CHECK(contains(verify.out, "{\"pass\":\"full\",\"level\":\"model\",\"flagged\":"));
+  CHECK(contains(verify.out, "{\"pass\":\"first\",\"level\":\"model\",\"flagged\":"));
+  CHECK(contains(verify.out, "{\"pass\":\"agree\",\"level\":\"model\",\"flagged\":"));
 }

@@ -23,7 +23,7 @@ TEST_CASE("calibration check: every flag right agrees with cells that expect eve
   c.header.band_count = 1;
   c.header.target_precision = 0.99f;
   c.header.scans_per_model = 1;
-  c.passes.push_back(blob::CalibrationPass{0u, blob::kSourceFitted, 1u, 0u});
+  c.passes.push_back(blob::CalibrationPass{0u, blob::kSourceFitted, 1u, 0.0f});
   for (uint32_t l = 0; l < kCalibratedLevels; ++l) {
     blob::CalibrationCell cell{};
     cell.state = blob::kCellFitted;

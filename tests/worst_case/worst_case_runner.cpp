@@ -121,16 +121,20 @@ int recognise(const Database& db, const float* xyz, uint32_t count, const char* 
   const RecognitionStats& s = r.stats;
   std::printf(
       "%s: status=%s points=%u features=%u trials=%u pair_checks=%llu hypotheses=%u poses_tilted=%llu "
-      "bucket_entries=%llu bucket_scan_truncated=%d budget_exhausted=%d\n",
+      "bucket_entries=%llu bucket_scan_truncated=%d budget_exhausted=%d passes=%u work=%llu work_capped=%d\n",
       name, status_name(r.status), count, s.extract.features, s.draws.trials,
       static_cast<unsigned long long>(s.draws.pair_checks), s.draws.hypotheses,
       static_cast<unsigned long long>(s.draws.poses_tilted),
       static_cast<unsigned long long>(s.candidates.bucket_entries),
-      s.candidates.bucket_scan_truncated ? 1 : 0, s.draws.budget_exhausted ? 1 : 0);
-  if (r.status != Status::kOk) return fail(std::string(name) + ": not recognised");
-  // The hypothesis budget counts the poses found, tilted ones too (max_tilt_deg).
-  const bool cap_reached =
-      s.draws.poses_found() >= cfg.draws.max_hypotheses || s.draws.pair_checks >= cfg.draws.max_pair_checks;
+      s.candidates.bucket_scan_truncated ? 1 : 0, s.draws.budget_exhausted ? 1 : 0, s.cascade.passes,
+      static_cast<unsigned long long>(s.cascade.work), s.cascade.work_capped ? 1 : 0);
+  // The work cap's answer is the best so far: an answer.
+  if (r.status != Status::kOk && r.status != Status::kWorkCapReached)
+    return fail(std::string(name) + ": not recognised");
+  // The hypothesis budget counts the poses found, tilted ones too (max_tilt_deg); the work cap stops the
+  // draws as well.
+  const bool cap_reached = s.draws.poses_found() >= cfg.draws.max_hypotheses ||
+                           s.draws.pair_checks >= cfg.draws.max_pair_checks || s.cascade.work_capped;
   if (cap_reached != s.draws.budget_exhausted)
     return fail(std::string(name) + ": budget flag disagrees with the stats");
   if (must_exhaust && !s.draws.budget_exhausted)
@@ -192,10 +196,12 @@ int query(const std::string& db_path, const std::string& cloud_path, const std::
   spinhash_bench_begin();
   const Result r = rec.recognize(xyz, static_cast<uint32_t>(cloud.size() / (3 * sizeof(double))));
   spinhash_bench_end();
-  if (r.status != Status::kOk || r.ranking_count == 0)
+  if ((r.status != Status::kOk && r.status != Status::kWorkCapReached) || r.ranking_count == 0)
     return fail(std::string("query: ") + status_name(r.status));
-  std::printf("top=%s hypotheses=%u features=%u\n", db.model(r.ranking[0].model).name,
-              r.stats.draws.hypotheses, r.stats.extract.features);
+  std::printf("top=%s hypotheses=%u features=%u passes=%u work=%llu status=%s\n",
+              db.model(r.ranking[0].model).name, r.stats.draws.hypotheses, r.stats.extract.features,
+              r.stats.cascade.passes, static_cast<unsigned long long>(r.stats.cascade.work),
+              status_name(r.status));
   return 0;
 }
 

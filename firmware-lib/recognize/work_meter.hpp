@@ -1,0 +1,37 @@
+// The work a pass has done, in units of about one LSH entry scanned (70-110
+// instructions on x86-64 and aarch64), from the counts its stages keep: what
+// RecognizerConfig::max_work caps. Deterministic (counts, not time), so the
+// cap stops a query at the same point on every target. The weights are the
+// instructions of each counted step over an LSH entry's (docs/budgets.md
+// gives the instructions per unit as measured). The cap is checked between
+// stages and before each candidate pair, so a query may pass it by one
+// stage's uninterruptible work: the extraction (up to max_points points)
+// or the candidates (up to max_features x max_bucket_scan entries).
+#pragma once
+#include <cstdint>
+
+#include "recognize/search_context.hpp"
+
+namespace spinhash {
+
+constexpr uint64_t kWorkPerBucketEntry = 1;      // an LSH entry scanned: its key and spin distance
+constexpr uint64_t kWorkPerPairCheck = 2;        // a candidate pair through the doublet cascade
+constexpr uint64_t kWorkPerVerifiedFeature = 4;  // a query feature scored under a pose
+constexpr uint64_t kWorkPerPoint = 150;          // a point equalised: its normal, grids and spin share
+
+// The pass's work so far (its statistics and its settings).
+inline uint64_t pass_work(const RecognitionStats& s, const RecognizerConfig& pass) {
+  const uint64_t verify = pass.draws.verify_features, features = s.extract.features;
+  const uint64_t poses = static_cast<uint64_t>(s.draws.hypotheses) + s.transfer.transferred + s.carry.carried;
+  return kWorkPerPoint * s.extract.points_equalised + kWorkPerBucketEntry * s.candidates.bucket_entries +
+         kWorkPerPairCheck * s.draws.pair_checks +
+         kWorkPerVerifiedFeature *
+             (poses * (verify < features ? verify : features) + s.refine.refinements * features);
+}
+
+// The query has spent its max_work (the earlier passes' and this one's).
+inline bool work_capped(const SearchContext& ctx) {
+  return ctx.work_before + pass_work(ctx.stats, ctx.params) >= ctx.params.max_work;
+}
+
+}  // namespace spinhash

@@ -1,0 +1,343 @@
+// The cascade (RecognizerConfig::cascade, recognizer.cpp): a clear view is
+// answered by the first pass alone; an unsure one goes on to the full pass,
+// which is the full preset's own pass (plus, with carry.enabled, the first
+// pass's carried poses);
+// the work cap stops a query with its best answer so far; the first pass's
+// answer ends the query when its own calibrated table flags it.
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "blob/aligned_bytes.hpp"
+#include "blob/blob_writer.hpp"
+#include "recognize/work_meter.hpp"
+#include "spinhash/presets.hpp"
+#include "spinhash/recognizer.hpp"
+#include "support/toy_database.hpp"
+
+using namespace spinhash;
+
+namespace {
+
+struct Run {
+  Result result;
+  std::vector<uint32_t> models;
+  std::vector<float> scores;
+  std::vector<bool> posed;
+  std::vector<uint32_t> classes;  // the class ranking's
+};
+
+// Recognises toy model `m`'s noisy view (from the side, or with `airborne`
+// its whole top) under `cfg`; the ranking copied out of the workspace.
+Run recognize_toy(const test::ToyDatabase& toy, const RecognizerConfig& cfg, uint32_t m,
+                  bool airborne = false) {
+  host::AlignedBytes workspace(required_workspace_bytes(cfg));
+  Recognizer recognizer;
+  REQUIRE(recognizer.init(&toy.db, cfg, workspace.data(), workspace.size()) == Status::kOk);
+  const double t[3] = {431000.5, 4020000.25, 87.0};
+  const std::vector<double> model = test::toy_vehicle_points(m, 0.05f);
+  const std::vector<double> q = airborne ? test::toy_airborne_query(model, 0.4 + m, t, 0.03, m + 1)
+                                         : test::toy_query(model, 0.4 + m, t, 0.03, m + 1);
+  Run run;
+  run.result = recognizer.recognize(q.data(), static_cast<uint32_t>(q.size() / 3));
+  for (uint32_t i = 0; i < run.result.ranking_count; ++i) {
+    run.models.push_back(run.result.ranking[i].model);
+    run.scores.push_back(run.result.ranking[i].score);
+    run.posed.push_back(run.result.ranking[i].has_pose);
+  }
+  for (uint32_t i = 0; i < run.result.class_ranking_count; ++i)
+    run.classes.push_back(run.result.class_ranking[i].vehicle_class);
+  return run;
+}
+
+}  // namespace
+
+TEST_CASE("cascade: a clear view is answered confidently by the first pass alone, as the flight preset") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  const uint32_t m = 1;
+  const Run cascade = recognize_toy(toy, RecognizerConfig{}, m, true);
+  REQUIRE(cascade.result.status == Status::kOk);
+  REQUIRE(cascade.result.ranking_count >= 1);
+  CHECK(cascade.result.ranking[0].model == m);
+  CHECK(cascade.result.confident);
+  const CascadeStats& c = cascade.result.stats.cascade;
+  CHECK(c.passes == 1u);
+  CHECK(c.answered_by == 0u);
+  CHECK(c.first_work > 0u);
+  CHECK(c.full_work == 0u);
+  CHECK(c.work == c.first_work);
+  CHECK(cascade.result.stats.extract.features <= kFlightMaxFeatures);
+  // The first pass is the flight preset's recognition, answer for answer.
+  const Run flight = recognize_toy(toy, preset_config(Preset::kFlight), m, true);
+  CHECK(flight.models == cascade.models);
+  CHECK(flight.scores == cascade.scores);
+  CHECK(flight.result.confident == cascade.result.confident);
+  CHECK(flight.result.stats.cascade.passes == 1u);
+  CHECK(flight.result.stats.cascade.answered_by == 1u);  // a single pass is the configured one
+}
+
+TEST_CASE("cascade: an unsure first pass goes on to the full pass, which starts from its poses") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  const uint32_t m = 2;
+  // A side view: the first pass's few coarse features do not make it sure.
+  RecognizerConfig carried;
+  carried.carry.enabled = true;
+  const Run escalated = recognize_toy(toy, carried, m);
+  REQUIRE(escalated.result.status == Status::kOk);
+  REQUIRE(escalated.result.ranking_count >= 1);
+  CHECK(escalated.result.ranking[0].model == m);
+  const CascadeStats& c = escalated.result.stats.cascade;
+  CHECK(c.passes == 2u);
+  CHECK(c.answered_by == 1u);
+  CHECK(c.first_work > 0u);
+  CHECK(c.full_work > c.first_work);  // the full pass describes more, finer features
+  CHECK(c.work == c.first_work + c.full_work);
+  CHECK(escalated.result.stats.carry.carried > 0u);
+  CHECK(escalated.result.stats.extract.features > kFlightMaxFeatures);
+
+  // Without the carried poses, the full pass is the full preset's: the
+  // shared workspace carries nothing else from the first pass.
+  const Run plain = recognize_toy(toy, RecognizerConfig{}, m);  // carrying is off by default
+  const Run full = recognize_toy(toy, preset_config(Preset::kFull), m);
+  REQUIRE(plain.result.stats.cascade.passes == 2u);
+  CHECK(plain.result.stats.carry.carried == 0u);
+  CHECK(full.result.stats.cascade.passes == 1u);
+  CHECK(full.result.stats.cascade.first_work == 0u);
+  CHECK(full.result.stats.cascade.full_work == full.result.stats.cascade.work);
+  CHECK(plain.models == full.models);
+  CHECK(plain.scores == full.scores);
+  CHECK(plain.result.confident == full.result.confident);
+  CHECK(plain.result.stats.cascade.full_work == full.result.stats.cascade.work);
+}
+
+TEST_CASE("cascade: the work cap ends a query with its best answer so far, never confident") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  const uint32_t m = 3;
+  RecognizerConfig full = preset_config(Preset::kFull);
+  const Run whole = recognize_toy(toy, full, m);
+  REQUIRE(whole.result.status == Status::kOk);
+  const uint64_t work = whole.result.stats.cascade.work;
+  REQUIRE(work > 0u);
+  REQUIRE_FALSE(whole.result.stats.cascade.work_capped);
+  // A cap past the extraction and the candidates, in the draws.
+  const ExtractStats& e = whole.result.stats.extract;
+  const uint64_t described =
+      kWorkPerPoint * e.points_equalised + kWorkPerBucketEntry * whole.result.stats.candidates.bucket_entries;
+  REQUIRE(described < work);
+  full.max_work = described + (work - described) / 4u;
+  const Run capped = recognize_toy(toy, full, m);
+  CHECK(capped.result.status == Status::kWorkCapReached);
+  CHECK(capped.result.stats.cascade.work_capped);
+  CHECK(capped.result.stats.cascade.work >= full.max_work);
+  CHECK(capped.result.stats.cascade.work < work);
+  CHECK(capped.result.stats.draws.budget_exhausted);
+  CHECK_FALSE(capped.result.confident);
+  CHECK_FALSE(capped.result.class_confident);
+  // No level is flagged either, the coarse ones included, though the whole
+  // search flags one.
+  CHECK(whole.result.level != AnswerLevel::kNone);
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) CHECK_FALSE(capped.result.levels[l].confident);
+  CHECK(capped.result.level == AnswerLevel::kNone);
+  REQUIRE(capped.result.ranking_count >= 1);  // the best answer so far
+  // An escalated query whose full pass reaches the cap before its draws
+  // still verifies the first pass's poses on the full pass's features and
+  // answers with them.
+  {
+    RecognizerConfig cascade;
+    cascade.carry.enabled = true;
+    const Run side = recognize_toy(toy, cascade, 2u);
+    REQUIRE(side.result.stats.cascade.passes == 2u);
+    cascade.max_work = side.result.stats.cascade.first_work + 1u;
+    const Run early = recognize_toy(toy, cascade, 2u);
+    CHECK(early.result.status == Status::kWorkCapReached);
+    CHECK(early.result.stats.cascade.passes == 2u);
+    CHECK(early.result.stats.draws.trials == 0u);
+    CHECK(early.result.stats.carry.carried > 0u);
+    REQUIRE(early.result.ranking_count >= 1u);
+    CHECK(early.result.ranking[0].model == 2u);
+    CHECK_FALSE(early.result.confident);
+  }
+  // The cascade's first pass counts against the same cap: spent there, the
+  // full pass never starts.
+  RecognizerConfig tight;
+  tight.first_min_margin = 1e6f;
+  tight.max_work = 1;
+  const Run first = recognize_toy(toy, tight, m);
+  CHECK(first.result.status == Status::kWorkCapReached);
+  CHECK(first.result.stats.cascade.passes == 1u);
+  CHECK(first.result.stats.cascade.answered_by == 0u);
+  CHECK(first.result.ranking_count == 0u);
+}
+
+// A full pass the cap stops before its first hypothesis, without carried
+// poses, names no posed model: the query answers with the first pass's
+// leading models, still capped and unflagged, its stats those of both passes.
+TEST_CASE("cascade: a full pass capped before it poses a model answers with the first pass's models") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  RecognizerConfig cascade;  // carrying off, the default
+  const Run side = recognize_toy(toy, cascade, 2u);
+  REQUIRE(side.result.stats.cascade.passes == 2u);
+  const Run flight = recognize_toy(toy, preset_config(Preset::kFlight), 2u);  // the first pass alone
+  REQUIRE(flight.result.ranking_count >= 1u);
+  REQUIRE(flight.posed[0]);
+  cascade.max_work = side.result.stats.cascade.first_work + 1u;
+  const Run early = recognize_toy(toy, cascade, 2u);
+  CHECK(early.result.status == Status::kWorkCapReached);
+  // The answer's stage counts are the first pass's.
+  CHECK(early.result.stats.draws.trials == flight.result.stats.draws.trials);
+  CHECK(early.result.stats.carry.carried == 0u);
+  const CascadeStats& c = early.result.stats.cascade;
+  CHECK(c.passes == 2u);
+  CHECK(c.answered_by == 0u);
+  CHECK(c.work_capped);
+  CHECK(c.first_work == flight.result.stats.cascade.work);
+  CHECK(c.full_work > 0u);
+  CHECK(c.work == c.first_work + c.full_work);
+  REQUIRE(early.result.ranking_count >= 1u);
+  if (early.models.empty()) return;  // REQUIRE does not end the test without exceptions
+  CHECK(early.posed[0]);
+  CHECK(early.models[0] == flight.models[0]);
+  CHECK(early.scores[0] == flight.scores[0]);
+  const size_t kept = early.models.size();
+  REQUIRE(kept == (flight.models.size() < kMaxCarriedPoses ? flight.models.size() : kMaxCarriedPoses));
+  if (kept > flight.models.size()) return;
+  CHECK(std::vector<uint32_t>(flight.models.begin(), flight.models.begin() + kept) == early.models);
+  CHECK_FALSE(early.result.confident);
+  CHECK_FALSE(early.result.class_confident);
+  for (uint32_t l = 0; l < kCalibratedLevels; ++l) CHECK_FALSE(early.result.levels[l].confident);
+  CHECK(early.result.level == AnswerLevel::kNone);
+  REQUIRE_FALSE(early.classes.empty());
+  REQUIRE_FALSE(flight.classes.empty());
+  if (!early.classes.empty() && !flight.classes.empty()) CHECK(early.classes[0] == flight.classes[0]);
+}
+
+namespace {
+
+// A calibrated cell that flags every evidence (`always`), or one that
+// flags none.
+blob::CalibrationCell calibrated_cell(bool always) {
+  blob::CalibrationCell c{};
+  if (!always) {
+    c.state = blob::kCellUnreachable;
+    return c;
+  }
+  c.state = blob::kCellFitted;
+  c.threshold = -1e30f;  // below every finite evidence
+  c.precision = 1.0f;
+  c.recall = 1.0f;
+  c.positives = 1u;
+  c.flagged = 1u;
+  return c;
+}
+
+// The agree table of make_calibrated_toy().
+enum class AgreeTable { kAbsent, kNever, kAlways };
+
+// The toy database with a calibration of both passes, one density band:
+// the full pass's table flags every level's evidence; the first pass's
+// flags every one (`first_flags`) or none; the agree table, when there is
+// one, likewise.
+bool make_calibrated_toy(test::ToyDatabase* out, bool first_flags, AgreeTable agree = AgreeTable::kNever) {
+  host::BlobContent content;
+  host::BuildReport report;
+  std::string error;
+  if (!host::build_database(test::toy_clouds(), host::BuildOptions(), &content, &report, &error))
+    return false;
+  host::CalibrationContent& c = content.calibration;
+  c = host::CalibrationContent{};
+  const uint32_t passes = agree == AgreeTable::kAbsent ? 2u : 3u;
+  c.header.pass_count = passes;
+  c.header.level_count = kCalibratedLevels;
+  c.header.band_count = 1;
+  c.header.target_precision = 0.99f;
+  c.header.scans_per_model = 1;
+  for (uint32_t p = 0; p < passes; ++p) {
+    const bool is_agree = p == static_cast<uint32_t>(AnswerPass::kAgree);
+    c.passes.push_back(blob::CalibrationPass{p, blob::kSourceFitted, 1u, is_agree ? 0.995f : 0.0f});
+    const bool flags = p == static_cast<uint32_t>(AnswerPass::kFirst) ? first_flags
+                       : is_agree                                     ? agree == AgreeTable::kAlways
+                                                                      : true;
+    for (uint32_t l = 0; l < kCalibratedLevels; ++l) c.cells.push_back(calibrated_cell(flags));
+  }
+  std::vector<uint8_t> bytes;
+  if (!host::serialize_blob(content, host::ByteOrder::kNative, &bytes, &error)) return false;
+  out->bytes = host::AlignedBytes::copy_of(bytes);
+  return Database::open(out->bytes.data(), out->bytes.size(), &out->db) == Status::kOk;
+}
+
+}  // namespace
+
+TEST_CASE("cascade: the first pass stops the query only when confident by the first pass's own table") {
+  const uint32_t m = 1;  // the clear view the priors answer in the first pass
+  test::ToyDatabase never_first, always_first;
+  REQUIRE(make_calibrated_toy(&never_first, false));
+  REQUIRE(make_calibrated_toy(&always_first, true));
+  REQUIRE(never_first.db.calibration().fitted(AnswerPass::kFirst));
+
+  // The first pass's table flags nothing: the query goes on to the full
+  // pass, whose own table flags its answer.
+  const Run escalated = recognize_toy(never_first, RecognizerConfig{}, m, true);
+  REQUIRE(escalated.result.status == Status::kOk);
+  CHECK(escalated.result.stats.cascade.passes == 2u);
+  CHECK(escalated.result.stats.cascade.answered_by == 1u);
+  CHECK_FALSE(escalated.result.stats.cascade.stopped_on_agreement);
+  CHECK(escalated.result.confident);
+
+  // The first pass's table flags its answer: the query ends there.
+  const Run stopped = recognize_toy(always_first, RecognizerConfig{}, m, true);
+  REQUIRE(stopped.result.status == Status::kOk);
+  CHECK(stopped.result.stats.cascade.passes == 1u);
+  CHECK(stopped.result.stats.cascade.answered_by == 0u);
+  CHECK_FALSE(stopped.result.stats.cascade.stopped_on_agreement);  // confident: the agree table is not asked
+  CHECK(stopped.result.confident);
+
+  // The flight preset runs the first pass's settings alone, and its flags
+  // are the first pass's table's; the full preset's the full pass's.
+  CHECK(calibration_pass(preset_config(Preset::kFlight)) == AnswerPass::kFirst);
+  CHECK(calibration_pass(preset_config(Preset::kFull)) == AnswerPass::kFull);
+  CHECK_FALSE(recognize_toy(never_first, preset_config(Preset::kFlight), m, true).result.confident);
+  CHECK(recognize_toy(never_first, preset_config(Preset::kFull), m, true).result.confident);
+}
+
+TEST_CASE("cascade: the agree table stops an unsure first pass; its flags stay the first pass's own") {
+  const uint32_t m = 1;
+  test::ToyDatabase agrees, never_agrees, no_agree_table;
+  REQUIRE(make_calibrated_toy(&agrees, false, AgreeTable::kAlways));
+  REQUIRE(make_calibrated_toy(&never_agrees, false, AgreeTable::kNever));
+  REQUIRE(make_calibrated_toy(&no_agree_table, false, AgreeTable::kAbsent));
+  REQUIRE(agrees.db.calibration().fitted(AnswerPass::kAgree));
+  REQUIRE_FALSE(no_agree_table.db.calibration().fitted(AnswerPass::kAgree));
+
+  // The first pass is not confident by its table, but stopping loses no
+  // right answer: the query ends after the first pass, unflagged.
+  const Run stopped = recognize_toy(agrees, RecognizerConfig{}, m, true);
+  REQUIRE(stopped.result.status == Status::kOk);
+  const CascadeStats& c = stopped.result.stats.cascade;
+  CHECK(c.passes == 1u);
+  CHECK(c.answered_by == 0u);
+  CHECK(c.stopped_on_agreement);
+  CHECK(c.full_work == 0u);
+  CHECK_FALSE(stopped.result.confident);
+  CHECK_FALSE(stopped.result.class_confident);
+  CHECK(stopped.result.level == AnswerLevel::kNone);
+  // Its answer is the first pass's: the flight preset's ranking.
+  const Run flight = recognize_toy(agrees, preset_config(Preset::kFlight), m, true);
+  CHECK(flight.models == stopped.models);
+  CHECK(flight.scores == stopped.scores);
+
+  // An agree table that never agrees, or none (the first pass's flag
+  // decides alone): on to the full pass.
+  for (const test::ToyDatabase* db : {&never_agrees, &no_agree_table}) {
+    const Run escalated = recognize_toy(*db, RecognizerConfig{}, m, true);
+    REQUIRE(escalated.result.status == Status::kOk);
+    CHECK(escalated.result.stats.cascade.passes == 2u);
+    CHECK(escalated.result.stats.cascade.answered_by == 1u);
+    CHECK_FALSE(escalated.result.stats.cascade.stopped_on_agreement);
+    CHECK(escalated.result.confident);
+  }
+}
