@@ -341,3 +341,33 @@ TEST_CASE("cascade: the agree table stops an unsure first pass; its flags stay t
     CHECK(escalated.result.confident);
   }
 }
+
+TEST_CASE("cascade: a caller's work cap below max_work ends a query as max_work would; lifted, it answers in full") {
+  test::ToyDatabase toy;
+  REQUIRE(test::make_toy_database(&toy));
+  const RecognizerConfig full = preset_config(Preset::kFull);
+  host::AlignedBytes workspace(required_workspace_bytes(full));
+  Recognizer recognizer;
+  REQUIRE(recognizer.init(&toy.db, full, workspace.data(), workspace.size()) == Status::kOk);
+  const double t[3] = {431000.5, 4020000.25, 87.0};
+  const std::vector<double> q = test::toy_query(test::toy_vehicle_points(3, 0.05f), 3.4, t, 0.03, 4);
+  const uint32_t n = static_cast<uint32_t>(q.size() / 3);
+  const Result whole = recognizer.recognize(q.data(), n);
+  REQUIRE(whole.status == Status::kOk);
+  const uint64_t work = whole.stats.cascade.work;
+  recognizer.set_work_cap(work / 2u);
+  const Result half = recognizer.recognize(q.data(), n);
+  CHECK(half.status == Status::kWorkCapReached);
+  CHECK(half.stats.cascade.work_capped);
+  CHECK(half.stats.cascade.work >= work / 2u);
+  CHECK(half.stats.cascade.work < work);
+  CHECK_FALSE(half.confident);
+  recognizer.set_work_cap(Recognizer::kNoWorkCap);
+  const Result again = recognizer.recognize(q.data(), n);
+  CHECK(again.status == Status::kOk);
+  CHECK(again.stats.cascade.work == work);
+  REQUIRE(again.ranking_count >= 1u);
+  REQUIRE(whole.ranking_count >= 1u);
+  CHECK(again.ranking[0].model == whole.ranking[0].model);
+  CHECK(again.ranking[0].score == whole.ranking[0].score);
+}

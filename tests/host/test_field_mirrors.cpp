@@ -92,7 +92,7 @@ bool same_range(const std::string& doc, L lo, H hi, bool has_range) {
   return lo_ok && hi_ok;
 }
 
-constexpr bool ranged_U32 = true, ranged_F32 = true, ranged_BOOL = false, ranged_VEC3D = false;
+constexpr bool ranged_U32 = true, ranged_U64 = true, ranged_F32 = true, ranged_BOOL = false, ranged_VEC3D = false;
 
 // The members of a JSON object's outer level, in order.
 std::vector<std::string> top_keys(const std::string& json) {
@@ -313,7 +313,7 @@ TEST_CASE(
   }
   SPINHASH_SCENE_CONFIG_FIELDS(SPINHASH_SCENE_FLAG)
 #undef SPINHASH_SCENE_FLAG
-  CHECK(flags == 6);
+  CHECK(flags == 7);
   for (const char* flag : {"--top", "--max-objects"}) {
     INFO("survey flag ", std::string(flag));
     CHECK(survey.out.find(flag) != std::string::npos);
