@@ -396,8 +396,8 @@ Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& f
       st.objects_out_of_work = saturating_add(st.objects_out_of_work, 1u);
     } else if (o.kind == ObjectKind::kVehicleCandidate) {
       const uint64_t before = st.recognition_work;
-      recognize_object(db, c, frame, job, k, c.window_max_work > 0u ? work_left : Recognizer::kNoWorkCap, b, o,
-                       &st);
+      recognize_object(db, c, frame, job, k, c.window_max_work > 0u ? work_left : Recognizer::kNoWorkCap, b,
+                       o, &st);
       const uint64_t spent = st.recognition_work - before;
       work_left = spent < work_left ? work_left - spent : 0u;
     }

@@ -342,7 +342,9 @@ TEST_CASE("cascade: the agree table stops an unsure first pass; its flags stay t
   }
 }
 
-TEST_CASE("cascade: a caller's work cap below max_work ends a query as max_work would; lifted, it answers in full") {
+TEST_CASE(
+    "cascade: a caller's work cap below max_work ends a query as max_work would; lifted, it answers in "
+    "full") {
   test::ToyDatabase toy;
   REQUIRE(test::make_toy_database(&toy));
   const RecognizerConfig full = preset_config(Preset::kFull);

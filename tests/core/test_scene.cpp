@@ -218,7 +218,8 @@ TEST_CASE(
   CHECK(required_scene_workspace_bytes(bad) == 0u);
 }
 
-TEST_CASE("scene: a window's recognitions share window_max_work; once it is spent the rest are not recognised") {
+TEST_CASE(
+    "scene: a window's recognitions share window_max_work; once it is spent the rest are not recognised") {
   ToyDatabase toy;
   REQUIRE(make_toy_database(&toy));
   TerrainShape t;
@@ -233,7 +234,8 @@ TEST_CASE("scene: a window's recognitions share window_max_work; once it is spen
   const auto candidates = [](const SceneResult& r) {
     uint32_t c = 0;
     for (uint32_t k = 0; k < r.object_count; ++k)
-      c += r.objects[k].kind == ObjectKind::kVehicleCandidate || r.objects[k].status == Status::kWorkCapReached;
+      c += r.objects[k].kind == ObjectKind::kVehicleCandidate ||
+           r.objects[k].status == Status::kWorkCapReached;
     return c;
   };
 
@@ -285,8 +287,10 @@ TEST_CASE("scene: a window's recognitions share window_max_work; once it is spen
     if (o.status != Status::kWorkCapReached) continue;
     CHECK_FALSE(o.confident);
     CHECK(o.level == AnswerLevel::kNone);
-    if (o.kind == ObjectKind::kUnknown && o.ranking_count == 0u && o.stats.cascade.work == 0u) ++unrecognised;
-    else ++capped;
+    if (o.kind == ObjectKind::kUnknown && o.ranking_count == 0u && o.stats.cascade.work == 0u)
+      ++unrecognised;
+    else
+      ++capped;
   }
   CHECK(capped == 1u);
   CHECK(unrecognised == 2u);

@@ -92,7 +92,8 @@ bool same_range(const std::string& doc, L lo, H hi, bool has_range) {
   return lo_ok && hi_ok;
 }
 
-constexpr bool ranged_U32 = true, ranged_U64 = true, ranged_F32 = true, ranged_BOOL = false, ranged_VEC3D = false;
+constexpr bool ranged_U32 = true, ranged_U64 = true, ranged_F32 = true, ranged_BOOL = false,
+               ranged_VEC3D = false;
 
 // The members of a JSON object's outer level, in order.
 std::vector<std::string> top_keys(const std::string& json) {
