@@ -69,6 +69,7 @@ double number(const std::string& s) { return s == "inf" ? INFINITY : std::strtod
 
 // A default as the table writes it.
 bool same_default(const std::string& doc, uint32_t v) { return doc == std::to_string(v); }
+bool same_default(const std::string& doc, uint64_t v) { return doc == std::to_string(v); }
 bool same_default(const std::string& doc, float v) { return near(number(doc), static_cast<double>(v)); }
 bool same_default(const std::string& doc, bool v) { return doc == (v ? "true" : "false"); }
 bool same_default(const std::string& doc, const double (&v)[3]) {
