@@ -138,16 +138,17 @@ void clear_flags(Result* result) {
 }
 
 // One pass of the stages with `pass`'s settings; `work_before`: what the
-// earlier passes spent (the cap counts the query's total). Not named run*:
+// earlier passes spent (the cap, `work_cap`, counts the query's total). Not named run*:
 // the instruction scripts toggle callgrind on Recognizer::run*, and a
 // nested match would toggle it off.
 void recognize_pass(const Database& db, RecognizerBuffers& b, size_t used_bytes, const CloudView& cloud,
                     const ObjectTerrain& terrain, const RecognizerConfig& pass, AnswerPass answer_pass,
-                    uint64_t work_before, Result* result) {
+                    uint64_t work_before, uint64_t work_cap, Result* result) {
   result->stats.workspace_used = used_bytes;
   SearchContext ctx(db, pass, b, *result);
   ctx.terrain = terrain;
   ctx.work_before = work_before;
+  ctx.work_cap = work_cap < pass.max_work ? work_cap : pass.max_work;
   ctx.answer_pass = answer_pass;
   result->status = b.extractor.load(cloud, &ctx.features, &result->stats.extract);
   if (result->status == Status::kOk) result->status = run_stages(ctx);
@@ -208,6 +209,7 @@ void answer_with_first_pass(const Database& db, RecognizerBuffers& b, Result* re
 }  // namespace
 
 Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noexcept {
+  const uint64_t work_cap = work_cap_;
   Result result;
   if (buffers_ == nullptr) return result;  // kNotOpen
   if (cloud.count > 0 && cloud.xyz_f == nullptr && cloud.xyz_d == nullptr) {
@@ -218,7 +220,8 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
   b.carried_count = 0;
   uint64_t first_work = 0;
   if (config_.cascade) {
-    recognize_pass(*db_, b, used_bytes_, cloud, terrain, b.first_pass, AnswerPass::kFirst, 0, &result);
+    recognize_pass(*db_, b, used_bytes_, cloud, terrain, b.first_pass, AnswerPass::kFirst, 0, work_cap,
+                   &result);
     first_work = result.stats.cascade.work;
     const bool confident = result.status == Status::kOk && result.confident;
     const bool agrees = !confident && full_pass_agrees(*db_, result);
@@ -233,7 +236,7 @@ Result Recognizer::run(const CloudView& cloud, const ObjectTerrain& terrain) noe
     result = Result{};
   }
   recognize_pass(*db_, b, used_bytes_, cloud, terrain, config_, calibration_pass(config_), first_work,
-                 &result);
+                 work_cap, &result);
   CascadeStats& c = result.stats.cascade;
   c.passes = config_.cascade ? 2u : 1u;
   c.answered_by = 1;

@@ -98,6 +98,7 @@ struct SearchContext {
   EvidenceState evidence;
   uint32_t trial_scale = 1;  // BRAN's draws' budget x this (a sparse scan's; candidates.cpp)
   uint64_t work_before = 0;  // work units the cascade's earlier passes spent (work_meter.hpp)
+  uint64_t work_cap = 0;     // the query's cap: params.max_work, or the caller's lower one
   // Whose calibrated thresholds decide this pass's flags (level_evidence.hpp).
   AnswerPass answer_pass = AnswerPass::kFull;
 

@@ -29,9 +29,9 @@ inline uint64_t pass_work(const RecognitionStats& s, const RecognizerConfig& pas
              (poses * (verify < features ? verify : features) + s.refine.refinements * features);
 }
 
-// The query has spent its max_work (the earlier passes' and this one's).
+// The query has spent its cap (the earlier passes' work and this one's).
 inline bool work_capped(const SearchContext& ctx) {
-  return ctx.work_before + pass_work(ctx.stats, ctx.params) >= ctx.params.max_work;
+  return ctx.work_before + pass_work(ctx.stats, ctx.params) >= ctx.work_cap;
 }
 
 }  // namespace spinhash

@@ -16,6 +16,7 @@ namespace {
 // range is its type's whole range compiles without "comparison is always
 // true".
 bool in_range_U32(uint32_t v, uint32_t lo, uint32_t hi) { return v >= lo && v <= hi; }
+bool in_range_U64(uint64_t v, uint64_t lo, uint64_t hi) { return v >= lo && v <= hi; }
 bool in_range_F32(float v, float lo, float hi) { return v >= lo && v <= hi; }  // false for NaN
 bool in_range_BOOL(bool, int, int) { return true; }
 bool in_range_VEC3D(const double (&)[3], int, int) { return true; }  // checked with origin_given below

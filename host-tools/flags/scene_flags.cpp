@@ -20,6 +20,10 @@ void add_U32(CLI::App* cmd, uint32_t* v, L lo, H hi, const char* flag, const cha
   add_number(cmd, v, lo, hi, flag, help);
 }
 template <typename L, typename H>
+void add_U64(CLI::App* cmd, uint64_t* v, L lo, H hi, const char* flag, const char* help) {
+  add_number(cmd, v, lo, hi, flag, help);
+}
+template <typename L, typename H>
 void add_F32(CLI::App* cmd, float* v, L lo, H hi, const char* flag, const char* help) {
   add_number(cmd, v, lo, hi, flag, help);
 }

@@ -76,6 +76,8 @@ std::string scene_stats_text(const SceneStats& st) {
   if (st.objects_dropped) s += ", dropped " + std::to_string(st.objects_dropped);
   s += "; recognition: " + std::to_string(st.recognition_candidates) + " candidates, " +
        std::to_string(st.recognition_hypotheses) + " hypotheses";
+  if (st.objects_out_of_work)
+    s += ", " + std::to_string(st.objects_out_of_work) + " candidates not recognised (window work spent)";
   return s;
 }
 

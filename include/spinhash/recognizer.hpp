@@ -192,6 +192,12 @@ class Recognizer {
   Result recognize(const float* xyz, uint32_t count, const ObjectTerrain& terrain) noexcept;
   size_t used_bytes() const noexcept { return used_bytes_; }
   const RecognizerConfig& config() const noexcept { return config_; }
+  // Caps the work of the queries that follow at `units` when that is below
+  // config().max_work (kNoWorkCap lifts it): for a caller that shares one
+  // budget among queries, as a scene window does among its objects. A
+  // query that reaches it ends as at max_work (Status::kWorkCapReached).
+  static constexpr uint64_t kNoWorkCap = ~0ull;
+  void set_work_cap(uint64_t units) noexcept { work_cap_ = units; }
 
  private:
   Result run(const CloudView& cloud, const ObjectTerrain& terrain) noexcept;
@@ -200,6 +206,7 @@ class Recognizer {
   RecognizerConfig config_{};
   size_t used_bytes_ = 0;
   RecognizerBuffers* buffers_ = nullptr;  // placed in the workspace by init()
+  uint64_t work_cap_ = kNoWorkCap;        // set_work_cap()
 };
 
 }  // namespace spinhash

@@ -52,6 +52,13 @@ struct SceneConfig {
   // max_tile_points: scene_tile.hpp).
   uint32_t max_tile_points = 1u << 21;  // points a window holds (more: kWindowOverflow, counted)
   uint32_t max_objects = 256;           // objects of >= min_object_points points per window
+  // Work units (RecognizerConfig::max_work's) a window's recognitions
+  // share, in the order the window finds its objects: each gets at most
+  // what the earlier ones left, and once it is spent the rest are not
+  // recognised (status kWorkCapReached). 0: each object has its own
+  // max_work alone, and a window's work is bounded only by max_objects of
+  // them. Bounds a flight line's worst window (docs/budgets.md).
+  uint64_t window_max_work = 0;
   uint32_t max_terrain_cells =
       1u << 17;  // terrain grid: 0.5 m cells; windows of a row share it (2 of 64 + 40 m)
   uint32_t max_segment_cells = 1u << 19;  // segmentation grid: 0.25 m cells -> 181 x 181 m
@@ -155,6 +162,8 @@ struct SceneStats {
   uint32_t windows_overflowed = 0;      // windows over a capacity: not recognised (kWindowOverflow)
   uint64_t recognition_hypotheses = 0;  // summed over the candidates
   uint64_t recognition_candidates = 0;
+  uint64_t recognition_work = 0;     // work units of the candidates' recognitions
+  uint32_t objects_out_of_work = 0;  // candidates not recognised: their window's window_max_work was spent
   size_t workspace_used = 0;
 };
 

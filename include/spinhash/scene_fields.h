@@ -51,6 +51,9 @@
     "points a scene window holds (default: sized from the tile's density; more: counted, not answered)")    \
   X(U32, max_objects, 1u, kMaxSceneObjects, "--max-objects",                                                \
     "objects per tile (more: the rest are not recognised)")                                                 \
+  X(U64, window_max_work, 0u, kMaxQueryWork, "--window-max-work",                                           \
+    "work units a window's recognitions share (0: each object's --max-work alone); once spent, the "        \
+    "window's other candidates are not recognised")                                                         \
   X(U32, max_terrain_cells, 1u, kMaxSceneGridCells, "",                                                     \
     "terrain grid cells, shared by the windows of a row side by side")                                      \
   X(U32, max_segment_cells, 1u, kMaxSceneGridCells, "", "segmentation grid cells per window")               \
@@ -122,6 +125,8 @@
   S(U32, windows_overflowed, "windows_overflowed")         \
   S(U64, recognition_hypotheses, "recognition_hypotheses") \
   S(U64, recognition_candidates, "recognition_candidates") \
+  S(U64, recognition_work, "recognition_work")             \
+  S(U32, objects_out_of_work, "objects_out_of_work")       \
   S(SIZE, workspace_used, "workspace_used")
 
 #define SPINHASH_STREAM_STATS_FIELDS(S)                \

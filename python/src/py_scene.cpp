@@ -29,7 +29,7 @@ std::string type_name(py::handle value) {
 }
 
 // A Python value as a scene setting's type: TypeError for another type,
-// ValueError for an int beyond uint32.
+// ValueError for an int beyond the field's type.
 uint32_t setting_value(uint32_t*, const std::string& key, py::handle value) {
   if (PyBool_Check(value.ptr()) || !PyLong_Check(value.ptr()))
     throw py::type_error(key + " must be an int, got " + type_name(value));
@@ -39,6 +39,16 @@ uint32_t setting_value(uint32_t*, const std::string& key, py::handle value) {
     throw py::value_error(key + " is out of range: " + std::string(py::repr(value)));
   }
   return static_cast<uint32_t>(v);
+}
+uint64_t setting_value(uint64_t*, const std::string& key, py::handle value) {
+  if (PyBool_Check(value.ptr()) || !PyLong_Check(value.ptr()))
+    throw py::type_error(key + " must be an int, got " + type_name(value));
+  const unsigned long long v = PyLong_AsUnsignedLongLong(value.ptr());
+  if (PyErr_Occurred()) {
+    PyErr_Clear();
+    throw py::value_error(key + " is out of range: " + std::string(py::repr(value)));
+  }
+  return static_cast<uint64_t>(v);
 }
 float setting_value(float*, const std::string& key, py::handle value) {
   if (PyBool_Check(value.ptr()) || !(PyLong_Check(value.ptr()) || PyFloat_Check(value.ptr())))

@@ -385,6 +385,16 @@ bool above(uint32_t hi, uint32_t* v) {
   *v = hi + 1u;
   return true;
 }
+bool below(uint64_t lo, uint64_t* v) {
+  if (lo == 0u) return false;
+  *v = lo - 1u;
+  return true;
+}
+bool above(uint64_t hi, uint64_t* v) {
+  if (hi == ~0ull) return false;
+  *v = hi + 1u;
+  return true;
+}
 bool below(float lo, float* v) {
   *v = std::nextafter(lo, -std::numeric_limits<float>::infinity());
   return std::isfinite(lo);

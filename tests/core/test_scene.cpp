@@ -217,3 +217,81 @@ TEST_CASE(
   bad.top_n = 0;
   CHECK(required_scene_workspace_bytes(bad) == 0u);
 }
+
+TEST_CASE(
+    "scene: a window's recognitions share window_max_work; once it is spent the rest are not recognised") {
+  ToyDatabase toy;
+  REQUIRE(make_toy_database(&toy));
+  TerrainShape t;
+  Tile tile;
+  add_terrain(tile, t, 12.0, 0.12, 0.03, 5);
+  // Three toys side by side, 0.7-1 m apart: one window's candidates.
+  const double ys[3] = {-3.0, -0.4, 2.4};
+  for (uint32_t m = 0; m < 3; ++m) add_model(tile, t, toy_vehicle_points(m, 0.1f), 0.0, ys[m], 0.0, 0.35);
+  remove_occluded_ground(tile);
+  georeference(tile.xyz);
+  const uint32_t n = static_cast<uint32_t>(tile.ground.size());
+  const auto candidates = [](const SceneResult& r) {
+    uint32_t c = 0;
+    for (uint32_t k = 0; k < r.object_count; ++k)
+      c += r.objects[k].kind == ObjectKind::kVehicleCandidate ||
+           r.objects[k].status == Status::kWorkCapReached;
+    return c;
+  };
+
+  SceneConfig cfg;
+  cfg.window_core = 64.0f;  // the whole tile in one window's core
+  SceneRun free_run(&toy.db, cfg);
+  REQUIRE(free_run.init == Status::kOk);
+  const SceneResult free = free_run.scene.recognize(tile.xyz.data(), n);
+  REQUIRE(free.status == Status::kOk);
+  REQUIRE(free.stats.objects_by_kind[static_cast<int>(ObjectKind::kVehicleCandidate)] == 3u);
+  uint64_t work = 0;
+  std::vector<uint32_t> models;
+  for (uint32_t k = 0; k < free.object_count; ++k) {
+    const SceneObject& o = free.objects[k];
+    if (o.kind != ObjectKind::kVehicleCandidate) continue;
+    CHECK(o.status == Status::kOk);
+    work += o.stats.cascade.work;
+    models.push_back(o.ranking_count > 0 ? o.ranking[0].model : ~0u);
+  }
+  CHECK(free.stats.recognition_work == work);
+  CHECK(free.stats.objects_out_of_work == 0u);
+
+  // A budget the three fit in answers as without one.
+  cfg.window_max_work = work + 1u;
+  SceneRun fits_run(&toy.db, cfg);
+  REQUIRE(fits_run.init == Status::kOk);
+  const SceneResult fits = fits_run.scene.recognize(tile.xyz.data(), n);
+  CHECK(fits.stats.objects_out_of_work == 0u);
+  CHECK(fits.stats.recognition_work == work);
+  std::vector<uint32_t> fit_models;
+  for (uint32_t k = 0; k < fits.object_count; ++k)
+    if (fits.objects[k].kind == ObjectKind::kVehicleCandidate)
+      fit_models.push_back(fits.objects[k].ranking_count > 0 ? fits.objects[k].ranking[0].model : ~0u);
+  CHECK(fit_models == models);
+
+  // A budget of one unit: the first candidate's recognition is capped at
+  // once (its extraction is uninterruptible), the other two are not run.
+  cfg.window_max_work = 1u;
+  SceneRun tight_run(&toy.db, cfg);
+  REQUIRE(tight_run.init == Status::kOk);
+  const SceneResult tight = tight_run.scene.recognize(tile.xyz.data(), n);
+  CHECK(tight.status == Status::kOk);
+  CHECK(candidates(tight) == 3u);
+  CHECK(tight.stats.objects_out_of_work == 2u);
+  CHECK(tight.stats.recognition_work < work);
+  uint32_t capped = 0, unrecognised = 0;
+  for (uint32_t k = 0; k < tight.object_count; ++k) {
+    const SceneObject& o = tight.objects[k];
+    if (o.status != Status::kWorkCapReached) continue;
+    CHECK_FALSE(o.confident);
+    CHECK(o.level == AnswerLevel::kNone);
+    if (o.kind == ObjectKind::kUnknown && o.ranking_count == 0u && o.stats.cascade.work == 0u)
+      ++unrecognised;
+    else
+      ++capped;
+  }
+  CHECK(capped == 1u);
+  CHECK(unrecognised == 2u);
+}

@@ -69,6 +69,7 @@ double number(const std::string& s) { return s == "inf" ? INFINITY : std::strtod
 
 // A default as the table writes it.
 bool same_default(const std::string& doc, uint32_t v) { return doc == std::to_string(v); }
+bool same_default(const std::string& doc, uint64_t v) { return doc == std::to_string(v); }
 bool same_default(const std::string& doc, float v) { return near(number(doc), static_cast<double>(v)); }
 bool same_default(const std::string& doc, bool v) { return doc == (v ? "true" : "false"); }
 bool same_default(const std::string& doc, const double (&v)[3]) {
@@ -92,7 +93,8 @@ bool same_range(const std::string& doc, L lo, H hi, bool has_range) {
   return lo_ok && hi_ok;
 }
 
-constexpr bool ranged_U32 = true, ranged_F32 = true, ranged_BOOL = false, ranged_VEC3D = false;
+constexpr bool ranged_U32 = true, ranged_U64 = true, ranged_F32 = true, ranged_BOOL = false,
+               ranged_VEC3D = false;
 
 // The members of a JSON object's outer level, in order.
 std::vector<std::string> top_keys(const std::string& json) {
@@ -313,7 +315,7 @@ TEST_CASE(
   }
   SPINHASH_SCENE_CONFIG_FIELDS(SPINHASH_SCENE_FLAG)
 #undef SPINHASH_SCENE_FLAG
-  CHECK(flags == 6);
+  CHECK(flags == 7);
   for (const char* flag : {"--top", "--max-objects"}) {
     INFO("survey flag ", std::string(flag));
     CHECK(survey.out.find(flag) != std::string::npos);

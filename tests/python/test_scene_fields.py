@@ -32,7 +32,7 @@ def test_every_scene_setting_is_a_keyword_and_a_property(fleet):
     default = spinhash.SceneRecognizer(db)
     for kind, name in fields:
         value = getattr(default, name)
-        assert isinstance(value, int if kind == "U32" else float), name
+        assert isinstance(value, int if kind in ("U32", "U64") else float), name
         again = spinhash.SceneRecognizer(db, **{name: value})  # accepted as a keyword, checked by the core
         assert getattr(again, name) == value, name
     with pytest.raises(ValueError, match="max_length is out of range"):
@@ -75,3 +75,15 @@ def test_statuses_are_the_status_list():
     assert len(listed) == len(spinhash.STATUSES) > 30
     for _, value, _, word, message in listed:
         assert spinhash.STATUSES[word] == (int(value), message)
+
+
+def test_a_window_work_budget_is_an_unsigned_64_bit_setting(fleet):
+    db = spinhash.Database(fleet.db)
+    big = spinhash.SceneRecognizer(db, window_max_work=2**40)
+    assert big.window_max_work == 2**40
+    with pytest.raises(ValueError, match="window_max_work is out of range"):
+        spinhash.SceneRecognizer(db, window_max_work=2**40 + 1)
+    with pytest.raises(ValueError, match="window_max_work is out of range"):
+        spinhash.SceneRecognizer(db, window_max_work=-1)
+    with pytest.raises(TypeError, match="window_max_work must be an int"):
+        spinhash.SceneRecognizer(db, window_max_work=1.5)

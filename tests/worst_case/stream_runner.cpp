@@ -1,20 +1,25 @@
 // Work per input point of the scene stream (scripts/instructions-per-point.sh):
-//   stream_runner prepare DIR [SIDE_M [SPACING_M]]  writes DIR/toy.shdb (the
-//                 toy database), DIR/strip.f64 (raw native float64 xyz, scan
-//                 order): a SIDE x SIDE m strip (default 100) of sloped
+//   stream_runner prepare DIR [SIDE_M [SPACING_M [LENGTH_M]]]  writes
+//                 DIR/toy.shdb (the toy database), DIR/strip.f64 (raw native
+//                 float64 xyz, scan order): a strip SIDE m across (default
+//                 100) and LENGTH m along track (default SIDE) of sloped
 //                 terrain at SPACING m (default 0.1) with toy vehicles, one
 //                 per 300 m2 of ground, and DIR/truth.f64 (x y model per
 //                 vehicle)
-//   stream_runner run DIR               pushes the strip through SceneStream
-//                 in 4 kB chunks and flushes, between spinhash_bench_begin()
-//                 and spinhash_bench_end(); prints points, objects, vehicles
-//                 found and named right first, and stats
+//   stream_runner run DIR [PRESET [WINDOW_MAX_WORK]]  pushes the strip
+//                 through SceneStream in 4 kB chunks and flushes, between
+//                 spinhash_bench_begin() and spinhash_bench_end(); prints
+//                 points, objects, vehicles found and named right first, and
+//                 stats; writes DIR/rows.csv: per row of windows along track,
+//                 its input points, objects and recognition work units (what
+//                 scripts/flight-keepup.py simulates a flight line from)
 // Counted by callgrind on the host and by scripts/qemu/insn_count.c under
 // qemu-user. The link wraps the three stages (-Wl,--wrap, tests/CMakeLists.txt)
 // so that each call runs between markers of its own: the plugin counts a
 // stage's instructions where callgrind gives its inclusive count.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -134,6 +139,7 @@ constexpr uint32_t kBufferedPoints = 1u << 21;
 constexpr uint32_t kMaxKept =
     4096;  // objects kept for the truth check (fixed: nothing allocated while counted)
 constexpr double kFoundRadius = 1.5;  // m between a vehicle's centre and its object's
+constexpr uint32_t kMaxRows = 4096;   // rows of windows along track in rows.csv
 
 int fail(const std::string& what) {
   std::fprintf(stderr, "stream_runner: %s\n", what.c_str());
@@ -149,12 +155,12 @@ struct Lcg {  // deterministic, standard-library independent
 };
 
 // Vehicle centres and yaws, at least kMinSeparation apart.
-std::vector<double> place_vehicles(double side, uint32_t count) {
+std::vector<double> place_vehicles(double length, double side, uint32_t count) {
   Lcg rng{17};
   std::vector<double> placed;  // x y yaw
-  const double span = side - 2.0 * kEdgeClearance;
+  const double along = length - 2.0 * kEdgeClearance, across = side - 2.0 * kEdgeClearance;
   while (placed.size() / 3 < count) {
-    const double x = -0.5 * span + span * rng.uniform(), y = -0.5 * span + span * rng.uniform();
+    const double x = -0.5 * along + along * rng.uniform(), y = -0.5 * across + across * rng.uniform();
     const double yaw = 6.283185307179586 * rng.uniform();
     bool clear = true;
     for (size_t i = 0; i < placed.size(); i += 3)
@@ -165,13 +171,13 @@ std::vector<double> place_vehicles(double side, uint32_t count) {
 }
 
 // The strip, sorted along track (x): scan order.
-std::vector<double> strip(double side, double spacing, std::vector<double>* truth) {
+std::vector<double> strip(double length, double side, double spacing, std::vector<double>* truth) {
   test::TerrainShape t;
   t.slope_deg = kSlopeDeg;
   test::Tile tile;
-  test::add_terrain_rect(tile, t, -0.5 * side, 0.5 * side, -0.5 * side, 0.5 * side, spacing, 0.02, 9);
-  const auto vehicles = static_cast<uint32_t>(std::lround(side * side / kGroundPerVehicle));
-  const std::vector<double> at = place_vehicles(side, vehicles);
+  test::add_terrain_rect(tile, t, -0.5 * length, 0.5 * length, -0.5 * side, 0.5 * side, spacing, 0.02, 9);
+  const auto vehicles = static_cast<uint32_t>(std::lround(length * side / kGroundPerVehicle));
+  const std::vector<double> at = place_vehicles(length, side, vehicles);
   for (size_t i = 0; i < at.size(); i += 3) {
     const uint32_t model = static_cast<uint32_t>(i / 3 % test::kToyModels);
     test::add_model(tile, t, test::toy_vehicle_points(model, kVehicleSpacing), at[i], at[i + 1], at[i + 2],
@@ -189,7 +195,7 @@ bool write_doubles(const std::string& path, const std::vector<double>& v, std::s
   return host::write_file_atomically(path, bytes, error);
 }
 
-int prepare(const std::string& dir, double side, double spacing) {
+int prepare(const std::string& dir, double side, double spacing, double length) {
   test::ToyDatabase toy;
   if (!test::make_toy_database(&toy)) return fail("toy database");
   std::string error;
@@ -198,10 +204,10 @@ int prepare(const std::string& dir, double side, double spacing) {
           &error))
     return fail(error);
   std::vector<double> truth;
-  const std::vector<double> xyz = strip(side, spacing, &truth);
+  const std::vector<double> xyz = strip(length, side, spacing, &truth);
   if (!write_doubles(dir + "/strip.f64", xyz, &error) || !write_doubles(dir + "/truth.f64", truth, &error))
     return fail(error);
-  std::printf("strip: %.0f x %.0f m, %zu points, %zu vehicles\n", side, side, xyz.size() / 3,
+  std::printf("strip: %.0f x %.0f m, %zu points, %zu vehicles\n", length, side, xyz.size() / 3,
               truth.size() / 3);
   return 0;
 }
@@ -211,9 +217,10 @@ int prepare(const std::string& dir, double side, double spacing) {
 // strip, the default window stages.
 constexpr float kOwnHalfWidth = 64.0f;  // m across either side of the origin: the 100 m strip
 
-StreamConfig bench_config(const double* first, Preset preset) {
+StreamConfig bench_config(const double* first, Preset preset, uint64_t window_max_work) {
   StreamConfig c;
   apply_preset(preset, &c.scene.recognizer);
+  c.scene.window_max_work = window_max_work;
   const double core = c.scene.window_core;
   c.origin_given = true;
   c.origin[0] = std::floor(first[0] / core) * core;
@@ -230,15 +237,24 @@ struct Kept {
   int64_t model;  // -1 without a ranking
 };
 
+struct Row {
+  uint64_t points = 0, objects = 0, work = 0;
+};
+
 struct Tally {
   uint64_t by_kind[kObjectKinds] = {};
   uint64_t confident = 0;
   Kept kept[kMaxKept];
   uint32_t kept_count = 0;
+  Row rows[kMaxRows];
 };
 
-void tally(void* context, const SceneObject& o, int64_t, uint32_t) {
+void tally(void* context, const SceneObject& o, int64_t row, uint32_t) {
   Tally& t = *static_cast<Tally*>(context);
+  if (row >= 0 && row < static_cast<int64_t>(kMaxRows)) {
+    ++t.rows[row].objects;
+    t.rows[row].work += o.stats.cascade.work;
+  }
   ++t.by_kind[static_cast<uint32_t>(o.kind)];
   t.confident += o.confident ? 1u : 0u;
   if (t.kept_count < kMaxKept)
@@ -268,7 +284,25 @@ Score score(const Tally& t, const host::AlignedBytes& truth) {
   return s;
 }
 
-int run(const std::string& dir, Preset preset) {
+// DIR/rows.csv: each row's input points (by x from the stream's origin, rows
+// of window_core along track), objects and recognition work units.
+bool write_rows(const std::string& dir, Tally& t, const double* xyz, uint32_t n, const StreamConfig& c,
+                std::string* error) {
+  uint32_t last = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const double k = std::floor((xyz[3u * i] - c.origin[0]) / c.scene.window_core);
+    if (k < 0.0 || k >= kMaxRows) continue;
+    ++t.rows[static_cast<uint32_t>(k)].points;
+    last = static_cast<uint32_t>(k) > last ? static_cast<uint32_t>(k) : last;
+  }
+  std::string csv = "row,points,objects,recognition_work\n";
+  for (uint32_t k = 0; k <= last; ++k)
+    csv += std::to_string(k) + "," + std::to_string(t.rows[k].points) + "," +
+           std::to_string(t.rows[k].objects) + "," + std::to_string(t.rows[k].work) + "\n";
+  return host::write_file_atomically(dir + "/rows.csv", std::vector<uint8_t>(csv.begin(), csv.end()), error);
+}
+
+int run(const std::string& dir, Preset preset, uint64_t window_max_work) {
   host::AlignedBytes blob, cloud, truth;
   std::string error;
   if (!host::read_file(dir + "/toy.shdb", &blob, &error) ||
@@ -280,7 +314,7 @@ int run(const std::string& dir, Preset preset) {
   const auto* xyz = reinterpret_cast<const double*>(cloud.data());  // 64-byte aligned buffer
   const auto n = static_cast<uint32_t>(cloud.size() / (3 * sizeof(double)));
   if (n == 0) return fail("empty strip");
-  const StreamConfig config = bench_config(xyz, preset);
+  const StreamConfig config = bench_config(xyz, preset, window_max_work);
   host::AlignedBytes workspace(required_stream_workspace_bytes(config));
   SceneStream stream;
   static Tally t;  // large: not on the stack
@@ -310,18 +344,24 @@ int run(const std::string& dir, Preset preset) {
       static_cast<unsigned long long>(st.points_overflow),
       static_cast<unsigned long long>(st.scene.recognition_hypotheses), stream.used_bytes(),
       status_name(f != Status::kOk ? f : status));
+  if (!write_rows(dir, t, xyz, n, config, &error)) return fail(error);
   return status == Status::kOk && f == Status::kOk ? 0 : 1;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc >= 3 && argc <= 5 && std::strcmp(argv[1], "prepare") == 0)
-    return prepare(argv[2], argc >= 4 ? std::atof(argv[3]) : kDefaultSide,
-                   argc == 5 ? std::atof(argv[4]) : kSpacing);
+  if (argc >= 3 && argc <= 6 && std::strcmp(argv[1], "prepare") == 0) {
+    const double side = argc >= 4 ? std::atof(argv[3]) : kDefaultSide;
+    return prepare(argv[2], side, argc >= 5 ? std::atof(argv[4]) : kSpacing,
+                   argc == 6 ? std::atof(argv[5]) : side);
+  }
   Preset preset = Preset::kDefault;
-  if ((argc == 3 || (argc == 4 && preset_from_name(argv[3], &preset))) && std::strcmp(argv[1], "run") == 0)
-    return run(argv[2], preset);
-  std::fprintf(stderr, "usage: stream_runner prepare DIR [SIDE_M [SPACING_M]] | run DIR [default|flight]\n");
+  if (argc >= 3 && argc <= 5 && std::strcmp(argv[1], "run") == 0 &&
+      (argc == 3 || preset_from_name(argv[3], &preset)))
+    return run(argv[2], preset, argc == 5 ? std::strtoull(argv[4], nullptr, 10) : 0u);
+  std::fprintf(stderr,
+               "usage: stream_runner prepare DIR [SIDE_M [SPACING_M [LENGTH_M]]] | "
+               "run DIR [default|flight|full [WINDOW_MAX_WORK]]\n");
   return 2;
 }
