@@ -42,11 +42,6 @@ Status check_bands(const blob::CalibrationHeader& h) {
   return Status::kOk;
 }
 
-// The precision a pass's fitted cells reach: its own, or the header's.
-float pass_target(const blob::CalibrationHeader& h, const blob::CalibrationPass& p) {
-  return p.target_precision > 0.0f ? p.target_precision : h.target_precision;
-}
-
 Status check_pass(const blob::CalibrationPass& p, uint32_t index) {
   if (p.pass != index || p.pass >= kAnswerPassCount) return Status::kBlobBadCalibration;
   if (p.source == blob::kSourcePriors)
@@ -110,7 +105,7 @@ Status check_calibration(const Sections& s) {
     if (st != Status::kOk) return st;
     for (uint32_t l = 0; l < kCalibratedLevels; ++l) {
       st = check_level(cells + (static_cast<size_t>(p) * kCalibratedLevels + l) * h.band_count, h.band_count,
-                       passes[p].source == blob::kSourceFitted, pass_target(h, passes[p]));
+                       passes[p].source == blob::kSourceFitted, blob::pass_target_precision(h, passes[p]));
       if (st != Status::kOk) return st;
     }
   }

@@ -84,7 +84,7 @@ bool Calibration::fitted(AnswerPass pass) const noexcept {
 float Calibration::target_precision(AnswerPass pass) const noexcept {
   const uint32_t p = static_cast<uint32_t>(pass);
   if (p >= pass_count()) return 0.0f;
-  return passes_[p].target_precision > 0.0f ? passes_[p].target_precision : header_->target_precision;
+  return blob::pass_target_precision(*header_, passes_[p]);
 }
 
 const blob::CalibrationCell* Calibration::cell(AnswerPass pass, AnswerLevel level,

@@ -154,10 +154,11 @@ void canonical_order(float* xyz, uint32_t n) {
 }
 
 // Recognises the vehicle candidate k of the window into out (and b.ranking),
-// its work capped at `work_cap` units (Recognizer::set_work_cap).
-void recognize_object(const Database& db, const SceneConfig& c, const StreamFrame& frame,
-                      const WindowJob& job, uint32_t k, uint64_t work_cap, WindowBuffers& b, SceneObject& out,
-                      SceneStats* stats) {
+// its work capped at `work_cap` units (Recognizer::set_work_cap); returns
+// the work it spent.
+uint64_t recognize_object(const Database& db, const SceneConfig& c, const StreamFrame& frame,
+                          const WindowJob& job, uint32_t k, uint64_t work_cap, WindowBuffers& b,
+                          SceneObject& out, SceneStats* stats) {
   const ObjectShape& o = b.shapes[k];
   float* points = b.gathered + 3u * static_cast<size_t>(b.offsets[k]);
   canonical_order(points, o.points);
@@ -174,7 +175,7 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
   stats->recognition_work += r.stats.cascade.work;
   if (!has_answer(r.status) || r.ranking_count == 0) {
     out.kind = ObjectKind::kUnknown;
-    return;
+    return r.stats.cascade.work;
   }
   const blob::ModelRecord& best = db.model(r.ranking[0].model);
   double s0, t0;
@@ -211,6 +212,7 @@ void recognize_object(const Database& db, const SceneConfig& c, const StreamFram
   first.vehicle_class = out.class_count > 0 ? out.classes : nullptr;
   first.group = out.group_count > 0 ? out.groups : nullptr;
   out.level = answer_level(db, out.levels, first);
+  return r.stats.cascade.work;
 }
 
 }  // namespace
@@ -379,10 +381,10 @@ Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& f
   st.objects_dropped = saturating_add(st.objects_dropped, ss.dropped);
   object_boxes(ring, n, ss.objects, b);
   gather_objects(ring, n, ss.objects, frame, b);
-  // The window's work budget, shared in the order of its objects: a query
-  // may pass its cap by one stage's uninterruptible work, so what is left
-  // never goes below 0.
-  uint64_t work_left = c.window_max_work;
+  // The window's work budget, shared in the order of its objects (none when
+  // window_max_work is 0): a query may pass its cap by one stage's
+  // uninterruptible work, so what is left never goes below 0.
+  uint64_t work_left = c.window_max_work > 0u ? c.window_max_work : Recognizer::kNoWorkCap;
   for (uint32_t k = 0; k < ss.objects; ++k) {
     const double* box = b.box + 4u * k;
     if (!area_holds(job.core, 0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]))) {
@@ -390,15 +392,12 @@ Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& f
       continue;
     }
     SceneObject o = describe(b.shapes[k], c, frame, job);
-    if (o.kind == ObjectKind::kVehicleCandidate && c.window_max_work > 0u && work_left == 0u) {
+    if (o.kind == ObjectKind::kVehicleCandidate && work_left == 0u) {
       o.kind = ObjectKind::kUnknown;  // the window's work is spent: not recognised
       o.status = Status::kWorkCapReached;
       st.objects_out_of_work = saturating_add(st.objects_out_of_work, 1u);
     } else if (o.kind == ObjectKind::kVehicleCandidate) {
-      const uint64_t before = st.recognition_work;
-      recognize_object(db, c, frame, job, k, c.window_max_work > 0u ? work_left : Recognizer::kNoWorkCap, b,
-                       o, &st);
-      const uint64_t spent = st.recognition_work - before;
+      const uint64_t spent = recognize_object(db, c, frame, job, k, work_left, b, o, &st);
       work_left = spent < work_left ? work_left - spent : 0u;
     }
     st.objects_by_kind[static_cast<uint32_t>(o.kind)] =

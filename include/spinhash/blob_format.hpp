@@ -184,6 +184,11 @@ struct CalibrationPass {
 };
 static_assert(sizeof(CalibrationPass) == 16, "calibration pass is 16 bytes");
 
+// The precision a pass's table was fitted to: its record's own, else the header's.
+inline float pass_target_precision(const CalibrationHeader& h, const CalibrationPass& p) {
+  return p.target_precision > 0.0f ? p.target_precision : h.target_precision;
+}
+
 // What a cell says.
 enum CalibrationState : uint32_t {
   kCellPriors = 0,       // a priors pass's cell: all fields zero

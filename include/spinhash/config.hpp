@@ -68,8 +68,8 @@ constexpr float kFirstPassMinMargin = 1.2f;
 // Work units a query may spend (work_meter.hpp; 68-109 aarch64
 // instructions a unit): a bound on the worst query that no query of the
 // fleet's accuracy sets reaches. 4 000 000 holds the instruction
-// benchmark's worst query under 300 M aarch64 instructions but ends a sixth of
-// the dense noisy fleet scans (docs/budgets.md).
+// benchmark's worst query under 300 M aarch64 instructions but caps dense
+// noisy fleet scans and costs right answers there (docs/budgets.md).
 constexpr uint64_t kDefaultMaxWork = 12000000u;
 
 // Recognition settings: the mode, the seed, the capacities that size the
@@ -92,8 +92,9 @@ struct RecognizerConfig : StageParams {
   double viewpoint[3] = {0.0, 0.0, 0.0};
 
   // The cascade (recognizer.cpp): a first pass at these settings (the
-  // flight preset's); when its answer is not confident, the full pass (the
-  // fields above) seeded with the first pass's leading poses.
+  // flight preset's); when it does not stop the query (confident, or the
+  // agree table's), the full pass at the fields above (starting from the
+  // first pass's leading poses only with carry.enabled).
   bool cascade = true;
   float first_query_voxel = kFlightQueryVoxel;
   uint32_t first_features = kFlightMaxFeatures;
