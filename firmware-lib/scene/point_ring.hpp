@@ -30,14 +30,12 @@ struct PointRing {
   void get(uint32_t i, double* out) const {
     for (int a = 0; a < 3; ++a) out[a] = from_steps(steps[3u * static_cast<size_t>(i) + a]);
   }
-  // Keeps the points keep(p) accepts (p: the frame point), in order.
+  // Keeps the points keep(k) accepts (k: the point's x y z steps), in order.
   template <class Keep>
-  void keep_if(Keep&& keep) {
+  void keep_if_steps(Keep&& keep) {
     uint32_t kept = 0;
     for (uint32_t i = 0; i < count; ++i) {
-      double p[3];
-      get(i, p);
-      if (!keep(p)) continue;
+      if (!keep(steps + 3u * static_cast<size_t>(i))) continue;
       if (kept != i)
         for (int a = 0; a < 3; ++a)
           steps[3u * static_cast<size_t>(kept) + a] = steps[3u * static_cast<size_t>(i) + a];

@@ -78,14 +78,20 @@ bool in_gathered_band(const StreamBuffers& b, double t) {
 void forget_done(StreamBuffers& b) {
   const double gathered = needed_from(b, b.next_row), summed = b.cells.summed_edge();
   const double seen = static_cast<double>(b.next_row) * b.lattice.core - b.lattice.margin;
-  double least = kUnbounded;
-  b.ring.keep_if([&](const double* p) {
-    const bool in_band = in_gathered_band(b, p[1]);
-    const bool keep = (in_band && p[0] >= gathered) || (p[0] >= summed && p[0] >= seen);
-    if (keep && in_band && p[0] < least) least = p[0];
+  // The same tests on the steps (first_step_from): in_gathered_band, and
+  // the along-track bounds.
+  const int64_t band_lo = first_step_from(b.lattice.own_min - b.lattice.object_margin),
+                band_hi = first_step_from(b.lattice.own_max + b.lattice.object_margin);
+  const int64_t gathered_k = first_step_from(gathered), summed_k = first_step_from(summed),
+                seen_k = first_step_from(seen);
+  int64_t least = INT64_MAX;
+  b.ring.keep_if_steps([&](const int32_t* k) {
+    const bool in_band = k[1] >= band_lo && k[1] < band_hi;
+    const bool keep = (in_band && k[0] >= gathered_k) || (k[0] >= summed_k && k[0] >= seen_k);
+    if (keep && in_band && k[0] < least) least = k[0];
     return keep;
   });
-  b.gather_min_s = least;
+  b.gather_min_s = least == INT64_MAX ? kUnbounded : from_steps(static_cast<int32_t>(least));
 }
 
 // The first row whose windows gather points at s along: row k gathers

@@ -69,15 +69,23 @@ namespace {
 template <class F>
 void for_cell_points(const TerrainCells& tc, const PointRing& ring, int64_t i0, int64_t i1, F&& f) {
   const double s0 = static_cast<double>(i0) * tc.cell, s1 = static_cast<double>(i1) * tc.cell;
+  const int64_t k0 = first_step_from(s0), k1 = first_step_from(s1);  // [s0, s1) on the steps
   const int64_t a = static_cast<int64_t>(tc.along);
+  // Slot rows: i's is i0's plus i - i0 (i1 - i0 <= along), wrapped once;
+  // the remainder where that is not enough (no division per point).
+  const int64_t row0 = ((i0 % a) + a) % a;
   for (uint32_t k = 0; k < ring.count; ++k) {
+    const int32_t* q = ring.steps + 3u * static_cast<size_t>(k);
+    if (q[0] < k0 || q[0] >= k1) continue;
     double p[3];
     ring.get(k, p);
-    if (p[0] < s0 || p[0] >= s1) continue;
     const int64_t t = floor_to_int64((p[1] - tc.t_min) / tc.cell);
     if (t < 0 || t >= static_cast<int64_t>(tc.across)) continue;
     const int64_t i = tc.index_along(p[0]);
-    f(static_cast<uint32_t>(((i % a) + a) % a), static_cast<uint32_t>(t), static_cast<float>(p[2]));
+    int64_t row = row0 + (i - i0);
+    if (row >= a) row -= a;
+    if (row < 0 || row >= a) row = ((i % a) + a) % a;
+    f(static_cast<uint32_t>(row), static_cast<uint32_t>(t), static_cast<float>(p[2]));
   }
 }
 
