@@ -317,20 +317,20 @@ uint32_t gather_window(const PointRing& ring, const FrameRect& seen, const Windo
   uint32_t got = 0;
   *missed = 0;
   const StepRect on_steps(seen);
-  for (uint32_t i = 0; i < ring.count; ++i) {
-    if (!on_steps.holds(ring.steps + 3u * static_cast<size_t>(i))) continue;
+  ring.for_blocks_meeting(on_steps.s0, on_steps.s1, [&](uint32_t i) {
+    if (!on_steps.holds(ring.steps + 3u * static_cast<size_t>(i))) return;
     double stz[3];
     ring.get(i, stz);
     if (got >= b.capacity) {
       ++*missed;
-      continue;
+      return;
     }
     float* p = b.local + 3u * static_cast<size_t>(got);
     p[0] = static_cast<float>(stz[0] - job.s0);
     p[1] = static_cast<float>(stz[1] - job.t0);
     p[2] = static_cast<float>(stz[2]);
     b.source[got++] = i;
-  }
+  });
   return got;
 }
 

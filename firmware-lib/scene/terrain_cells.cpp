@@ -74,19 +74,19 @@ void for_cell_points(const TerrainCells& tc, const PointRing& ring, int64_t i0, 
   // Slot rows: i's is i0's plus i - i0 (i1 - i0 <= along), wrapped once;
   // the remainder where that is not enough (no division per point).
   const int64_t row0 = ((i0 % a) + a) % a;
-  for (uint32_t k = 0; k < ring.count; ++k) {
+  ring.for_blocks_meeting(k0, k1, [&](uint32_t k) {
     const int32_t* q = ring.steps + 3u * static_cast<size_t>(k);
-    if (q[0] < k0 || q[0] >= k1) continue;
+    if (q[0] < k0 || q[0] >= k1) return;
     double p[3];
     ring.get(k, p);
     const int64_t t = floor_to_int64((p[1] - tc.t_min) / tc.cell);
-    if (t < 0 || t >= static_cast<int64_t>(tc.across)) continue;
+    if (t < 0 || t >= static_cast<int64_t>(tc.across)) return;
     const int64_t i = tc.index_along(p[0]);
     int64_t row = row0 + (i - i0);
     if (row >= a) row -= a;
     if (row < 0 || row >= a) row = ((i % a) + a) % a;
     f(static_cast<uint32_t>(row), static_cast<uint32_t>(t), static_cast<float>(p[2]));
-  }
+  });
 }
 
 }  // namespace

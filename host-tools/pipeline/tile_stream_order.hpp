@@ -29,10 +29,10 @@
 
 namespace spinhash::pipeline {
 
-// Points held in memory before the cells spill to a file (12 B each, about
-// 50 MB in all): a dense tile (160 x 160 m at 160 points per m2) stays in
-// memory, where writing and reading it back would cost as much as ordering it.
-constexpr size_t kOrderMemoryPoints = size_t{1} << 23;
+// Points held in memory before the cells spill to the file (12 B each,
+// 48 MB): large enough that a dense tile spills once or not at all, each
+// spill one sequential write.
+constexpr size_t kOrderMemoryPoints = size_t{1} << 22;
 
 class AlongTrackOrder {
  public:
