@@ -11,7 +11,8 @@
 // (farther points are counted and left out). A row spans
 // row_depth along track, so the rows handed back in order keep every point
 // within row_depth of the furthest: push them into a stream whose max_lag
-// is at least row_depth. Memory: the budget, whatever the number of points.
+// is at least row_depth. Memory: the budget's points (a cell's blocks double as
+// it fills, so up to twice their 12 B), whatever the number of points.
 // Used by `spinhash scene`, the survey and Python (AlongTrackOrder,
 // SceneRecognizer.push).
 #pragma once
