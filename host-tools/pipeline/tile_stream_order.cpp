@@ -58,11 +58,6 @@ int64_t AlongTrackOrder::column_of(double x, double y) const {
   return floor_int((-x * ay_ + y * ax_) / column_width_);
 }
 
-AlongTrackOrder::Cell AlongTrackOrder::cell_of(const double* p) const {
-  const double s = p[0] * ax_ + p[1] * ay_;
-  return {floor_int(s / row_depth_), column_of(p[0], p[1])};
-}
-
 void AlongTrackOrder::add(const double* xyz, size_t n) {
   for (size_t i = 0; i < n; ++i) {
     const double* p = xyz + 3 * i;
@@ -87,12 +82,14 @@ void AlongTrackOrder::add(const double* xyz, size_t n) {
       ++far_;
       continue;
     }
-    const Cell c = cell_of(q);
-    const auto h = static_cast<uint64_t>(c.first) * 0x9E3779B97F4A7C15ull + static_cast<uint64_t>(c.second);
+    // The point's cell: its row along, its column across.
+    const int64_t row = floor_int((q[0] * ax_ + q[1] * ay_) / row_depth_), column = column_of(q[0], q[1]);
+    const auto h = static_cast<uint64_t>(row) * 0x9E3779B97F4A7C15ull + static_cast<uint64_t>(column);
     Recent& r = recent_[(h ^ (h >> 29)) % kRecentCells];
-    if (r.held == nullptr || r.cell != c) {
-      r.held = &cells_[c];
-      r.cell = c;
+    if (r.held == nullptr || r.row != row || r.column != column) {
+      r.held = &cells_[Cell{row, column}];
+      r.row = row;
+      r.column = column;
     }
     Held& held = *r.held;
     if (held.blocks.empty() || held.blocks.back().points == held.blocks.back().capacity) new_block(held);

@@ -102,7 +102,6 @@ class AlongTrackOrder {
   void replay(size_t chunk, const ChunkSink& on_chunk) const;
 
  private:
-  Cell cell_of(const double* p) const;
   void new_block(Held& held);
   void spill_all();
 
@@ -120,7 +119,7 @@ class AlongTrackOrder {
   // cells and comes back to them): most points find theirs here, not in the map.
   static constexpr size_t kRecentCells = 64;
   struct Recent {
-    Cell cell{0, 0};
+    int64_t row = 0, column = 0;
     Held* held = nullptr;
   };
   Recent recent_[kRecentCells];
