@@ -146,6 +146,18 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
         "## Sparse: light vehicles, clutter", "| without-north | 8 |", "| all | 16 |"})
     CHECK_MESSAGE(summary.find(heading) != std::string::npos, heading);
   CHECK(std::filesystem::exists(dir.file("out/databases/without-south.shdb")));
+
+  // Again on the databases just built: no build, the same answers.
+  REQUIRE(run_worlds(dir, "--catalog '" + dir.file("meshes") +
+                              "' --clutter-source mini-structure --scene-clutter 1 --clutter-scans 1 "
+                              "--scans-per-world 1 --min-scans 1 --threads 2 --reuse-databases") == 0);
+  CHECK(read_bytes(dir.file("stderr.txt")).find("building") == std::string::npos);
+  const CsvColumns again(read_bytes(dir.file("out/per_scan.csv")));
+  REQUIRE(again.rows() == csv.rows());
+  for (size_t i = 0; i < csv.rows(); ++i) {
+    CHECK(again.cell(i, "object") == csv.cell(i, "object"));
+    CHECK(again.cell(i, "first_model") == csv.cell(i, "first_model"));
+  }
 }
 
 TEST_CASE("experiment worlds refuses a single world and a catalog with an unknown class") {
