@@ -1,15 +1,13 @@
 // What a recognition answers at each level of the hierarchy (vehicle,
-// group, class, model) and whether it is confident there: the one place
-// the leave-one-world-out experiment reads a Result's flags.
-//
-// The recognizer flags the model (`confident`) and the class
-// (`class_confident`); a group is a function of the class
-// (vehicle_group_of). Here the group is the first class's, confident when
-// the class is (a confident class names its group), and the vehicle level
-// is confident when any flag is raised.
+// group, class, model), each level's calibrated flag and evidence as the
+// recognizer reports them (Result::levels), and the answer's level
+// (Result::level, the most specific confident level of a consistent
+// chain): the one place the leave-one-world-out experiment reads a
+// Result's flags.
 #pragma once
 #include <cstdint>
 
+#include "spinhash/calibration.hpp"
 #include "spinhash/recognizer.hpp"
 
 namespace spinhash::experiment {
@@ -23,8 +21,17 @@ struct LevelAnswers {
   uint32_t group = 0;  // VehicleGroup id of the first group
   bool group_confident = false;
   bool vehicle_confident = false;
+  float evidence[kCalibratedLevels] = {};  // vehicle .. model (Result::levels)
+  AnswerLevel answer_level = AnswerLevel::kNone;
   // The most specific confident level: "model", "class", "group", "vehicle", or "none".
   const char* level = "none";
+
+  // A flag raised at any level.
+  bool any_confident() const {
+    return vehicle_confident || group_confident || class_confident || model_confident;
+  }
+  // The answer stands at `l` or a more specific level.
+  bool at_least(AnswerLevel l) const { return answer_level >= l; }
 };
 
 LevelAnswers level_answers(const Result& r);

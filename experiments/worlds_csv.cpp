@@ -1,4 +1,6 @@
 // experiment worlds: per_scan.csv, one row per scan and database.
+#include <limits>
+
 #include "csv_table.hpp"
 #include "spinhash/vehicle_class.hpp"
 #include "worlds_data.hpp"
@@ -7,6 +9,14 @@ namespace spinhash::experiment {
 namespace {
 
 std::string flag(bool b) { return b ? "1" : "0"; }
+
+// A level's evidence; empty where a prerequisite failed (no threshold reaches it).
+std::string evidence(const LevelAnswers& a, AnswerLevel l) {
+  const float e = a.evidence[level_index(l)];
+  if (!a.ranked || !(e > -std::numeric_limits<float>::infinity())) return "";
+  if (!(e < std::numeric_limits<float>::infinity())) return "inf";  // unopposed
+  return num(e, 5);
+}
 
 }  // namespace
 
@@ -40,6 +50,10 @@ bool write_worlds_csv(const WorldsRun& run, std::string* error) {
               "group_right",
               "group_confident",
               "vehicle_confident",
+              "vehicle_evidence",
+              "group_evidence",
+              "class_evidence",
+              "model_evidence",
               "level",
               "scan_density",
               "ms"});
@@ -91,6 +105,10 @@ bool write_worlds_csv(const WorldsRun& run, std::string* error) {
            flag(j.group_right),
            flag(r.answer.group_confident),
            flag(r.answer.vehicle_confident),
+           evidence(r.answer, AnswerLevel::kVehicle),
+           evidence(r.answer, AnswerLevel::kGroup),
+           evidence(r.answer, AnswerLevel::kClass),
+           evidence(r.answer, AnswerLevel::kModel),
            r.answer.level,
            num(r.scan_density, 4),
            num(r.ms, 4)});

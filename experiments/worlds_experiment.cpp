@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -46,6 +47,7 @@ struct WorldsArgs {
   uint32_t clutter_scans = 2;      // per piece of clutter
   uint64_t scan_seed = 1;
   uint32_t threads = 1;
+  bool reuse_databases = false;  // open OUT/databases/NAME.shdb when it holds the same models
   pipeline::BuildSettings build;
 };
 
@@ -57,6 +59,28 @@ struct OpenDatabase {
   std::vector<int32_t> to_vehicle;
 };
 
+// Opens the database already at out->info.path; refused unless its models
+// are exactly `index`'s (a database of other vehicles would judge wrongly).
+bool reuse_database(const std::map<std::string, int32_t>& index, OpenDatabase* out, std::string* error) {
+  if (!pipeline::load_database(out->info.path, &out->file, error)) return false;
+  const Database& db = out->file.db;
+  bool same = db.model_count() == index.size();
+  for (uint32_t m = 0; same && m < db.model_count(); ++m) {
+    const auto it = index.find(pipeline::model_name(db, m));
+    same = it != index.end();
+    if (same) out->to_vehicle.push_back(it->second);
+  }
+  if (!same) {
+    *error = out->info.path + ": its models are not the ones this run would build (--reuse-databases)";
+    return false;
+  }
+  out->info.models = db.model_count();
+  out->info.features = db.feature_count();
+  out->info.bytes = std::filesystem::file_size(out->info.path);
+  out->info.seconds = 0.0;  // reused: no build
+  return true;
+}
+
 bool build_database(const WorldSet& set, const std::vector<uint32_t>& vehicles, const std::string& name,
                     const WorldsArgs& a, OpenDatabase* out, std::string* error) {
   std::vector<pipeline::ModelMesh> meshes;
@@ -67,6 +91,7 @@ bool build_database(const WorldSet& set, const std::vector<uint32_t>& vehicles, 
   }
   out->info.name = name;
   out->info.path = a.out + "/databases/" + name + ".shdb";
+  if (a.reuse_databases && std::filesystem::exists(out->info.path)) return reuse_database(index, out, error);
   if (!a.build.quiet)
     std::fprintf(stderr, "spinhash-experiment worlds: building %s (%zu models)\n", out->info.path.c_str(),
                  meshes.size());
@@ -284,6 +309,9 @@ void add_worlds_experiment(CLI::App* parent, int* exit_code) {
   cmd->add_option("--threads", a->threads, "recognitions in parallel")
       ->check(CLI::Range(1u, kMaxThreads))
       ->capture_default_str();
+  cmd->add_flag("--reuse-databases", a->reuse_databases,
+                "open the databases an earlier run left in OUT/databases instead of building them (refused "
+                "unless each holds the models this run would build); their build time shows as 0");
   flags::add_build_flags(cmd, &a->build);
   cmd->callback([a, exit_code]() { *exit_code = run_worlds_command(*a); });
 }

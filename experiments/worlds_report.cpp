@@ -184,7 +184,7 @@ std::string sparse_section(const WorldsRun& run, Cells* cells) {
       if (r.clutter || r.condition != static_cast<uint32_t>(sparse)) continue;
       if (w >= 0 && set.vehicles[r.object].world != set.worlds[static_cast<size_t>(w)]) continue;
       if (judge(run, r).true_group != light) continue;
-      db[r.database == WorldsDatabase::kLeftOut ? 0 : 1].add(r.answer.group_confident &&
+      db[r.database == WorldsDatabase::kLeftOut ? 0 : 1].add(r.answer.at_least(AnswerLevel::kGroup) &&
                                                              r.answer.group == light);
     }
     if (vehicles == 0) continue;
@@ -212,8 +212,8 @@ std::string sparse_section(const WorldsRun& run, Cells* cells) {
     for (const WorldsRecord& r : run.records) {
       if (!r.clutter || set.clutter[r.object].source != source || set.clutter[r.object].kind != kind)
         continue;
-      any.add(r.answer.vehicle_confident);
-      all.add(r.answer.vehicle_confident);
+      any.add(r.answer.any_confident());
+      all.add(r.answer.any_confident());
       levels[r.answer.level] += 1;
     }
     s << "| " << source << " | " << kind << " | " << pieces << " | " << any.n << " | "

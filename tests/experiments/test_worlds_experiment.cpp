@@ -66,17 +66,44 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
                               "' --clutter-source mini-structure --scene-clutter 1 --clutter-scans 1 "
                               "--scans-per-world 1 --min-scans 1 --threads 2 --quiet") == 0);
   const CsvColumns csv(read_bytes(dir.file("out/per_scan.csv")));
-  for (const char* column :
-       {"world", "object", "kind", "true_class", "true_group", "condition", "database", "first_model",
-        "first_world", "model_right", "model_confident", "class_right", "class_confident", "group_right",
-        "group_confident", "level", "density", "ground"})
+  for (const char* column : {"world",
+                             "object",
+                             "kind",
+                             "true_class",
+                             "true_group",
+                             "condition",
+                             "database",
+                             "first_model",
+                             "first_world",
+                             "model_right",
+                             "model_confident",
+                             "class_right",
+                             "class_confident",
+                             "group_right",
+                             "group_confident",
+                             "vehicle_confident",
+                             "vehicle_evidence",
+                             "group_evidence",
+                             "class_evidence",
+                             "model_evidence",
+                             "level",
+                             "density",
+                             "ground"})
     CHECK_MESSAGE(csv.has(column), column);
   // 16 vehicles x 4 conditions x 2 databases, then 4 scene pieces and the box once (sparse).
   REQUIRE(csv.rows() == 2u * kFamilies * 4u * 2u + 5u);
   std::map<std::string, int> per_condition;
   std::set<std::string> clutter_kinds;
-  int vehicle_rows = 0, known_right = 0;
+  int vehicle_rows = 0, known_right = 0, with_evidence = 0;
   for (size_t i = 0; i < csv.rows(); ++i) {
+    // The recognizer's answer level: a chain of flags from the vehicle level down.
+    const std::string level = csv.cell(i, "level");
+    CHECK((level == "none") == (csv.cell(i, "vehicle_confident") == "0"));
+    if (level == "group" || level == "class" || level == "model")
+      CHECK(csv.cell(i, "group_confident") == "1");
+    if (level == "class" || level == "model") CHECK(csv.cell(i, "class_confident") == "1");
+    if (level == "model") CHECK(csv.cell(i, "model_confident") == "1");
+    with_evidence += csv.cell(i, "vehicle_evidence").empty() ? 0 : 1;
     const std::string condition = csv.cell(i, "condition");
     if (csv.cell(i, "kind") != "vehicle") {
       clutter_kinds.insert(csv.cell(i, "kind"));
@@ -107,6 +134,7 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
     CHECK(csv.cell(i, "ground") == (condition == "ground" || condition == "sparse" ? "1" : "0"));
   }
   CHECK(vehicle_rows == 2 * kFamilies * 4 * 2);
+  CHECK(with_evidence > kFamilies * 2);  // the vehicle level's evidence of every posed answer
   for (const char* c : {"clean", "ground", "no-ground", "sparse"})
     CHECK(per_condition[c] == 2 * kFamilies * 2);
   CHECK(clutter_kinds == std::set<std::string>{"tree", "wall", "crate", "building", "mini-structure"});
@@ -118,6 +146,18 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
         "## Sparse: light vehicles, clutter", "| without-north | 8 |", "| all | 16 |"})
     CHECK_MESSAGE(summary.find(heading) != std::string::npos, heading);
   CHECK(std::filesystem::exists(dir.file("out/databases/without-south.shdb")));
+
+  // Again on the databases just built: no build, the same answers.
+  REQUIRE(run_worlds(dir, "--catalog '" + dir.file("meshes") +
+                              "' --clutter-source mini-structure --scene-clutter 1 --clutter-scans 1 "
+                              "--scans-per-world 1 --min-scans 1 --threads 2 --reuse-databases") == 0);
+  CHECK(read_bytes(dir.file("stderr.txt")).find("building") == std::string::npos);
+  const CsvColumns again(read_bytes(dir.file("out/per_scan.csv")));
+  REQUIRE(again.rows() == csv.rows());
+  for (size_t i = 0; i < csv.rows(); ++i) {
+    CHECK(again.cell(i, "object") == csv.cell(i, "object"));
+    CHECK(again.cell(i, "first_model") == csv.cell(i, "first_model"));
+  }
 }
 
 TEST_CASE("experiment worlds refuses a single world and a catalog with an unknown class") {
