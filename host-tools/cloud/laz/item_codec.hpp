@@ -97,34 +97,31 @@ class Median5 {
   bool high_ = true;
 };
 
+// v into the sorted pair (a, b): the three in order, written at out.
+inline void insert_into_pair(int32_t a, int32_t b, int32_t v, int32_t* out) {
+  out[0] = std::min(v, a);
+  out[1] = std::max(a, std::min(v, b));
+  out[2] = std::max(v, b);
+}
+
 // The values stay sorted; each case below is LASzip's insertion written
 // as minima and maxima (selects, not branches: the differences come in no
 // predictable order).
 inline void Median5::add(int32_t v) {
   int32_t* x = values_;
-  if (high_) {
-    if (v < x[2]) {  // into the lower three; the top two shift up
-      const int32_t a = x[0], b = x[1];
-      x[4] = x[3];
-      x[3] = x[2];
-      x[2] = std::max(v, b);
-      x[1] = std::max(a, std::min(v, b));
-      x[0] = std::min(v, a);
-    } else {  // into the top two, the largest dropped
-      const int32_t c = x[3];
-      x[3] = std::min(v, c);
-      x[4] = std::max(v, c);
-      high_ = false;
-    }
-    return;
-  }
-  if (x[2] < v) {  // into the upper three; the bottom two shift down
-    const int32_t c = x[3], d = x[4];
+  if (high_ && v < x[2]) {  // into the lower three; the top two shift up
+    x[4] = x[3];
+    x[3] = x[2];
+    insert_into_pair(x[0], x[1], v, x);
+  } else if (high_) {  // into the top two, the largest dropped
+    const int32_t c = x[3];
+    x[3] = std::min(v, c);
+    x[4] = std::max(v, c);
+    high_ = false;
+  } else if (x[2] < v) {  // into the upper three; the bottom two shift down
     x[0] = x[1];
     x[1] = x[2];
-    x[2] = std::min(v, c);
-    x[3] = std::max(c, std::min(v, d));
-    x[4] = std::max(v, d);
+    insert_into_pair(x[3], x[4], v, x + 2);
   } else {  // into the bottom two, the smallest dropped
     const int32_t b = x[1];
     x[0] = std::min(v, b);
