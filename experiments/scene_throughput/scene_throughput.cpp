@@ -7,6 +7,7 @@
 //                                               SIDE x SIDE m, as LAZ
 //   scene-throughput sparse-tiles DIR T N SIDE T such tiles side by side (a
 //                                               square of them), DIR/tNN.laz
+//   scene-throughput decode TILE.laz           the tile's LAZ decoding alone
 //   scene-throughput run DB.shdb TILE.laz...   per tile: LAZ decoding alone,
 //                                               then the tile through
 //                                               `spinhash scene`'s path
@@ -284,6 +285,12 @@ int main(int argc, char** argv) {
       return write_sparse_tiles(argv[2], static_cast<uint32_t>(std::stoul(argv[3])),
                                 static_cast<uint32_t>(std::stoul(argv[4])), std::stod(argv[5]));
     if (argc >= 4 && std::strcmp(argv[1], "run") == 0) return run(argv[2], argc - 3, argv + 3);
+    if (argc == 3 && std::strcmp(argv[1], "decode") == 0) {
+      uint64_t points = 0;
+      const double s = decode_seconds(argv[2], &points);
+      std::printf("%" PRIu64 " points decoded in %.4f CPU s\n", points, s);
+      return 0;
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "scene-throughput: %s\n", e.what());
     return 1;
@@ -291,6 +298,6 @@ int main(int argc, char** argv) {
   std::fprintf(
       stderr,
       "usage: scene-throughput laz RAW.f64 OUT.laz | sparse OUT.laz N SIDE_M | sparse-tiles DIR T N SIDE_M "
-      "| run DB.shdb TILE.laz...\n");
+      "| decode TILE.laz | run DB.shdb TILE.laz...\n");
   return 2;
 }

@@ -31,7 +31,8 @@ struct StreamBuffers {
   TerrainCells cells;
   double pending[3u * kMaxJumpConfirmPoints] = {};  // a jump awaiting confirmation (frame coordinates)
   uint32_t pending_count = 0;
-  double gather_min_s = kUnbounded;  // the least s of the buffered points a window gathers (across)
+  double gather_min_s = kUnbounded;      // the least s of the buffered points a window gathers (across)
+  double rows_wait_below = -kUnbounded;  // furthest_along below this completes no row (rows_wait_below())
   bool origin_set = false;
   bool flushed = false;
   int64_t next_row = 0;  // the first row of windows not yet run
@@ -78,14 +79,20 @@ bool in_gathered_band(const StreamBuffers& b, double t) {
 void forget_done(StreamBuffers& b) {
   const double gathered = needed_from(b, b.next_row), summed = b.cells.summed_edge();
   const double seen = static_cast<double>(b.next_row) * b.lattice.core - b.lattice.margin;
-  double least = kUnbounded;
-  b.ring.keep_if([&](const double* p) {
-    const bool in_band = in_gathered_band(b, p[1]);
-    const bool keep = (in_band && p[0] >= gathered) || (p[0] >= summed && p[0] >= seen);
-    if (keep && in_band && p[0] < least) least = p[0];
+  // The same tests on the steps (first_step_from): in_gathered_band, and
+  // the along-track bounds.
+  const int64_t band_lo = first_step_from(b.lattice.own_min - b.lattice.object_margin),
+                band_hi = first_step_from(b.lattice.own_max + b.lattice.object_margin);
+  const int64_t gathered_k = first_step_from(gathered), summed_k = first_step_from(summed),
+                seen_k = first_step_from(seen);
+  int64_t least = INT64_MAX;
+  b.ring.keep_if_steps([&](const int32_t* k) {
+    const bool in_band = k[1] >= band_lo && k[1] < band_hi;
+    const bool keep = (in_band && k[0] >= gathered_k) || (k[0] >= summed_k && k[0] >= seen_k);
+    if (keep && in_band && k[0] < least) least = k[0];
     return keep;
   });
-  b.gather_min_s = least;
+  b.gather_min_s = least == INT64_MAX ? kUnbounded : from_steps(static_cast<int32_t>(least));
 }
 
 // The first row whose windows gather points at s along: row k gathers
@@ -169,11 +176,23 @@ Status run_or_skip(StreamBuffers& b, int64_t end) {
   return status;
 }
 
+// A bound below which furthest_along completes no row past next_row: row
+// next_row ends where complete_before reaches next_row + 1, at
+// (next_row + 1) core + margin + max_lag; the bound stays a billionth of
+// that below it, far more than the rounding of complete_before's
+// arithmetic, so a push below it may skip the division (the answer is
+// the same: no row to run).
+double rows_wait_below(const StreamBuffers& b) {
+  const double edge = static_cast<double>(b.next_row + 1) * b.lattice.core + b.lattice.margin + b.max_lag;
+  return edge - 1e-9 * (1.0 + std::fabs(edge));
+}
+
 // Runs every row that no point within max_lag can still reach.
 Status run_complete_rows(StreamBuffers& b) {
   Status status = Status::kOk;
   const int64_t end = complete_before(b, b.stats.furthest_along - b.max_lag);
   while (b.next_row < end) status = worse_scene_status(status, run_or_skip(b, end));
+  b.rows_wait_below = rows_wait_below(b);
   return status;
 }
 
@@ -182,7 +201,7 @@ Status take(StreamBuffers& b, const double* stz) {
   Status status = Status::kOk;
   if (stz[0] > b.stats.furthest_along) {
     b.stats.furthest_along = stz[0];
-    status = run_complete_rows(b);
+    if (stz[0] >= b.rows_wait_below) status = run_complete_rows(b);
   }
   if (!b.ring.push(stz)) {
     ++b.stats.points_overflow;
@@ -201,6 +220,7 @@ void start_line(StreamBuffers& b, const double* first) {
   b.stats.furthest_along = stz[0];
   b.next_row = b.lattice.row_of(stz[0] - b.max_lag);
   b.stats.done_until = static_cast<double>(b.next_row) * b.lattice.core;
+  b.rows_wait_below = -kUnbounded;  // the first take checks
 }
 
 // A point far ahead of the line: held until jump_confirm_points agree (a gap

@@ -316,20 +316,21 @@ uint32_t gather_window(const PointRing& ring, const FrameRect& seen, const Windo
                        uint32_t* missed) {
   uint32_t got = 0;
   *missed = 0;
-  for (uint32_t i = 0; i < ring.count; ++i) {
+  const StepRect on_steps(seen);
+  ring.for_blocks_meeting(on_steps.s0, on_steps.s1, [&](uint32_t i) {
+    if (!on_steps.holds(ring.steps + 3u * static_cast<size_t>(i))) return;
     double stz[3];
     ring.get(i, stz);
-    if (!seen.holds(stz[0], stz[1])) continue;
     if (got >= b.capacity) {
       ++*missed;
-      continue;
+      return;
     }
     float* p = b.local + 3u * static_cast<size_t>(got);
     p[0] = static_cast<float>(stz[0] - job.s0);
     p[1] = static_cast<float>(stz[1] - job.t0);
     p[2] = static_cast<float>(stz[2]);
     b.source[got++] = i;
-  }
+  });
   return got;
 }
 
@@ -350,10 +351,10 @@ Status build_strip_terrain(const SceneConfig& c, const TerrainCells& cells, cons
 void count_owned_points(const PointRing& ring, const WindowJob& job, uint32_t n, const WindowBuffers& b,
                         bool labelled, SceneStats& st) {
   uint32_t owned = 0, ground = 0, in_objects = 0;
+  // area_holds on the steps (the core as a rectangle of the frame).
+  const StepRect core(FrameRect{job.core.min[0], job.core.max[0], job.core.min[1], job.core.max[1]});
   for (uint32_t i = 0; i < n; ++i) {
-    double stz[3];
-    ring.get(b.source[i], stz);
-    if (!area_holds(job.core, stz[0], stz[1])) continue;
+    if (!core.holds(ring.steps + 3u * static_cast<size_t>(b.source[i]))) continue;
     ++owned;
     ground += b.ground[i] ? 1u : 0u;
     in_objects += labelled && b.label[i] != kNoObject ? 1u : 0u;

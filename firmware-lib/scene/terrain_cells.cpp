@@ -69,16 +69,30 @@ namespace {
 template <class F>
 void for_cell_points(const TerrainCells& tc, const PointRing& ring, int64_t i0, int64_t i1, F&& f) {
   const double s0 = static_cast<double>(i0) * tc.cell, s1 = static_cast<double>(i1) * tc.cell;
+  const int64_t k0 = first_step_from(s0), k1 = first_step_from(s1);  // [s0, s1) on the steps
   const int64_t a = static_cast<int64_t>(tc.along);
-  for (uint32_t k = 0; k < ring.count; ++k) {
+  // Metres to cells: a product where the cell is a power of two (its
+  // inverse exact, so the same correctly rounded quotient), else the division.
+  int exponent = 0;
+  const bool power_of_two = std::frexp(tc.cell, &exponent) == 0.5;
+  const double inverse = power_of_two ? 1.0 / tc.cell : 0.0;
+  auto in_cells = [&](double m) { return power_of_two ? m * inverse : m / tc.cell; };
+  // Slot rows: i's is i0's plus i - i0 (i1 - i0 <= along), wrapped once;
+  // the remainder where that is not enough (no division per point).
+  const int64_t row0 = ((i0 % a) + a) % a;
+  ring.for_blocks_meeting(k0, k1, [&](uint32_t k) {
+    const int32_t* q = ring.steps + 3u * static_cast<size_t>(k);
+    if (q[0] < k0 || q[0] >= k1) return;
     double p[3];
     ring.get(k, p);
-    if (p[0] < s0 || p[0] >= s1) continue;
-    const int64_t t = floor_to_int64((p[1] - tc.t_min) / tc.cell);
-    if (t < 0 || t >= static_cast<int64_t>(tc.across)) continue;
-    const int64_t i = tc.index_along(p[0]);
-    f(static_cast<uint32_t>(((i % a) + a) % a), static_cast<uint32_t>(t), static_cast<float>(p[2]));
-  }
+    const int64_t t = floor_to_int64(in_cells(p[1] - tc.t_min));
+    if (t < 0 || t >= static_cast<int64_t>(tc.across)) return;
+    const int64_t i = floor_to_int64(in_cells(p[0]));  // index_along
+    int64_t row = row0 + (i - i0);
+    if (row >= a) row -= a;
+    if (row < 0 || row >= a) row = ((i % a) + a) % a;
+    f(static_cast<uint32_t>(row), static_cast<uint32_t>(t), static_cast<float>(p[2]));
+  });
 }
 
 }  // namespace

@@ -31,9 +31,31 @@ inline bool within_lattice(const double* stz) {
   return std::fabs(stz[0]) < kLatticeReach && std::fabs(stz[1]) < kLatticeReach &&
          std::fabs(stz[2]) < kLatticeReach;
 }
-inline int32_t lattice_steps(double v) { return static_cast<int32_t>(std::llround(v / kLatticeUnit)); }
+// The nearest step, halves away from zero (llround's rule, without its libm
+// call: this runs per point), for |v| < kLatticeReach: the truncation and
+// the fraction it left (exact), one step more where that is half or more.
+inline int32_t lattice_steps(double v) {
+  const double q = v / kLatticeUnit;
+  const auto k = static_cast<int64_t>(q);
+  const double fraction = q - static_cast<double>(k);
+  return static_cast<int32_t>(k + (fraction >= 0.5 ? 1 : 0) - (fraction <= -0.5 ? 1 : 0));
+}
 inline double from_steps(int32_t k) { return static_cast<double>(k) * kLatticeUnit; }
 inline double on_lattice(double v) { return from_steps(lattice_steps(v)); }
+
+// The least step k with from_steps(k) >= v (from_steps rises with k), so
+// that `from_steps(k) >= v` is `k >= first_step_from(v)` and
+// `from_steps(k) < v` is `k < first_step_from(v)` for every int32 k: the
+// buffer's scans compare the steps, not the coordinates. v: not NaN.
+inline int64_t first_step_from(double v) {
+  constexpr int64_t kLow = INT32_MIN, kHigh = INT32_MAX;
+  if (v <= static_cast<double>(kLow) * kLatticeUnit) return kLow;
+  if (v > static_cast<double>(kHigh) * kLatticeUnit) return kHigh + 1;
+  auto k = static_cast<int64_t>(std::ceil(v / kLatticeUnit));  // within a step of the answer
+  for (int i = 0; i < 2 && k > kLow && static_cast<double>(k - 1) * kLatticeUnit >= v; ++i) --k;
+  for (int i = 0; i < 2 && static_cast<double>(k) * kLatticeUnit < v; ++i) ++k;
+  return k;
+}
 
 // s along track, t across (counter-clockwise from s), z up, from an origin.
 struct StreamFrame {
@@ -68,6 +90,18 @@ struct StreamFrame {
 struct FrameRect {
   double s0 = 0, s1 = 0, t0 = 0, t1 = 0;
   bool holds(double s, double t) const { return s >= s0 && s < s1 && t >= t0 && t < t1; }
+};
+
+// The same rectangle on the steps: holds(k) is FrameRect::holds of the
+// point from_steps(k) (first_step_from).
+struct StepRect {
+  int64_t s0, s1, t0, t1;
+  explicit StepRect(const FrameRect& r)
+      : s0(first_step_from(r.s0)),
+        s1(first_step_from(r.s1)),
+        t0(first_step_from(r.t0)),
+        t1(first_step_from(r.t1)) {}
+  bool holds(const int32_t* k) const { return k[0] >= s0 && k[0] < s1 && k[1] >= t0 && k[1] < t1; }
 };
 
 struct WindowLattice {

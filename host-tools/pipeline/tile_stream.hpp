@@ -80,7 +80,7 @@ class TileStreamer {
  public:
   // expected_points: the declared count (0: unknown), for the picture's sample.
   explicit TileStreamer(const TileStreamOptions& options, uint64_t expected_points = 0);
-  // Throws std::runtime_error when the order's temporary files cannot be written.
+  // Throws std::runtime_error when the order's temporary file cannot be written.
   void add(const double* xyz, size_t n);
   // Streams the tile; objects go to on_object as their windows complete.
   // Throws std::runtime_error for a configuration no stream takes.
@@ -96,7 +96,7 @@ class TileStreamer {
 
 // Reads the source through a TileStreamer; throws host::CloudError for a
 // malformed file (objects already reported stay reported) and
-// std::runtime_error when the temporary files cannot be written.
+// std::runtime_error when the temporary file cannot be written.
 TileStreamResult stream_tile(const Database& db, host::PointSource& source, const TileStreamOptions& options,
                              const ObjectCallback& on_object);
 

@@ -16,6 +16,9 @@ namespace {
 constexpr double kStep = 1e-3;        // m: the stream's lattice
 constexpr double kReach = 2000000.0;  // m: 32-bit steps of 1 mm
 constexpr size_t kStepsPerPoint = 3;
+// A cell's blocks double from the first to the largest: few blocks for a
+// dense cell, little memory unused in a sparse one.
+constexpr uint32_t kFirstBlockPoints = 256, kMaxBlockPoints = uint32_t{1} << 16;
 
 bool finite3(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
@@ -46,21 +49,13 @@ AlongTrackOrder::AlongTrackOrder(double heading_deg, double row_depth, double co
 }
 
 AlongTrackOrder::~AlongTrackOrder() {
+  file_.close();
   if (!dir_.empty()) remove_spill_folder(dir_.string());
 }
 
 int64_t AlongTrackOrder::column_of(double x, double y) const {
   if (!(column_width_ > 0.0)) return 0;
   return floor_int((-x * ay_ + y * ax_) / column_width_);
-}
-
-AlongTrackOrder::Cell AlongTrackOrder::cell_of(const double* p) const {
-  const double s = p[0] * ax_ + p[1] * ay_;
-  return {floor_int(s / row_depth_), column_of(p[0], p[1])};
-}
-
-fs::path AlongTrackOrder::path_of(const Cell& c) const {
-  return dir_ / ("r" + std::to_string(c.first) + "c" + std::to_string(c.second) + ".xyz");
 }
 
 void AlongTrackOrder::add(const double* xyz, size_t n) {
@@ -87,13 +82,24 @@ void AlongTrackOrder::add(const double* xyz, size_t n) {
       ++far_;
       continue;
     }
-    const Cell c = cell_of(q);
-    if (last_ == nullptr || c != last_cell_) {
-      last_ = &cells_[c];
-      last_cell_ = c;
+    // The point's cell: its row along, its column across.
+    const int64_t row = floor_int((q[0] * ax_ + q[1] * ay_) / row_depth_), column = column_of(q[0], q[1]);
+    const auto h = static_cast<uint64_t>(row) * 0x9E3779B97F4A7C15ull + static_cast<uint64_t>(column);
+    Recent& r = recent_[(h ^ (h >> 29)) % kRecentCells];
+    if (r.held == nullptr || r.row != row || r.column != column) {
+      r.held = &cells_[Cell{row, column}];
+      r.row = row;
+      r.column = column;
     }
-    last_->steps.insert(last_->steps.end(), k, k + 3);
-    ++last_->points;
+    Held& held = *r.held;
+    if (held.blocks.empty() || held.blocks.back().points == held.blocks.back().capacity) new_block(held);
+    Block& block = held.blocks.back();
+    int32_t* to = block.steps + kStepsPerPoint * block.points;
+    to[0] = k[0];
+    to[1] = k[1];
+    to[2] = k[2];
+    ++block.points;
+    ++held.points;
     for (int a = 0; a < 3; ++a) {
       min_[a] = q[a] < min_[a] ? q[a] : min_[a];
       max_[a] = q[a] > max_[a] ? q[a] : max_[a];
@@ -109,19 +115,33 @@ std::map<int64_t, uint64_t> AlongTrackOrder::columns() const {
   return points;
 }
 
+void AlongTrackOrder::new_block(Held& held) {
+  const uint32_t capacity =
+      held.blocks.empty() ? kFirstBlockPoints : std::min(2 * held.blocks.back().capacity, kMaxBlockPoints);
+  held.blocks.push_back({slabs_.alloc(kStepsPerPoint * capacity), 0, capacity});
+}
+
 void AlongTrackOrder::spill_all() {
-  if (dir_.empty()) dir_ = make_spill_folder();
-  for (auto& [cell, held] : cells_) {
-    if (held.steps.empty()) continue;
-    const fs::path path = path_of(cell);
-    std::ofstream f(path, std::ios::binary | std::ios::app);
-    f.write(reinterpret_cast<const char*>(held.steps.data()),
-            static_cast<std::streamsize>(held.steps.size() * sizeof(int32_t)));
-    if (!f) throw std::runtime_error("cannot write " + path.string());
-    held.spilled = true;
-    held.steps.clear();
-    held.steps.shrink_to_fit();
+  if (dir_.empty()) {
+    dir_ = make_spill_folder();
+    file_path_ = dir_ / "order.xyz";
+    file_.open(file_path_, std::ios::binary | std::ios::trunc);
   }
+  for (auto& [cell, held] : cells_) {
+    if (held.blocks.empty()) continue;
+    uint64_t points = 0;
+    for (const Block& b : held.blocks) {
+      file_.write(reinterpret_cast<const char*>(b.steps),
+                  static_cast<std::streamsize>(kStepsPerPoint * b.points * sizeof(int32_t)));
+      points += b.points;
+    }
+    held.spilled.push_back({file_bytes_, points});
+    file_bytes_ += kStepsPerPoint * points * sizeof(int32_t);
+    held.blocks.clear();
+  }
+  slabs_.clear();
+  file_.flush();  // read back by cursors, through their own streams
+  if (!file_) throw std::runtime_error("cannot write " + file_path_.string());
   held_ = 0;
 }
 
@@ -130,11 +150,15 @@ AlongTrackOrder::Cursor::Cursor(const AlongTrackOrder& order, int64_t col_lo, in
 
 size_t AlongTrackOrder::Cursor::read(double* xyz, size_t max_points) {
   size_t got = 0;
-  const double* o = order_->origin_;
+  const double o0 = order_->origin_[0], o1 = order_->origin_[1], o2 = order_->origin_[2];
   auto put = [&](const int32_t* k, size_t n) {  // n points of steps into xyz
-    for (size_t i = 0; i < n; ++i, ++got)
-      for (size_t a = 0; a < kStepsPerPoint; ++a)
-        xyz[3 * got + a] = o[a] + static_cast<double>(k[kStepsPerPoint * i + a]) * kStep;
+    double* out = xyz + 3 * got;
+    for (size_t i = 0; i < n; ++i) {
+      out[3 * i] = o0 + static_cast<double>(k[3 * i]) * kStep;
+      out[3 * i + 1] = o1 + static_cast<double>(k[3 * i + 1]) * kStep;
+      out[3 * i + 2] = o2 + static_cast<double>(k[3 * i + 2]) * kStep;
+    }
+    got += n;
   };
   while (got < max_points && cell_ != order_->cells_.end()) {
     const Cell& cell = cell_->first;
@@ -143,26 +167,38 @@ size_t AlongTrackOrder::Cursor::read(double* xyz, size_t max_points) {
       ++cell_;
       continue;
     }
-    if (held.spilled && !opened_) {
-      file_.open(order_->path_of(cell), std::ios::binary);
-      if (!file_) throw std::runtime_error("cannot read " + order_->path_of(cell).string());
-      opened_ = true;
-    }
-    if (file_.is_open()) {
-      buf_.resize(kStepsPerPoint * (max_points - got));
+    if (run_ < held.spilled.size()) {  // the cell's runs in the file first
+      const Run& run = held.spilled[run_];
+      if (!file_.is_open()) {
+        file_.open(order_->file_path_, std::ios::binary);
+        if (!file_) throw std::runtime_error("cannot read " + order_->file_path_.string());
+      }
+      const size_t n = static_cast<size_t>(std::min<uint64_t>(max_points - got, run.points - in_run_));
+      buf_.resize(kStepsPerPoint * n);
+      file_.seekg(static_cast<std::streamoff>(run.offset + in_run_ * kStepsPerPoint * sizeof(int32_t)));
       file_.read(reinterpret_cast<char*>(buf_.data()),
                  static_cast<std::streamsize>(buf_.size() * sizeof(int32_t)));
-      put(buf_.data(), static_cast<size_t>(file_.gcount()) / (kStepsPerPoint * sizeof(int32_t)));
-      if (file_) continue;  // filled
-      file_.close();
-      file_.clear();
+      if (!file_) throw std::runtime_error("cannot read " + order_->file_path_.string());
+      put(buf_.data(), n);
+      if ((in_run_ += n) == run.points) {
+        ++run_;
+        in_run_ = 0;
+      }
+      continue;
     }
-    const size_t take = std::min(max_points - got, (held.steps.size() - at_) / kStepsPerPoint);
-    put(held.steps.data() + at_, take);
-    at_ += kStepsPerPoint * take;
-    if (at_ < held.steps.size()) continue;  // filled
+    if (block_ < held.blocks.size()) {
+      const Block& block = held.blocks[block_];
+      const size_t take = std::min<size_t>(max_points - got, block.points - at_);
+      put(block.steps + kStepsPerPoint * at_, take);
+      at_ += static_cast<uint32_t>(take);
+      if (at_ < block.points) continue;  // filled
+      ++block_;
+      at_ = 0;
+      continue;
+    }
     ++cell_;
-    opened_ = false;
+    run_ = 0;
+    block_ = 0;
     at_ = 0;
   }
   return got;

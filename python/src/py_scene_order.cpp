@@ -1,7 +1,7 @@
 // spinhash.AlongTrackOrder: the library's ordering helper for a SceneStream
 // (pipeline/tile_stream_order.hpp): chunks of any order pushed in, handed
-// back in along-track order in bounded memory (a memory budget, then
-// temporary files), so that iter_cloud's chunks as they come give the
+// back in along-track order in bounded memory (a memory budget, then a
+// temporary file), so that iter_cloud's chunks as they come give the
 // stream what the whole cloud sorted along track gives it.
 #include <pybind11/numpy.h>
 
@@ -96,10 +96,11 @@ void bind_along_track_order(py::module_& m) {
       "Orders points of any order along track in bounded memory, for a SceneStream: push chunks as they "
       "come (iter_cloud's), then push chunks() into the stream. Rows of row_depth m along heading_deg (set "
       "it to the stream's heading, row_depth at most its max_lag); within a row the points keep their order.")
-      .def(py::init<double, double, size_t>(), py::arg("heading_deg") = 90.0, py::arg("row_depth") = 16.0,
-           py::arg("memory_points") = pipeline::kOrderMemoryPoints,
-           "AlongTrackOrder(heading_deg=90, row_depth=16, memory_points=524288): points beyond memory_points "
-           "go to temporary files, removed with the order")
+      .def(
+          py::init<double, double, size_t>(), py::arg("heading_deg") = 90.0, py::arg("row_depth") = 16.0,
+          py::arg("memory_points") = pipeline::kOrderMemoryPoints,
+          "AlongTrackOrder(heading_deg=90, row_depth=16, memory_points=4194304): points beyond memory_points "
+          "go to a temporary file, removed with the order")
       .def("push", &PyAlongTrackOrder::push, py::arg("points"),
            "Adds an (N, 3) float64 chunk (non-finite points are counted and left out).")
       .def("chunks", &PyAlongTrackOrder::chunks, py::arg("chunk_points") = size_t{1} << 16,

@@ -3,7 +3,9 @@
 // brute-force scan of its cells would, in the same order; normals over
 // gathered neighbourhoods equal the point-by-point ones (also when the
 // scratch overflows); BRAN's model groups list each model's candidates in
-// list order.
+// list order. The stream's buffer decides on the 1 mm steps what it would
+// decide on the coordinates: first_step_from's bound against from_steps,
+// lattice_steps against llround.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -12,6 +14,7 @@
 
 #include "geometry/normals.hpp"
 #include "recognize/model_groups.hpp"
+#include "scene/window_lattice.hpp"
 #include "support/geometry_fixtures.hpp"
 #include "support/grid_fixture.hpp"
 #include "util/rng.hpp"
@@ -117,5 +120,37 @@ TEST_CASE("exact cuts: model groups list each model's candidates in list order")
       if (models[list[i].feature] == m) expected.push_back(i);
     for (uint32_t j = first_of_model(g, m); j < g.count && g.model[j] == m; ++j) got.push_back(g.index[j]);
     CHECK(got == expected);
+  }
+}
+
+TEST_CASE("exact cuts: a bound on the steps decides as the coordinates do") {
+  Pcg32 rng(11);
+  uint32_t checked = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // Values on and beside the lattice, near zero and far from it.
+    const double scale = i % 3 == 0 ? 1.0 : (i % 3 == 1 ? 1000.0 : 1.9e6);
+    double v = (2.0 * rng.uniform() - 1.0) * scale;
+    if (i % 4 == 0) v = from_steps(static_cast<int32_t>(std::llround(v / kLatticeUnit)));  // on a step
+    if (i % 8 == 1) v = std::nextafter(v, INFINITY);
+    const int64_t k = first_step_from(v);
+    for (int64_t d = -2; d <= 2; ++d) {
+      const int64_t j = k + d;
+      if (j < INT32_MIN || j > INT32_MAX) continue;
+      const bool at_least = from_steps(static_cast<int32_t>(j)) >= v;
+      CHECK(at_least == (j >= k));
+      ++checked;
+    }
+    if (std::fabs(v) < kLatticeReach) {
+      CHECK(lattice_steps(v) == static_cast<int32_t>(std::llround(v / kLatticeUnit)));
+      const double half = (std::floor(v / kLatticeUnit) + 0.5) * kLatticeUnit;  // a tie, or next to one
+      CHECK(lattice_steps(half) == static_cast<int32_t>(std::llround(half / kLatticeUnit)));
+    }
+  }
+  CHECK(checked > 90000u);
+  CHECK(first_step_from(-INFINITY) == INT32_MIN);
+  CHECK(first_step_from(INFINITY) == int64_t{INT32_MAX} + 1);
+  for (const double tie : {-2.5, -0.5, 0.5, 2.5, 1234567.5}) {  // halves: away from zero, as llround
+    const double v = tie * kLatticeUnit;
+    CHECK(lattice_steps(v) == static_cast<int32_t>(std::llround(v / kLatticeUnit)));
   }
 }

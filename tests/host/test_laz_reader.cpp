@@ -3,7 +3,8 @@
 // its README lists them): every LAZ twin gives the raw point records of its
 // uncompressed twin field by field, COPC the same points in another order,
 // the format-8 file agrees with its header, the broken files are refused
-// each with its own message, and a CRS is read from every CRS sample.
+// each with its own message, and a CRS is read from every CRS sample. The
+// x/y predictor's streaming median follows LASzip's insertion rules.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -20,6 +21,7 @@
 #include "cloud/cloud_reader.hpp"
 #include "cloud/las_points.hpp"
 #include "cloud/las_reader.hpp"
+#include "cloud/laz/item_codec.hpp"
 #include "cloud/point_source.hpp"
 #include "cloud_test_support.hpp"
 
@@ -351,5 +353,82 @@ TEST_CASE("truncated and corrupted LAZ data is refused with a message, never a c
     std::string bad = good;
     bad[at] = static_cast<char>(bad[at] ^ 0x5A);
     if (!parse_las(bad, &cloud, &error)) CHECK(!error.empty());
+  }
+}
+
+namespace {
+
+// LASzip's streaming median of five, its insertions spelled out branch by
+// branch: the reference the decoder's min/max form must follow.
+struct ReferenceMedian5 {
+  int32_t x[5] = {0, 0, 0, 0, 0};
+  bool high = true;
+  void add(int32_t v) {
+    if (high) {
+      if (v < x[2]) {
+        x[4] = x[3];
+        x[3] = x[2];
+        if (v < x[0]) {
+          x[2] = x[1];
+          x[1] = x[0];
+          x[0] = v;
+        } else if (v < x[1]) {
+          x[2] = x[1];
+          x[1] = v;
+        } else {
+          x[2] = v;
+        }
+      } else {
+        if (v < x[3]) {
+          x[4] = x[3];
+          x[3] = v;
+        } else {
+          x[4] = v;
+        }
+        high = false;
+      }
+    } else {
+      if (x[2] < v) {
+        x[0] = x[1];
+        x[1] = x[2];
+        if (x[4] < v) {
+          x[2] = x[3];
+          x[3] = x[4];
+          x[4] = v;
+        } else if (x[3] < v) {
+          x[2] = x[3];
+          x[3] = v;
+        } else {
+          x[2] = v;
+        }
+      } else {
+        if (x[1] < v) {
+          x[0] = x[1];
+          x[1] = v;
+        } else {
+          x[0] = v;
+        }
+        high = true;
+      }
+    }
+  }
+};
+
+}  // namespace
+
+TEST_CASE("LAZ: the x/y predictor's median follows LASzip's insertions, ties and runs included") {
+  laz::Median5 median;
+  ReferenceMedian5 reference;
+  uint32_t state = 12345u;
+  for (int i = 0; i < 200000; ++i) {
+    state = state * 1664525u + 1013904223u;
+    // Small values (many ties), runs of one value, and the int32 extremes.
+    int32_t v = static_cast<int32_t>(state >> 28) - 8;
+    if (i % 97 < 5) v = 3;
+    if (i % 1009 == 0) v = i % 2 == 0 ? INT32_MIN : INT32_MAX;
+    if (i % 3 == 0) v = static_cast<int32_t>(state);
+    median.add(v);
+    reference.add(v);
+    REQUIRE(median.get() == reference.x[2]);
   }
 }

@@ -244,9 +244,9 @@ TEST_CASE("a survey stopped by SIGINT removes its spill folders and says what it
   const std::string temp = dir.file("tmp"), out = dir.file("out"), err = dir.file("err.txt");
   const std::string dense = dir.file("dense.las");
   fs::create_directories(temp);
-  // A tile of twice the along-track order's memory budget, so that it
+  // A tile a little over the along-track order's memory budget, so that it
   // spills (smaller tiles are ordered in memory and make no folder).
-  const size_t side = 1024, points = 2 * spinhash::pipeline::kOrderMemoryPoints;
+  const size_t side = 1024, points = spinhash::pipeline::kOrderMemoryPoints + (size_t{1} << 16);
   std::vector<double> xyz;
   xyz.reserve(3 * points);
   for (size_t i = 0; i < points; ++i)

@@ -106,31 +106,30 @@ inline uint32_t ArithmeticDecoder::decode_symbol(SymbolModel& m) {
     const uint32_t dv = value_ / (length_ >>= kSymbolLengthShift);
     // A corrupt stream can put the value past the interval: clamp the index.
     const uint32_t t = std::min(dv >> m.table_shift_, m.table_size_);
+    const uint32_t* dist = m.distribution_.data();
     sym = m.decoder_table_[t];
     uint32_t n = m.decoder_table_[t + 1] + 1;
-    while (n > sym + 1) {  // binary search in the table's bracket
+    while (n > sym + 1) {  // binary search in the table's bracket (masks, not branches)
       const uint32_t k = (sym + n) >> 1;
-      if (m.distribution_[k] > dv)
-        n = k;
-      else
-        sym = k;
+      const uint32_t above = 0u - static_cast<uint32_t>(dist[k] > dv);
+      n = (k & above) | (n & ~above);
+      sym = (sym & above) | (k & ~above);
     }
-    x = m.distribution_[sym] * length_;
-    if (sym != m.last_symbol_) y = m.distribution_[sym + 1] * length_;
+    x = dist[sym] * length_;
+    if (sym != m.last_symbol_) y = dist[sym + 1] * length_;
   } else {
     x = sym = 0;
-    length_ >>= kSymbolLengthShift;
+    const uint32_t* dist = m.distribution_.data();
+    const uint32_t length = length_ >>= kSymbolLengthShift, value = value_;
     uint32_t n = m.symbols_;
     uint32_t k = n >> 1;
-    do {
-      const uint32_t z = length_ * m.distribution_[k];
-      if (z > value_) {
-        n = k;
-        y = z;
-      } else {
-        sym = k;
-        x = z;
-      }
+    do {  // masks, not branches: the symbols come in no predictable order
+      const uint32_t z = length * dist[k];
+      const uint32_t above = 0u - static_cast<uint32_t>(z > value);
+      n = (k & above) | (n & ~above);
+      y = (z & above) | (y & ~above);
+      sym = (sym & above) | (k & ~above);
+      x = (x & above) | (z & ~above);
     } while ((k = (sym + n) >> 1) != sym);
   }
   value_ -= x;

@@ -28,15 +28,15 @@ void IntegerDecompressor::reset() {
     if (m) m->reset();
 }
 
-SymbolModel& IntegerDecompressor::bits_model(uint32_t context) {
+SymbolModel& IntegerDecompressor::new_bits_model(uint32_t context) {
   auto& m = bit_models_[context];
-  if (!m) m = std::make_unique<SymbolModel>(corr_bits_ + 1);
+  m = std::make_unique<SymbolModel>(corr_bits_ + 1);
   return *m;
 }
 
-SymbolModel& IntegerDecompressor::corrector(uint32_t k) {
+SymbolModel& IntegerDecompressor::new_corrector(uint32_t k) {
   auto& m = correctors_[k - 1];
-  if (!m) m = std::make_unique<SymbolModel>(k <= bits_high_ ? 1u << k : 1u << bits_high_);
+  m = std::make_unique<SymbolModel>(k <= bits_high_ ? 1u << k : 1u << bits_high_);
   return *m;
 }
 

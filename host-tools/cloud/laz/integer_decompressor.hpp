@@ -34,8 +34,16 @@ class IntegerDecompressor {
   // Models are created on first use (a fresh model equals a reset one): a
   // 32-bit corrector has 32 models of up to 256 symbols, few of them used,
   // and building them all would dominate the decoding of small files.
-  SymbolModel& bits_model(uint32_t context);
-  SymbolModel& corrector(uint32_t k);
+  SymbolModel& bits_model(uint32_t context) {
+    SymbolModel* m = bit_models_[context].get();
+    return m != nullptr ? *m : new_bits_model(context);
+  }
+  SymbolModel& corrector(uint32_t k) {
+    SymbolModel* m = correctors_[k - 1].get();
+    return m != nullptr ? *m : new_corrector(k);
+  }
+  SymbolModel& new_bits_model(uint32_t context);
+  SymbolModel& new_corrector(uint32_t k);
 
   std::vector<std::unique_ptr<SymbolModel>> bit_models_;  // one per context: k
   BitModel corrector0_;                                   // k == 0: the correction is 0 or 1

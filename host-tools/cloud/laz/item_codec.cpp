@@ -4,57 +4,6 @@
 
 namespace spinhash::host::laz {
 
-void Median5::add(int32_t v) {
-  int32_t* x = values_;
-  if (high_) {
-    if (v < x[2]) {
-      x[4] = x[3];
-      x[3] = x[2];
-      if (v < x[0]) {
-        x[2] = x[1];
-        x[1] = x[0];
-        x[0] = v;
-      } else if (v < x[1]) {
-        x[2] = x[1];
-        x[1] = v;
-      } else {
-        x[2] = v;
-      }
-    } else {
-      if (v < x[3]) {
-        x[4] = x[3];
-        x[3] = v;
-      } else {
-        x[4] = v;
-      }
-      high_ = false;
-    }
-    return;
-  }
-  if (x[2] < v) {
-    x[0] = x[1];
-    x[1] = x[2];
-    if (x[4] < v) {
-      x[2] = x[3];
-      x[3] = x[4];
-      x[4] = v;
-    } else if (x[3] < v) {
-      x[2] = x[3];
-      x[3] = v;
-    } else {
-      x[2] = v;
-    }
-  } else {
-    if (x[1] < v) {
-      x[0] = x[1];
-      x[1] = v;
-    } else {
-      x[0] = v;
-    }
-    high_ = true;
-  }
-}
-
 std::unique_ptr<PointwiseItem> make_pointwise_item(const LazItem& item) {
   switch (item.type) {
     case ItemType::kPoint10: return make_point10(item.version);

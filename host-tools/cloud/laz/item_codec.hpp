@@ -4,6 +4,7 @@
 // record. The first point of a chunk is stored raw and seeds every item.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -95,5 +96,38 @@ class Median5 {
   int32_t values_[5] = {0, 0, 0, 0, 0};
   bool high_ = true;
 };
+
+// v into the sorted pair (a, b): the three in order, written at out.
+inline void insert_into_pair(int32_t a, int32_t b, int32_t v, int32_t* out) {
+  out[0] = std::min(v, a);
+  out[1] = std::max(a, std::min(v, b));
+  out[2] = std::max(v, b);
+}
+
+// The values stay sorted; each case below is LASzip's insertion written
+// as minima and maxima (selects, not branches: the differences come in no
+// predictable order).
+inline void Median5::add(int32_t v) {
+  int32_t* x = values_;
+  if (high_ && v < x[2]) {  // into the lower three; the top two shift up
+    x[4] = x[3];
+    x[3] = x[2];
+    insert_into_pair(x[0], x[1], v, x);
+  } else if (high_) {  // into the top two, the largest dropped
+    const int32_t c = x[3];
+    x[3] = std::min(v, c);
+    x[4] = std::max(v, c);
+    high_ = false;
+  } else if (x[2] < v) {  // into the upper three; the bottom two shift down
+    x[0] = x[1];
+    x[1] = x[2];
+    insert_into_pair(x[3], x[4], v, x + 2);
+  } else {  // into the bottom two, the smallest dropped
+    const int32_t b = x[1];
+    x[0] = std::min(v, b);
+    x[1] = std::max(v, b);
+    high_ = true;
+  }
+}
 
 }  // namespace spinhash::host::laz

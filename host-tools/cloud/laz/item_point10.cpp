@@ -5,6 +5,7 @@
 // from the last height per return level.
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <memory>
 
 #include "cloud/laz/integer_decompressor.hpp"
@@ -112,7 +113,7 @@ class Point10V2 final : public PointwiseItem {
     const int32_t z = dz_.decompress(dec, last_height_[level], single + even_capped(k_bits, kDzContextCap));
     put_i32(l + kZAt, z);
     last_height_[level] = z;
-    std::copy(last_.begin(), last_.end(), out);
+    std::memcpy(out, last_.data(), kPoint10Bytes);  // inline: a fixed size
   }
 
  private:
@@ -169,7 +170,7 @@ class Point10V1 final : public PointwiseItem {
 
   void decode(ArithmeticDecoder& dec, uint8_t* out) override {
     const uint8_t* l = last_.data();
-    std::copy(last_.begin(), last_.end(), out);
+    std::memcpy(out, last_.data(), kPoint10Bytes);
     const int32_t dx = dx_.decompress(dec, median3(last_dx_));
     put_i32(out + kXAt,
             static_cast<int32_t>(static_cast<uint32_t>(get_i32(l + kXAt)) + static_cast<uint32_t>(dx)));
@@ -184,7 +185,7 @@ class Point10V1 final : public PointwiseItem {
     last_dx_[next_] = dx;
     last_dy_[next_] = dy;
     next_ = next_ == kV1Diffs - 1 ? 0 : next_ + 1;
-    std::copy(out, out + kPoint10Bytes, last_.begin());
+    std::memcpy(last_.data(), out, kPoint10Bytes);
   }
 
  private:
