@@ -59,18 +59,25 @@ struct OpenDatabase {
   std::vector<int32_t> to_vehicle;
 };
 
+// Maps the opened database's models to set.vehicles by name (-1: none);
+// returns how many were found.
+uint32_t map_to_vehicles(const std::map<std::string, int32_t>& index, OpenDatabase* out) {
+  const Database& db = out->file.db;
+  uint32_t found = 0;
+  for (uint32_t m = 0; m < db.model_count(); ++m) {
+    const auto it = index.find(pipeline::model_name(db, m));
+    out->to_vehicle.push_back(it == index.end() ? -1 : it->second);
+    found += it == index.end() ? 0u : 1u;
+  }
+  return found;
+}
+
 // Opens the database already at out->info.path; refused unless its models
 // are exactly `index`'s (a database of other vehicles would judge wrongly).
 bool reuse_database(const std::map<std::string, int32_t>& index, OpenDatabase* out, std::string* error) {
   if (!pipeline::load_database(out->info.path, &out->file, error)) return false;
   const Database& db = out->file.db;
-  bool same = db.model_count() == index.size();
-  for (uint32_t m = 0; same && m < db.model_count(); ++m) {
-    const auto it = index.find(pipeline::model_name(db, m));
-    same = it != index.end();
-    if (same) out->to_vehicle.push_back(it->second);
-  }
-  if (!same) {
+  if (db.model_count() != index.size() || map_to_vehicles(index, out) != index.size()) {
     *error = out->info.path + ": its models are not the ones this run would build (--reuse-databases)";
     return false;
   }
@@ -104,11 +111,7 @@ bool build_database(const WorldSet& set, const std::vector<uint32_t>& vehicles, 
   out->info.features = summary.features;
   out->info.bytes = summary.bytes;
   out->info.seconds = summary.seconds;
-  const Database& db = out->file.db;
-  for (uint32_t m = 0; m < db.model_count(); ++m) {
-    const auto it = index.find(pipeline::model_name(db, m));
-    out->to_vehicle.push_back(it == index.end() ? -1 : it->second);
-  }
+  map_to_vehicles(index, out);
   return true;
 }
 
