@@ -3,12 +3,21 @@
 
 #include "cli/commands.hpp"
 #include "cloud/crs_resolve.hpp"
+#include "pipeline/tile_stream_order.hpp"
 
 namespace spinhash::cli {
 
 void refuse_repeated_stdin(const std::vector<std::string>& clouds) {
   if (std::count(clouds.begin(), clouds.end(), host::kStdinPath) > 1)
     throw CLI::ValidationError("clouds", "'-' (stdin) named more than once: stdin can be read only once");
+}
+
+void add_order_memory_option(CLI::App* cmd, size_t* points) {
+  cmd->add_option("--order-memory", *points,
+                  "points of a tile held in memory (12 B each) while it is put in along-track order; the "
+                  "rest wait in a temporary file; answers do not depend on it")
+      ->capture_default_str()
+      ->check(CLI::Range(pipeline::kMinOrderMemoryPoints, pipeline::kMaxOrderMemoryPoints));
 }
 
 void add_work_crs_option(CLI::App* cmd, host::WorkCrs* work) {

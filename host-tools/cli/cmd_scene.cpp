@@ -36,6 +36,7 @@ struct SceneArgs {
   std::string picture_dir;  // a top-down PNG per tile, when given
   host::WorkCrs work;       // --work-crs: the CRS to work in (else each file's own)
   SceneConfig config;
+  size_t order_memory_points = pipeline::kOrderMemoryPoints;  // --order-memory
 };
 
 bool write_picture(const SceneArgs& a, const std::string& name, const std::vector<double>& xyz,
@@ -66,6 +67,7 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
   const std::string name = host::cloud_name(path);
   pipeline::TileStreamOptions options;  // units: metres, as the door hands them
   options.scene = a.config;
+  options.order_memory_points = a.order_memory_points;
   options.picture_points = a.picture_dir.empty() ? 0u : kPicturePoints;
   std::vector<host::PictureBox> boxes;
   uint32_t index = 0, confident = 0;
@@ -151,6 +153,7 @@ void add_scene_command(CLI::App& app, int* exit_code) {
                   "folder for a top-down PNG per tile: objects outlined and labelled (green: confident)")
       ->check(CLI::ExistingDirectory);
   add_work_crs_option(cmd, &a->work);
+  add_order_memory_option(cmd, &a->order_memory_points);
   cmd->add_option("tiles", a->tiles, "point cloud files ('-': stdin)")->required();
   flags::add_recognizer_flags(cmd, &a->config.recognizer);
   cmd->callback([a, exit_code]() {

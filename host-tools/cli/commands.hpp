@@ -24,6 +24,10 @@ void refuse_repeated_stdin(const std::vector<std::string>& clouds);
 // CRS PROJ does not read, or one in degrees, is a usage error (exit 2).
 void add_work_crs_option(CLI::App* cmd, host::WorkCrs* work);
 
+// --order-memory POINTS: the points a tile's along-track order holds in
+// memory before it spills to a temporary file (pipeline/tile_stream_order.hpp).
+void add_order_memory_option(CLI::App* cmd, size_t* points);
+
 // A message of one or more lines on stderr, each as "spinhash COMMAND: line".
 void print_error(const char* command, const std::string& message);
 

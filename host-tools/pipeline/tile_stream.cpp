@@ -105,7 +105,7 @@ void PointSample::add(const double* p) {
 
 TileStreamer::TileStreamer(const TileStreamOptions& options, uint64_t expected_points)
     : options_(options),
-      order_(0.0, options.scene.row_depth, options.scene.window_core),
+      order_(0.0, options.scene.row_depth, options.scene.window_core, options.order_memory_points),
       picture_(options.picture_points, expected_points),
       start_(std::chrono::steady_clock::now()) {}
 

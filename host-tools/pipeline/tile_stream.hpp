@@ -31,6 +31,9 @@ struct TileStreamOptions {
   SceneConfig scene;                 // window stages; max_tile_points 0: sized from the density
   uint64_t max_buffered_points = 0;  // 0: sized from the tile's density
   size_t chunk_points = host::kDefaultChunkPoints;
+  // Points the along-track order holds before it spills to a temporary file
+  // (12 B each); the answers do not depend on it.
+  size_t order_memory_points = kOrderMemoryPoints;
   uint32_t picture_points = 0;  // keep an even sample of about this many points for a picture (0: none)
   // A survey's tile among its neighbours (in the file's units): an object is
   // reported only when owner_of(owners, its centre, owner_tolerance) is

@@ -39,6 +39,8 @@ AlongTrackOrder::AlongTrackOrder(double heading_deg, double row_depth, double co
     : row_depth_(row_depth), column_width_(column_width), memory_points_(memory_points) {
   if (!(row_depth > 0.0) || !(column_width >= 0.0))
     throw std::invalid_argument("along-track order: row depth must be > 0 and column width >= 0");
+  if (memory_points == 0)
+    throw std::invalid_argument("along-track order: the memory budget must be at least 1 point");
   const double r = heading_deg * (3.14159265358979323846 / 180.0);  // as the stream's frame
   ax_ = std::cos(r);
   ay_ = std::sin(r);

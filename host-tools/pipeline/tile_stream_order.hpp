@@ -34,6 +34,10 @@ namespace spinhash::pipeline {
 // 48 MB): large enough that a dense tile spills once or not at all, each
 // spill one sequential write.
 constexpr size_t kOrderMemoryPoints = size_t{1} << 22;
+// Bounds of the budget the command line takes (`--order-memory`): smaller
+// budgets spill more often, larger ones hold up to 12 GB.
+constexpr size_t kMinOrderMemoryPoints = size_t{1} << 12;
+constexpr size_t kMaxOrderMemoryPoints = size_t{1} << 30;
 
 class AlongTrackOrder {
  public:

@@ -207,7 +207,7 @@ int run_survey(const SurveyOptions& options, const std::vector<std::string>& arg
       const SurveyTask& task = s.tasks[todo[k]];
       std::string why;
       try {
-        const TileResult r = run_task(db.db, task, options.scene);
+        const TileResult r = run_task(db.db, task, options.scene, options.order_memory_points);
         if (store_result(options.out_dir, r, &why)) {
           progress.tile_done(r.points_tile);
           continue;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/tile_stream_order.hpp"
 #include "spinhash/scene.hpp"
 #include "survey/catalogue.hpp"
 #include "survey/survey_outputs.hpp"
@@ -22,6 +23,7 @@ struct SurveyOptions {
   bool quiet = false;  // no progress line
   host::WorkCrs work;  // --work-crs: the CRS to work in (else the tiles' shared CRS)
   SceneConfig scene;
+  size_t order_memory_points = pipeline::kOrderMemoryPoints;  // --order-memory: each tile's order
 };
 
 // The scene settings of a survey (as `spinhash scene`'s defaults).

@@ -96,7 +96,8 @@ std::vector<OwnedArea> owner_areas(const SurveyTask& task, uint32_t* self) {
   return areas;
 }
 
-TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfig& scene) {
+TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfig& scene,
+                    size_t order_memory_points) {
   const auto t0 = std::chrono::steady_clock::now();
   TileResult r;
   r.index = task.index, r.name = task.tile.name, r.path = task.tile.path, r.key = task.key;
@@ -107,6 +108,7 @@ TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfi
   BufferedSource source(task);
   pipeline::TileStreamOptions options;
   options.scene = scene;
+  options.order_memory_points = order_memory_points;
   options.owners = owner_areas(task, &options.self);  // metres, as the door hands the points
   options.owner_tolerance = kGapTolerance;
   const pipeline::ObjectCallback keep = [&](const SceneObject& metres) {  // the tile's own

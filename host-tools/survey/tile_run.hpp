@@ -4,6 +4,7 @@
 #pragma once
 #include <vector>
 
+#include "pipeline/tile_stream_order.hpp"
 #include "spinhash/scene.hpp"
 #include "spinhash/scene_ownership.hpp"
 #include "survey/task.hpp"
@@ -19,6 +20,7 @@ std::vector<OwnedArea> owner_areas(const SurveyTask& task, uint32_t* self);
 
 // Throws host::CloudError when the tile or a neighbour cannot be read,
 // std::runtime_error when PROJ refuses the CRS or temporary files fail.
-TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfig& scene);
+TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfig& scene,
+                    size_t order_memory_points = pipeline::kOrderMemoryPoints);
 
 }  // namespace spinhash::survey

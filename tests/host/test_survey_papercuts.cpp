@@ -244,9 +244,11 @@ TEST_CASE("a survey stopped by SIGINT removes its spill folders and says what it
   const std::string temp = dir.file("tmp"), out = dir.file("out"), err = dir.file("err.txt");
   const std::string dense = dir.file("dense.las");
   fs::create_directories(temp);
-  // A tile a little over the along-track order's memory budget, so that it
-  // spills (smaller tiles are ordered in memory and make no folder).
-  const size_t side = 1024, points = spinhash::pipeline::kOrderMemoryPoints + (size_t{1} << 16);
+  // A tile many times the along-track order's memory budget (--order-memory),
+  // so that it spills early and is still being read when stopped (tiles
+  // within the budget are ordered in memory and make no folder).
+  const size_t budget = spinhash::pipeline::kMinOrderMemoryPoints;
+  const size_t side = 1024, points = size_t{1} << 18;
   std::vector<double> xyz;
   xyz.reserve(3 * points);
   for (size_t i = 0; i < points; ++i)
@@ -255,12 +257,14 @@ TEST_CASE("a survey stopped by SIGINT removes its spill folders and says what it
                 4000000.0 + 0.1 * static_cast<double>(i / side), 0.01 * static_cast<double>(i % 7)});
   std::string error;
   REQUIRE_MESSAGE(spinhash::host::write_las(dense, xyz, {}, &error), error);
+  const std::string budget_text = std::to_string(budget);
   const pid_t child = fork();
   if (child == 0) {
     setenv("TMPDIR", temp.c_str(), 1);
     if (freopen(err.c_str(), "w", stderr) == nullptr) _exit(127);
-    execl(SPINHASH_TEST_BINARY, SPINHASH_TEST_BINARY, "survey", "--quiet", "--jobs", "1", "--db",
-          f.db.c_str(), "--out", out.c_str(), dense.c_str(), static_cast<char*>(nullptr));
+    execl(SPINHASH_TEST_BINARY, SPINHASH_TEST_BINARY, "survey", "--quiet", "--jobs", "1", "--order-memory",
+          budget_text.c_str(), "--db", f.db.c_str(), "--out", out.c_str(), dense.c_str(),
+          static_cast<char*>(nullptr));
     _exit(127);
   }
   bool spilling = false;

@@ -188,6 +188,29 @@ TEST_CASE("tile stream: chunks of any size and order give the whole tile's objec
   };
   CHECK(vehicles(any_order) == vehicles(whole));
   CHECK(vehicles(whole).size() >= 5u);
+
+  // Through the tile streamer, its order held in memory or spilled every
+  // 4 096 points (--order-memory): the same objects, bit for bit.
+  auto streamed = [&](size_t order_memory_points) {
+    pipeline::TileStreamOptions options;
+    options.scene = config;
+    options.order_memory_points = order_memory_points;
+    pipeline::TileStreamer streamer(options, n);
+    streamer.add(xyz.data(), n);
+    std::vector<Seen> out;
+    const pipeline::TileStreamResult r =
+        streamer.finish(db.db, [&](const SceneObject& o) { out.push_back(seen(o)); });
+    CHECK(r.status == Status::kOk);
+    return out;
+  };
+  const std::vector<Seen> held = streamed(pipeline::kOrderMemoryPoints), spilled = streamed(4096);
+  REQUIRE(held.size() == spilled.size());
+  CHECK(vehicles(held) == vehicles(whole));
+  for (size_t k = 0; k < held.size(); ++k) {
+    CHECK(spilled[k].model == held[k].model);
+    CHECK(spilled[k].points == held[k].points);
+    for (int a = 0; a < 3; ++a) CHECK(spilled[k].center[a] == held[k].center[a]);
+  }
 }
 
 TEST_CASE("tile stream: a survey's tile reports what owner_of gives it, and counts the rest") {
