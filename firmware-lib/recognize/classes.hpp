@@ -31,4 +31,11 @@ uint32_t rank_classes(const Database& db, const Result& r, RankedClass* out);
 bool is_class_confident(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
                         float density);
 
+// The tests is_class_confident() asks of the first class's best model but
+// the class's own (its margin, not unclassified), asked of ranked model `m`
+// under its extent fit `fit` and the scan's density under it: what the
+// group level asks of the member that speaks for the group.
+bool model_explains_scan(const Result& r, const RecognizerConfig& cfg, uint32_t features,
+                         const RankedModel& m, const ExtentFit& fit, float density);
+
 }  // namespace spinhash

@@ -81,13 +81,32 @@ ClassEnvelope group_envelope(const Database& db, uint32_t group) {
   return e;
 }
 
-float group_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
-                     float density, bool within_envelope) {
-  if (features == 0u || !within_envelope || r.group_ranking_count == 0u) return kNoEvidence;
-  if (r.group_ranking[0].group == static_cast<uint32_t>(VehicleGroup::kNone)) return kNoEvidence;
-  if (!is_class_confident(r, without_margin(cfg), features, fit, density)) return kNoEvidence;
-  if (r.group_ranking_count < 2u) return kUnopposed;
-  return lead_per_feature(r.group_ranking[0].score, r.group_ranking[1].score, features);
+float group_evidence(const SearchContext& ctx) {
+  const Result& r = ctx.result;
+  const Database& db = ctx.db;
+  const RecognizerConfig& cfg = ctx.params;
+  const uint32_t n = ctx.query.count;
+  if (n == 0u || r.group_ranking_count == 0u) return kNoEvidence;
+  const uint32_t group = r.group_ranking[0].group;
+  if (group == static_cast<uint32_t>(VehicleGroup::kNone)) return kNoEvidence;
+  const ClassEnvelope envelope = group_envelope(db, group);
+  uint32_t tried = 0;
+  for (uint32_t i = 0; i < r.ranking_count && tried < cfg.classes.group_fit_models; ++i) {
+    const RankedModel& m = r.ranking[i];
+    if (!m.has_pose || group_of_class(db.model(m.model).vehicle_class) != group) continue;
+    ++tried;
+    const RigidPose& pose = ctx.buf.best[m.model].pose;
+    const ExtentFit fit =
+        extent_fit(ctx.query, db.model(m.model), pose, hidden_ends(db, m.model, ctx.features.ground_band));
+    const float density = scan_density(r.stats, fit);
+    if (!model_explains_scan(r, cfg, n, m, fit, density)) continue;
+    const ScanShape shape = measure_scan(ctx.query, db.model(m.model), pose, ctx.features.top_above_terrain,
+                                         ctx.features.terrain_sigma, cfg.refine.sigma_surface, density);
+    if (!within_envelope(shape, envelope, cfg.confidence.max_extent_overhang, cfg.classes)) continue;
+    if (r.group_ranking_count < 2u) return kUnopposed;
+    return lead_per_feature(r.group_ranking[0].score, r.group_ranking[1].score, n);
+  }
+  return kNoEvidence;
 }
 
 float vehicle_evidence(const Result& r, uint32_t features, const ExtentFit& fit,
@@ -193,11 +212,8 @@ void assess_coarse_levels(const SearchContext& ctx, AnswerPass pass) {
     vclass.evidence =
         class_evidence(r, cfg, n, fit, density,
                        within_envelope(shape, class_envelope(db, first.vehicle_class), ends, cfg.classes));
-    if (r.group_ranking_count > 0u)
-      group.evidence = group_evidence(
-          r, cfg, n, fit, density,
-          within_envelope(shape, group_envelope(db, r.group_ranking[0].group), ends, cfg.classes));
   }
+  group.evidence = group_evidence(ctx);
   const float density = r.stats.confidence.scan_density;
   vehicle.confident = level_confident(db, pass, AnswerLevel::kVehicle, vehicle.evidence, density, cfg);
   group.confident = level_confident(db, pass, AnswerLevel::kGroup, group.evidence, density, cfg);

@@ -47,11 +47,13 @@ uint32_t rank_groups(const Database& db, const Result& r, RankedGroup* out);
 ClassEnvelope group_envelope(const Database& db, uint32_t group);
 
 // Group level: the first group's lead over the next per sqrt(query
-// features) (kUnopposed when no other group is ranked). Prerequisites: the
-// class level's tests of the leader's fit, a group other than none, and the
-// scan within the group's envelope (`within_envelope`).
-float group_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
-                     float density, bool within_envelope);
+// features) (kUnopposed when no other group is ranked). Prerequisites: a
+// group other than none, and one of its posed models among the first
+// classes.group_fit_models of the ranking, in ranking order, that explains
+// the scan (model_explains_scan(): a vehicle the database lacks, shorter or
+// longer than the group's best-scoring member, may fit another member's
+// box) with the scan within the group's envelope.
+float group_evidence(const SearchContext& ctx);
 
 // Vehicle level: whether the best model explains the scan as a vehicle,
 // not a tree, wall, crate or building: its mean log-likelihood per query

@@ -34,6 +34,7 @@ constexpr uint32_t kMaxRescoredModels = 16;    // RefineParams::rescored_models 
 constexpr uint32_t kMaxRefineIterations = 16;  // RefineParams::refine_iterations
 constexpr uint32_t kMaxLendModels = 32;        // RefineParams::lend_spread_models, lend_family_models
 constexpr uint32_t kMaxLendRounds = 8;         // RefineParams::lend_rounds
+constexpr uint32_t kMaxGroupFitModels = 64;    // ClassesParams::group_fit_models
 constexpr uint32_t kMaxNormalRadiusSteps = 8;  // ExtractParams::max_radius_steps
 constexpr uint32_t kMaxGroundFitRounds = 16;   // GroundParams::fit_rounds
 constexpr uint32_t kMaxBucketScan = 1u << 24;  // CandidatesParams::max_bucket_scan, max_sparse_bucket_scan

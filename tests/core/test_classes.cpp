@@ -102,6 +102,25 @@ TEST_CASE("a class is never confident on little evidence, a poor fit, an overhan
   CHECK_FALSE(is_class_confident(f.r, cfg, kFeatures, kPinned, kDense));
 }
 
+TEST_CASE("a ranked model explains the scan by the class level's tests of its own fit, not the class's margin") {
+  const RecognizerConfig cfg;
+  FourModels f(-605.0f);  // the classes lead by less than their margin
+  f.r.class_ranking = f.classes;
+  f.r.class_ranking_count = rank_classes(toy().db, f.r, f.classes);
+  REQUIRE_FALSE(is_class_confident(f.r, cfg, kFeatures, kPinned, kDense));
+  // The group level asks it of any posed member: the second sedan, the pickup.
+  CHECK(model_explains_scan(f.r, cfg, kFeatures, f.m[1], kPinned, kDense));
+  CHECK(model_explains_scan(f.r, cfg, kFeatures, f.m[2], kPinned, kDense));
+  // A box the scan stops 0.5 m short of (a shorter vehicle): past twice max_extent_shortfall.
+  CHECK_FALSE(model_explains_scan(f.r, cfg, kFeatures, f.m[1], ExtentFit{0.5f, 0.0f}, kDense));
+  CHECK(model_explains_scan(f.r, cfg, kFeatures, f.m[1], ExtentFit{0.35f, 0.0f}, kDense));
+  f.m[2].has_pose = false;
+  CHECK_FALSE(model_explains_scan(f.r, cfg, kFeatures, f.m[2], kPinned, kDense));
+  f.m[3].inliers = 50;
+  CHECK_FALSE(model_explains_scan(f.r, cfg, kFeatures, f.m[3], kPinned, kDense));
+  CHECK_FALSE(model_explains_scan(f.r, cfg, kFeatures, f.m[1], kPinned, 4.0f));
+}
+
 TEST_CASE("scan density: points per m^2 of the part of the model's top the scan spans; a model needs 50") {
   blob::ModelRecord rec{};
   rec.bbox_min[0] = -2.0f, rec.bbox_max[0] = 2.0f;  // 4 x 2 m: 8 m^2
