@@ -270,7 +270,7 @@
   X(F32, min_class_density, 5.0f, 0.0f, 1e6f, "", "scan density a confident class needs")                    \
   X(F32, class_extent_factor, 2.0f, 0.0f, 100.0f, "",                                                        \
     "the scan may miss or overhang the class leader's box this many times max_extent_shortfall / _overhang") \
-  X(U32, group_fit_models, 8u, 1u, kMaxGroupFitModels, "",                                                    \
+  X(U32, group_fit_models, 8u, 1u, kMaxGroupFitModels, "",                                                   \
     "posed models of the first group tried in ranking order for one whose box the scan fits (group level)")  \
   X(F32, min_height_density, 50.0f, 0.0f, 1e6f, "",                                                          \
     "without terrain, scan density below which the scan's height is not measured (coarser than a class "     \

@@ -102,7 +102,8 @@ TEST_CASE("a class is never confident on little evidence, a poor fit, an overhan
   CHECK_FALSE(is_class_confident(f.r, cfg, kFeatures, kPinned, kDense));
 }
 
-TEST_CASE("a ranked model explains the scan by the class level's tests of its own fit, not the class's margin") {
+TEST_CASE(
+    "a ranked model explains the scan by the class level's tests of its own fit, not the class's margin") {
   const RecognizerConfig cfg;
   FourModels f(-605.0f);  // the classes lead by less than their margin
   f.r.class_ranking = f.classes;
