@@ -306,6 +306,21 @@ TEST_CASE(
   CHECK(contains(scene.out, "{\"tile\":\"absent\",\"status\":\"unreadable\""));
 }
 
+TEST_CASE("--order-memory outside its range is a usage error naming the option, in scene and survey") {
+  const Fixture& f = fx();
+  TempDir dir("order-memory");
+  const std::string tile = dir.file("tile.las");
+  for (const std::string& cmd :
+       {"scene --order-memory 100 --db " + q(f.db) + " " + q(tile),
+        "survey --order-memory 100 --db " + q(f.db) + " --out " + q(dir.file("o")) + " " + q(f.db)}) {
+    CAPTURE(cmd);
+    const CliRun r = f.run(cmd);
+    CHECK(r.exit_code == kExitUsage);
+    CHECK(contains(r.err, "--order-memory"));
+  }
+  CHECK(contains(f.run("scene --help").out, "--order-memory"));
+}
+
 TEST_CASE("help texts name the formats each command reads and writes") {
   const Fixture& f = fx();
   CHECK(contains(f.run("scan --help").out, "PLY or LAS"));
