@@ -37,11 +37,12 @@ def _database(path):
 
 
 DEFAULT_TOP_N, DEFAULT_MAX_OBJECTS = 5, 256  # as `spinhash survey`'s --top and --max-objects
+DEFAULT_ORDER_MEMORY = _spinhash._ORDER_MEMORY_POINTS  # points, `spinhash survey`'s --order-memory default
 
 
-def run_tile(db_path, task, top_n=DEFAULT_TOP_N, max_objects=DEFAULT_MAX_OBJECTS):
+def run_tile(db_path, task, top_n=DEFAULT_TOP_N, max_objects=DEFAULT_MAX_OBJECTS, order_memory=DEFAULT_ORDER_MEMORY):
     """One tile's task on a worker: its result as text (stored by the client)."""
-    return _spinhash._survey_run_task(_database(db_path), task, top_n, max_objects)
+    return _spinhash._survey_run_task(_database(db_path), task, top_n, max_objects, order_memory)
 
 
 def _local_client(workers):
@@ -86,13 +87,16 @@ def _workers(client):
 
 def run(db_path, tiles, out_dir, client=None, *, workers=None, buffer=DEFAULT_BUFFER, resume=False,
         top_n=DEFAULT_TOP_N, max_objects=DEFAULT_MAX_OBJECTS, retries=DEFAULT_RETRIES, progress=True,
-        geodataframe=True, work_crs=None):
+        geodataframe=True, work_crs=None, order_memory=DEFAULT_ORDER_MEMORY):
     """Runs the survey of `tiles` (files or folders) into `out_dir`.
 
     client: a distributed.Client (None: a local cluster of `workers` processes).
     work_crs: a projected CRS to work in ("EPSG:32610", a WKT or a PROJ
     string), as the CLI's --work-crs: tiles in other CRSs, or in degrees,
-    are reprojected into it. progress: a line per tile on stderr.
+    are reprojected into it. order_memory: points of a tile each worker holds
+    in memory while ordering it, as --order-memory (the rest wait in a
+    temporary file; the answers do not depend on it). progress: a line per
+    tile on stderr.
     Returns the detections as a geopandas GeoDataFrame with the CRS set (the
     tiles' CRS; a local engineering CRS when they declare none), with
     ``attrs["survey"]`` (survey.json) and ``attrs["exit_status"]`` (0, or 3
@@ -116,8 +120,8 @@ def run(db_path, tiles, out_dir, client=None, *, workers=None, buffer=DEFAULT_BU
         for name, path, task in survey.pending():
             key = f"spinhash-tile-{name}-{token}"
             names[key] = (name, path)
-            futures.append(client.submit(run_tile, db_path, task, top_n, max_objects, key=key, retries=retries,
-                                         pure=False))
+            futures.append(client.submit(run_tile, db_path, task, top_n, max_objects, order_memory, key=key,
+                                         retries=retries, pure=False))
         workers_used = _workers(client)
         failed = _collect(survey, futures, names, progress)
     finally:
@@ -157,6 +161,8 @@ def main(argv=None):
     parser.add_argument("--max-objects", type=int, default=DEFAULT_MAX_OBJECTS,
                         help="objects reported per window at most (256)")
     parser.add_argument("--work-crs", help="a projected CRS to work in (EPSG:n, WKT or PROJ string)")
+    parser.add_argument("--order-memory", type=int, default=DEFAULT_ORDER_MEMORY,
+                        help=f"points of a tile each worker holds in memory while ordering it ({DEFAULT_ORDER_MEMORY})")
     parser.add_argument("--quiet", action="store_true", help="no progress line")
     parser.add_argument("tiles", nargs="+", help="tiles (LAS, LAZ, PLY, text) or folders of them")
     args = parser.parse_args(argv)
@@ -171,7 +177,7 @@ def main(argv=None):
             warnings.simplefilter("ignore")
             frame = run(args.db, args.tiles, args.out, client, workers=args.workers, buffer=args.buffer,
                         resume=args.resume, retries=args.retries, progress=not args.quiet, top_n=args.top,
-                        max_objects=args.max_objects, work_crs=args.work_crs)
+                        max_objects=args.max_objects, work_crs=args.work_crs, order_memory=args.order_memory)
     except (ValueError, OSError, RuntimeError) as error:
         print(f"spinhash.survey: {error}", file=sys.stderr)
         return EXIT_ERROR

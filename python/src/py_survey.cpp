@@ -112,8 +112,11 @@ std::unique_ptr<PySurvey> prepare(const std::string& db_path, const std::vector<
 }
 
 std::string run_task(const std::shared_ptr<PyDatabase>& db, const std::string& task_text, uint32_t top_n,
-                     uint32_t max_objects) {
+                     uint32_t max_objects, size_t order_memory) {
   if (!db) throw py::type_error("survey_run_task needs a spinhash.Database");
+  if (order_memory < pipeline::kMinOrderMemoryPoints || order_memory > pipeline::kMaxOrderMemoryPoints)
+    throw py::value_error("order_memory must be " + std::to_string(pipeline::kMinOrderMemoryPoints) + " to " +
+                          std::to_string(pipeline::kMaxOrderMemoryPoints) + " points");
   const SceneConfig scene = survey_scene(top_n, max_objects);
   static std::once_flag swept;  // a worker's first task: what killed workers of this machine left
   std::call_once(swept, [] { pipeline::remove_stale_spill_folders(); });
@@ -122,7 +125,7 @@ std::string run_task(const std::shared_ptr<PyDatabase>& db, const std::string& t
   if (!survey::parse_task_text(task_text, &task, &error)) throw py::value_error("survey task: " + error);
   py::gil_scoped_release unlocked;
   try {
-    return survey::result_text(survey::run_task(db->file.db, task, scene));
+    return survey::result_text(survey::run_task(db->file.db, task, scene, order_memory));
   } catch (const host::CloudError& e) {
     py::gil_scoped_acquire locked;
     PyErr_SetString(PyExc_OSError, e.what());
@@ -148,10 +151,12 @@ void bind_survey(py::module_& m) {
   m.def("_survey_prepare", &prepare, py::arg("db_path"), py::arg("tiles"), py::arg("out_dir"),
         py::arg("buffer") = survey::kDefaultBuffer, py::arg("resume") = false, py::arg("top_n") = 5u,
         py::arg("max_objects") = 256u, py::arg("work_crs") = "");
+  m.attr("_ORDER_MEMORY_POINTS") = pipeline::kOrderMemoryPoints;  // --order-memory's default
   m.def("_survey_run_task", &run_task, py::arg("db"), py::arg("task"), py::arg("top_n") = 5u,
-        py::arg("max_objects") = 256u,
-        "one survey task (its tile with the neighbours' buffer): the tile's result as text. OSError when the "
-        "tile or a neighbour cannot be read.");
+        py::arg("max_objects") = 256u, py::arg("order_memory") = pipeline::kOrderMemoryPoints,
+        "one survey task (its tile with the neighbours' buffer): the tile's result as text; order_memory: points "
+        "of the tile held in memory while it is ordered (as --order-memory). OSError when the tile or a "
+        "neighbour cannot be read.");
 }
 
 }  // namespace spinhash::python

@@ -157,6 +157,23 @@ def test_bad_input_is_refused_with_a_clear_error(fleet, tmp_path):
         survey.main(["--db", "x", "--out", "y", "--workers", "2", "--scheduler", "tcp://127.0.0.1:1", "t.las"])
 
 
+def test_a_worker_s_order_memory_moves_no_answer_and_is_bounded(fleet, tiles, tmp_path):
+    """A tile ordered within 4 096 points (spilling to its temporary file
+    many times) gives the result of one ordered in memory, times aside."""
+    prepared = survey._spinhash._survey_prepare(str(fleet.db), [str(tiles)], str(tmp_path / "out"))
+    name, path, task = prepared.pending()[0]
+
+    def answers(result):
+        return [line for line in result.splitlines() if not line.startswith("times ")]
+
+    held = survey.run_tile(str(fleet.db), task)
+    spilled = survey.run_tile(str(fleet.db), task, order_memory=4096)
+    assert any(line.startswith("line ") for line in held.splitlines())
+    assert answers(spilled) == answers(held)
+    with pytest.raises(ValueError, match="order_memory"):
+        survey.run_tile(str(fleet.db), task, order_memory=100)
+
+
 def test_the_package_keeps_the_extension_s_names():
     assert spinhash.Database is spinhash._spinhash.Database
     assert spinhash.__version__ == spinhash._spinhash.__version__
@@ -170,10 +187,10 @@ def test_results_are_stored_as_they_come_with_the_progress_line_on(fleet, tiles,
     release = threading.Event()
     real = survey._spinhash._survey_run_task
 
-    def held(db, task, top_n, max_objects):
+    def held(db, task, top_n, max_objects, order_memory):
         if any(line.startswith("tile ") and line.endswith("t11.xyz") for line in task.splitlines()):
             release.wait(STARTUP_S * 2)  # the last tile waits until the others are stored
-        return real(db, task, top_n, max_objects)
+        return real(db, task, top_n, max_objects, order_memory)
 
     monkeypatch.setattr(survey._spinhash, "_survey_run_task", held)
     out = tmp_path / "dask"
@@ -204,6 +221,6 @@ def test_the_command_line_matches_the_cli_s_options_and_help_is_plain_text(capsy
         survey.main(["--help"])
     text = capsys.readouterr().out
     assert "``" not in text
-    for option in ("--top", "--max-objects", "--work-crs", "--quiet"):
+    for option in ("--top", "--max-objects", "--work-crs", "--order-memory", "--quiet"):
         assert option in text
 
