@@ -154,7 +154,8 @@ void bind_survey(py::module_& m) {
   m.attr("_ORDER_MEMORY_POINTS") = pipeline::kOrderMemoryPoints;  // --order-memory's default
   m.def("_survey_run_task", &run_task, py::arg("db"), py::arg("task"), py::arg("top_n") = 5u,
         py::arg("max_objects") = 256u, py::arg("order_memory") = pipeline::kOrderMemoryPoints,
-        "one survey task (its tile with the neighbours' buffer): the tile's result as text; order_memory: points "
+        "one survey task (its tile with the neighbours' buffer): the tile's result as text; order_memory: "
+        "points "
         "of the tile held in memory while it is ordered (as --order-memory). OSError when the tile or a "
         "neighbour cannot be read.");
 }
