@@ -3,7 +3,7 @@
 
   scripts/flight-keepup.py ROWS.csv [--speed 30] [--swath 100] [--density 100]
       [--window-core 32] [--windows-per-row 4] [--max-lag 16] [--hz 1.2e9] [--ipc 1.0]
-      [--per-point 1420] [--per-unit 110] [--window-max-work 0] [--max-points 32768]
+      [--per-point 1245] [--per-unit 110] [--window-max-work 0] [--max-points 32768]
 
 ROWS.csv is what `tests/worst_case/stream_runner run DIR` writes (columns
 row, points, objects, recognition_work): per row of windows along track, its
@@ -43,7 +43,7 @@ def main():
     p.add_argument("--max-lag", type=float, default=16.0, help="m a row may wait, as flight")
     p.add_argument("--hz", type=float, default=1.2e9, help="the core's cycles per second")
     p.add_argument("--ipc", type=float, default=1.0, help="instructions per cycle")
-    p.add_argument("--per-point", type=float, default=1420.0, help="instructions per input point, recognition aside")
+    p.add_argument("--per-point", type=float, default=1245.0, help="instructions per input point, recognition aside")
     p.add_argument("--per-unit", type=float, default=110.0, help="instructions per recognition work unit")
     p.add_argument("--window-max-work", type=int, default=0, help="the run's window budget (0: none)")
     p.add_argument("--max-points", type=int, default=32768, help="RecognizerConfig::max_points")
