@@ -81,7 +81,19 @@ ClassEnvelope group_envelope(const Database& db, uint32_t group) {
   return e;
 }
 
-float group_evidence(const SearchContext& ctx) {
+MemberFit member_fit(const SearchContext& ctx, uint32_t model) {
+  const blob::ModelRecord& record = ctx.db.model(model);
+  const RigidPose& pose = ctx.buf.best[model].pose;
+  const FeatureSet& fs = ctx.features;
+  MemberFit m;
+  m.fit = extent_fit(ctx.query, record, pose, hidden_ends(ctx.db, model, fs.ground_band));
+  m.density = scan_density(ctx.result.stats, m.fit);
+  m.shape = measure_scan(ctx.query, record, pose, fs.top_above_terrain, fs.terrain_sigma,
+                         ctx.params.refine.sigma_surface, m.density);
+  return m;
+}
+
+float group_evidence(const SearchContext& ctx, uint32_t known_rank, const MemberFit& known) {
   const Result& r = ctx.result;
   const Database& db = ctx.db;
   const RecognizerConfig& cfg = ctx.params;
@@ -95,14 +107,10 @@ float group_evidence(const SearchContext& ctx) {
     const RankedModel& m = r.ranking[i];
     if (!m.has_pose || group_of_class(db.model(m.model).vehicle_class) != group) continue;
     ++tried;
-    const RigidPose& pose = ctx.buf.best[m.model].pose;
-    const ExtentFit fit =
-        extent_fit(ctx.query, db.model(m.model), pose, hidden_ends(db, m.model, ctx.features.ground_band));
-    const float density = scan_density(r.stats, fit);
-    if (!model_explains_scan(r, cfg, n, m, fit, density)) continue;
-    const ScanShape shape = measure_scan(ctx.query, db.model(m.model), pose, ctx.features.top_above_terrain,
-                                         ctx.features.terrain_sigma, cfg.refine.sigma_surface, density);
-    if (!within_envelope(shape, envelope, cfg.confidence.max_extent_overhang, cfg.classes)) continue;
+    const MemberFit member = i == known_rank ? known : member_fit(ctx, m.model);
+    if (!model_explains_scan(r, cfg, n, m, member.fit, member.density) ||
+        !within_envelope(member.shape, envelope, cfg.confidence.max_extent_overhang, cfg.classes))
+      continue;
     if (r.group_ranking_count < 2u) return kUnopposed;
     return lead_per_feature(r.group_ranking[0].score, r.group_ranking[1].score, n);
   }
@@ -193,27 +201,28 @@ void assess_coarse_levels(const SearchContext& ctx, AnswerPass pass) {
   LevelAnswer& group = r.levels[level_index(AnswerLevel::kGroup)];
   LevelAnswer& vclass = r.levels[level_index(AnswerLevel::kClass)];
   vehicle = group = vclass = LevelAnswer{};
+  // The first class's best model (the class leader, most often the first
+  // model): measured once, for the class level and, at its rank, the
+  // vehicle and group levels.
+  constexpr uint32_t kNoRank = UINT32_MAX;
+  uint32_t leader_rank = kNoRank;
+  MemberFit leader;
+  if (r.class_ranking_count > 0u && r.ranking[r.class_ranking[0].best_rank].has_pose) {
+    leader_rank = r.class_ranking[0].best_rank;
+    leader = member_fit(ctx, r.ranking[leader_rank].model);
+    vclass.evidence =
+        class_evidence(r, cfg, n, leader.fit, leader.density,
+                       within_envelope(leader.shape, class_envelope(db, r.class_ranking[0].vehicle_class),
+                                       cfg.confidence.max_extent_overhang, cfg.classes));
+  }
   if (r.ranking_count > 0u && r.ranking[0].has_pose) {
     const uint32_t first = r.ranking[0].model;
-    const ExtentFit fit = extent_fit(ctx.query, db.model(first), ctx.buf.best[first].pose,
-                                     hidden_ends(db, first, fs.ground_band));
+    const ExtentFit fit = leader_rank == 0u ? leader.fit
+                                            : extent_fit(ctx.query, db.model(first), ctx.buf.best[first].pose,
+                                                         hidden_ends(db, first, fs.ground_band));
     vehicle.evidence = vehicle_evidence(r, n, fit, db.model(first));
   }
-  if (r.class_ranking_count > 0u && r.ranking[r.class_ranking[0].best_rank].has_pose) {
-    const RankedClass& first = r.class_ranking[0];
-    const uint32_t leader = r.ranking[first.best_rank].model;
-    const RigidPose& pose = ctx.buf.best[leader].pose;
-    const ExtentFit fit =
-        extent_fit(ctx.query, db.model(leader), pose, hidden_ends(db, leader, fs.ground_band));
-    const float density = scan_density(r.stats, fit);
-    const ScanShape shape = measure_scan(ctx.query, db.model(leader), pose, fs.top_above_terrain,
-                                         fs.terrain_sigma, cfg.refine.sigma_surface, density);
-    const float ends = cfg.confidence.max_extent_overhang;
-    vclass.evidence =
-        class_evidence(r, cfg, n, fit, density,
-                       within_envelope(shape, class_envelope(db, first.vehicle_class), ends, cfg.classes));
-  }
-  group.evidence = group_evidence(ctx);
+  group.evidence = group_evidence(ctx, leader_rank, leader);
   const float density = r.stats.confidence.scan_density;
   vehicle.confident = level_confident(db, pass, AnswerLevel::kVehicle, vehicle.evidence, density, cfg);
   group.confident = level_confident(db, pass, AnswerLevel::kGroup, group.evidence, density, cfg);

@@ -46,14 +46,26 @@ uint32_t rank_groups(const Database& db, const Result& r, RankedGroup* out);
 // class_envelope() for a class).
 ClassEnvelope group_envelope(const Database& db, uint32_t group);
 
+// What the class and group levels measure of a posed model: the scan's
+// extent fit to its box, the scan's density under that fit, and the scan's
+// shape in its frame.
+struct MemberFit {
+  ExtentFit fit;
+  float density = 0.0f;
+  ScanShape shape;
+};
+MemberFit member_fit(const SearchContext& ctx, uint32_t model);
+
 // Group level: the first group's lead over the next per sqrt(query
 // features) (kUnopposed when no other group is ranked). Prerequisites: a
 // group other than none, and one of its posed models among the first
 // classes.group_fit_models of the ranking, in ranking order, that explains
 // the scan (model_explains_scan(): a vehicle the database lacks, shorter or
 // longer than the group's best-scoring member, may fit another member's
-// box) with the scan within the group's envelope.
-float group_evidence(const SearchContext& ctx);
+// box) with the scan within the group's envelope. `known` is the fit of the
+// model at ranking position `known_rank` (the class leader's, measured
+// already; any other rank, e.g. UINT32_MAX: none).
+float group_evidence(const SearchContext& ctx, uint32_t known_rank, const MemberFit& known);
 
 // Vehicle level: whether the best model explains the scan as a vehicle,
 // not a tree, wall, crate or building: its mean log-likelihood per query

@@ -155,9 +155,8 @@ void bind_survey(py::module_& m) {
   m.def("_survey_run_task", &run_task, py::arg("db"), py::arg("task"), py::arg("top_n") = 5u,
         py::arg("max_objects") = 256u, py::arg("order_memory") = pipeline::kOrderMemoryPoints,
         "one survey task (its tile with the neighbours' buffer): the tile's result as text; order_memory: "
-        "points "
-        "of the tile held in memory while it is ordered (as --order-memory). OSError when the tile or a "
-        "neighbour cannot be read.");
+        "points of the tile held in memory while it is ordered (as --order-memory). OSError when the tile or "
+        "a neighbour cannot be read.");
 }
 
 }  // namespace spinhash::python
