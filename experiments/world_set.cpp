@@ -18,6 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+constexpr uint64_t kVehicleSizedStream = 0x5E1C;  // its own draws: the scene clutter's stay as they were
+
 // Mesh files under `root`, any depth, by stem.
 std::map<std::string, std::string> mesh_files_under(const fs::path& root) {
   std::map<std::string, std::string> out;
@@ -126,6 +128,26 @@ void add_scene_clutter(uint32_t per_kind, uint64_t seed, WorldSet* set) {
       }
       set->clutter.push_back(ClutterObject{"scene", k, k + "-" + std::to_string(i), std::move(p.mesh),
                                            terrain.height(0.0, 0.0)});
+    }
+}
+
+void add_vehicle_sized_clutter(uint32_t per_kind, uint64_t seed, WorldSet* set) {
+  using Make =
+      host::PlacedObject (*)(const host::Terrain&, const Eigen::Vector2d&, double, host::SeededRandom*);
+  const std::pair<const char*, Make> kinds[] = {{"shed", host::make_shed},
+                                                {"container", host::make_container},
+                                                {"bush", host::make_bush},
+                                                {"heap", host::make_heap}};
+  host::TerrainSpec flat;
+  flat.bump_height = 0.0;
+  flat.curb_height = 0.0;
+  const host::Terrain terrain(flat);
+  host::SeededRandom rng(host::mix_seed(seed, kVehicleSizedStream));
+  for (uint32_t i = 0; i < per_kind; ++i)
+    for (const auto& [kind, make] : kinds) {
+      host::PlacedObject p = make(terrain, Eigen::Vector2d::Zero(), 0.0, &rng);
+      set->clutter.push_back(ClutterObject{"vehicle-sized", kind, std::string(kind) + "-" + std::to_string(i),
+                                           std::move(p.mesh), terrain.height(0.0, 0.0)});
     }
 }
 

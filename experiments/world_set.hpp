@@ -52,6 +52,11 @@ bool add_catalog(const std::string& path, const std::vector<std::string>& clutte
 // `per_kind` trees, walls, crates and buildings on level ground.
 void add_scene_clutter(uint32_t per_kind, uint64_t seed, WorldSet* set);
 
+// Non-vehicles of a vehicle's size and bulk (the same file): `per_kind`
+// sheds, freight containers, bushes and heaps on level ground, source
+// "vehicle-sized". No tile holds them and no calibration scans them.
+void add_vehicle_sized_clutter(uint32_t per_kind, uint64_t seed, WorldSet* set);
+
 // false with *error when fewer than two worlds hold vehicles, or two
 // vehicles share a name (the database's model names).
 bool check_world_set(const WorldSet& set, std::string* error);

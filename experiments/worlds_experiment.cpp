@@ -40,7 +40,8 @@ struct WorldsArgs {
   uint64_t fleet_seed = 1;
   std::vector<std::string> catalogs;
   std::vector<std::string> clutter_sources{"warzone-structure"};
-  uint32_t scene_clutter = 16;  // pieces of each kind
+  uint32_t scene_clutter = 16;          // pieces of each kind
+  uint32_t vehicle_sized_clutter = 16;  // pieces of each kind
   std::vector<std::string> conditions{"clean", "ground", "no-ground", "sparse"};
   uint32_t scans_per_world = 120;  // at least, per condition
   uint32_t min_scans = 3;          // per vehicle and condition
@@ -204,6 +205,7 @@ bool load_worlds(const WorldsArgs& a, WorldSet* set, std::string* error) {
   for (const std::string& c : a.catalogs)
     if (!add_catalog(c, a.clutter_sources, set, error)) return false;
   add_scene_clutter(a.scene_clutter, a.scan_seed, set);
+  add_vehicle_sized_clutter(a.vehicle_sized_clutter, a.scan_seed, set);
   return check_world_set(*set, error);
 }
 
@@ -292,6 +294,10 @@ void add_worlds_experiment(CLI::App* parent, int* exit_code) {
       ->capture_default_str();
   cmd->add_option("--scene-clutter", a->scene_clutter,
                   "the scene simulator's trees, walls, crates and buildings: pieces of each kind")
+      ->check(CLI::Range(0u, kMaxSceneClutter))
+      ->capture_default_str();
+  cmd->add_option("--vehicle-sized-clutter", a->vehicle_sized_clutter,
+                  "sheds, freight containers, bushes and heaps: pieces of each kind")
       ->check(CLI::Range(0u, kMaxSceneClutter))
       ->capture_default_str();
   cmd->add_option("--conditions", a->conditions, "clean, ground, no-ground, sparse")

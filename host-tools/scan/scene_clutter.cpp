@@ -1,5 +1,7 @@
-// The tile simulator's non-vehicles: buildings, walls, crates and trees.
-// Each is built in its own frame (footprint centre, z = 0 at its base),
+// The simulator's non-vehicles: buildings, walls, crates and trees, which
+// tiles hold, and ones of a vehicle's size and bulk (sheds, freight
+// containers, bushes, heaps), the hardest for the vehicle level, which the
+// worlds experiment scans alone. Each is built in its own frame (footprint centre, z = 0 at its base),
 // then posed on the terrain; bases are sunk below the lowest ground under
 // them so no gap shows on a slope.
 #include "mesh/vehicle_parts.hpp"
@@ -38,6 +40,27 @@ constexpr double kBlobRadiusMin = 0.9, kBlobRadiusMax = 1.4;
 constexpr double kBlobFlatten = 0.7;  // vertical / horizontal radius
 constexpr double kBlobSpread = 0.6;   // of the crown radius: blob centres within it
 constexpr uint32_t kBlobSlices = 10, kBlobStacks = 6;
+// Shed or single garage (m): from a garden shed's 2.4 x 1.8 m to a garage's
+// 6.5 x 3.6 m, eaves at a door's height and more, a gable from nearly flat.
+constexpr double kShedLengthMin = 2.4, kShedLengthMax = 6.5;
+constexpr double kShedWidthMin = 1.8, kShedWidthMax = 3.6;
+constexpr double kShedEavesMin = 2.0, kShedEavesMax = 2.7;
+constexpr double kShedRoofRiseMin = 0.1, kShedRoofRiseMax = 1.2;
+// Freight container, ISO 668 series 1 (m): 20 ft or 40 ft long, 8 ft wide,
+// 8 ft 6 in tall or 9 ft 6 in (high cube).
+constexpr double kContainerLengths[] = {6.058, 12.192};
+constexpr double kContainerWidth = 2.438;
+constexpr double kContainerHeights[] = {2.591, 2.896};
+// Bush or hedge (m): foliage blobs in a row, about one per kBushBlobPitch.
+constexpr double kBushLengthMin = 1.5, kBushLengthMax = 6.0;
+constexpr double kBushWidthMin = 1.0, kBushWidthMax = 2.5;
+constexpr double kBushHeightMin = 0.8, kBushHeightMax = 2.2;
+constexpr double kBushBlobPitch = 1.2;
+constexpr double kBushBlobJitter = 0.15;  // of a blob's radii, drawn per blob
+// Heap of earth, gravel or a covered load (m): half an ellipsoid.
+constexpr double kHeapLengthMin = 2.5, kHeapLengthMax = 8.0;
+constexpr double kHeapWidthMin = 2.0, kHeapWidthMax = 5.0;
+constexpr double kHeapHeightMin = 0.8, kHeapHeightMax = 2.5;
 
 struct GroundRange {
   double lo = 0.0, hi = 0.0;
@@ -131,24 +154,33 @@ PlacedObject box_on_ground(SceneObjectKind kind, const char* name, const Terrain
   return finish(kind, std::move(m), frame_pose(at, base_z, yaw), base, t);
 }
 
+// A box with a gable roof along its length, standing on the terrain: eaves
+// eaves_min..max above the highest ground under it, the ridge rise_min..max
+// above the eaves.
+PlacedObject gabled_box(SceneObjectKind kind, const char* name, const Terrain& t, const Eigen::Vector2d& at,
+                        double yaw, double length, double width, double eaves_min, double eaves_max,
+                        double rise_min, double rise_max, SeededRandom* rng) {
+  const Footprint base = rectangle(at, length, width, yaw);
+  const GroundRange g = ground_under(t, base);
+  const double base_z = g.lo - kFoundationDepth;
+  const double eaves = g.hi + rng->uniform(eaves_min, eaves_max) - base_z;
+  const double ridge = eaves + rng->uniform(rise_min, rise_max);
+  Mesh m;
+  m.name = name;
+  const double hl = 0.5 * length, hw = 0.5 * width;
+  add_box(&m, {-hl, -hw, 0.0}, {hl, hw, eaves});
+  add_loft(&m, {{-hl, -hw, eaves}, {-hl, hw, eaves}, {-hl, 0.0, ridge}},
+           {{hl, -hw, eaves}, {hl, hw, eaves}, {hl, 0.0, ridge}});
+  return finish(kind, std::move(m), frame_pose(at, base_z, yaw), base, t);
+}
+
 }  // namespace
 
 PlacedObject make_building(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
   const double length = rng->uniform(kBuildingSideMin, kBuildingSideMax);
   const double width = rng->uniform(kBuildingSideMin, kBuildingSideMax);
-  const Footprint base = rectangle(at, length, width, yaw);
-  const GroundRange g = ground_under(t, base);
-  const double base_z = g.lo - kFoundationDepth;
-  const double eaves = g.hi + rng->uniform(kEavesMin, kEavesMax) - base_z;
-  const double ridge = eaves + rng->uniform(kRoofRiseMin, kRoofRiseMax);
-  Mesh m;
-  m.name = "building";
-  const double hl = 0.5 * length, hw = 0.5 * width;
-  add_box(&m, {-hl, -hw, 0.0}, {hl, hw, eaves});
-  // Gable roof: a triangular prism along the length.
-  add_loft(&m, {{-hl, -hw, eaves}, {-hl, hw, eaves}, {-hl, 0.0, ridge}},
-           {{hl, -hw, eaves}, {hl, hw, eaves}, {hl, 0.0, ridge}});
-  return finish(SceneObjectKind::kBuilding, std::move(m), frame_pose(at, base_z, yaw), base, t);
+  return gabled_box(SceneObjectKind::kBuilding, "building", t, at, yaw, length, width, kEavesMin, kEavesMax,
+                    kRoofRiseMin, kRoofRiseMax, rng);
 }
 
 PlacedObject make_wall(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
@@ -192,6 +224,54 @@ PlacedObject make_tree(const Terrain& t, const Eigen::Vector2d& at, const Eigen:
   p.crown_bottom = bottom;
   p.truth.extent.head<2>() = 2.0 * p.crown.half;  // the crown's spread
   return p;
+}
+
+PlacedObject make_shed(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
+  const double length = rng->uniform(kShedLengthMin, kShedLengthMax);
+  const double width = rng->uniform(kShedWidthMin, std::min(kShedWidthMax, length));
+  return gabled_box(SceneObjectKind::kShed, "shed", t, at, yaw, length, width, kShedEavesMin, kShedEavesMax,
+                    kShedRoofRiseMin, kShedRoofRiseMax, rng);
+}
+
+PlacedObject make_container(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
+  const double length = kContainerLengths[rng->below(2u)];
+  const double height = kContainerHeights[rng->below(2u)];
+  return box_on_ground(SceneObjectKind::kContainer, "container", t, at, yaw, length, kContainerWidth, height,
+                       height, rng);
+}
+
+PlacedObject make_bush(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
+  const double length = rng->uniform(kBushLengthMin, kBushLengthMax);
+  const double width = rng->uniform(kBushWidthMin, std::min(kBushWidthMax, length));
+  const double height = rng->uniform(kBushHeightMin, kBushHeightMax);
+  const Footprint base = rectangle(at, length, width, yaw);
+  const GroundRange g = ground_under(t, base);
+  const double base_z = g.lo - kFoundationDepth;
+  const double ground = g.hi - base_z;  // the highest ground, in the bush's frame
+  const uint32_t blobs = std::max(2u, static_cast<uint32_t>(std::lround(length / kBushBlobPitch)));
+  const double rx = 0.5 * length / blobs * 1.5;  // neighbours overlap
+  Mesh m;
+  m.name = "bush";
+  for (uint32_t b = 0; b < blobs; ++b) {
+    const double x = -0.5 * length + rx + (length - 2.0 * rx) * (blobs == 1 ? 0.5 : double(b) / (blobs - 1));
+    const double j = 1.0 - kBushBlobJitter * rng->uniform01();
+    const double rz = 0.5 * height * j;
+    add_ellipsoid(&m, {x, 0.0, ground + rz}, {rx * j, 0.5 * width * j, rz});
+  }
+  return finish(SceneObjectKind::kBush, std::move(m), frame_pose(at, base_z, yaw), base, t);
+}
+
+PlacedObject make_heap(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
+  const double length = rng->uniform(kHeapLengthMin, kHeapLengthMax);
+  const double width = rng->uniform(kHeapWidthMin, std::min(kHeapWidthMax, length));
+  const double height = rng->uniform(kHeapHeightMin, kHeapHeightMax);
+  const Footprint base = rectangle(at, length, width, yaw);
+  const GroundRange g = ground_under(t, base);
+  // Centred at the lowest ground: the terrain hides its lower half.
+  Mesh m;
+  m.name = "heap";
+  add_ellipsoid(&m, Eigen::Vector3d::Zero(), {0.5 * length, 0.5 * width, height + (g.hi - g.lo)});
+  return finish(SceneObjectKind::kHeap, std::move(m), frame_pose(at, g.lo, yaw), base, t);
 }
 
 }  // namespace spinhash::host

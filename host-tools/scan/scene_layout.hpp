@@ -53,6 +53,12 @@ PlacedObject place_vehicle(const Mesh& model, SceneObjectKind kind, const Terrai
 PlacedObject make_building(const Terrain& terrain, const Eigen::Vector2d& at, double yaw, SeededRandom* rng);
 PlacedObject make_wall(const Terrain& terrain, const Eigen::Vector2d& at, double yaw, SeededRandom* rng);
 PlacedObject make_crate(const Terrain& terrain, const Eigen::Vector2d& at, double yaw, SeededRandom* rng);
+// Vehicle-sized non-vehicles: a shed or garage, an ISO freight container, a
+// bush or hedge, a heap.
+PlacedObject make_shed(const Terrain& terrain, const Eigen::Vector2d& at, double yaw, SeededRandom* rng);
+PlacedObject make_container(const Terrain& terrain, const Eigen::Vector2d& at, double yaw, SeededRandom* rng);
+PlacedObject make_bush(const Terrain& terrain, const Eigen::Vector2d& at, double yaw, SeededRandom* rng);
+PlacedObject make_heap(const Terrain& terrain, const Eigen::Vector2d& at, double yaw, SeededRandom* rng);
 // Trunk at `at`, crown centred at crown_at, its underside at least min_crown_bottom (z, local).
 PlacedObject make_tree(const Terrain& terrain, const Eigen::Vector2d& at, const Eigen::Vector2d& crown_at,
                        double min_crown_bottom, SeededRandom* rng);

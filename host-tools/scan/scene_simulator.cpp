@@ -138,6 +138,10 @@ const char* scene_object_kind_name(SceneObjectKind kind) {
     case SceneObjectKind::kBuilding: return "building";
     case SceneObjectKind::kWall: return "wall";
     case SceneObjectKind::kCrate: return "crate";
+    case SceneObjectKind::kShed: return "shed";
+    case SceneObjectKind::kContainer: return "container";
+    case SceneObjectKind::kBush: return "bush";
+    case SceneObjectKind::kHeap: return "heap";
   }
   return "?";
 }

@@ -54,7 +54,21 @@ struct SceneOptions {
   double offset[3] = {512000.0, 5400000.0, 300.0};  // added to every output coordinate (UTM-like)
 };
 
-enum class SceneObjectKind : uint8_t { kVehicle, kUnknownVehicle, kTree, kBuilding, kWall, kCrate };
+// Tiles hold vehicles, trees, buildings, walls and crates; sheds,
+// containers, bushes and heaps are non-vehicles of a vehicle's size, scanned
+// alone (make_shed() and the others).
+enum class SceneObjectKind : uint8_t {
+  kVehicle,
+  kUnknownVehicle,
+  kTree,
+  kBuilding,
+  kWall,
+  kCrate,
+  kShed,
+  kContainer,
+  kBush,
+  kHeap,
+};
 const char* scene_object_kind_name(SceneObjectKind kind);
 
 // Situations of a vehicle that make it hard (bits of SceneTruth::flags).
