@@ -215,14 +215,17 @@ void assess_coarse_levels(const SearchContext& ctx, AnswerPass pass) {
                        within_envelope(leader.shape, class_envelope(db, r.class_ranking[0].vehicle_class),
                                        cfg.confidence.max_extent_overhang, cfg.classes));
   }
-  if (r.ranking_count > 0u && r.ranking[0].has_pose) {
+  group.evidence = group_evidence(ctx, leader_rank, leader);
+  // A vehicle is what a posed member of the first group explains (the group
+  // level's prerequisites, not its lead): a vehicle's size and bulk alone,
+  // which sheds, heaps and containers share, do not make one.
+  if (group.evidence > kNoEvidence && r.ranking_count > 0u && r.ranking[0].has_pose) {
     const uint32_t first = r.ranking[0].model;
     const ExtentFit fit = leader_rank == 0u ? leader.fit
                                             : extent_fit(ctx.query, db.model(first), ctx.buf.best[first].pose,
                                                          hidden_ends(db, first, fs.ground_band));
     vehicle.evidence = vehicle_evidence(r, n, fit, db.model(first));
   }
-  group.evidence = group_evidence(ctx, leader_rank, leader);
   const float density = r.stats.confidence.scan_density;
   vehicle.confident = level_confident(db, pass, AnswerLevel::kVehicle, vehicle.evidence, density, cfg);
   group.confident = level_confident(db, pass, AnswerLevel::kGroup, group.evidence, density, cfg);

@@ -80,7 +80,11 @@ float group_evidence(const SearchContext& ctx, uint32_t known_rank, const Member
 // from the vehicles (known and unknown) better than the log-likelihood
 // alone, the inlier share or the surface coverage, and as well as a
 // penalty in metres on the extent misfit, which needs a weight and grows
-// with a vehicle's size. Prerequisite: a pose; kNoEvidence when the scan
+// with a vehicle's size. Prerequisites: a pose, and what the group level
+// asks before its lead (assess_coarse_levels: a posed member of the first
+// group explains the scan and the group's envelope holds it), because
+// vehicle-sized non-vehicles (sheds, heaps, bushes, freight containers)
+// score as vehicles do here; kNoEvidence without them or when the scan
 // spans none of the top.
 float vehicle_evidence(const Result& r, uint32_t features, const ExtentFit& fit,
                        const blob::ModelRecord& model);

@@ -185,6 +185,32 @@ TEST_CASE("a recognised toy carries its class ranking; thinned to a sparse scan 
   CHECK_FALSE(s.confident);
 }
 
+TEST_CASE("the vehicle level needs what the group level needs: a posed member that explains the scan") {
+  const std::vector<double> pickup = test::toy_vehicle_points(1, 0.05f);
+  std::vector<double> stretched = pickup;  // 1.8 times as long: no toy's box fits it
+  for (size_t i = 0; i < stretched.size(); i += 3) stretched[i] *= 1.8;
+  const double t[3] = {40.0, -25.0, 3.0};
+  RecognizerConfig cfg;
+  host::AlignedBytes ws(required_workspace_bytes(cfg));
+  Recognizer rec;
+  REQUIRE(rec.init(&toy().db, cfg, ws.data(), ws.size()) == Status::kOk);
+  const auto evidence = [](const Result& r, AnswerLevel l) { return r.levels[level_index(l)].evidence; };
+  const std::vector<double> a = test::toy_airborne_query(pickup, 0.4, t, 0.02, 3);
+  const Result fits = rec.recognize(a.data(), static_cast<uint32_t>(a.size() / 3));
+  REQUIRE(fits.status == Status::kOk);
+  CHECK(std::isfinite(evidence(fits, AnswerLevel::kGroup)));
+  CHECK(std::isfinite(evidence(fits, AnswerLevel::kVehicle)));
+  CHECK(fits.levels[level_index(AnswerLevel::kVehicle)].confident);
+  const std::vector<double> b = test::toy_airborne_query(stretched, 0.4, t, 0.02, 3);
+  const Result long_one = rec.recognize(b.data(), static_cast<uint32_t>(b.size() / 3));
+  REQUIRE(long_one.status == Status::kOk);
+  REQUIRE(long_one.ranking_count > 0u);
+  CHECK(long_one.ranking[0].has_pose);  // posed, but explained by no member
+  CHECK_FALSE(std::isfinite(evidence(long_one, AnswerLevel::kGroup)));
+  CHECK_FALSE(std::isfinite(evidence(long_one, AnswerLevel::kVehicle)));
+  CHECK(long_one.level == AnswerLevel::kNone);
+}
+
 TEST_CASE("a sparse scan's normals come from a grown radius") {
   const FeatureParams fp;  // normal radius 0.4 m, as the databases
   ExtractorCapacity cap;

@@ -62,9 +62,10 @@ int run_worlds(const TempDir& dir, const std::string& args) {
 TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
   TempDir dir("experiment-worlds");
   make_mini_worlds(dir);
-  REQUIRE(run_worlds(dir, "--catalog '" + dir.file("meshes") +
-                              "' --clutter-source mini-structure --scene-clutter 1 --clutter-scans 1 "
-                              "--scans-per-world 1 --min-scans 1 --threads 2 --quiet") == 0);
+  const std::string args = "--catalog '" + dir.file("meshes") +
+                           "' --clutter-source mini-structure --scene-clutter 1 --vehicle-sized-clutter 1 "
+                           "--clutter-scans 1 --scans-per-world 1 --min-scans 1 --threads 2";
+  REQUIRE(run_worlds(dir, args + " --quiet") == 0);
   const CsvColumns csv(read_bytes(dir.file("out/per_scan.csv")));
   for (const char* column : {"world",
                              "object",
@@ -90,8 +91,9 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
                              "density",
                              "ground"})
     CHECK_MESSAGE(csv.has(column), column);
-  // 16 vehicles x 4 conditions x 2 databases, then 4 scene pieces and the box once (sparse).
-  REQUIRE(csv.rows() == 2u * kFamilies * 4u * 2u + 5u);
+  // 16 vehicles x 4 conditions x 2 databases, then 4 scene pieces, 4 vehicle-sized ones and the box
+  // once (sparse).
+  REQUIRE(csv.rows() == 2u * kFamilies * 4u * 2u + 9u);
   std::map<std::string, int> per_condition;
   std::set<std::string> clutter_kinds;
   int vehicle_rows = 0, known_right = 0, with_evidence = 0;
@@ -137,7 +139,8 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
   CHECK(with_evidence > kFamilies * 2);  // the vehicle level's evidence of every posed answer
   for (const char* c : {"clean", "ground", "no-ground", "sparse"})
     CHECK(per_condition[c] == 2 * kFamilies * 2);
-  CHECK(clutter_kinds == std::set<std::string>{"tree", "wall", "crate", "building", "mini-structure"});
+  CHECK(clutter_kinds == std::set<std::string>{"tree", "wall", "crate", "building", "shed", "container",
+                                               "bush", "heap", "mini-structure"});
   // With its model in the database, most clean and ground-free scans name the vehicle first.
   CHECK(known_right > kFamilies * 2);
   const std::string summary = read_bytes(dir.file("out/summary.md"));
@@ -148,9 +151,7 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
   CHECK(std::filesystem::exists(dir.file("out/databases/without-south.shdb")));
 
   // Again on the databases just built: no build, the same answers.
-  REQUIRE(run_worlds(dir, "--catalog '" + dir.file("meshes") +
-                              "' --clutter-source mini-structure --scene-clutter 1 --clutter-scans 1 "
-                              "--scans-per-world 1 --min-scans 1 --threads 2 --reuse-databases") == 0);
+  REQUIRE(run_worlds(dir, args + " --reuse-databases") == 0);
   CHECK(read_bytes(dir.file("stderr.txt")).find("building") == std::string::npos);
   const CsvColumns again(read_bytes(dir.file("out/per_scan.csv")));
   REQUIRE(again.rows() == csv.rows());
