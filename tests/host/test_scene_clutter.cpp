@@ -14,7 +14,8 @@ namespace sh = spinhash::host;
 
 namespace {
 
-using Make = std::function<sh::PlacedObject(const sh::Terrain&, const Eigen::Vector2d&, double, sh::SeededRandom*)>;
+using Make =
+    std::function<sh::PlacedObject(const sh::Terrain&, const Eigen::Vector2d&, double, sh::SeededRandom*)>;
 
 // Length, width and height above the ground (m): the draws' extremes.
 struct Dimensions {
