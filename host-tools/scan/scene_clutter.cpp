@@ -40,27 +40,26 @@ constexpr double kBlobRadiusMin = 0.9, kBlobRadiusMax = 1.4;
 constexpr double kBlobFlatten = 0.7;  // vertical / horizontal radius
 constexpr double kBlobSpread = 0.6;   // of the crown radius: blob centres within it
 constexpr uint32_t kBlobSlices = 10, kBlobStacks = 6;
-// Shed or single garage (m): from a garden shed's 2.4 x 1.8 m to a garage's
-// 6.5 x 3.6 m, eaves at a door's height and more, a gable from nearly flat.
-constexpr double kShedLengthMin = 2.4, kShedLengthMax = 6.5;
-constexpr double kShedWidthMin = 1.8, kShedWidthMax = 3.6;
-constexpr double kShedEavesMin = 2.0, kShedEavesMax = 2.7;
+// Plan and height ranges (m) of a drawn object; the width never exceeds the length.
+struct SizeRanges {
+  double length_min, length_max, width_min, width_max, height_min, height_max;
+};
+// Shed or single garage: from a garden shed's 2.4 x 1.8 m to a garage's
+// 6.5 x 3.6 m, eaves (its height) at a door's height and more, a gable
+// from nearly flat.
+constexpr SizeRanges kShed{2.4, 6.5, 1.8, 3.6, 2.0, 2.7};
 constexpr double kShedRoofRiseMin = 0.1, kShedRoofRiseMax = 1.2;
 // Freight container, ISO 668 series 1 (m): 20 ft or 40 ft long, 8 ft wide,
 // 8 ft 6 in tall or 9 ft 6 in (high cube).
 constexpr double kContainerLengths[] = {6.058, 12.192};
 constexpr double kContainerWidth = 2.438;
 constexpr double kContainerHeights[] = {2.591, 2.896};
-// Bush or hedge (m): foliage blobs in a row, about one per kBushBlobPitch.
-constexpr double kBushLengthMin = 1.5, kBushLengthMax = 6.0;
-constexpr double kBushWidthMin = 1.0, kBushWidthMax = 2.5;
-constexpr double kBushHeightMin = 0.8, kBushHeightMax = 2.2;
+// Bush or hedge: foliage blobs in a row, about one per kBushBlobPitch (m).
+constexpr SizeRanges kBush{1.5, 6.0, 1.0, 2.5, 0.8, 2.2};
 constexpr double kBushBlobPitch = 1.2;
 constexpr double kBushBlobJitter = 0.15;  // of a blob's radii, drawn per blob
-// Heap of earth, gravel or a covered load (m): half an ellipsoid.
-constexpr double kHeapLengthMin = 2.5, kHeapLengthMax = 8.0;
-constexpr double kHeapWidthMin = 2.0, kHeapWidthMax = 5.0;
-constexpr double kHeapHeightMin = 0.8, kHeapHeightMax = 2.5;
+// Heap of earth, gravel or a covered load: half an ellipsoid.
+constexpr SizeRanges kHeap{2.5, 8.0, 2.0, 5.0, 0.8, 2.5};
 
 struct GroundRange {
   double lo = 0.0, hi = 0.0;
@@ -114,6 +113,25 @@ Footprint rectangle(const Eigen::Vector2d& at, double length, double width, doub
   return f;
 }
 
+// An object's size drawn from its ranges (length, width, height, in that
+// order), its footprint at `at` and the ground under it.
+struct Drawn {
+  double length = 0.0, width = 0.0, height = 0.0;
+  Footprint base;
+  GroundRange ground;
+};
+
+Drawn draw_size(const Terrain& t, const Eigen::Vector2d& at, double yaw, const SizeRanges& r,
+                SeededRandom* rng) {
+  Drawn d;
+  d.length = rng->uniform(r.length_min, r.length_max);
+  d.width = rng->uniform(r.width_min, std::min(r.width_max, d.length));
+  d.height = rng->uniform(r.height_min, r.height_max);
+  d.base = rectangle(at, d.length, d.width, yaw);
+  d.ground = ground_under(t, d.base);
+  return d;
+}
+
 // Closed ellipsoid of kBlobSlices x kBlobStacks quads.
 void add_ellipsoid(Mesh* mesh, const Eigen::Vector3d& c, const Eigen::Vector3d& radii) {
   const uint32_t first = static_cast<uint32_t>(mesh->vertex_count());
@@ -155,15 +173,15 @@ PlacedObject box_on_ground(SceneObjectKind kind, const char* name, const Terrain
 }
 
 // A box with a gable roof along its length, standing on the terrain: eaves
-// eaves_min..max above the highest ground under it, the ridge rise_min..max
-// above the eaves.
+// `eaves_height` above the highest ground under it, the ridge
+// rise_min..max above the eaves.
 PlacedObject gabled_box(SceneObjectKind kind, const char* name, const Terrain& t, const Eigen::Vector2d& at,
-                        double yaw, double length, double width, double eaves_min, double eaves_max,
-                        double rise_min, double rise_max, SeededRandom* rng) {
+                        double yaw, double length, double width, double eaves_height, double rise_min,
+                        double rise_max, SeededRandom* rng) {
   const Footprint base = rectangle(at, length, width, yaw);
   const GroundRange g = ground_under(t, base);
   const double base_z = g.lo - kFoundationDepth;
-  const double eaves = g.hi + rng->uniform(eaves_min, eaves_max) - base_z;
+  const double eaves = g.hi + eaves_height - base_z;
   const double ridge = eaves + rng->uniform(rise_min, rise_max);
   Mesh m;
   m.name = name;
@@ -179,8 +197,9 @@ PlacedObject gabled_box(SceneObjectKind kind, const char* name, const Terrain& t
 PlacedObject make_building(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
   const double length = rng->uniform(kBuildingSideMin, kBuildingSideMax);
   const double width = rng->uniform(kBuildingSideMin, kBuildingSideMax);
-  return gabled_box(SceneObjectKind::kBuilding, "building", t, at, yaw, length, width, kEavesMin, kEavesMax,
-                    kRoofRiseMin, kRoofRiseMax, rng);
+  const double eaves = rng->uniform(kEavesMin, kEavesMax);
+  return gabled_box(SceneObjectKind::kBuilding, "building", t, at, yaw, length, width, eaves, kRoofRiseMin,
+                    kRoofRiseMax, rng);
 }
 
 PlacedObject make_wall(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
@@ -227,10 +246,9 @@ PlacedObject make_tree(const Terrain& t, const Eigen::Vector2d& at, const Eigen:
 }
 
 PlacedObject make_shed(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
-  const double length = rng->uniform(kShedLengthMin, kShedLengthMax);
-  const double width = rng->uniform(kShedWidthMin, std::min(kShedWidthMax, length));
-  return gabled_box(SceneObjectKind::kShed, "shed", t, at, yaw, length, width, kShedEavesMin, kShedEavesMax,
-                    kShedRoofRiseMin, kShedRoofRiseMax, rng);
+  const Drawn d = draw_size(t, at, yaw, kShed, rng);
+  return gabled_box(SceneObjectKind::kShed, "shed", t, at, yaw, d.length, d.width, d.height, kShedRoofRiseMin,
+                    kShedRoofRiseMax, rng);
 }
 
 PlacedObject make_container(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
@@ -241,37 +259,30 @@ PlacedObject make_container(const Terrain& t, const Eigen::Vector2d& at, double 
 }
 
 PlacedObject make_bush(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
-  const double length = rng->uniform(kBushLengthMin, kBushLengthMax);
-  const double width = rng->uniform(kBushWidthMin, std::min(kBushWidthMax, length));
-  const double height = rng->uniform(kBushHeightMin, kBushHeightMax);
-  const Footprint base = rectangle(at, length, width, yaw);
-  const GroundRange g = ground_under(t, base);
-  const double base_z = g.lo - kFoundationDepth;
-  const double ground = g.hi - base_z;  // the highest ground, in the bush's frame
-  const uint32_t blobs = std::max(2u, static_cast<uint32_t>(std::lround(length / kBushBlobPitch)));
-  const double rx = 0.5 * length / blobs * 1.5;  // neighbours overlap
+  const Drawn d = draw_size(t, at, yaw, kBush, rng);
+  const double base_z = d.ground.lo - kFoundationDepth;
+  const double ground = d.ground.hi - base_z;  // the highest ground, in the bush's frame
+  const uint32_t blobs = std::max(2u, static_cast<uint32_t>(std::lround(d.length / kBushBlobPitch)));
+  const double rx = 0.5 * d.length / blobs * 1.5;  // neighbours overlap
   Mesh m;
   m.name = "bush";
   for (uint32_t b = 0; b < blobs; ++b) {
-    const double x = -0.5 * length + rx + (length - 2.0 * rx) * (blobs == 1 ? 0.5 : double(b) / (blobs - 1));
+    const double x = -0.5 * d.length + rx + (d.length - 2.0 * rx) * (static_cast<double>(b) / (blobs - 1));
     const double j = 1.0 - kBushBlobJitter * rng->uniform01();
-    const double rz = 0.5 * height * j;
-    add_ellipsoid(&m, {x, 0.0, ground + rz}, {rx * j, 0.5 * width * j, rz});
+    const double rz = 0.5 * d.height * j;
+    add_ellipsoid(&m, {x, 0.0, ground + rz}, {rx * j, 0.5 * d.width * j, rz});
   }
-  return finish(SceneObjectKind::kBush, std::move(m), frame_pose(at, base_z, yaw), base, t);
+  return finish(SceneObjectKind::kBush, std::move(m), frame_pose(at, base_z, yaw), d.base, t);
 }
 
 PlacedObject make_heap(const Terrain& t, const Eigen::Vector2d& at, double yaw, SeededRandom* rng) {
-  const double length = rng->uniform(kHeapLengthMin, kHeapLengthMax);
-  const double width = rng->uniform(kHeapWidthMin, std::min(kHeapWidthMax, length));
-  const double height = rng->uniform(kHeapHeightMin, kHeapHeightMax);
-  const Footprint base = rectangle(at, length, width, yaw);
-  const GroundRange g = ground_under(t, base);
+  const Drawn d = draw_size(t, at, yaw, kHeap, rng);
   // Centred at the lowest ground: the terrain hides its lower half.
   Mesh m;
   m.name = "heap";
-  add_ellipsoid(&m, Eigen::Vector3d::Zero(), {0.5 * length, 0.5 * width, height + (g.hi - g.lo)});
-  return finish(SceneObjectKind::kHeap, std::move(m), frame_pose(at, g.lo, yaw), base, t);
+  add_ellipsoid(&m, Eigen::Vector3d::Zero(),
+                {0.5 * d.length, 0.5 * d.width, d.height + (d.ground.hi - d.ground.lo)});
+  return finish(SceneObjectKind::kHeap, std::move(m), frame_pose(at, d.ground.lo, yaw), d.base, t);
 }
 
 }  // namespace spinhash::host
