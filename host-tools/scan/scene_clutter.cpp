@@ -1,9 +1,9 @@
 // The simulator's non-vehicles: buildings, walls, crates and trees, which
 // tiles hold, and ones of a vehicle's size and bulk (sheds, freight
 // containers, bushes, heaps), the hardest for the vehicle level, which the
-// worlds experiment scans alone. Each is built in its own frame (footprint centre, z = 0 at its base),
-// then posed on the terrain; bases are sunk below the lowest ground under
-// them so no gap shows on a slope.
+// worlds experiment scans alone. Each is built in its own frame (footprint
+// centre, z = 0 at its base), then posed on the terrain; bases are sunk
+// below the lowest ground under them so no gap shows on a slope.
 #include "mesh/vehicle_parts.hpp"
 #include "scan/scene_layout.hpp"
 #include "util/angles.hpp"
@@ -187,6 +187,7 @@ PlacedObject gabled_box(SceneObjectKind kind, const char* name, const Terrain& t
   m.name = name;
   const double hl = 0.5 * length, hw = 0.5 * width;
   add_box(&m, {-hl, -hw, 0.0}, {hl, hw, eaves});
+  // Gable roof: a triangular prism along the length.
   add_loft(&m, {{-hl, -hw, eaves}, {-hl, hw, eaves}, {-hl, 0.0, ridge}},
            {{hl, -hw, eaves}, {hl, hw, eaves}, {hl, 0.0, ridge}});
   return finish(kind, std::move(m), frame_pose(at, base_z, yaw), base, t);
