@@ -55,7 +55,12 @@ $spinhash scan-scene "$out/fleet" -o "$out/survey-scene.las" --size 80 --vehicle
   --tiles-out "$out/survey-tiles" --tile-size 40 2>/dev/null
 $spinhash survey --db "$out/fleet.shdb" --out "$out/survey" --quiet "$out/survey-tiles"
 found=$(grep -c '"kind":"vehicle"' "$out/survey/detections.jsonl" || true)
-confident=$(grep -c '"kind":"vehicle".*"confident":true' "$out/survey/detections.jsonl" || true)
+# Each answer's "level": the most specific level whose flag it carries.
+by_level=""
+for level in model class group vehicle none; do
+  n=$(grep -c "\"kind\":\"vehicle\".*\"level\":\"$level\"" "$out/survey/detections.jsonl" || true)
+  by_level+="${by_level:+, }$level $n"
+done
 tiles=$(find "$out/survey-tiles" -name '*.las' | wc -l)
-echo "survey: $found vehicles ($confident confident) in $tiles tiles; GeoPackage $out/survey/detections.gpkg," \
-     "picture $out/survey/overview.png"
+echo "survey: $found vehicles in $tiles tiles (answer level: $by_level);" \
+     "GeoPackage $out/survey/detections.gpkg, picture $out/survey/overview.png"
