@@ -122,7 +122,9 @@ TEST_CASE("cascade: the work cap ends a query with its best answer so far, never
   REQUIRE(test::make_toy_database(&toy));
   const uint32_t m = 3;
   RecognizerConfig full = preset_config(Preset::kFull);
-  const Run whole = recognize_toy(toy, full, m);
+  // An airborne view: the whole search flags it (a half view has no level:
+  // no model's box fits it).
+  const Run whole = recognize_toy(toy, full, m, true);
   REQUIRE(whole.result.status == Status::kOk);
   const uint64_t work = whole.result.stats.cascade.work;
   REQUIRE(work > 0u);
@@ -133,7 +135,7 @@ TEST_CASE("cascade: the work cap ends a query with its best answer so far, never
       kWorkPerPoint * e.points_equalised + kWorkPerBucketEntry * whole.result.stats.candidates.bucket_entries;
   REQUIRE(described < work);
   full.max_work = described + (work - described) / 4u;
-  const Run capped = recognize_toy(toy, full, m);
+  const Run capped = recognize_toy(toy, full, m, true);
   CHECK(capped.result.status == Status::kWorkCapReached);
   CHECK(capped.result.stats.cascade.work_capped);
   CHECK(capped.result.stats.cascade.work >= full.max_work);
