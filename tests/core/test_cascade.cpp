@@ -120,7 +120,7 @@ TEST_CASE("cascade: an unsure first pass goes on to the full pass, which starts 
 TEST_CASE("cascade: the work cap ends a query with its best answer so far, never confident") {
   test::ToyDatabase toy;
   REQUIRE(test::make_toy_database(&toy));
-  const uint32_t m = 3;
+  const uint32_t m = 4;  // the toy van: the cheapest airborne view to search whole
   RecognizerConfig full = preset_config(Preset::kFull);
   // An airborne view: the whole search flags it (a half view has no level:
   // no model's box fits it).
