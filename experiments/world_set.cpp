@@ -105,10 +105,7 @@ bool add_catalog(const std::string& path, const std::vector<std::string>& clutte
 }
 
 void add_scene_clutter(uint32_t per_kind, uint64_t seed, WorldSet* set) {
-  host::TerrainSpec flat;
-  flat.bump_height = 0.0;
-  flat.curb_height = 0.0;
-  const host::Terrain terrain(flat);
+  const host::Terrain terrain(host::level_ground());
   const Eigen::Vector2d at = Eigen::Vector2d::Zero();
   host::SeededRandom rng(host::mix_seed(seed, 0));
   const char* kinds[] = {"tree", "wall", "crate", "building"};
@@ -138,10 +135,7 @@ void add_vehicle_sized_clutter(uint32_t per_kind, uint64_t seed, WorldSet* set) 
                                                 {"container", host::make_container},
                                                 {"bush", host::make_bush},
                                                 {"heap", host::make_heap}};
-  host::TerrainSpec flat;
-  flat.bump_height = 0.0;
-  flat.curb_height = 0.0;
-  const host::Terrain terrain(flat);
+  const host::Terrain terrain(host::level_ground());
   host::SeededRandom rng(host::mix_seed(seed, kVehicleSizedStream));
   for (uint32_t i = 0; i < per_kind; ++i)
     for (const auto& [kind, make] : kinds) {

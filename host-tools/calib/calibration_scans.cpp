@@ -71,10 +71,7 @@ const char* clutter_name(ClutterKind kind) {
 }
 
 bool scan_clutter(ClutterKind kind, const ScanDraw& d, std::vector<double>* xyz, std::string* error) {
-  host::TerrainSpec flat;
-  flat.bump_height = 0.0;
-  flat.curb_height = 0.0;
-  const host::Terrain terrain(flat);
+  const host::Terrain terrain(host::level_ground());
   host::SeededRandom rng(host::mix_seed(d.seed, kClutterStream));
   const Eigen::Vector2d at = Eigen::Vector2d::Zero();
   const double yaw = rng.uniform(0.0, 2.0 * host::kPi);

@@ -15,6 +15,14 @@ constexpr double kCurbRamp = 0.1;                           // m over which the 
 
 }  // namespace
 
+TerrainSpec level_ground() {
+  TerrainSpec flat;
+  flat.slope_deg = 0.0;
+  flat.bump_height = 0.0;
+  flat.curb_height = 0.0;
+  return flat;
+}
+
 Terrain::Terrain(const TerrainSpec& spec) : spec_(spec) {
   SeededRandom rng(mix_seed(spec.seed, kTerrainStream));
   const double drawn = rng.uniform(0.0, 2.0 * kPi);

@@ -25,6 +25,9 @@ struct TerrainSpec {
   uint64_t seed = 1;
 };
 
+// Level ground: no slope, no bumps, no curb (an object scanned on its own).
+TerrainSpec level_ground();
+
 class Terrain {
  public:
   explicit Terrain(const TerrainSpec& spec);

@@ -27,13 +27,6 @@ struct Dimensions {
 constexpr double kTolerance = 1e-6;
 constexpr uint32_t kDraws = 40;
 
-sh::Terrain flat_terrain() {
-  sh::TerrainSpec flat;
-  flat.bump_height = 0.0;
-  flat.curb_height = 0.0;
-  return sh::Terrain(flat);
-}
-
 }  // namespace
 
 TEST_CASE("vehicle-sized clutter: sheds, containers, bushes and heaps within their dimensions") {
@@ -43,7 +36,7 @@ TEST_CASE("vehicle-sized clutter: sheds, containers, bushes and heaps within the
       {"bush", sh::make_bush, 1.5, 6.0, 1.0, 2.5, 0.8 * 0.85, 2.2},
       {"heap", sh::make_heap, 2.5, 8.0, 2.0, 5.0, 0.8, 2.5},
   };
-  const sh::Terrain terrain = flat_terrain();
+  const sh::Terrain terrain(sh::level_ground());
   const Eigen::Vector2d at(3.0, -2.0);
   const double ground = terrain.height(at.x(), at.y());
   for (const Dimensions& k : kinds) {
@@ -71,7 +64,7 @@ TEST_CASE("vehicle-sized clutter: sheds, containers, bushes and heaps within the
 }
 
 TEST_CASE("vehicle-sized clutter: a footprint turned by the yaw") {
-  const sh::Terrain terrain = flat_terrain();
+  const sh::Terrain terrain(sh::level_ground());
   sh::SeededRandom a(5), b(5);
   const sh::PlacedObject straight = sh::make_container(terrain, Eigen::Vector2d::Zero(), 0.0, &a);
   const sh::PlacedObject turned = sh::make_container(terrain, Eigen::Vector2d::Zero(), 0.5 * M_PI, &b);
