@@ -23,6 +23,7 @@ if [[ " $* " == *" --cross "* ]]; then
              gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-user
              valgrind python3)  # callgrind for the work budget, python3 for the stack report
   packages+=(pkgconf)  # pkg-config for the installed-package stage (scripts/stages/24-install.sh)
+  packages+=(ccache)   # the installed-package stage's aarch64 core from the cross stage's objects
 fi
 
 missing=()

@@ -58,8 +58,7 @@ Run recognize_toy(const test::ToyDatabase& toy, const RecognizerConfig& cfg, uin
 }  // namespace
 
 TEST_CASE("cascade: a clear view is answered confidently by the first pass alone, as the flight preset") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   const uint32_t m = 1;
   const Run cascade = recognize_toy(toy, RecognizerConfig{}, m, true);
   REQUIRE(cascade.result.status == Status::kOk);
@@ -83,8 +82,7 @@ TEST_CASE("cascade: a clear view is answered confidently by the first pass alone
 }
 
 TEST_CASE("cascade: an unsure first pass goes on to the full pass, which starts from its poses") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   const uint32_t m = 2;
   // A side view: the first pass's few coarse features do not make it sure.
   RecognizerConfig carried;
@@ -118,8 +116,7 @@ TEST_CASE("cascade: an unsure first pass goes on to the full pass, which starts 
 }
 
 TEST_CASE("cascade: the work cap ends a query with its best answer so far, never confident") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   const uint32_t m = 4;  // the toy van: the cheapest airborne view to search whole
   RecognizerConfig full = preset_config(Preset::kFull);
   // An airborne view: the whole search flags it (a half view has no level:
@@ -183,8 +180,7 @@ TEST_CASE("cascade: the work cap ends a query with its best answer so far, never
 // poses, names no posed model: the query answers with the first pass's
 // leading models, still capped and unflagged, its stats those of both passes.
 TEST_CASE("cascade: a full pass capped before it poses a model answers with the first pass's models") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   RecognizerConfig cascade;  // carrying off, the default
   const Run side = recognize_toy(toy, cascade, 2u);
   REQUIRE(side.result.stats.cascade.passes == 2u);
@@ -351,8 +347,7 @@ TEST_CASE("cascade: the agree table stops an unsure first pass; its flags stay t
 TEST_CASE(
     "cascade: a caller's work cap below max_work ends a query as max_work would; lifted, it answers in "
     "full") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   const RecognizerConfig full = preset_config(Preset::kFull);
   host::AlignedBytes workspace(required_workspace_bytes(full));
   Recognizer recognizer;

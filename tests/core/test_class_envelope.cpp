@@ -17,13 +17,6 @@ using namespace spinhash;
 
 namespace {
 
-const test::ToyDatabase& toy() {
-  static test::ToyDatabase db;
-  static const bool made = test::make_toy_database(&db);
-  REQUIRE(made);
-  return db;
-}
-
 Eigen::Matrix3f yaw_matrix(float yaw) {
   Eigen::Matrix3f r;
   r << std::cos(yaw), -std::sin(yaw), 0.0f, std::sin(yaw), std::cos(yaw), 0.0f, 0.0f, 0.0f, 1.0f;
@@ -87,16 +80,19 @@ const ClassesParams kClasses;          // the class stage's tolerances
 
 TEST_CASE("a class's envelope spans its members' boxes and nothing else") {
   // toy-0 (4.5 x 1.8, 0.3-1.75 m) and toy-5 (3.8 x 1.7, 0.3-1.55 m) are the sedans.
-  const ClassEnvelope sedans = class_envelope(toy().db, static_cast<uint32_t>(VehicleClass::kSedan));
+  const ClassEnvelope sedans =
+      class_envelope(test::shared_toy_database().db, static_cast<uint32_t>(VehicleClass::kSedan));
   CHECK(sedans.members == 2u);
   CHECK(sedans.length_max == doctest::Approx(4.5f).epsilon(0.01));
   CHECK(sedans.width_max == doctest::Approx(1.8f).epsilon(0.01));
   CHECK(sedans.height_min == doctest::Approx(1.25f).epsilon(0.01));
   CHECK(sedans.height_max == doctest::Approx(1.45f).epsilon(0.01));
-  const ClassEnvelope vans = class_envelope(toy().db, static_cast<uint32_t>(VehicleClass::kVan));
+  const ClassEnvelope vans =
+      class_envelope(test::shared_toy_database().db, static_cast<uint32_t>(VehicleClass::kVan));
   CHECK(vans.members == 1u);
   CHECK(vans.height_min == vans.height_max);
-  CHECK(class_envelope(toy().db, static_cast<uint32_t>(VehicleClass::kBus)).members == 0u);
+  CHECK(class_envelope(test::shared_toy_database().db, static_cast<uint32_t>(VehicleClass::kBus)).members ==
+        0u);
   // A class without members holds no scan.
   CHECK_FALSE(within_envelope(ScanShape{}, ClassEnvelope{}, kEndTolerance, kClasses));
 }
@@ -221,7 +217,7 @@ TEST_CASE("a caller's terrain decides the class flag by the object's top above i
   RecognizerConfig cfg;
   host::AlignedBytes ws(required_workspace_bytes(cfg));
   Recognizer rec;
-  REQUIRE(rec.init(&toy().db, cfg, ws.data(), ws.size()) == Status::kOk);
+  REQUIRE(rec.init(&test::shared_toy_database().db, cfg, ws.data(), ws.size()) == Status::kOk);
   const std::vector<double> view = test::toy_airborne_query(model, 0.4, t, 0.02, 7);
   std::vector<float> xyz(view.size());
   for (size_t i = 0; i < view.size(); i += 3)  // relative to the toy's ground, as a scene's objects are

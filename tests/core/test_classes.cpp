@@ -41,13 +41,6 @@ struct FourModels {
   }
 };
 
-const test::ToyDatabase& toy() {
-  static test::ToyDatabase db;
-  static const bool made = test::make_toy_database(&db);
-  REQUIRE(made);
-  return db;
-}
-
 const ExtentFit kPinned{0.05f, 0.05f};
 constexpr float kDense = 200.0f;  // points per m^2 of the model's top
 
@@ -55,7 +48,7 @@ constexpr float kDense = 200.0f;  // points per m^2 of the model's top
 
 TEST_CASE("classes are ranked by their best model, each once, with that model") {
   FourModels f(-700.0f);
-  const uint32_t n = rank_classes(toy().db, f.r, f.classes);
+  const uint32_t n = rank_classes(test::shared_toy_database().db, f.r, f.classes);
   REQUIRE(n == 3u);
   CHECK(f.classes[0].vehicle_class == static_cast<uint32_t>(VehicleClass::kSedan));
   CHECK(f.classes[0].score == -600.0f);
@@ -73,7 +66,7 @@ TEST_CASE("a class is confident when it leads the next class by min_margin x sqr
   for (const float lead : {margin - 1.0f, margin + 1.0f}) {
     FourModels f(-600.0f - lead);
     f.r.class_ranking = f.classes;
-    f.r.class_ranking_count = rank_classes(toy().db, f.r, f.classes);
+    f.r.class_ranking_count = rank_classes(test::shared_toy_database().db, f.r, f.classes);
     CAPTURE(lead);
     // The two sedans are a look-alike group (no confident model), the class stands.
     CHECK(is_class_confident(f.r, cfg, kFeatures, kPinned, kDense) == (lead > margin));
@@ -84,7 +77,7 @@ TEST_CASE("a class is never confident on little evidence, a poor fit, an overhan
   const RecognizerConfig cfg;
   FourModels f(-800.0f);
   f.r.class_ranking = f.classes;
-  f.r.class_ranking_count = rank_classes(toy().db, f.r, f.classes);
+  f.r.class_ranking_count = rank_classes(test::shared_toy_database().db, f.r, f.classes);
   REQUIRE(is_class_confident(f.r, cfg, kFeatures, kPinned, kDense));
   CHECK_FALSE(is_class_confident(f.r, cfg, kFeatures, kPinned, 4.0f));  // under 5 points per m^2
   CHECK_FALSE(is_class_confident(f.r, cfg, 11u, kPinned, kDense));      // under 12 features
@@ -107,7 +100,7 @@ TEST_CASE(
   const RecognizerConfig cfg;
   FourModels f(-605.0f);  // the classes lead by less than their margin
   f.r.class_ranking = f.classes;
-  f.r.class_ranking_count = rank_classes(toy().db, f.r, f.classes);
+  f.r.class_ranking_count = rank_classes(test::shared_toy_database().db, f.r, f.classes);
   REQUIRE_FALSE(is_class_confident(f.r, cfg, kFeatures, kPinned, kDense));
   // The group level asks it of any posed member: the second sedan, the pickup.
   CHECK(model_explains_scan(f.r, cfg, kFeatures, f.m[1], kPinned, kDense));
@@ -163,7 +156,7 @@ TEST_CASE("a recognised toy carries its class ranking; thinned to a sparse scan 
   RecognizerConfig cfg;
   host::AlignedBytes ws(required_workspace_bytes(cfg));
   Recognizer rec;
-  REQUIRE(rec.init(&toy().db, cfg, ws.data(), ws.size()) == Status::kOk);
+  REQUIRE(rec.init(&test::shared_toy_database().db, cfg, ws.data(), ws.size()) == Status::kOk);
   const std::vector<double> dense = test::toy_airborne_query(model, 0.4, t, 0.02, 7);
   const Result r = rec.recognize(dense.data(), static_cast<uint32_t>(dense.size() / 3));
   REQUIRE(r.status == Status::kOk);
@@ -193,7 +186,7 @@ TEST_CASE("the vehicle level needs what the group level needs: a posed member th
   RecognizerConfig cfg;
   host::AlignedBytes ws(required_workspace_bytes(cfg));
   Recognizer rec;
-  REQUIRE(rec.init(&toy().db, cfg, ws.data(), ws.size()) == Status::kOk);
+  REQUIRE(rec.init(&test::shared_toy_database().db, cfg, ws.data(), ws.size()) == Status::kOk);
   const auto evidence = [](const Result& r, AnswerLevel l) { return r.levels[level_index(l)].evidence; };
   const std::vector<double> a = test::toy_airborne_query(pickup, 0.4, t, 0.02, 3);
   const Result fits = rec.recognize(a.data(), static_cast<uint32_t>(a.size() / 3));

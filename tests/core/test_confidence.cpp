@@ -277,8 +277,7 @@ TEST_CASE("among many look-alikes the residuals must be closer to noise") {
 }
 
 TEST_CASE("a scan that hides a toy's end is not confident, though the right toy explains it best") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   constexpr uint32_t kModel = 0;       // toy-0: hull 4.5 m long, x in [-2.25, 2.25]
   constexpr double kHiddenFrom = 1.0;  // m: the hood beyond this is hidden (a tree)
   const std::vector<double> model = test::toy_vehicle_points(kModel, 0.05f);
@@ -316,8 +315,7 @@ TEST_CASE("a scan that hides a toy's end is not confident, though the right toy 
 }
 
 TEST_CASE("a near twin outside the database is not confident: its residuals are a shape, not noise") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   constexpr uint32_t kModel = 0;     // toy-0: hull 4.5 m long
   constexpr double kStretch = 1.04;  // the twin: 0.18 m longer, ends 9 cm off once centred
   constexpr double kNoise = 0.02;    // m, along the rays

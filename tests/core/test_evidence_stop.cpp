@@ -21,9 +21,8 @@ constexpr uint32_t kModel = 3;
 constexpr double kYaw = 0.9;  // rad: the query's true heading
 
 struct Stopping {
-  test::ToyDatabase toy;
+  const test::ToyDatabase& toy = test::shared_toy_database();
   host::AlignedBytes ws;
-  Stopping() { REQUIRE(test::make_toy_database(&toy)); }
 
   Result recognize(const std::vector<double>& xyz, float stop_miss_probability) {
     RecognizerConfig cfg;

@@ -9,6 +9,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -40,26 +41,28 @@ std::vector<uint32_t> visited(const CellGrid& grid, const float* q, float radius
   return out;
 }
 
-// The same from every cell within the reach, none skipped (the plain search).
-std::vector<uint32_t> visited_unculled(const CellGrid& grid, const float* pts, uint32_t n, const float* q,
-                                       float radius) {
+// The same from every cell within the reach, none skipped (the plain search):
+// the points within the radius, cell offset by cell offset (dz, then dy, then
+// dx), each cell's in the grid's order.
+std::vector<uint32_t> visited_unculled(const CellGrid& grid, const float* pts, const float* q, float radius) {
   const float cell = grid.cell_size();
   const int32_t reach = static_cast<int32_t>(std::ceil(radius / cell));
+  const int32_t side = 2 * reach + 1;
   const float r2 = radius * radius;
-  std::vector<uint32_t> out;
   auto c = [&](float v) { return static_cast<int32_t>(std::floor(v / cell)); };
-  for (int32_t dz = -reach; dz <= reach; ++dz)
-    for (int32_t dy = -reach; dy <= reach; ++dy)
-      for (int32_t dx = -reach; dx <= reach; ++dx)
-        for (uint32_t k = 0; k < grid.cell_count(); ++k)
-          for (uint32_t m = 0; m < grid.cell_size_of(k); ++m) {
-            const uint32_t j = grid.order()[grid.cell_first(k) + m];
-            const float* p = pts + 3u * j;
-            if (c(p[0]) != c(q[0]) + dx || c(p[1]) != c(q[1]) + dy || c(p[2]) != c(q[2]) + dz) continue;
-            const float ex = p[0] - q[0], ey = p[1] - q[1], ez = p[2] - q[2];
-            if (ex * ex + ey * ey + ez * ez <= r2) out.push_back(j);
-          }
-  (void)n;
+  std::vector<std::vector<uint32_t>> by_offset(static_cast<size_t>(side * side * side));
+  for (uint32_t k = 0; k < grid.cell_count(); ++k)
+    for (uint32_t m = 0; m < grid.cell_size_of(k); ++m) {
+      const uint32_t j = grid.order()[grid.cell_first(k) + m];
+      const float* p = pts + 3u * j;
+      const int32_t dx = c(p[0]) - c(q[0]), dy = c(p[1]) - c(q[1]), dz = c(p[2]) - c(q[2]);
+      if (std::abs(dx) > reach || std::abs(dy) > reach || std::abs(dz) > reach) continue;
+      const float ex = p[0] - q[0], ey = p[1] - q[1], ez = p[2] - q[2];
+      if (ex * ex + ey * ey + ez * ez <= r2)
+        by_offset[static_cast<size_t>(((dz + reach) * side + dy + reach) * side + dx + reach)].push_back(j);
+    }
+  std::vector<uint32_t> out;
+  for (const std::vector<uint32_t>& points : by_offset) out.insert(out.end(), points.begin(), points.end());
   return out;
 }
 
@@ -73,7 +76,7 @@ TEST_CASE("exact cuts: the radius search skips only cells wholly beyond the radi
     for (float radius : {0.4f, 1.0f}) {
       for (uint32_t i = 0; i < n; i += 97) {
         const float* q = pts.data() + 3u * i;
-        CHECK(visited(g.grid, q, radius) == visited_unculled(g.grid, pts.data(), n, q, radius));
+        CHECK(visited(g.grid, q, radius) == visited_unculled(g.grid, pts.data(), q, radius));
       }
     }
   }

@@ -26,13 +26,6 @@ constexpr double kNoise = 0.02;  // m
 constexpr uint64_t kNoiseSeed = 11;
 constexpr float kToySpacing = 0.05f;  // m, as the toy database's model clouds
 
-const test::ToyDatabase& toy() {
-  static test::ToyDatabase db;
-  static const bool ok = test::make_toy_database(&db);
-  REQUIRE(ok);
-  return db;
-}
-
 // Smaller feature and hypothesis budgets than the defaults keep each query
 // well under a second under QEMU; the toy views are still recognised.
 RecognizerConfig fast_config() {
@@ -50,7 +43,8 @@ struct Session {
   Recognizer recognizer;
   explicit Session(const RecognizerConfig& cfg = fast_config()) {
     workspace = host::AlignedBytes(required_workspace_bytes(cfg));
-    REQUIRE(recognizer.init(&toy().db, cfg, workspace.data(), workspace.size()) == Status::kOk);
+    REQUIRE(recognizer.init(&test::shared_toy_database().db, cfg, workspace.data(), workspace.size()) ==
+            Status::kOk);
   }
   Result run(const std::vector<double>& xyz) {
     return recognizer.recognize(xyz.data(), static_cast<uint32_t>(xyz.size() / 3));
@@ -310,10 +304,10 @@ TEST_CASE("a workspace below required_workspace_bytes is kWorkspaceTooSmall") {
   constexpr size_t kTiny = 64;
   for (size_t bytes : {size_t{0}, kTiny, need / 2, need - 2 * kBufferAlignment}) {
     CAPTURE(bytes);
-    CHECK(r.init(&toy().db, cfg, ws.data(), bytes) == Status::kWorkspaceTooSmall);
+    CHECK(r.init(&test::shared_toy_database().db, cfg, ws.data(), bytes) == Status::kWorkspaceTooSmall);
     CHECK(r.recognize(static_cast<const float*>(nullptr), 0).status == Status::kNotOpen);
   }
-  CHECK(r.init(&toy().db, cfg, ws.data(), need) == Status::kOk);
+  CHECK(r.init(&test::shared_toy_database().db, cfg, ws.data(), need) == Status::kOk);
   CHECK(r.used_bytes() <= need);
 }
 
@@ -324,7 +318,7 @@ TEST_CASE("a misaligned workspace is kMisalignedBuffer") {
   Recognizer r;
   for (size_t shift : {size_t{1}, size_t{4}, size_t{8}, size_t{32}}) {
     CAPTURE(shift);
-    CHECK(r.init(&toy().db, cfg, ws.data() + shift, need) == Status::kMisalignedBuffer);
+    CHECK(r.init(&test::shared_toy_database().db, cfg, ws.data() + shift, need) == Status::kMisalignedBuffer);
   }
   CHECK(r.recognize(static_cast<const double*>(nullptr), 0).status == Status::kNotOpen);
 }
@@ -339,8 +333,8 @@ TEST_CASE("null pointers are kInvalidArgument; a recognizer never initialised is
   CHECK(r.init(nullptr, cfg, ws.data(), ws.size()) == Status::kInvalidArgument);
   const Database closed;  // never opened
   CHECK(r.init(&closed, cfg, ws.data(), ws.size()) == Status::kInvalidArgument);
-  CHECK(r.init(&toy().db, cfg, nullptr, ws.size()) == Status::kInvalidArgument);
-  REQUIRE(r.init(&toy().db, cfg, ws.data(), ws.size()) == Status::kOk);
+  CHECK(r.init(&test::shared_toy_database().db, cfg, nullptr, ws.size()) == Status::kInvalidArgument);
+  REQUIRE(r.init(&test::shared_toy_database().db, cfg, ws.data(), ws.size()) == Status::kOk);
   CHECK(r.recognize(static_cast<const float*>(nullptr), 3).status == Status::kInvalidArgument);
   CHECK(r.recognize(static_cast<const double*>(nullptr), 3).status == Status::kInvalidArgument);
 }
@@ -395,7 +389,7 @@ TEST_CASE("invalid config values are refused by required_workspace_bytes and ini
     k.patch(cfg);
     CHECK(required_workspace_bytes(cfg) == 0);
     Recognizer r;
-    CHECK(r.init(&toy().db, cfg, ws.data(), ws.size()) == Status::kInvalidArgument);
+    CHECK(r.init(&test::shared_toy_database().db, cfg, ws.data(), ws.size()) == Status::kInvalidArgument);
   }
 }
 
@@ -404,11 +398,13 @@ TEST_CASE("capacities below the database are refused at init") {
   few_models.max_models = test::kToyModels - 1u;
   host::AlignedBytes ws(required_workspace_bytes(few_models));
   Recognizer r;
-  CHECK(r.init(&toy().db, few_models, ws.data(), ws.size()) == Status::kDatabaseTooLarge);
+  CHECK(r.init(&test::shared_toy_database().db, few_models, ws.data(), ws.size()) ==
+        Status::kDatabaseTooLarge);
   RecognizerConfig small_spins;
-  small_spins.max_spin_dims = toy().db.spin_dims() - 1u;
+  small_spins.max_spin_dims = test::shared_toy_database().db.spin_dims() - 1u;
   host::AlignedBytes ws2(required_workspace_bytes(small_spins));
-  CHECK(r.init(&toy().db, small_spins, ws2.data(), ws2.size()) == Status::kInvalidArgument);
+  CHECK(r.init(&test::shared_toy_database().db, small_spins, ws2.data(), ws2.size()) ==
+        Status::kInvalidArgument);
 }
 
 // A mode outside the enum (from the C API or a corrupt settings file) must
@@ -420,5 +416,5 @@ TEST_CASE("a mode outside the enum is an invalid argument") {
   CHECK(required_workspace_bytes(cfg) == 0);
   host::AlignedBytes ws(required_workspace_bytes(RecognizerConfig()));
   Recognizer r;
-  CHECK(r.init(&toy().db, cfg, ws.data(), ws.size()) == Status::kInvalidArgument);
+  CHECK(r.init(&test::shared_toy_database().db, cfg, ws.data(), ws.size()) == Status::kInvalidArgument);
 }

@@ -62,8 +62,7 @@ std::vector<Candidate> bucket_union_sorted(const Database& db, const uint8_t* pr
 }  // namespace
 
 TEST_CASE("LSH search keeps exactly the W nearest distinct features of the query's buckets") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   Searcher s(1u << 20);
   Candidate out[128];
   uint32_t replaced = 0;  // probes whose buckets hold more than W: the list had to evict
@@ -84,8 +83,7 @@ TEST_CASE("LSH search keeps exactly the W nearest distinct features of the query
 }
 
 TEST_CASE("LSH search: a database feature finds itself first, W sorted candidates, no truncation") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   Searcher s(1u << 20);
   const uint32_t w = 20;
   Candidate out[128];
@@ -103,8 +101,7 @@ TEST_CASE("LSH search: a database feature finds itself first, W sorted candidate
 }
 
 TEST_CASE("LSH search: the scan bound truncates, and says so") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   const uint32_t f = toy.db.feature_count() / 2;
   SearchStats full;
   Candidate out[128];
@@ -130,8 +127,7 @@ TEST_CASE("LSH search: the scan bound truncates, and says so") {
 }
 
 TEST_CASE("exhaustive per-model search equals a brute-force sort by (distance, feature)") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   const uint32_t dims = toy.db.spin_dims();
   // Many probes and list sizes: the scan stops a distance early once the
   // list is full, which must never change the list.

@@ -34,11 +34,10 @@ float normal_cos(const Database& db, int64_t f, const Eigen::Vector3f& n) {
 }
 
 struct Fixture {
-  test::ToyDatabase toy;
+  const test::ToyDatabase& toy = test::shared_toy_database();
   RecognizerConfig cfg;
   LikelihoodParams field, exact;
   Fixture() {
-    REQUIRE(test::make_toy_database(&toy));
     field = make_likelihood_params(cfg, toy.db);
     exact = field;
     exact.use_field = false;

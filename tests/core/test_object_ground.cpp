@@ -222,8 +222,7 @@ TEST_CASE(
 }
 
 TEST_CASE("a toy vehicle standing on ground is recognised with the ground removed, and not without") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   const double t[3] = {500000.0, 4000000.0, 120.0};
   std::vector<double> q = test::toy_airborne_query(test::toy_vehicle_points(3, 0.05f), 0.9, t, 0.02, 3);
   std::vector<float> ground = test::plane_grid(6.0f, 0.15f);
@@ -253,8 +252,7 @@ TEST_CASE("a toy vehicle standing on ground is recognised with the ground remove
 }
 
 TEST_CASE("a cloud that is all level ground is kNotEnoughFeatures or not confident") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   std::vector<float> ground = test::plane_grid(8.0f, 0.1f);
   for (size_t i = 2; i < ground.size(); i += 3)
     ground[i] += 0.01f * static_cast<float>((i / 3) % 7);  // rough
@@ -284,8 +282,7 @@ TEST_CASE("vehicles without ground keep every point (their hood and sides are no
     }
 }
 TEST_CASE("a toy vehicle resting on ground tilted by 15 degrees is recognised with the ground removed") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   uint32_t truth_ground = 0;
   const test::Tile tile = toy_on_plane(15.0, 0.1, 0.05f, 0.02, 9, &truth_ground);
   const uint32_t n = static_cast<uint32_t>(tile.ground.size());

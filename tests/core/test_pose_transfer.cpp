@@ -27,10 +27,9 @@ constexpr uint32_t kWholeBuckets = 1u << 24;  // max_bucket_scan: no bucket is s
 // with a stride could skip toy-2's copy and keep the twin's), so the twin
 // never takes part in a doublet.
 struct Twinned {
-  test::ToyDatabase toy;
+  const test::ToyDatabase& toy = test::shared_toy_database(kTwinned);
   host::AlignedBytes ws;
   const uint32_t twin = test::kToyModels;
-  Twinned() { REQUIRE(test::make_toy_database(&toy, kTwinned)); }
 
   Result recognize(uint32_t transfer_models, RecognizerConfig cfg = RecognizerConfig{}) {
     cfg.candidates.top_w = 1;

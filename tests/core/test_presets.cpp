@@ -87,8 +87,7 @@ TEST_CASE("presets: names") {
 }
 
 TEST_CASE("presets: the flight preset recognises a toy model from its view") {
-  test::ToyDatabase toy;
-  REQUIRE(test::make_toy_database(&toy));
+  const test::ToyDatabase& toy = test::shared_toy_database();
   const RecognizerConfig cfg = preset_config(Preset::kFlight);
   host::AlignedBytes workspace(required_workspace_bytes(cfg));
   Recognizer recognizer;

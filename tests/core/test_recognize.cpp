@@ -18,12 +18,12 @@ using namespace spinhash;
 namespace {
 
 struct Session {
-  test::ToyDatabase toy;
+  const test::ToyDatabase* toy = &test::shared_toy_database();
   host::AlignedBytes workspace;
   Recognizer recognizer;
   Status init(const RecognizerConfig& cfg) {
     workspace = host::AlignedBytes(required_workspace_bytes(cfg));
-    return recognizer.init(&toy.db, cfg, workspace.data(), workspace.size());
+    return recognizer.init(&toy->db, cfg, workspace.data(), workspace.size());
   }
 };
 
@@ -42,7 +42,6 @@ Result recognize_without_heap(Recognizer& r, const std::vector<double>& q) {
 
 TEST_CASE("each toy model is recognised first from its own partial, moved, noisy view") {
   Session s;
-  REQUIRE(test::make_toy_database(&s.toy));
   for (Mode mode : {Mode::kBran, Mode::kSran, Mode::kSind}) {
     RecognizerConfig cfg;
     cfg.mode = mode;
@@ -78,7 +77,6 @@ TEST_CASE("each toy model is recognised first from its own partial, moved, noisy
 
 TEST_CASE("recognition is deterministic for a seed and reports its work") {
   Session s;
-  REQUIRE(test::make_toy_database(&s.toy));
   RecognizerConfig cfg;
   REQUIRE(s.init(cfg) == Status::kOk);
   const double t[3] = {0, 0, 0};
@@ -100,7 +98,6 @@ TEST_CASE("recognition is deterministic for a seed and reports its work") {
 
 TEST_CASE("the work budget stops recognition and says so") {
   Session s;
-  REQUIRE(test::make_toy_database(&s.toy));
   RecognizerConfig cfg;
   cfg.draws.max_hypotheses = 3;
   REQUIRE(s.init(cfg) == Status::kOk);
@@ -114,13 +111,14 @@ TEST_CASE("the work budget stops recognition and says so") {
 
 TEST_CASE("a blob built without the nearest-feature field recognises the toys as one with it") {
   Session with, without;
-  REQUIRE(test::make_toy_database(&with.toy));
   host::BuildOptions no_field;
   no_field.field.cell = 0.0f;  // spinhash build --field-cell 0
-  REQUIRE(test::make_database(test::toy_clouds(), &without.toy, no_field));
-  CHECK(with.toy.db.has_nearest_field());
-  CHECK_FALSE(without.toy.db.has_nearest_field());
-  CHECK(without.toy.bytes.size() < with.toy.bytes.size());
+  test::ToyDatabase fieldless;
+  REQUIRE(test::make_database(test::toy_clouds(), &fieldless, no_field));
+  without.toy = &fieldless;
+  CHECK(with.toy->db.has_nearest_field());
+  CHECK_FALSE(without.toy->db.has_nearest_field());
+  CHECK(without.toy->bytes.size() < with.toy->bytes.size());
   RecognizerConfig cfg;
   REQUIRE(with.init(cfg) == Status::kOk);
   REQUIRE(without.init(cfg) == Status::kOk);

@@ -59,8 +59,7 @@ const SceneObject* nearest(const SceneResult& r, double x, double y) {
 }  // namespace
 
 TEST_CASE("scene: vehicles on an 8 degree slope among clutter are found, recognised and placed") {
-  ToyDatabase toy;
-  REQUIRE(make_toy_database(&toy));
+  const ToyDatabase& toy = shared_toy_database();
   TerrainShape t;
   t.slope_deg = 8.0;
   Tile tile;
@@ -137,8 +136,7 @@ TEST_CASE("scene: a model sunk into the terrain under its pose is not confident"
   // The toy sedan 0.5 m down into a 5 degree slope, its buried part unseen:
   // recognised and placed, but its model's bottom lies 0.2 m below the
   // terrain, as a taller look-alike's does when posed to fit a scan's roof.
-  ToyDatabase toy;
-  REQUIRE(make_toy_database(&toy));
+  const ToyDatabase& toy = shared_toy_database();
   TerrainShape t;
   t.slope_deg = 5.0;
   Tile tile;
@@ -220,8 +218,7 @@ TEST_CASE(
 
 TEST_CASE(
     "scene: a window's recognitions share window_max_work; once it is spent the rest are not recognised") {
-  ToyDatabase toy;
-  REQUIRE(make_toy_database(&toy));
+  const ToyDatabase& toy = shared_toy_database();
   TerrainShape t;
   Tile tile;
   add_terrain(tile, t, 12.0, 0.12, 0.03, 5);

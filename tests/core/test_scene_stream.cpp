@@ -120,8 +120,7 @@ const Reported* vehicle_at(const std::vector<Reported>& objects, const Placed& c
 }  // namespace
 
 TEST_CASE("stream: every vehicle of a strip is reported once, named as the whole strip names it") {
-  ToyDatabase toy;
-  REQUIRE(make_toy_database(&toy));
+  const ToyDatabase& toy = shared_toy_database();
   const std::vector<double> xyz = strip_points();
   StreamRun run(&toy.db, strip_config());
   REQUIRE(run.init == Status::kOk);
@@ -177,8 +176,7 @@ TEST_CASE("stream: every vehicle of a strip is reported once, named as the whole
 }
 
 TEST_CASE("stream: windows that share a row's terrain grid name every vehicle as windows with a grid each") {
-  ToyDatabase toy;
-  REQUIRE(make_toy_database(&toy));
+  const ToyDatabase& toy = shared_toy_database();
   const std::vector<double> xyz = strip_points();
   StreamConfig own_grid = strip_config();
   own_grid.scene.max_terrain_cells = 100000;  // one 144 m window's 290 x 290 cells, not two side by side
@@ -210,8 +208,7 @@ TEST_CASE("stream: windows that share a row's terrain grid name every vehicle as
 }
 
 TEST_CASE("stream: the same answers whole, in 4 kB chunks and one point at a time") {
-  ToyDatabase toy;
-  REQUIRE(make_toy_database(&toy));
+  const ToyDatabase& toy = shared_toy_database();
   const std::vector<double> xyz = strip_points();
   StreamRun whole(&toy.db, strip_config()), chunked(&toy.db, strip_config()), single(&toy.db, strip_config());
   REQUIRE(whole.init == Status::kOk);
@@ -234,8 +231,7 @@ TEST_CASE("stream: the same answers whole, in 4 kB chunks and one point at a tim
 }
 
 TEST_CASE("stream: NaN, a GNSS glitch, late points and a push after the flush are counted, answers kept") {
-  ToyDatabase toy;
-  REQUIRE(make_toy_database(&toy));
+  const ToyDatabase& toy = shared_toy_database();
   std::vector<double> xyz = strip_points();
   StreamRun clean(&toy.db, strip_config());
   REQUIRE(clean.feed(xyz, 1000) == Status::kOk);
@@ -271,8 +267,7 @@ TEST_CASE("stream: NaN, a GNSS glitch, late points and a push after the flush ar
 }
 
 TEST_CASE("stream: a full buffer or window is kWindowOverflow, counted; a confirmed gap is a gap") {
-  ToyDatabase toy;
-  REQUIRE(make_toy_database(&toy));
+  const ToyDatabase& toy = shared_toy_database();
   const std::vector<double> xyz = strip_points();
   StreamConfig small = strip_config();
   small.max_buffered_points = 20000;  // less than 112 m of strip
@@ -321,8 +316,7 @@ TEST_CASE("stream: invalid configs are refused; the workspace does not depend on
 }
 
 TEST_CASE("stream: points pushed out of order are dropped with kPointsLate, never silently") {
-  ToyDatabase toy;
-  REQUIRE(make_toy_database(&toy));
+  const ToyDatabase& toy = shared_toy_database();
   const std::vector<double> xyz = strip_points();
   const size_t n = xyz.size() / 3;
   // The strip's second half pushed first, then its first half: the first
@@ -343,8 +337,7 @@ TEST_CASE("stream: points pushed out of order are dropped with kPointsLate, neve
 TEST_CASE(
     "stream: work follows the points: two patches 5 km apart (78 rows of cores) run their windows, not the "
     "rows between") {
-  ToyDatabase toy;
-  REQUIRE(make_toy_database(&toy));
+  const ToyDatabase& toy = shared_toy_database();
   std::vector<double> xyz = strip_points();
   const size_t n = xyz.size() / 3;
   std::vector<double> both = xyz;

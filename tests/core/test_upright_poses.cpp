@@ -30,9 +30,8 @@ constexpr float kUprightAfterRefinement = 0.57f;  // cos(55 degrees)
 float up_z(const Pose& p) { return p.rotation[8]; }
 
 struct Upright {
-  test::ToyDatabase toy;
+  const test::ToyDatabase& toy = test::shared_toy_database();
   host::AlignedBytes ws;  // the ranking lives here: kept until the next recognize
-  Upright() { REQUIRE(test::make_toy_database(&toy)); }
 
   Result recognize(const std::vector<double>& xyz, float max_tilt_deg) {
     RecognizerConfig cfg;

@@ -21,13 +21,12 @@ constexpr float kDegree = 3.14159265f / 180.0f;
 constexpr int kRefineSteps = 6;  // further least-squares steps after the first
 
 struct Fixture {
-  test::ToyDatabase toy;
+  const test::ToyDatabase& toy = test::shared_toy_database();
   RecognizerConfig cfg;
   LikelihoodParams lp;
   RigidPose truth = test::make_pose(0.7f, 0.05f, Eigen::Vector3f(3.0f, -2.0f, 1.0f));
   test::ModelFeatureQuery q;
   Fixture() {
-    REQUIRE(test::make_toy_database(&toy));
     lp = make_likelihood_params(cfg, toy.db);
     REQUIRE(lp.use_field);  // the toy blob has a field; these pin the exact search (finalisation's)
     lp.use_field = false;

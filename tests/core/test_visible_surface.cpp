@@ -36,14 +36,21 @@ std::vector<double> boxed_truck() {
   return points;
 }
 
-struct LookAlikes {
-  test::ToyDatabase toy;
-  host::AlignedBytes ws;  // the ranking lives here: kept until the next recognize
-  LookAlikes() {
+// The toys and the boxed truck, built once for the suite's cases.
+const test::ToyDatabase& look_alike_database() {
+  static test::ToyDatabase toy;
+  static const bool made = [] {
     std::vector<host::ModelCloud> clouds = test::toy_clouds();
     clouds.push_back(host::ModelCloud{"toy-2-boxed", boxed_truck()});
-    REQUIRE(test::make_database(clouds, &toy));
-  }
+    return test::make_database(clouds, &toy);
+  }();
+  REQUIRE(made);
+  return toy;
+}
+
+struct LookAlikes {
+  const test::ToyDatabase& toy = look_alike_database();
+  host::AlignedBytes ws;  // the ranking lives here: kept until the next recognize
 
   // toy_query's view, or with `airborne` toy_airborne_query's (the whole
   // top), by the full pass (the coverage of its 1 024 features: the

@@ -45,9 +45,9 @@ struct Fixture {
   Fixture() {
     const std::string meshes = dir.file("fleet");
     REQUIRE(run_spinhash(dir, "generate --count 2 -o " + shell_quoted(meshes)).exit_code == 0);
-    REQUIRE(
-        run_spinhash(dir, "build --quiet -o " + shell_quoted(db) + " " + shell_quoted(meshes)).exit_code ==
-        0);
+    REQUIRE(run_spinhash(dir,
+                         "build --quiet --no-calibration -o " + shell_quoted(db) + " " + shell_quoted(meshes))
+                .exit_code == 0);
   }
   CliRun run(const std::string& args) const { return run_spinhash(dir, args); }
 };

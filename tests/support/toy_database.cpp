@@ -1,6 +1,8 @@
 #include "support/toy_database.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "blob/blob_writer.hpp"
@@ -72,6 +74,21 @@ bool make_toy_database(ToyDatabase* out, uint32_t twin_of) {
   if (twin_of < kToyModels)
     clouds.push_back(host::ModelCloud{"toy-twin", toy_vehicle_points(twin_of, 0.05f), toy_class(twin_of)});
   return make_database(clouds, out);
+}
+
+const ToyDatabase& shared_toy_database(uint32_t twin_of) {
+  static ToyDatabase toys[kToyModels + 1];  // the last: no twin
+  static bool built[kToyModels + 1] = {};
+  const uint32_t slot = twin_of < kToyModels ? twin_of : kToyModels;
+  if (!built[slot]) {
+    if (!make_toy_database(&toys[slot], twin_of)) {
+      std::fprintf(stderr, "the toy database (twin of %u) could not be built\n",
+                   static_cast<unsigned>(twin_of));
+      std::abort();
+    }
+    built[slot] = true;
+  }
+  return toys[slot];
 }
 
 namespace {

@@ -27,6 +27,11 @@ struct ToyDatabase {
 // look-alike in the same frame).
 constexpr uint32_t kNoTwin = 0xFFFFFFFFu;
 bool make_toy_database(ToyDatabase* out, uint32_t twin_of = kNoTwin);
+
+// The same database, built once per process and shared read-only by every
+// case that reads it: building it is most of such a case's time, several
+// seconds under emulation. Aborts, saying so, if it cannot be built.
+const ToyDatabase& shared_toy_database(uint32_t twin_of = kNoTwin);
 // The toys' clouds, named "toy-0".. in index order.
 std::vector<host::ModelCloud> toy_clouds();
 // Builds, serialises (native byte order) and opens a database of `clouds`.
