@@ -77,16 +77,12 @@ bool make_toy_database(ToyDatabase* out, uint32_t twin_of) {
 }
 
 const ToyDatabase& shared_toy_database(uint32_t twin_of) {
-  static ToyDatabase toys[kToyModels + 1];  // the last: no twin
-  static bool built[kToyModels + 1] = {};
+  static ToyDatabase toys[kToyModels + 1];  // the last: no twin; empty bytes: not built yet
   const uint32_t slot = twin_of < kToyModels ? twin_of : kToyModels;
-  if (!built[slot]) {
-    if (!make_toy_database(&toys[slot], twin_of)) {
-      std::fprintf(stderr, "the toy database (twin of %u) could not be built\n",
-                   static_cast<unsigned>(twin_of));
-      std::abort();
-    }
-    built[slot] = true;
+  if (toys[slot].bytes.size() == 0 && !make_toy_database(&toys[slot], twin_of)) {
+    std::fprintf(stderr, "the toy database (twin of %u) could not be built\n",
+                 static_cast<unsigned>(twin_of));
+    std::abort();
   }
   return toys[slot];
 }
