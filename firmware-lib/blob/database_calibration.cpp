@@ -31,6 +31,7 @@ Status check_counts(const blob::CalibrationHeader& h, uint64_t size) {
 // Band edges: from 0, finite, strictly increasing; the unused ones zero.
 Status check_bands(const blob::CalibrationHeader& h) {
   if (!all_zero(h.reserved, sizeof(h.reserved))) return Status::kBlobNotZeroed;
+  if (h.clutter > blob::kClutterVehicleSized) return Status::kBlobBadCalibration;
   for (uint32_t b = h.band_count; b < blob::kMaxDensityBands; ++b)
     if (h.band_min_density[b] != 0.0f) return Status::kBlobNotZeroed;
   if (!valid_target(h.target_precision)) return Status::kBlobBadCalibration;

@@ -25,7 +25,8 @@ static_assert(offsetof(blob::Params, cloud_voxel) == 32 && offsetof(blob::Params
 static_assert(offsetof(blob::CalibrationHeader, band_min_density) == 16 &&
                   offsetof(blob::CalibrationHeader, scans_per_model) == 80 &&
                   offsetof(blob::CalibrationHeader, seed) == 96 &&
-                  offsetof(blob::CalibrationHeader, reserved) == 104,
+                  offsetof(blob::CalibrationHeader, clutter) == 104 &&
+                  offsetof(blob::CalibrationHeader, reserved) == 108,
               "calibration header layout");
 static_assert(offsetof(blob::CalibrationCell, positives) == 12 &&
                   offsetof(blob::CalibrationCell, state) == 24,

@@ -74,6 +74,7 @@ void swap_fields(blob::CalibrationHeader* h, bool swap) {
   swap_in_place(&h->clutter_scans, swap);
   swap_in_place(&h->scans_per_left_out, swap);
   swap_in_place(&h->seed, swap);
+  swap_in_place(&h->clutter, swap);
 }
 
 void swap_fields(blob::CalibrationPass* p, bool swap) {

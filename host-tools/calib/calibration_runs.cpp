@@ -109,8 +109,8 @@ bool run_clutter(Shared& sh, PassSessions& known, uint32_t c, std::vector<host::
                  std::string* error) {
   const uint32_t object = static_cast<uint32_t>(sh.meshes.size()) + c;
   std::vector<double> xyz;
-  if (!scan_clutter(static_cast<ClutterKind>(c % kClutterKinds), draw_scan(sh.settings.seed, object, 0), &xyz,
-                    error))
+  const uint32_t kinds = clutter_kinds_scanned(sh.settings.clutter);
+  if (!scan_clutter(static_cast<ClutterKind>(c % kinds), draw_scan(sh.settings.seed, object, 0), &xyz, error))
     return false;
   known.recognize(host::RunKind::kClutter, xyz, -1, 0u, out);
   return true;
@@ -268,6 +268,7 @@ bool run_calibration(const host::BlobContent& full, const std::vector<const host
   summary->drawn.models_left_out = static_cast<uint32_t>(out.size());
   summary->drawn.clutter_scans = sh.clutter;
   summary->drawn.seed = settings.seed;
+  summary->drawn.clutter = settings.clutter;
   summary->jobs = jobs;
   summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return true;

@@ -33,6 +33,10 @@ struct RunSettings {
   uint32_t left_out_scans = 0;  // scans of each model left out; 0: left_out_scans()
   uint32_t max_left_out = 64;   // models recognised left out (all of them when there are fewer)
   uint32_t clutter_scans = 0;   // 0: default_clutter_scans()
+  // The kinds of clutter scanned (blob::CalibrationClutter): vehicle-sized
+  // clutter holds the vehicle levels' flags off sheds, containers, bushes
+  // and heaps, and costs them many right answers (docs/decisions/018).
+  uint32_t clutter = blob::kClutterTiles;
   uint64_t seed = 1;            // of every draw
   uint32_t jobs = 0;            // threads; 0: every hardware thread
   RecognizerConfig recognizer;  // the passes' settings: the full pass's, and first_* the first pass's
@@ -51,7 +55,7 @@ uint32_t default_scans_per_model(uint32_t models);
 // that the left-out models give about kUnknownRunsWanted runs.
 uint32_t left_out_scans(uint32_t scans_per_model, uint32_t left_out);
 // Clutter scans when none is asked for: an eighth of the unknown runs, 32
-// to 256, spread over the four kinds.
+// to 256, spread over the kinds asked for.
 uint32_t default_clutter_scans(uint32_t unknown_runs);
 
 // The models left out: all when they are at most `max`, else `max` of them

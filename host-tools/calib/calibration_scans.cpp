@@ -7,6 +7,7 @@
 #include "scan/scan_simulator.hpp"
 #include "scan/scene_layout.hpp"
 #include "scan/scene_terrain.hpp"
+#include "spinhash/blob_format.hpp"
 #include "util/angles.hpp"
 
 namespace spinhash::calib {
@@ -65,8 +66,22 @@ bool scan_vehicle(const host::Mesh& mesh, const ScanDraw& d, std::vector<double>
   return true;
 }
 
+uint32_t clutter_kinds_scanned(uint32_t clutter) {
+  return clutter == blob::kClutterVehicleSized ? kClutterKinds : static_cast<uint32_t>(ClutterKind::kShed);
+}
+
+const char* calibration_clutter_word(uint32_t clutter) {
+  return clutter == blob::kClutterVehicleSized ? "vehicle-sized" : "tiles";
+}
+
+const char* calibration_clutter_kinds(uint32_t clutter) {
+  return clutter == blob::kClutterVehicleSized
+             ? "trees, walls, crates, buildings, sheds, freight containers, bushes, heaps"
+             : "trees, walls, crates, buildings";
+}
+
 const char* clutter_name(ClutterKind kind) {
-  constexpr const char* kNames[] = {"tree", "wall", "crate", "building"};
+  constexpr const char* kNames[] = {"tree", "wall", "crate", "building", "shed", "container", "bush", "heap"};
   return kNames[static_cast<uint32_t>(kind) % kClutterKinds];
 }
 
@@ -85,6 +100,10 @@ bool scan_clutter(ClutterKind kind, const ScanDraw& d, std::vector<double>* xyz,
     case ClutterKind::kWall: p = host::make_wall(terrain, at, yaw, &rng); break;
     case ClutterKind::kCrate: p = host::make_crate(terrain, at, yaw, &rng); break;
     case ClutterKind::kBuilding: p = host::make_building(terrain, at, yaw, &rng); break;
+    case ClutterKind::kShed: p = host::make_shed(terrain, at, yaw, &rng); break;
+    case ClutterKind::kContainer: p = host::make_container(terrain, at, yaw, &rng); break;
+    case ClutterKind::kBush: p = host::make_bush(terrain, at, yaw, &rng); break;
+    case ClutterKind::kHeap: p = host::make_heap(terrain, at, yaw, &rng); break;
   }
   p.mesh.name = clutter_name(kind);
   const host::Mesh ground = host::ground_square_around(p.mesh, kGroundMargin, 0.0);  // the flat terrain

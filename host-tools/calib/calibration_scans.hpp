@@ -43,9 +43,27 @@ ScanDraw draw_scan(uint64_t seed, uint32_t object, uint32_t index);
 // tilted by the slope. false with *error when the simulator fails.
 bool scan_vehicle(const host::Mesh& mesh, const ScanDraw& d, std::vector<double>* xyz, std::string* error);
 
-// The scene simulator's clutter (scene_clutter.cpp).
-enum class ClutterKind : uint8_t { kTree = 0, kWall = 1, kCrate = 2, kBuilding = 3 };
-constexpr uint32_t kClutterKinds = 4;
+// The scene simulator's clutter (scene_clutter.cpp): what tiles hold, and
+// non-vehicles of a vehicle's size and bulk, whose evidence the vehicle
+// levels' thresholds must stay above.
+enum class ClutterKind : uint8_t {
+  kTree = 0,
+  kWall = 1,
+  kCrate = 2,
+  kBuilding = 3,
+  kShed = 4,
+  kContainer = 5,
+  kBush = 6,
+  kHeap = 7,
+};
+constexpr uint32_t kClutterKinds = 8;
+// The kinds a calibration scans in turn, the first of ClutterKind's:
+// 4 for blob::kClutterTiles, all 8 for blob::kClutterVehicleSized.
+uint32_t clutter_kinds_scanned(uint32_t clutter);
+// blob::CalibrationClutter as a word ("tiles", "vehicle-sized": the build's
+// --calibration-clutter and `spinhash info`'s JSON), and the kinds it names.
+const char* calibration_clutter_word(uint32_t clutter);
+const char* calibration_clutter_kinds(uint32_t clutter);
 const char* clutter_name(ClutterKind kind);
 
 // A piece of clutter of `kind` drawn from `seed`, standing on level ground

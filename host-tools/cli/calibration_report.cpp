@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "calib/calibration_scans.hpp"
 #include "cli/json_line.hpp"
 #include "cli/report_keys.hpp"
 
@@ -76,9 +77,9 @@ void print_calibration(const Calibration& c) {
   }
   std::printf(
       "calibration   target precision %g: %u scans per model, %u models left out (%u scans each), %u clutter "
-      "scans, seed %llu\n",
+      "scans (%s), seed %llu\n",
       static_cast<double>(h.target_precision), h.scans_per_model, h.models_left_out, h.scans_per_left_out,
-      h.clutter_scans, static_cast<unsigned long long>(h.seed));
+      h.clutter_scans, calib::calibration_clutter_kinds(h.clutter), static_cast<unsigned long long>(h.seed));
   std::printf("  %-6s %-8s %-12s %10s %9s %7s %6s %6s %7s\n", "pass", "level", "points/m2", "threshold",
               "precision", "recall", "right", "wrong", "flagged");
   for (uint32_t p = 0; p < c.pass_count(); ++p) {
@@ -119,6 +120,7 @@ std::string calibration_json(const Calibration& c) {
                       json_member(k::kScansPerModel, num(h.scans_per_model)),
                       json_member(k::kModelsLeftOut, num(h.models_left_out)),
                       json_member(k::kClutterScans, num(h.clutter_scans)),
+                      json_member(k::kClutter, json_string(calib::calibration_clutter_word(h.clutter))),
                       json_member(k::kScansPerLeftOut, num(h.scans_per_left_out)),
                       json_member(k::kSeed, num(h.seed)), json_member(k::kBands, json_array(bands)),
                       json_member(k::kPasses, json_array(passes))});

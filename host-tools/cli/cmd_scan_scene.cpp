@@ -185,6 +185,19 @@ void add_scan_scene_command(CLI::App& app, int* exit_code) {
   cmd->add_option("--crates", o.crates, "crates (~1 m)")
       ->check(CLI::Range(0u, host::kMaxSceneClutter))
       ->capture_default_str();
+  // Non-vehicles of a vehicle's size, none by default.
+  const struct {
+    const char* flag;
+    uint32_t* count;
+    const char* help;
+  } sized[] = {{"--sheds", &o.sheds, "sheds and single garages (2.4-6.5 m, gabled)"},
+               {"--containers", &o.containers, "freight containers (ISO 20 and 40 ft: 6.1 or 12.2 m)"},
+               {"--bushes", &o.bushes, "bushes and hedges (1.5-6 m)"},
+               {"--heaps", &o.heaps, "heaps of earth or covered loads (2.5-8 m)"}};
+  for (const auto& kind : sized)
+    cmd->add_option(kind.flag, *kind.count, kind.help)
+        ->check(CLI::Range(0u, host::kMaxSceneClutter))
+        ->capture_default_str();
   cmd->add_option("--views", o.views, "oblique viewpoints (elevation 45-60 degrees, range 100-200 m)")
       ->check(CLI::Range(1u, host::kMaxScanViews))
       ->capture_default_str();

@@ -94,6 +94,7 @@ bool recheck_calibration(const VerifyArgs& a, const Database& db, const std::vec
   runs.max_left_out = a.calibration_left_out;
   runs.clutter_scans = std::max(16u, a.calibration_left_out);
   runs.seed = db.calibration().header().seed + 1u;
+  runs.clutter = db.calibration().header().clutter;  // the clutter the flags were fitted against
   runs.recognizer = a.config;
   runs.quiet = a.quiet;
   std::vector<host::CalibrationRun> records;

@@ -41,12 +41,13 @@ constexpr const char* kName = "name";
 constexpr const char* kClass = "class";  // the model's vehicle class (vehicle_classes.h)
 constexpr const char* kGroup = "group";  // its class's group (vehicle_classes.h)
 constexpr const char* kExtent = "extent";
-// object: target_precision, scans_per_model, models_left_out, clutter_scans, seed, bands, passes
+// object: target_precision, scans_per_model, models_left_out, clutter_scans, clutter, seed, bands, passes
 constexpr const char* kCalibration = "calibration";
 constexpr const char* kTargetPrecision = "target_precision";
 constexpr const char* kScansPerModel = "scans_per_model";
 constexpr const char* kModelsLeftOut = "models_left_out";
 constexpr const char* kClutterScans = "clutter_scans";
+constexpr const char* kClutter = "clutter";  // "tiles" or "vehicle-sized" (blob::CalibrationClutter)
 constexpr const char* kScansPerLeftOut = "scans_per_left_out";
 constexpr const char* kSeed = "seed";
 constexpr const char* kBands = "bands";    // the density bands' lower edges, points per m^2
@@ -102,6 +103,7 @@ constexpr const char* kAll[] = {kFormat,
                                 kScansPerModel,
                                 kModelsLeftOut,
                                 kClutterScans,
+                                kClutter,
                                 kScansPerLeftOut,
                                 kSeed,
                                 kBands,

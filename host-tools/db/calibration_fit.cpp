@@ -234,6 +234,7 @@ bool fit_calibration(const std::vector<CalibrationRun>& runs, const FitOptions& 
   c.header.clutter_scans = provenance.clutter_scans;
   c.header.scans_per_left_out = provenance.scans_per_left_out;
   c.header.seed = provenance.seed;
+  c.header.clutter = provenance.clutter;
   for (uint32_t p = 0; p < pass_count; ++p) {
     const std::vector<CalibrationRun>& pass_runs = by_pass[p];
     if (pass_runs.empty() && p != static_cast<uint32_t>(AnswerPass::kFull)) {

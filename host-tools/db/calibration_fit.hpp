@@ -67,6 +67,7 @@ struct FitProvenance {
   uint32_t models_left_out = 0;
   uint32_t clutter_scans = 0;
   uint64_t seed = 0;
+  uint32_t clutter = blob::kClutterTiles;  // blob::CalibrationClutter
 };
 
 // A section with a fitted table for the full pass and every other pass the

@@ -1,5 +1,10 @@
 #include "flags/build_flags.hpp"
 
+#include <map>
+#include <string>
+
+#include "calib/calibration_scans.hpp"
+#include "spinhash/blob_format.hpp"
 #include "spinhash/limits.hpp"
 
 namespace spinhash::flags {
@@ -37,6 +42,15 @@ void add_calibration_flags(CLI::App* cmd, pipeline::CalibrationSettings* c) {
                   "there are more)")
       ->check(CLI::Range(0u, kMaxModels))
       ->capture_default_str();
+  std::map<std::string, uint32_t> clutter;
+  for (const uint32_t c : {blob::kClutterTiles, blob::kClutterVehicleSized})
+    clutter[calib::calibration_clutter_word(c)] = c;
+  cmd->add_option("--calibration-clutter", c->runs.clutter,
+                  "clutter the flags are fitted against: tiles (trees, walls, crates, buildings) or "
+                  "vehicle-sized (also sheds, freight containers, bushes and heaps: far fewer flags on "
+                  "those, and on vehicles, most of all at the group level of sparse scans)")
+      ->transform(CLI::CheckedTransformer(clutter, CLI::ignore_case))
+      ->default_str(calib::calibration_clutter_word(blob::kClutterTiles));
   cmd->add_option("--calibration-seed", c->runs.seed, "seed of the calibration scans")->capture_default_str();
   cmd->add_option("--jobs", c->runs.jobs, "threads of the calibration (0: every hardware thread)")
       ->check(CLI::Range(0u, 1024u))

@@ -156,9 +156,10 @@ std::string validate_scene_options(const SceneOptions& o) {
   if (!(o.curb_height >= 0.0 && o.curb_height <= 1.0)) return "curb height must be in [0, 1] m";
   if (o.vehicles > kMaxSceneVehicles || o.unknown_vehicles > kMaxSceneVehicles)
     return "at most " + std::to_string(kMaxSceneVehicles) + " vehicles and unknown vehicles each";
-  if (o.trees > kMaxSceneClutter || o.buildings > kMaxSceneClutter || o.walls > kMaxSceneClutter ||
-      o.crates > kMaxSceneClutter)
-    return "at most " + std::to_string(kMaxSceneClutter) + " trees, buildings, walls and crates each";
+  for (const uint32_t n : {o.trees, o.buildings, o.walls, o.crates, o.sheds, o.containers, o.bushes, o.heaps})
+    if (n > kMaxSceneClutter)
+      return "at most " + std::to_string(kMaxSceneClutter) +
+             " trees, buildings, walls, crates, sheds, containers, bushes and heaps each";
   if (o.views == 0 || o.views > kMaxScanViews) return "views must be in 1.." + std::to_string(kMaxScanViews);
   if (!(o.point_spacing > 0.0 && o.point_spacing <= kMaxSpacing)) return "point spacing must be in (0, 10] m";
   if (!(o.noise_sigma >= 0.0 && o.noise_sigma <= kMaxNoiseSigma)) return "noise sigma must be in [0, 10] m";

@@ -19,7 +19,7 @@ namespace spinhash::host {
 
 constexpr double kMaxSceneSize = 500.0;       // m, tile side
 constexpr uint32_t kMaxSceneVehicles = 64;    // vehicles and unknown vehicles, each
-constexpr uint32_t kMaxSceneClutter = 64;     // trees, crates, buildings, walls, each
+constexpr uint32_t kMaxSceneClutter = 64;     // of each kind of non-vehicle
 constexpr double kMaxSceneSlopeDeg = 30.0;    // terrain plane
 constexpr double kSceneElevationMinDeg = 45;  // viewpoints: elevation drawn in [min, max]
 constexpr double kSceneElevationMaxDeg = 60;
@@ -44,6 +44,12 @@ struct SceneOptions {
   uint32_t buildings = 1;
   uint32_t walls = 1;
   uint32_t crates = 3;
+  // Non-vehicles of a vehicle's size and bulk, none unless asked for: the
+  // hardest for the vehicle level (a freight container is a bus's box).
+  uint32_t sheds = 0;
+  uint32_t containers = 0;
+  uint32_t bushes = 0;
+  uint32_t heaps = 0;
   uint32_t views = 4;
   // Point spacing on the ground of the merged views (m): each view's rays are
   // spaced so that `views` views together give 1 / spacing^2 points per m^2
@@ -54,9 +60,9 @@ struct SceneOptions {
   double offset[3] = {512000.0, 5400000.0, 300.0};  // added to every output coordinate (UTM-like)
 };
 
-// Tiles hold vehicles, trees, buildings, walls and crates; sheds,
-// containers, bushes and heaps are non-vehicles of a vehicle's size, scanned
-// alone (make_shed() and the others).
+// Tiles hold vehicles, trees, buildings, walls and crates, and when asked
+// sheds, freight containers, bushes and heaps: non-vehicles of a vehicle's
+// size (the worlds experiment also scans them alone).
 enum class SceneObjectKind : uint8_t {
   kVehicle,
   kUnknownVehicle,

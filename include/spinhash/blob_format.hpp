@@ -147,6 +147,13 @@ inline uint32_t bucket_of(uint64_t key, uint32_t table, uint32_t buckets) {
 constexpr uint32_t kMaxCalibrationPasses = 4;
 constexpr uint32_t kMaxDensityBands = 16;
 
+// The clutter the calibration scanned (CalibrationHeader::clutter): each
+// level's flag holds its precision against that clutter, not against others.
+enum CalibrationClutter : uint32_t {
+  kClutterTiles = 0,         // trees, walls, crates and buildings: what tiles hold
+  kClutterVehicleSized = 1,  // those, and sheds, freight containers, bushes and heaps
+};
+
 // 128 bytes.
 struct CalibrationHeader {
   uint32_t pass_count;     // 1..kMaxCalibrationPasses
@@ -160,10 +167,11 @@ struct CalibrationHeader {
   float band_min_density[kMaxDensityBands];
   uint32_t scans_per_model;     // calibration scans of each model (0: not fitted)
   uint32_t models_left_out;     // models recognised with a database that lacks them
-  uint32_t clutter_scans;       // scans of trees, walls, crates and buildings
+  uint32_t clutter_scans;       // scans of clutter, its kinds in turn
   uint32_t scans_per_left_out;  // scans of each model left out (at least scans_per_model)
   uint64_t seed;                // of the calibration scans
-  uint8_t reserved[24];         // zero
+  uint32_t clutter;             // CalibrationClutter: the kinds scanned
+  uint8_t reserved[20];         // zero
 };
 static_assert(sizeof(CalibrationHeader) == 128, "calibration header is 128 bytes");
 

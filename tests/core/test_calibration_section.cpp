@@ -62,6 +62,7 @@ host::CalibrationContent fitted_calibration() {
   c.header.models_left_out = 3;
   c.header.clutter_scans = 8;
   c.header.seed = 0x0102030405060708ull;
+  c.header.clutter = blob::kClutterVehicleSized;
   c.passes.push_back(blob::CalibrationPass{0u, blob::kSourceFitted, 40u, 0.0f});
   const blob::CalibrationCell cells[] = {
       fitted(-2.0f, 0.96f, 0.7f),    fitted(-2.5f, 0.97f, 0.8f),    fitted(-2.5f, 0.99f, 0.9f),   // vehicle
@@ -238,6 +239,8 @@ TEST_CASE("calibration counts, bands, passes and cells out of their rules are kB
       {"a band edge NaN", [](BlobPatch& b) { header(b).band_min_density[1] = kNaN; }},
       {"a band edge infinite", [](BlobPatch& b) { header(b).band_min_density[2] = kInf; }},
       {"band edges not increasing", [](BlobPatch& b) { header(b).band_min_density[2] = 20.0f; }},
+      {"clutter of no known kinds",
+       [](BlobPatch& b) { header(b).clutter = blob::kClutterVehicleSized + 1u; }},
       {"a pass of another id", [](BlobPatch& b) { pass(b).pass = 1; }},
       {"a pass of no known source", [](BlobPatch& b) { pass(b).source = 2; }},
       {"a pass's own target NaN", [](BlobPatch& b) { pass(b).target_precision = kNaN; }},
@@ -314,7 +317,8 @@ TEST_CASE("a pass's own target replaces the header's: its cells reach it, not th
 
 TEST_CASE("non-zero reserved calibration bytes and unused band edges are kBlobNotZeroed") {
   const Corruption cases[] = {
-      {"header reserved, last byte", [](BlobPatch& b) { header(b).reserved[23] = 1; }},
+      {"header reserved, last byte",
+       [](BlobPatch& b) { header(b).reserved[sizeof(blob::CalibrationHeader::reserved) - 1u] = 1; }},
       {"an unused band edge", [](BlobPatch& b) { header(b).band_min_density[kBands] = 500.0f; }},
       {"cell reserved", [](BlobPatch& b) { cell(b, 4, 2).reserved = 0x80000000u; }},
   };

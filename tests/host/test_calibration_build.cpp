@@ -1,6 +1,7 @@
 // spinhash build's calibration end to end on a small generated fleet: the
 // blob holds a fitted table that info prints for every level and band, the
-// same whatever the thread count, and verify re-runs it.
+// same whatever the thread count, the clutter it was fitted against, and
+// verify re-runs it.
 #include <doctest/doctest.h>
 
 #include <cstdio>
@@ -56,9 +57,30 @@ TEST_CASE("build calibrates every level; info prints each band; the blob does no
   CHECK(contains(json.out, "{\"pass\":\"first\",\"source\":\"fitted\",\"target_precision\":0.99,"));
   CHECK(contains(json.out, "{\"pass\":\"agree\",\"source\":\"fitted\",\"target_precision\":0.98,"));
   CHECK(contains(json.out, "\"bands\":[0,15,30,60,120,240]"));
+  CHECK(contains(json.out, "\"clutter\":\"tiles\""));
+  CHECK(contains(info.out, " clutter scans (trees, walls, crates, buildings), seed 5"));
   for (uint32_t l = 1; l <= spinhash::kCalibratedLevels; ++l)
     CHECK(
         contains(json.out, std::string("{\"level\":\"") + spinhash::answer_level_name(l) + "\",\"cells\":["));
+
+  // Fitted against vehicle-sized clutter too: the blob says so, and verify
+  // re-runs its calibration against the same kinds (the last lines below).
+  const std::string sized = dir.file("sized.shdb");
+  const CliRun s =
+      run_spinhash(dir, std::string("build ") + kSmall + "--calibration-clutter vehicle-sized -o " +
+                            shell_quoted(sized) + " " + shell_quoted(meshes));
+  INFO(s.err);
+  REQUIRE(s.exit_code == 0);
+  CHECK(read_bytes(sized) != read_bytes(one));
+  CHECK(contains(run_spinhash(dir, "info --format json " + shell_quoted(sized)).out,
+                 "\"clutter\":\"vehicle-sized\""));
+  CHECK(contains(run_spinhash(dir, "info " + shell_quoted(sized)).out,
+                 "freight containers, bushes, heaps), seed 5"));
+  const CliRun unknown =
+      run_spinhash(dir, "build --calibration-clutter boxes -o " + shell_quoted(dir.file("no.shdb")) + " " +
+                            shell_quoted(meshes));
+  CHECK(unknown.exit_code == 2);
+  CHECK(contains(unknown.err, "--calibration-clutter"));
 
   // A blob built without calibration says so; verify re-runs a fitted one.
   const std::string bare = dir.file("bare.shdb");
@@ -68,7 +90,7 @@ TEST_CASE("build calibrates every level; info prints each band; the blob does no
   CHECK(contains(run_spinhash(dir, "info " + shell_quoted(bare)).out, "calibration   none"));
   const CliRun verify =
       run_spinhash(dir, "verify --quiet --queries 1 --calibration-left-out 2 --format json " +
-                            shell_quoted(one) + " " + shell_quoted(meshes));
+                            shell_quoted(sized) + " " + shell_quoted(meshes));
   INFO(verify.err);
   CHECK(contains(verify.out, "\"calibration\":\"fitted\""));
   CHECK(contains(verify.out, "{\"pass\":\"full\",\"level\":\"model\",\"flagged\":"));

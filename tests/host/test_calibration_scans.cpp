@@ -1,5 +1,6 @@
 // The calibration's clutter scans (host-tools/calib/calibration_scans): every
-// kind has its own name, scans to points and scans the same from the same draw.
+// kind has its own name, scans to points and scans the same from the same
+// draw; the vehicle-sized kinds are scanned only when the build asks.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "calib/calibration_scans.hpp"
+#include "spinhash/blob_format.hpp"
 
 using namespace spinhash;
 
@@ -63,4 +65,19 @@ TEST_CASE("calibration clutter: the same draw scans to the same points") {
     REQUIRE(calib::scan_clutter(kind, plain_draw(3), &b, &error));
     CHECK(a == b);
   }
+}
+
+TEST_CASE("calibration clutter: the tiles' four kinds first, the vehicle-sized ones only when asked") {
+  CHECK(calib::clutter_kinds_scanned(blob::kClutterTiles) == 4u);
+  CHECK(calib::clutter_kinds_scanned(blob::kClutterVehicleSized) == calib::kClutterKinds);
+  const char* tiles[] = {"tree", "wall", "crate", "building"};
+  for (uint32_t k = 0; k < 4u; ++k)
+    CHECK(std::string(calib::clutter_name(static_cast<calib::ClutterKind>(k))) == tiles[k]);
+  CHECK(std::string(calib::calibration_clutter_word(blob::kClutterTiles)) == "tiles");
+  CHECK(std::string(calib::calibration_clutter_word(blob::kClutterVehicleSized)) == "vehicle-sized");
+  CHECK(
+      std::string(calib::calibration_clutter_kinds(blob::kClutterVehicleSized)).find("freight containers") !=
+      std::string::npos);
+  CHECK(std::string(calib::calibration_clutter_kinds(blob::kClutterTiles)).find("containers") ==
+        std::string::npos);
 }

@@ -335,6 +335,43 @@ TEST_CASE("scan-scene: every kind is there and no two footprints intersect (crow
   }
 }
 
+TEST_CASE("scan-scene: vehicle-sized clutter when asked, placed after the rest, which draws as without it") {
+  sh::SceneOptions plain;
+  plain.size = 50.0;
+  sh::SceneOptions o = plain;
+  o.sheds = 1;
+  o.containers = 2;
+  o.bushes = 1;
+  o.heaps = 1;
+  for (uint64_t seed = 1; seed <= 3; ++seed) {
+    o.seed = plain.seed = seed;
+    const sh::SceneScan s = sh::simulate_scene(fleet(), {}, o), p = sh::simulate_scene(fleet(), {}, plain);
+    REQUIRE(s.ok());
+    REQUIRE(p.ok());
+    uint32_t kinds[10] = {};
+    for (const sh::SceneTruth& t : s.objects) ++kinds[static_cast<int>(t.kind)];
+    CHECK(kinds[static_cast<int>(sh::SceneObjectKind::kShed)] == 1);
+    CHECK(kinds[static_cast<int>(sh::SceneObjectKind::kContainer)] == 2);
+    CHECK(kinds[static_cast<int>(sh::SceneObjectKind::kBush)] == 1);
+    CHECK(kinds[static_cast<int>(sh::SceneObjectKind::kHeap)] == 1);
+    REQUIRE(s.objects.size() == p.objects.size() + 5u);
+    for (std::size_t a = 0; a < s.objects.size(); ++a) {
+      if (a < p.objects.size()) {  // the same layout before them (hits differ: they shadow some)
+        CHECK(s.objects[a].kind == p.objects[a].kind);
+        CHECK(s.objects[a].pose.isApprox(p.objects[a].pose));
+      }
+      for (std::size_t b = a + 1; b < s.objects.size(); ++b) {
+        const sh::SceneTruth &ta = s.objects[a], &tb = s.objects[b];
+        if (ta.kind == sh::SceneObjectKind::kTree || tb.kind == sh::SceneObjectKind::kTree) continue;
+        CHECK_MESSAGE(!truth_overlap(ta, tb), "seed " << seed << ": objects " << a << " and " << b);
+      }
+    }
+    for (std::size_t a = p.objects.size(); a < s.objects.size(); ++a) CHECK(s.objects[a].points > 0u);
+  }
+  o.containers = sh::kMaxSceneClutter + 1u;
+  CHECK(sh::validate_scene_options(o).find("containers") != std::string::npos);
+}
+
 TEST_CASE("scan-scene: the same seed gives the same tile; another seed another") {
   sh::SceneOptions o;
   o.size = 30.0;
@@ -421,6 +458,15 @@ TEST_CASE("spinhash scan-scene: LAS with ground classified 2 and a truth CSV; ba
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + 5 + 3 + 1 + 1 + 3);
   for (const char* kind : {"\nvehicle,", "\ntree,", "\nbuilding,", "\nwall,", "\ncrate,"})
     CHECK(contains(csv, kind));
+  CHECK_FALSE(contains(csv, "\ncontainer,"));  // vehicle-sized clutter only when asked
+  r = run_spinhash(dir, "scan-scene " + shell_quoted(meshes) + " -o " + shell_quoted(dir.file("sized.las")) +
+                            " --size 50 --sheds 1 --containers 1 --bushes 1 --heaps 1 --seed 3");
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  const std::string sized = spinhash::host::test::read_bytes(dir.file("sized.las.truth.csv"));
+  for (const char* kind : {"\nshed,", "\ncontainer,", "\nbush,", "\nheap,"}) CHECK(contains(sized, kind));
+  r = run_spinhash(dir, "scan-scene " + shell_quoted(meshes) + " -o " + shell_quoted(las) + " --heaps 65");
+  CHECK(r.exit_code == 2);
+  CHECK(contains(r.err, "heaps"));
 
   r = run_spinhash(dir, "scan-scene " + shell_quoted(meshes) + " -o " + shell_quoted(las) + " --size 0");
   CHECK(r.exit_code == 2);
