@@ -35,7 +35,7 @@ struct RunSettings {
   uint32_t clutter_scans = 0;   // 0: default_clutter_scans()
   // The kinds of clutter scanned (blob::CalibrationClutter): vehicle-sized
   // clutter holds the vehicle levels' flags off sheds, containers, bushes
-  // and heaps, and costs them many right answers (docs/decisions/018).
+  // and heaps, and costs them many right answers (docs/decisions/017).
   uint32_t clutter = blob::kClutterTiles;
   uint64_t seed = 1;            // of every draw
   uint32_t jobs = 0;            // threads; 0: every hardware thread
