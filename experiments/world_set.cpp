@@ -129,18 +129,13 @@ void add_scene_clutter(uint32_t per_kind, uint64_t seed, WorldSet* set) {
 }
 
 void add_vehicle_sized_clutter(uint32_t per_kind, uint64_t seed, WorldSet* set) {
-  using Make =
-      host::PlacedObject (*)(const host::Terrain&, const Eigen::Vector2d&, double, host::SeededRandom*);
-  const std::pair<const char*, Make> kinds[] = {{"shed", host::make_shed},
-                                                {"container", host::make_container},
-                                                {"bush", host::make_bush},
-                                                {"heap", host::make_heap}};
   const host::Terrain terrain(host::level_ground());
   host::SeededRandom rng(host::mix_seed(seed, kVehicleSizedStream));
   for (uint32_t i = 0; i < per_kind; ++i)
-    for (const auto& [kind, make] : kinds) {
-      host::PlacedObject p = make(terrain, Eigen::Vector2d::Zero(), 0.0, &rng);
-      set->clutter.push_back(ClutterObject{"vehicle-sized", kind, std::string(kind) + "-" + std::to_string(i),
+    for (const host::SizedClutter& sized : host::kSizedClutter) {
+      host::PlacedObject p = sized.make(terrain, Eigen::Vector2d::Zero(), 0.0, &rng);
+      const std::string kind = host::scene_object_kind_name(sized.kind);
+      set->clutter.push_back(ClutterObject{"vehicle-sized", kind, kind + "-" + std::to_string(i),
                                            std::move(p.mesh), terrain.height(0.0, 0.0)});
     }
 }

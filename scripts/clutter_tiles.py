@@ -55,10 +55,10 @@ def score(answers, truth, models, counts):
             m = models[t["model"]]
             truth_of_level = {"vehicle": True, "group": m["group"], "class": m["class"], "model": t["model"]}
         c["flagged"] += any(a["levels"][level]["confident"] for level in LEVELS)
+        named = {"vehicle": True, "group": a.get("group"), "class": a.get("class"), "model": a.get("model")}
         for level in LEVELS:
             if not a["levels"][level]["confident"]:
                 continue
-            named = {"vehicle": True, "group": a.get("group"), "class": a.get("class"), "model": a.get("model")}
             right = bool(truth_of_level) and named[level] == truth_of_level[level]
             c[level + (" right" if right else " wrong")] += 1
 

@@ -286,4 +286,9 @@ PlacedObject make_heap(const Terrain& t, const Eigen::Vector2d& at, double yaw, 
   return finish(SceneObjectKind::kHeap, std::move(m), frame_pose(at, d.ground.lo, yaw), d.base, t);
 }
 
+const SizedClutter kSizedClutter[kSizedClutterKinds] = {{SceneObjectKind::kShed, make_shed},
+                                                        {SceneObjectKind::kContainer, make_container},
+                                                        {SceneObjectKind::kBush, make_bush},
+                                                        {SceneObjectKind::kHeap, make_heap}};
+
 }  // namespace spinhash::host

@@ -398,19 +398,13 @@ bool lay_out_scene(const std::vector<Mesh>& vehicles, const std::vector<Mesh>& u
     if (!lay.place("unknown vehicle", u, make, error)) return false;
   }
   // Vehicle-sized clutter last: a tile without it draws as it always did.
-  using Maker = PlacedObject (*)(const Terrain&, const Eigen::Vector2d&, double, SeededRandom*);
-  const struct {
-    const char* name;
-    uint32_t count;
-    Maker make;
-  } sized[] = {{"shed", o.sheds, make_shed},
-               {"container", o.containers, make_container},
-               {"bush", o.bushes, make_bush},
-               {"heap", o.heaps, make_heap}};
-  for (const auto& kind : sized) {
-    for (uint32_t c = 0; c < kind.count; ++c) {
+  const uint32_t counts[kSizedClutterKinds] = {o.sheds, o.containers, o.bushes, o.heaps};
+  for (uint32_t k = 0; k < kSizedClutterKinds; ++k) {
+    const SizedClutter& sized = kSizedClutter[k];
+    for (uint32_t c = 0; c < counts[k]; ++c) {
       if (!lay.place(
-              kind.name, c, [&] { return kind.make(t, lay.random_xy(), lay.random_yaw(), rng); }, error))
+              scene_object_kind_name(sized.kind), c,
+              [&] { return sized.make(t, lay.random_xy(), lay.random_yaw(), rng); }, error))
         return false;
     }
   }

@@ -59,6 +59,16 @@ PlacedObject make_shed(const Terrain& terrain, const Eigen::Vector2d& at, double
 PlacedObject make_container(const Terrain& terrain, const Eigen::Vector2d& at, double yaw, SeededRandom* rng);
 PlacedObject make_bush(const Terrain& terrain, const Eigen::Vector2d& at, double yaw, SeededRandom* rng);
 PlacedObject make_heap(const Terrain& terrain, const Eigen::Vector2d& at, double yaw, SeededRandom* rng);
+// Those four with their makers, in the order tiles place them (SceneOptions
+// sheds, containers, bushes, heaps) and the worlds experiment scans them;
+// each is named by scene_object_kind_name(kind).
+using ClutterMaker = PlacedObject (*)(const Terrain&, const Eigen::Vector2d&, double, SeededRandom*);
+struct SizedClutter {
+  SceneObjectKind kind;
+  ClutterMaker make;
+};
+constexpr uint32_t kSizedClutterKinds = 4;
+extern const SizedClutter kSizedClutter[kSizedClutterKinds];
 // Trunk at `at`, crown centred at crown_at, its underside at least min_crown_bottom (z, local).
 PlacedObject make_tree(const Terrain& terrain, const Eigen::Vector2d& at, const Eigen::Vector2d& crown_at,
                        double min_crown_bottom, SeededRandom* rng);
