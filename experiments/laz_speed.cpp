@@ -49,9 +49,11 @@ double cpu_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-// Decodes at most `limit` records of the file; returns how many.
-uint64_t decode_some(const std::string& path, uint64_t limit) {
-  host::LasRecordReader reader(host::file_source(path));
+// Decodes at most `limit` records of the file, LAS 1.4's layers as `layers`
+// says; returns how many.
+uint64_t decode_some(const std::string& path, uint64_t limit,
+                     host::laz::LayerChoice layers = host::laz::LayerChoice::kAll) {
+  host::LasRecordReader reader(host::file_source(path), layers);
   const size_t batch = host::las_batch_records(reader.header());
   std::vector<uint8_t> records(batch * reader.header().record_length);
   uint64_t total = 0;
@@ -62,6 +64,9 @@ uint64_t decode_some(const std::string& path, uint64_t limit) {
 }
 uint64_t decode_records(const std::string& path) { return decode_some(path, UINT64_MAX); }
 uint64_t decode_first(const std::string& path) { return decode_some(path, 1); }
+uint64_t decode_pipeline_fields(const std::string& path) {
+  return decode_some(path, UINT64_MAX, host::laz::LayerChoice::kPipeline);
+}
 
 uint64_t decode_xyz(const std::string& path) {
   auto source = host::open_point_source(path);
@@ -151,21 +156,24 @@ int run_speed(SpeedArgs a) {
     a.files.insert(a.files.begin(), a.tile_out);
   }
   std::printf(
-      "file,format,compressed,points,open_ms,records_per_s,steady_records_per_s,xyz_per_s,peak_rss_kib\n");
+      "file,format,compressed,points,open_ms,records_per_s,steady_records_per_s,pipeline_records_per_s,xyz_"
+      "per_s,"
+      "peak_rss_kib\n");
   for (const std::string& path : a.files) {
     try {
       const host::CloudHeader h = host::read_cloud_header(path);
       const Timing open = time_runs(decode_first, path, a.min_seconds / 4);
       const Timing records = time_runs(decode_records, path, a.min_seconds);
+      const Timing pipeline = time_runs(decode_pipeline_fields, path, a.min_seconds);
       const Timing xyz = time_runs(decode_xyz, path, a.min_seconds);
       // Points after the first, over the time after the open and first point.
       const uint64_t after_first = records.points_per_run - std::min<uint64_t>(records.points_per_run, 1);
       const double steady =
           static_cast<double>(after_first) / std::max(1e-9, records.seconds_per_run - open.seconds_per_run);
-      std::printf("%s,%u,%s,%llu,%.3f,%.0f,%.0f,%.0f,%ld\n", path.c_str(),
+      std::printf("%s,%u,%s,%llu,%.3f,%.0f,%.0f,%.0f,%.0f,%ld\n", path.c_str(),
                   static_cast<unsigned>(h.las_point_format), h.format == "laz" ? "yes" : "no",
                   static_cast<unsigned long long>(h.point_count), 1e3 * open.seconds_per_run, records.rate(),
-                  steady, xyz.rate(), peak_rss_kib());
+                  steady, pipeline.rate(), xyz.rate(), peak_rss_kib());
     } catch (const host::CloudError& e) {
       std::fprintf(stderr, "laz-speed: %s\n", e.what());
       return 1;

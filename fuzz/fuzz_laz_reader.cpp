@@ -3,7 +3,7 @@
 // within the declared count or throw a CloudError with a message; never
 // crash, hang, or allocate beyond what the bytes can hold. Points are read
 // up to kMaxFuzzPoints (a LAZ chunk may legitimately code thousands of
-// points a byte).
+// points a byte), once decoding every layer and once only the pipeline's.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -17,13 +17,11 @@
 
 namespace {
 constexpr size_t kMaxFuzzPoints = 4096;
-}
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+void read_records(const std::string& bytes, spinhash::host::laz::LayerChoice layers) {
   using namespace spinhash::host;
-  const std::string bytes(reinterpret_cast<const char*>(data), size);
   try {
-    LasRecordReader reader(memory_source(bytes));
+    LasRecordReader reader(memory_source(bytes), layers);
     const LasHeader& h = reader.header();
     const size_t batch = las_batch_records(h);
     spinhash::fuzz::require(batch * h.record_length <= kLasBatchBytes + h.record_length,
@@ -43,5 +41,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   } catch (const CloudError& e) {
     spinhash::fuzz::require(std::strlen(e.what()) > 0, "failure without a message");
   }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string bytes(reinterpret_cast<const char*>(data), size);
+  read_records(bytes, spinhash::host::laz::LayerChoice::kAll);
+  read_records(bytes, spinhash::host::laz::LayerChoice::kPipeline);
   return 0;
 }

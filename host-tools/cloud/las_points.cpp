@@ -34,7 +34,8 @@ LasHeader read_header(ByteSource& src) {
 
 }  // namespace
 
-LasRecordReader::LasRecordReader(std::unique_ptr<ByteSource> src) : src_(std::move(src)) {
+LasRecordReader::LasRecordReader(std::unique_ptr<ByteSource> src, laz::LayerChoice layers)
+    : src_(std::move(src)) {
   header_ = read_header(*src_);
   vlrs_ = read_vlrs(*src_, header_, &crs_.warnings);
   const std::vector<std::string> vlr_warnings = crs_.warnings;
@@ -55,7 +56,7 @@ LasRecordReader::LasRecordReader(std::unique_ptr<ByteSource> src) : src_(std::mo
                      " is below format " + std::to_string(header_.point_format) + "'s " +
                      std::to_string(kLasMinRecordLength[header_.point_format]));
   laz_ = std::make_unique<laz::LazDecoder>(*src_, header_.offset_to_points, header_.point_count,
-                                           header_.record_length, lv);
+                                           header_.record_length, lv, layers);
 }
 
 LasRecordReader::~LasRecordReader() = default;

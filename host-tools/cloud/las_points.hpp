@@ -14,6 +14,7 @@
 #include "cloud/crs.hpp"
 #include "cloud/las_header.hpp"
 #include "cloud/las_vlrs.hpp"
+#include "cloud/laz/layer_choice.hpp"
 
 namespace spinhash::host {
 
@@ -24,8 +25,10 @@ class LazDecoder;
 class LasRecordReader {
  public:
   // Reads the header, the VLRs (the CRS, the LASzip record) of src. Throws
-  // CloudError ("LAS: ..." / "LAZ: ...").
-  explicit LasRecordReader(std::unique_ptr<ByteSource> src);
+  // CloudError ("LAS: ..." / "LAZ: ..."). `layers`: what a LAS 1.4 LAZ
+  // file's records hold (laz/layer_choice.hpp); the pipeline's readers ask
+  // only for its fields.
+  explicit LasRecordReader(std::unique_ptr<ByteSource> src, laz::LayerChoice layers = laz::LayerChoice::kAll);
   ~LasRecordReader();
   const LasHeader& header() const { return header_; }
   const std::vector<Vlr>& vlrs() const { return vlrs_; }

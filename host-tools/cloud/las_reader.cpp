@@ -28,7 +28,7 @@ void read_all(LasRecordReader& reader, LasCloud* out) {
 bool parse_las(const std::string& bytes, LasCloud* out, std::string* error) {
   *out = LasCloud{};
   try {
-    LasRecordReader reader(memory_source(bytes));
+    LasRecordReader reader(memory_source(bytes), laz::LayerChoice::kPipeline);
     out->header = reader.header();
     out->crs = reader.crs();
     read_all(reader, out);

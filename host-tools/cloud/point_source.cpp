@@ -87,7 +87,7 @@ class LasSource final : public PointSource {
  private:
   std::unique_ptr<LasRecordReader> named(std::unique_ptr<ByteSource> src) {
     try {
-      return std::make_unique<LasRecordReader>(std::move(src));
+      return std::make_unique<LasRecordReader>(std::move(src), laz::LayerChoice::kPipeline);
     } catch (const CloudError& e) {
       throw CloudError(name_ + ": " + e.what());
     }

@@ -2,9 +2,11 @@
 // ../shared/data/laz (PDAL, laz-rs, laspy, laz-perf and LASzip test data;
 // its README lists them): every LAZ twin gives the raw point records of its
 // uncompressed twin field by field, COPC the same points in another order,
-// the format-8 file agrees with its header, the broken files are refused
-// each with its own message, and a CRS is read from every CRS sample. The
-// x/y predictor's streaming median follows LASzip's insertion rules.
+// the format-8 file agrees with its header, LAS 1.4 files read for the
+// pipeline keep x y z, returns and class and skip the other layers, the
+// broken files are refused each with its own message, and a CRS is read
+// from every CRS sample. The x/y predictor's streaming median follows
+// LASzip's insertion rules.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -45,8 +47,9 @@ struct Records {
   const uint8_t* at(size_t i) const { return bytes.data() + i * header.record_length; }
 };
 
-Records read_records(const std::string& path, size_t batch = 4096) {
-  LasRecordReader r(file_source(path));
+Records read_records(const std::string& path, size_t batch = 4096,
+                     laz::LayerChoice layers = laz::LayerChoice::kAll) {
+  LasRecordReader r(file_source(path), layers);
   Records out{r.header(), r.crs(), {}};
   std::vector<uint8_t> buf(batch * r.header().record_length);
   for (size_t n; (n = r.read(buf.data(), batch)) > 0;)
@@ -212,6 +215,35 @@ TEST_CASE("the format-8 LAZ file without a twin agrees with its header: count, b
   for (int k = 0; k < 15; ++k) CHECK(by_return[k] == r.header.points_by_return[k]);
   CHECK(by_return[0] == 31373);
   CHECK(r.crs.describe() == "EPSG:2154");  // RGF93 / Lambert-93: the WKT's own ID
+}
+
+TEST_CASE("LAS 1.4 LAZ read for the pipeline: x y z, returns and class as whole, the other layers unread") {
+  if (!laz_samples_present()) return;
+  constexpr size_t kIntensityAt = 12, kReturnsAt = 14, kClassAt = 16;
+  for (const char* name : {"twins/1_4_w_evlr.laz", "twins/simple-rgb.copc.laz",
+                           "twins/simple-rgb-paged.copc.laz", "no-twin/format8-nir-extrabytes.laz"}) {
+    INFO(name);
+    const Records whole = read_records(kLaz + "/" + name);
+    const Records part = read_records(kLaz + "/" + name, 4096, laz::LayerChoice::kPipeline);
+    REQUIRE(whole.header.point_format >= kLasFirstFormat14);
+    REQUIRE(part.count() == whole.count());
+    REQUIRE(part.count() > 0);
+    size_t kept_differ = 0, intensity_differ = 0;
+    for (size_t i = 0; i < whole.count(); ++i) {
+      const uint8_t* a = whole.at(i);
+      const uint8_t* b = part.at(i);
+      if (std::memcmp(a, b, kIntensityAt) != 0 || a[kReturnsAt] != b[kReturnsAt] ||
+          a[kClassAt] != b[kClassAt])
+        ++kept_differ;
+      if (std::memcmp(a + kIntensityAt, b + kIntensityAt, 2) != 0) ++intensity_differ;
+    }
+    CHECK(kept_differ == 0);
+    CHECK(intensity_differ > 0);  // the intensity layer was skipped: it holds each chunk's first value
+  }
+  // Formats 0-5 interleave every field in one stream: decoded whole either way.
+  const Records whole = read_records(kLaz + "/twins/autzen_trim.laz");
+  const Records part = read_records(kLaz + "/twins/autzen_trim.laz", 4096, laz::LayerChoice::kPipeline);
+  CHECK(part.bytes == whole.bytes);
 }
 
 TEST_CASE("each broken LAZ file is refused with a message naming what is wrong and the file") {

@@ -66,6 +66,9 @@ class Byte14Item final : public LayeredItem {
     return worst;
   }
 
+  // Extra bytes are not the pipeline's.
+  bool pipeline_layer(size_t /*layer*/) const override { return false; }
+
  private:
   bool fixed_switch_;
   size_t count_;

@@ -40,6 +40,9 @@ class LayeredItem {
   virtual void decode(uint8_t* out, uint32_t* context) = 0;
   // The most bytes any of the item's decoders read past its layer.
   virtual size_t overrun() const = 0;
+  // Layer `layer` codes a field the pipeline takes (x y z, the return
+  // numbers, the classification): LayerChoice::kPipeline decodes only these.
+  virtual bool pipeline_layer(size_t layer) const = 0;
 };
 
 // Throws CloudError for an item this reader does not decode (the VLR check

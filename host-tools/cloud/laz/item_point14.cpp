@@ -216,6 +216,10 @@ class Point14Item final : public LayeredItem {
     return worst;
   }
 
+  // The channel, returns and x y share the first layer; z and the class
+  // have their own.
+  bool pipeline_layer(size_t layer) const override { return layer == kXY || layer == kZ || layer == kClass; }
+
  private:
   static uint32_t previous_return_context(const Point14& last) {
     uint32_t lpr = last.return_number == 1 ? 1u : 0u;

@@ -76,6 +76,8 @@ class Rgb14Item final : public LayeredItem {
   }
 
   size_t overrun() const override { return std::max(dec_[0].overrun(), dec_[1].overrun()); }
+  // Colour is not the pipeline's.
+  bool pipeline_layer(size_t /*layer*/) const override { return false; }
 
  private:
   uint16_t decode_nir(ColourContext& c, uint16_t last) {

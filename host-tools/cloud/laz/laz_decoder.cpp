@@ -38,9 +38,10 @@ class LazDecoder::Feed final : public ByteFeed {
 };
 
 LazDecoder::LazDecoder(ByteSource& src, uint64_t points_offset, uint64_t point_count, uint16_t record_length,
-                       const LaszipVlr& vlr)
+                       const LaszipVlr& vlr, LayerChoice choice)
     : src_(src),
       vlr_(vlr),
+      choice_(choice),
       record_length_(record_length),
       points_offset_(points_offset),
       remaining_(point_count) {
@@ -144,7 +145,11 @@ void LazDecoder::start_layered(uint8_t* first) {
   context_ = 0;
   size_t layer = 0;
   for (size_t i = 0; i < layered_.size(); ++i) {
-    layered_[i]->init(first + item_offsets_[i], layers_.data() + layer, &context_);
+    Layer* own = layers_.data() + layer;
+    if (choice_ == LayerChoice::kPipeline)
+      for (size_t k = 0; k < layered_[i]->layer_count(); ++k)
+        if (!layered_[i]->pipeline_layer(k)) own[k].size = 0;  // decoded as an unchanging field
+    layered_[i]->init(first + item_offsets_[i], own, &context_);
     layer += layered_[i]->layer_count();
   }
 }

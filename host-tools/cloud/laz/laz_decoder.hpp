@@ -14,6 +14,7 @@
 #include "cloud/laz/chunk_table.hpp"
 #include "cloud/laz/item_codec.hpp"
 #include "cloud/laz/laszip_vlr.hpp"
+#include "cloud/laz/layer_choice.hpp"
 
 namespace spinhash::host::laz {
 
@@ -32,7 +33,7 @@ class LazDecoder {
  public:
   // src outlives the decoder. Nothing is read until the first point.
   LazDecoder(ByteSource& src, uint64_t points_offset, uint64_t point_count, uint16_t record_length,
-             const LaszipVlr& vlr);
+             const LaszipVlr& vlr, LayerChoice choice = LayerChoice::kAll);
   ~LazDecoder();
   // Up to max records (record_length bytes each) into out; 0 at the end.
   // Throws CloudError ("LAZ: chunk i: ...") on corrupt or truncated data.
@@ -50,6 +51,7 @@ class LazDecoder {
 
   ByteSource& src_;
   LaszipVlr vlr_;
+  LayerChoice choice_;
   uint16_t record_length_;
   uint64_t points_offset_;
   bool located_ = false;  // the chunk table has been read
