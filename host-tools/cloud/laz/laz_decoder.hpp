@@ -1,7 +1,8 @@
 // Decodes the point records of a LAZ file, a chunk at a time: memory holds
 // one chunk (layered) or a 64 KiB window of it (pointwise), never the file.
 // The output is the raw LAS point records, byte for byte those of the
-// uncompressed file, so one record-to-xyz path serves LAS and LAZ.
+// uncompressed file (LayerChoice::kAll; kPipeline: the pipeline's fields),
+// so one record-to-xyz path serves LAS and LAZ.
 #pragma once
 
 #include <cstddef>
