@@ -46,7 +46,11 @@ std::vector<double> read_query(const RecognizeArgs& a, const std::string& path, 
     std::fprintf(stderr, "spinhash recognize: %s: %s\n", host::cloud_name(path).c_str(), note.c_str());
   *crs = to_metres.work_crs();
   *units = to_metres.units();
-  return host::read_all_points(*source);
+  std::vector<double> xyz = host::read_all_points(*source);
+  const std::string noise = host::noise_note(source->points_noise());
+  if (!noise.empty())
+    std::fprintf(stderr, "spinhash recognize: %s: %s\n", host::cloud_name(path).c_str(), noise.c_str());
+  return xyz;
 }
 
 // FILE.ext for one query; FILE-NAME.ext for each of several.

@@ -92,6 +92,8 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
     for (const std::string& note : to_metres.notes())
       std::fprintf(stderr, "spinhash scene: %s: %s\n", name.c_str(), note.c_str());
     r = pipeline::stream_tile(file.db, *source, options, print);
+    const std::string noise = host::noise_note(source->points_noise());
+    if (!noise.empty()) std::fprintf(stderr, "spinhash scene: %s: %s\n", name.c_str(), noise.c_str());
   } catch (const std::exception& e) {
     std::fflush(stdout);  // the objects already reported stay; the tile's status line follows them
     std::printf("%s\n", pipeline::unreadable_json("tile", name, e.what()).c_str());

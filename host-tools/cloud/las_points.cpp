@@ -17,6 +17,9 @@ constexpr uint8_t kLegacyClassMask = 0x1F;              // formats 0-5: 5 bits o
 constexpr size_t kLegacyClassAt = 15, kClassAt14 = 16;  // byte of a record holding the class
 constexpr size_t kReturnAt = 14;
 constexpr uint8_t kLegacyReturnMask = 0x07, kReturnMask14 = 0x0F;
+constexpr uint8_t kLowNoiseClass = 7, kHighNoiseClass = 18;  // ASPRS
+constexpr size_t kClassFlagsAt14 = 15;                       // formats 6-10: the class flags' byte
+constexpr uint8_t kLegacyWithheld = 0x80, kWithheld14 = 0x04;
 
 int32_t le_int32(const uint8_t* p) {
   const uint32_t u = static_cast<uint32_t>(p[0]) | (static_cast<uint32_t>(p[1]) << 8) |
@@ -90,6 +93,13 @@ void las_record_xyz(const LasHeader& h, const uint8_t* record, double* xyz) {
 uint8_t las_record_class(const LasHeader& h, const uint8_t* record) {
   if (h.point_format >= kLasFirstFormat14) return record[kClassAt14];
   return record[kLegacyClassAt] & kLegacyClassMask;
+}
+
+bool las_record_noise(const LasHeader& h, const uint8_t* record) {
+  const uint8_t c = las_record_class(h, record);
+  const bool withheld = h.point_format >= kLasFirstFormat14 ? (record[kClassFlagsAt14] & kWithheld14) != 0
+                                                            : (record[kLegacyClassAt] & kLegacyWithheld) != 0;
+  return withheld || c == kLowNoiseClass || c == kHighNoiseClass;
 }
 
 uint8_t las_record_return(const LasHeader& h, const uint8_t* record) {

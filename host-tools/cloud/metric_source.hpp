@@ -68,6 +68,7 @@ class MetricSource final : public PointSource {
   MetricSource(PointSource& inner, const AxisUnits& units);
   const CloudHeader& header() const override { return header_; }
   size_t read(double* xyz, size_t max_points) override;
+  uint64_t points_noise() const override { return inner_.points_noise(); }
   const ToMetres& to_metres() const { return to_metres_; }
 
  private:

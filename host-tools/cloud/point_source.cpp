@@ -70,19 +70,23 @@ class LasSource final : public PointSource {
   }
   const CloudHeader& header() const override { return header_; }
   size_t read(double* xyz, size_t max_points) override {
+    const LasHeader& h = reader_->header();
     size_t done = 0;
     while (done < max_points) {
       if (next_ == held_) refill();
       if (held_ == 0) break;
-      const size_t n = std::min(max_points - done, held_ - next_);
-      const uint16_t length = reader_->header().record_length;
-      for (size_t i = 0; i < n; ++i)
-        las_record_xyz(reader_->header(), records_.data() + (next_ + i) * length, xyz + 3 * (done + i));
-      next_ += n;
-      done += n;
+      for (; next_ < held_ && done < max_points; ++next_) {
+        const uint8_t* record = records_.data() + next_ * h.record_length;
+        if (las_record_noise(h, record)) {
+          ++noise_;
+          continue;
+        }
+        las_record_xyz(h, record, xyz + 3 * done++);
+      }
     }
     return done;
   }
+  uint64_t points_noise() const override { return noise_; }
 
  private:
   std::unique_ptr<LasRecordReader> named(std::unique_ptr<ByteSource> src) {
@@ -107,6 +111,7 @@ class LasSource final : public PointSource {
   CloudHeader header_;
   std::vector<uint8_t> records_;
   size_t batch_ = 1, held_ = 0, next_ = 0;
+  uint64_t noise_ = 0;
 };
 
 // Text window and the longest line it takes (a point is a few dozen bytes).
@@ -331,6 +336,12 @@ std::unique_ptr<PointSource> open_point_source_bytes(std::string bytes, const st
 }
 
 CloudHeader read_cloud_header(const std::string& path) { return open_point_source(path)->header(); }
+
+std::string noise_note(uint64_t points_noise) {
+  if (points_noise == 0) return {};
+  return std::to_string(points_noise) +
+         " points the file marks as noise (ASPRS classes 7 and 18) or withheld: left out";
+}
 
 std::vector<double> read_all_points(PointSource& source) {
   std::vector<double> xyz;

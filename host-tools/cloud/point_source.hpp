@@ -48,6 +48,9 @@ class PointSource {
   // the end of the cloud. Throws CloudError on malformed data, including a
   // file that ends before its declared count.
   virtual size_t read(double* xyz, size_t max_points) = 0;
+  // Points read so far that the file marks as noise or withheld
+  // (las_record_noise: LAS and LAZ), left out of what read() hands out.
+  virtual uint64_t points_noise() const { return 0; }
 };
 
 // Largest cloud read whole into memory (standard input, bytes given).
@@ -67,5 +70,8 @@ CloudHeader read_cloud_header(const std::string& path);
 
 // Every point left in the source (x y z triples). Throws CloudError.
 std::vector<double> read_all_points(PointSource& source);
+
+// What the commands say of a source's points_noise() once read (empty: none).
+std::string noise_note(uint64_t points_noise);
 
 }  // namespace spinhash::host

@@ -123,6 +123,7 @@ class ChunkIterator {
   ChunkIterator(std::unique_ptr<host::PointSource> source, size_t chunk_points, bool metres)
       : source_(std::move(source)), chunk_points_(chunk_points), metres_(metres) {}
   py::dict header() const { return header_dict(source_->header()); }
+  uint64_t points_noise() const { return source_->points_noise(); }
   py::array_t<double> next() {
     std::vector<double> xyz(3 * chunk_points_);
     size_t n = 0;
@@ -153,13 +154,15 @@ std::unique_ptr<ChunkIterator> iter_cloud(const std::filesystem::path& path, siz
 }  // namespace
 
 void bind_cloud(py::module_& m) {
-  m.def("read_cloud", &read_cloud, py::arg("path"), py::kw_only(), py::arg("work_crs") = py::none(),
-        py::arg("metres") = false,
-        "Reads a point cloud file (LAS 1.0-1.4, LAZ and COPC, PLY, or x y z text, as the spinhash command) "
-        "into an (N, 3) float64 array, in the file's own coordinates; with work_crs (\"EPSG:32610\", a WKT "
-        "or a PROJ string: a projected CRS), reprojected into it when the file is in another CRS; with "
-        "metres=True, in metres (what the recognizers take: feet scaled; degrees refused unless work_crs "
-        "is given). FileNotFoundError, or ValueError naming what is wrong with the file.");
+  m.def(
+      "read_cloud", &read_cloud, py::arg("path"), py::kw_only(), py::arg("work_crs") = py::none(),
+      py::arg("metres") = false,
+      "Reads a point cloud file (LAS 1.0-1.4, LAZ and COPC, PLY, or x y z text, as the spinhash command) "
+      "into an (N, 3) float64 array, in the file's own coordinates, without the points a LAS/LAZ file marks "
+      "as noise (ASPRS classes 7 and 18) or withheld; with work_crs (\"EPSG:32610\", a WKT "
+      "or a PROJ string: a projected CRS), reprojected into it when the file is in another CRS; with "
+      "metres=True, in metres (what the recognizers take: feet scaled; degrees refused unless work_crs "
+      "is given). FileNotFoundError, or ValueError naming what is wrong with the file.");
   m.def("read_cloud_header", &read_cloud_header, py::arg("path"),
         "A cloud file's header without its points (LAS/LAZ: format, point_count, bounds, las_point_format, "
         "las_version, crs {name, epsg, vertical_epsg, wkt, definition (what PROJ reads), source, warnings, "
@@ -170,7 +173,10 @@ void bind_cloud(py::module_& m) {
   py::class_<ChunkIterator>(m, "CloudChunks", "The points of a cloud file in (n, 3) float64 chunks.")
       .def("__iter__", [](ChunkIterator& self) -> ChunkIterator& { return self; })
       .def("__next__", &ChunkIterator::next)
-      .def_property_readonly("header", &ChunkIterator::header);
+      .def_property_readonly("header", &ChunkIterator::header)
+      .def_property_readonly("points_noise", &ChunkIterator::points_noise,
+                             "points read so far that a LAS/LAZ file marks as noise (ASPRS classes 7 and 18) "
+                             "or withheld: left out of the chunks");
   m.def("iter_cloud", &iter_cloud, py::arg("path"), py::arg("chunk_points") = host::kDefaultChunkPoints,
         py::kw_only(), py::arg("work_crs") = py::none(), py::arg("metres") = false,
         "Iterates over a cloud file's points in (n, 3) float64 arrays of at most chunk_points rows; LAS and "

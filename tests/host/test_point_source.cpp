@@ -1,5 +1,6 @@
 // PointSource on text and LAS files written here: chunks of any size give
-// the points read_cloud gives, headers come without points, and malformed
+// the points read_cloud gives, headers come without points, points a LAS
+// file marks as noise or withheld are left out and counted, and malformed
 // files fail with read_cloud's messages, naming the file.
 #include <doctest/doctest.h>
 
@@ -107,6 +108,37 @@ TEST_CASE("a LAS file read in chunks gives read_cloud's points; its header comes
   CHECK(failure(cut).find("truncated") != std::string::npos);
   std::filesystem::remove(path);
   std::filesystem::remove(cut);
+}
+
+TEST_CASE("LAS points marked noise (classes 7 and 18) or withheld are left out and counted") {
+  // Formats 0-5: the class in the low 5 bits, withheld the top bit.
+  const std::vector<double> xyz = {10, 20, 1, 11, 20, -30, 12, 20, 400, 13, 20, 1, 14, 20, 1};
+  std::string bytes, error;
+  REQUIRE(las_bytes(xyz, {2, 7, 18, 1, 6}, &bytes, &error));
+  constexpr size_t kRecordLength = 28, kClassAt = 15;  // las_writer.hpp: format 1
+  const size_t points_at = bytes.size() - 5 * kRecordLength;
+  bytes[points_at + 3 * kRecordLength + kClassAt] = static_cast<char>(1 | 0x80);  // withheld
+  const std::string path = write_temp("noise.las", bytes);
+  for (size_t chunk : {size_t{1}, size_t{2}, size_t{64}}) {
+    CAPTURE(chunk);
+    auto src = open_point_source(path);
+    std::vector<double> all, buf(3 * chunk);
+    for (size_t n; (n = src->read(buf.data(), chunk)) > 0;)
+      all.insert(all.end(), buf.begin(), buf.begin() + 3 * n);
+    CHECK(all == std::vector<double>{10, 20, 1, 14, 20, 1});
+    CHECK(src->points_noise() == 3u);
+  }
+  CHECK(noise_note(0).empty());
+  CHECK(noise_note(3).find("3 points") == 0);
+  std::filesystem::remove(path);
+  // Format 6 (LAS 1.4): a public sample holding 25 class-7 points.
+  const std::string sample =
+      std::string(SPINHASH_LAZ_SAMPLES) + "/crs/file_with_both_wkt_and_geotiff_vlrs.las";
+  if (!std::filesystem::exists(sample)) return;
+  auto src = open_point_source(sample);
+  CHECK(src->header().las_point_format == 6);
+  CHECK(read_all_points(*src).size() / 3 == src->header().point_count - 25);
+  CHECK(src->points_noise() == 25u);
 }
 
 TEST_CASE("a binary PLY read in chunks gives read_cloud's points; other PLY falls back to the whole reader") {

@@ -2,7 +2,9 @@
 // of a real survey lost at its edges; a text tile's picture an even sample
 // of bounded size whatever the file's length; chunks of any size and order
 // giving the whole tile's answers; the survey's owners deciding through the
-// core's owner_of; a sparse tile over kilometres costing what its points do.
+// core's owner_of; a sparse tile over kilometres costing what its points do;
+// low noise the file classes as such leaving the terrain and vehicles as
+// they are without it.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -14,6 +16,8 @@
 
 #include "cli_runner.hpp"
 #include "cloud/cloud_reader.hpp"
+#include "cloud/las_reader.hpp"
+#include "cloud/las_writer.hpp"
 #include "cloud/point_source.hpp"
 #include "pipeline/database_file.hpp"
 #include "pipeline/scene_session.hpp"
@@ -211,6 +215,64 @@ TEST_CASE("tile stream: chunks of any size and order give the whole tile's objec
     CHECK(spilled[k].points == held[k].points);
     for (int a = 0; a < 3; ++a) CHECK(spilled[k].center[a] == held[k].center[a]);
   }
+}
+
+TEST_CASE(
+    "tile stream: low noise the file classes 7 is left out: the terrain and vehicles of the tile without "
+    "it") {
+  // Multipath returns under the ground: one in 20 m2 here. Left in, they
+  // would seed the terrain's lowest points and lift the whole tile off it.
+  TempDir dir("tile-stream-noise");
+  const std::string fleet = dir.file("fleet"), db_path = dir.file("fleet.shdb"),
+                    clean = dir.file("clean.las"), noisy = dir.file("noisy.las");
+  REQUIRE(run_spinhash(dir, "generate --count 4 -o " + shell_quoted(fleet)).exit_code == 0);
+  REQUIRE(run_spinhash(
+              dir, "build --quiet --no-calibration -o " + shell_quoted(db_path) + " " + shell_quoted(fleet))
+              .exit_code == 0);
+  const CliRun s = run_spinhash(dir, "scan-scene " + shell_quoted(fleet) + " -o " + shell_quoted(clean) +
+                                         " --size 70 --vehicles 6 --trees 2 --seed 7");
+  REQUIRE_MESSAGE(s.exit_code == 0, s.err);
+  pipeline::DatabaseFile db;
+  std::string error;
+  REQUIRE_MESSAGE(pipeline::load_database(db_path, &db, &error), error);
+  LasCloud tile;
+  REQUIRE_MESSAGE(parse_las(read_bytes(clean), &tile, &error), error);
+  const size_t n = tile.xyz.size() / 3;
+  constexpr uint32_t kLowNoise = 245;  // 70 x 70 m / 20 m2
+  constexpr uint8_t kLowNoiseClass = 7;
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<size_t> any(0, n - 1);
+  std::uniform_real_distribution<double> depth(2.0, 20.0);
+  for (uint32_t k = 0; k < kLowNoise; ++k) {
+    const size_t i = any(rng);
+    tile.xyz.insert(tile.xyz.end(), {tile.xyz[3 * i], tile.xyz[3 * i + 1], tile.xyz[3 * i + 2] - depth(rng)});
+    tile.classification.push_back(kLowNoiseClass);
+  }
+  REQUIRE_MESSAGE(write_las(noisy, tile.xyz, tile.classification, &error), error);
+
+  auto vehicles = [&](const std::string& path, uint64_t* noise) {
+    std::unique_ptr<PointSource> source = open_point_source(path);
+    pipeline::TileStreamOptions options;
+    options.scene.max_tile_points = 0;
+    options.scene.recognizer.ground.ground_clearance = 0.0f;
+    std::vector<int64_t> models;
+    const pipeline::TileStreamResult r =
+        pipeline::stream_tile(db.db, *source, options, [&](const SceneObject& o) {
+          if (o.kind == ObjectKind::kVehicleCandidate)
+            models.push_back(o.ranking_count > 0 ? static_cast<int64_t>(o.ranking[0].model) : -1);
+        });
+    CHECK(r.status == Status::kOk);
+    CHECK(r.points_read == n);
+    *noise = source->points_noise();
+    std::sort(models.begin(), models.end());
+    return models;
+  };
+  uint64_t clean_noise = 1, noisy_noise = 0;
+  const std::vector<int64_t> expected = vehicles(clean, &clean_noise);
+  CHECK(clean_noise == 0u);
+  CHECK(expected.size() >= 5u);
+  CHECK(vehicles(noisy, &noisy_noise) == expected);
+  CHECK(noisy_noise == kLowNoise);
 }
 
 TEST_CASE("tile stream: a survey's tile reports what owner_of gives it, and counts the rest") {

@@ -1,6 +1,7 @@
 """spinhash.read_cloud reads LAZ and COPC through the same decoder as the CLI,
 read_cloud_header gives a header and its CRS without the points, iter_cloud
-hands out the points in chunks (tests skip when ../shared/data/laz is absent)."""
+hands out the points in chunks, and points a file marks as noise are left
+out and counted (tests skip when ../shared/data/laz is absent)."""
 import pathlib
 
 import numpy as np
@@ -48,6 +49,16 @@ def test_chunks_give_the_whole_cloud(chunk):
     parts = list(chunks)
     assert all(1 <= len(p) <= chunk for p in parts)
     np.testing.assert_array_equal(np.concatenate(parts), spinhash.read_cloud(path))
+
+
+def test_points_the_file_marks_as_noise_are_left_out_and_counted():
+    path = LAZ / "crs" / "file_with_both_wkt_and_geotiff_vlrs.las"  # format 6, 25 points of class 7
+    chunks = spinhash.iter_cloud(path, chunk_points=4096)
+    assert chunks.points_noise == 0  # nothing read yet
+    points = np.concatenate(list(chunks))
+    assert chunks.points_noise == 25
+    assert len(points) == chunks.header["point_count"] - 25
+    np.testing.assert_array_equal(points, spinhash.read_cloud(path))
 
 
 def test_broken_laz_raises_naming_the_problem():

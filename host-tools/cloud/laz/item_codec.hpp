@@ -41,7 +41,8 @@ class LayeredItem {
   // The most bytes any of the item's decoders read past its layer.
   virtual size_t overrun() const = 0;
   // Layer `layer` codes a field the pipeline takes (x y z, the return
-  // numbers, the classification): LayerChoice::kPipeline decodes only these.
+  // numbers, the class and its flags): LayerChoice::kPipeline decodes only
+  // these.
   virtual bool pipeline_layer(size_t layer) const = 0;
 };
 

@@ -216,9 +216,11 @@ class Point14Item final : public LayeredItem {
     return worst;
   }
 
-  // The channel, returns and x y share the first layer; z and the class
-  // have their own.
-  bool pipeline_layer(size_t layer) const override { return layer == kXY || layer == kZ || layer == kClass; }
+  // The channel, returns and x y share the first layer; z, the class and
+  // the class flags (withheld) have their own.
+  bool pipeline_layer(size_t layer) const override {
+    return layer == kXY || layer == kZ || layer == kClass || layer == kFlags;
+  }
 
  private:
   static uint32_t previous_return_context(const Point14& last) {
