@@ -44,6 +44,7 @@ size_t BufferedSource::read_any(double* xyz, size_t max_points) {
     if (next_ == 1) {  // the tile itself: every point
       const size_t got = current_->read(xyz, max_points);
       tile_points_ += got;
+      tile_noise_ = current_->points_noise();
       if (got > 0) return got;
     } else {  // a neighbour: its points inside the seen rectangle
       chunk_.resize(3 * max_points);

@@ -23,6 +23,8 @@ class BufferedSource final : public host::PointSource {
 
   uint64_t tile_points() const { return tile_points_; }
   uint64_t buffer_points() const { return buffer_points_; }
+  // The tile's own points that its file marks as noise or withheld.
+  uint64_t points_noise() const override { return tile_noise_; }
 
  private:
   bool open_next();
@@ -37,7 +39,7 @@ class BufferedSource final : public host::PointSource {
   std::unique_ptr<host::PointSource> current_;
   size_t next_ = 0;  // 0: the tile; k: neighbour k - 1
   std::vector<double> chunk_;
-  uint64_t tile_points_ = 0, buffer_points_ = 0;
+  uint64_t tile_points_ = 0, buffer_points_ = 0, tile_noise_ = 0;
 };
 
 }  // namespace spinhash::survey

@@ -67,6 +67,7 @@ std::string tile_json(const TileResult& r) {
   return "{\"tile\":" + json_string(r.name) + ",\"path\":" + json_string(r.path) +
          ",\"status\":" + json_string(r.status) + ",\"points\":" + std::to_string(r.points_tile) +
          ",\"buffer_points\":" + std::to_string(r.points_buffer) +
+         ",\"noise_points\":" + std::to_string(r.points_noise) +
          ",\"objects\":" + std::to_string(r.lines.size()) +
          ",\"vehicle_candidates\":" + std::to_string(r.features.size()) +
          ",\"objects_owned_by_neighbours\":" + std::to_string(r.objects_not_owned) +
@@ -79,14 +80,14 @@ std::string tile_json(const TileResult& r) {
 std::string survey_json(const Catalogue& c, const std::vector<TileResult>& done, const SurveyReport& rep) {
   std::map<std::string, ModelCount> models;
   std::map<std::string, uint32_t> kinds;
-  uint64_t points = 0, buffer_points = 0;
+  uint64_t points = 0, buffer_points = 0, noise_points = 0;
   double read_ms = 0, stream_ms = 0;
   std::string tiles, refused, notes;
   for (const TileResult& r : done) {
     for (const auto& kv : r.models)
       models[kv.first].candidates += kv.second.candidates, models[kv.first].confident += kv.second.confident;
     for (const auto& kv : r.kinds) kinds[kv.first] += kv.second;
-    points += r.points_tile, buffer_points += r.points_buffer;
+    points += r.points_tile, buffer_points += r.points_buffer, noise_points += r.points_noise;
     read_ms += r.read_ms, stream_ms += r.stream_ms;
     tiles += (tiles.empty() ? "\n  " : ",\n  ") + tile_json(r);
   }
@@ -103,10 +104,10 @@ std::string survey_json(const Catalogue& c, const std::vector<TileResult>& done,
          ",\"tiles_resumed\":" + std::to_string(rep.tiles_resumed) +
          ",\"tiles_refused\":" + std::to_string(rep.refused.size()) +
          ",\"points\":" + std::to_string(points) + ",\"buffer_points\":" + std::to_string(buffer_points) +
-         ",\"wall_s\":" + json_number(rep.wall_s, 6) + ",\"stage_ms\":{\"read\":" + json_number(read_ms, 9) +
-         ",\"stream\":" + json_number(stream_ms, 9) + "},\"kinds\":" + kinds_json(kinds) +
-         ",\"models\":" + models_json(models) + ",\"refused\":[" + refused + "],\"tiles\":[" + tiles +
-         "\n]}\n";
+         ",\"noise_points\":" + std::to_string(noise_points) + ",\"wall_s\":" + json_number(rep.wall_s, 6) +
+         ",\"stage_ms\":{\"read\":" + json_number(read_ms, 9) + ",\"stream\":" + json_number(stream_ms, 9) +
+         "},\"kinds\":" + kinds_json(kinds) + ",\"models\":" + models_json(models) + ",\"refused\":[" +
+         refused + "],\"tiles\":[" + tiles + "\n]}\n";
 }
 
 bool write_overview(const std::string& path, const Catalogue& c, const std::vector<TileResult>& done,

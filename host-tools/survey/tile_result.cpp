@@ -33,7 +33,8 @@ std::string result_text(const TileResult& r) {
   s += "index " + std::to_string(r.index) + "\n";
   s += "name " + escape_line(r.name) + "\npath " + escape_line(r.path) + "\nkey " + escape_line(r.key) + "\n";
   s += "status " + r.status + "\n";
-  s += "points " + std::to_string(r.points_tile) + " " + std::to_string(r.points_buffer) + "\n";
+  s += "points " + std::to_string(r.points_tile) + " " + std::to_string(r.points_buffer) + " " +
+       std::to_string(r.points_noise) + "\n";
   s += "objects " + std::to_string(r.objects_not_owned) + " " + std::to_string(r.objects_in_holes) + "\n";
   s += "times " + num(r.read_ms) + " " + num(r.stream_ms) + " " + num(r.total_ms) + "\n";
   for (const auto& kv : r.kinds)
@@ -81,7 +82,7 @@ bool parse_result_text(const std::string& text, TileResult* out, std::string* er
     else if (w == "status")
       ls >> r.status;
     else if (w == "points")
-      ls >> r.points_tile >> r.points_buffer;
+      ls >> r.points_tile >> r.points_buffer >> r.points_noise;
     else if (w == "objects")
       ls >> r.objects_not_owned >> r.objects_in_holes;
     else if (w == "times")

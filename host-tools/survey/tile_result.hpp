@@ -30,6 +30,7 @@ struct TileResult {
   std::string name, path, key;
   std::string status = "ok";  // the stream's status word
   uint64_t points_tile = 0, points_buffer = 0;
+  uint64_t points_noise = 0;       // the tile's points its file marks as noise or withheld: left out
   uint64_t objects_not_owned = 0;  // centres a neighbour owns
   uint64_t objects_in_holes = 0;   // centres farther than kGapTolerance from every tile
   double read_ms = 0, stream_ms = 0, total_ms = 0;

@@ -124,6 +124,7 @@ TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfi
   const pipeline::TileStreamResult s = pipeline::stream_tile(db, source, options, keep);
   r.status = pipeline::status_word(s.status);
   r.points_tile = source.tile_points(), r.points_buffer = source.buffer_points();
+  r.points_noise = source.points_noise();
   r.objects_not_owned += s.objects_not_owned;
   r.objects_in_holes += s.objects_in_holes;
   r.read_ms = s.read_ms, r.stream_ms = s.stream_ms;

@@ -85,6 +85,26 @@ TEST_CASE("a text file named .laz is refused by its content, with one unreadable
   CHECK(contains(read_bytes(dir.file("out/survey.json")), "named .laz but not LAS/LAZ"));
 }
 
+TEST_CASE("points a file marks as noise are left out and said so by scene, recognize and survey.json") {
+  if (!samples()) return;
+  const Fixture& f = fx();
+  TempDir dir("noise-points");
+  const std::string tile = kLaz + "/crs/file_with_both_wkt_and_geotiff_vlrs.las";  // 25 points of class 7
+  const std::string said = "25 points the file marks as noise (ASPRS classes 7 and 18) or withheld: left out";
+  const CliRun s = f.run("scene --db " + q(f.db) + " " + q(tile));
+  const CliRun r = f.run("recognize --db " + q(f.db) + " " + q(tile));
+  CHECK(s.exit_code == 0);
+  CHECK(r.exit_code == 0);
+  CHECK(contains(s.err, said));
+  CHECK(contains(r.err, said));
+  const CliRun v =
+      f.run("survey --quiet --jobs 1 --db " + q(f.db) + " --out " + q(dir.file("out")) + " " + q(tile));
+  CHECK(v.exit_code == 0);
+  const std::string report = read_bytes(dir.file("out/survey.json"));
+  CHECK(contains(report, "\"points\":25383,\"buffer_points\":0,\"noise_points\":25,"));  // the tile's line
+  CHECK(contains(report, "\"buffer_points\":0,\"noise_points\":25,\"wall_s\""));         // the survey's total
+}
+
 TEST_CASE("scene and recognize write the same unreadable line for a file they cannot read") {
   const Fixture& f = fx();
   TempDir dir("unreadable-line");
