@@ -3,6 +3,8 @@
 #pragma once
 #include <sys/wait.h>
 
+#include <doctest/doctest.h>
+
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -37,6 +39,25 @@ inline CliRun run_spinhash(const TempDir& dir, const std::string& args) {
   r.out = read_bytes(out);
   r.err = read_bytes(err);
   return r;
+}
+
+// `count` procedural vehicles (dir/fleet), their database without
+// calibration (dir/fleet.shdb: built in seconds) and a tile of them
+// (dir/scene.las, by `scan-scene` with `scan_args`); each command REQUIREd.
+struct FleetScene {
+  std::string fleet, db, scene;
+};
+inline FleetScene fleet_scene(const TempDir& dir, int count, const std::string& scan_args) {
+  FleetScene f{dir.file("fleet"), dir.file("fleet.shdb"), dir.file("scene.las")};
+  REQUIRE(run_spinhash(dir, "generate --count " + std::to_string(count) + " -o " + shell_quoted(f.fleet))
+              .exit_code == 0);
+  REQUIRE(run_spinhash(
+              dir, "build --quiet --no-calibration -o " + shell_quoted(f.db) + " " + shell_quoted(f.fleet))
+              .exit_code == 0);
+  const CliRun s = run_spinhash(
+      dir, "scan-scene " + shell_quoted(f.fleet) + " -o " + shell_quoted(f.scene) + " " + scan_args);
+  REQUIRE_MESSAGE(s.exit_code == 0, s.err);
+  return f;
 }
 
 inline bool contains(const std::string& text, const std::string& part) {

@@ -148,20 +148,12 @@ TEST_CASE("crs units: a source in feet reads as metres, header bounds included")
 
 TEST_CASE("crs units: a tile in US survey feet gives the metre tile's vehicles, centred in feet") {
   TempDir dir("crs-units");
-  const std::string fleet = dir.file("fleet"), db_path = dir.file("fleet.shdb"),
-                    scene = dir.file("scene.las");
-  REQUIRE(run_spinhash(dir, "generate --count 6 -o " + shell_quoted(fleet)).exit_code == 0);
-  REQUIRE(run_spinhash(
-              dir, "build --quiet --no-calibration -o " + shell_quoted(db_path) + " " + shell_quoted(fleet))
-              .exit_code == 0);
-  const CliRun s = run_spinhash(dir, "scan-scene " + shell_quoted(fleet) + " -o " + shell_quoted(scene) +
-                                         " --size 40 --vehicles 5 --trees 2 --seed 5");
-  REQUIRE_MESSAGE(s.exit_code == 0, s.err);
+  const FleetScene tile = fleet_scene(dir, 6, "--size 40 --vehicles 5 --trees 2 --seed 5");
   pipeline::DatabaseFile db;
   std::string error;
-  REQUIRE_MESSAGE(pipeline::load_database(db_path, &db, &error), error);
+  REQUIRE_MESSAGE(pipeline::load_database(tile.db, &db, &error), error);
   std::vector<double> metres;
-  REQUIRE_MESSAGE(spinhash::host::test::try_read_cloud(scene, &metres, &error), error);
+  REQUIRE_MESSAGE(spinhash::host::test::try_read_cloud(tile.scene, &metres, &error), error);
   std::vector<double> feet = metres;
   for (double& v : feet) v /= kUsFoot;
   AxisUnits ftus;

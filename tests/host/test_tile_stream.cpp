@@ -136,19 +136,11 @@ TEST_CASE("tile stream: a text tile's picture is an even sample of bounded size,
 
 TEST_CASE("tile stream: chunks of any size and order give the whole tile's objects") {
   TempDir dir("tile-stream-chunks");
-  const std::string fleet = dir.file("fleet"), db_path = dir.file("fleet.shdb"),
-                    scene = dir.file("scene.las");
-  REQUIRE(run_spinhash(dir, "generate --count 4 -o " + shell_quoted(fleet)).exit_code == 0);
-  REQUIRE(run_spinhash(
-              dir, "build --quiet --no-calibration -o " + shell_quoted(db_path) + " " + shell_quoted(fleet))
-              .exit_code == 0);
-  const CliRun s = run_spinhash(dir, "scan-scene " + shell_quoted(fleet) + " -o " + shell_quoted(scene) +
-                                         " --size 70 --vehicles 6 --trees 2 --seed 7");
-  REQUIRE_MESSAGE(s.exit_code == 0, s.err);
+  const FleetScene f = fleet_scene(dir, 4, "--size 70 --vehicles 6 --trees 2 --seed 7");
   pipeline::DatabaseFile db;
   std::string error;
-  REQUIRE_MESSAGE(pipeline::load_database(db_path, &db, &error), error);
-  const std::vector<double> xyz = read_cloud(scene);
+  REQUIRE_MESSAGE(pipeline::load_database(f.db, &db, &error), error);
+  const std::vector<double> xyz = read_cloud(f.scene);
   const size_t n = xyz.size() / 3;
 
   SceneConfig config;
@@ -223,18 +215,12 @@ TEST_CASE(
   // Multipath returns under the ground: one in 20 m2 here. Left in, they
   // would seed the terrain's lowest points and lift the whole tile off it.
   TempDir dir("tile-stream-noise");
-  const std::string fleet = dir.file("fleet"), db_path = dir.file("fleet.shdb"),
-                    clean = dir.file("clean.las"), noisy = dir.file("noisy.las");
-  REQUIRE(run_spinhash(dir, "generate --count 4 -o " + shell_quoted(fleet)).exit_code == 0);
-  REQUIRE(run_spinhash(
-              dir, "build --quiet --no-calibration -o " + shell_quoted(db_path) + " " + shell_quoted(fleet))
-              .exit_code == 0);
-  const CliRun s = run_spinhash(dir, "scan-scene " + shell_quoted(fleet) + " -o " + shell_quoted(clean) +
-                                         " --size 70 --vehicles 6 --trees 2 --seed 7");
-  REQUIRE_MESSAGE(s.exit_code == 0, s.err);
+  const FleetScene f = fleet_scene(dir, 4, "--size 70 --vehicles 6 --trees 2 --seed 7");
+  const std::string& clean = f.scene;
+  const std::string noisy = dir.file("noisy.las");
   pipeline::DatabaseFile db;
   std::string error;
-  REQUIRE_MESSAGE(pipeline::load_database(db_path, &db, &error), error);
+  REQUIRE_MESSAGE(pipeline::load_database(f.db, &db, &error), error);
   LasCloud tile;
   REQUIRE_MESSAGE(parse_las(read_bytes(clean), &tile, &error), error);
   const size_t n = tile.xyz.size() / 3;
