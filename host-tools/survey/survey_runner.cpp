@@ -53,6 +53,11 @@ void remove_results(const std::string& folder) {
     if (e.path().extension() == ".result") fs::remove(e.path(), ec);
 }
 
+// What the readers hand out of a tile (cloud/las_points.hpp,
+// las_record_noise): a result stored by a binary that read otherwise is run
+// again, not kept.
+constexpr const char* kPointsRead = "without-noise-classes-7-18-and-withheld";
+
 std::string settings_key(const SurveyOptions& o) {
   const std::string recognizer = host::config_text(o.scene.recognizer);
   char digest[20];
@@ -61,7 +66,8 @@ std::string settings_key(const SurveyOptions& o) {
   return "spinhash=" + std::string(pipeline::version()) + ";db=" + file_digest(o.db_path) +
          ";top=" + std::to_string(o.scene.top_n) + ";max_objects=" + std::to_string(o.scene.max_objects) +
          ";max_window_points=" + std::to_string(o.scene.max_tile_points) + ";recognizer=" + digest +
-         ";work_crs=" + escape_line(o.work.named ? o.work.crs.proj_definition() : "");
+         ";work_crs=" + escape_line(o.work.named ? o.work.crs.proj_definition() : "") +
+         ";points=" + kPointsRead;
 }
 
 // A stored result is a few lines per object: far below this.
