@@ -156,9 +156,8 @@ int run_speed(SpeedArgs a) {
     a.files.insert(a.files.begin(), a.tile_out);
   }
   std::printf(
-      "file,format,compressed,points,open_ms,records_per_s,steady_records_per_s,pipeline_records_per_s,xyz_"
-      "per_s,"
-      "peak_rss_kib\n");
+      "file,format,compressed,points,open_ms,records_per_s,steady_records_per_s,pipeline_records_per_s,"
+      "xyz_per_s,peak_rss_kib\n");
   for (const std::string& path : a.files) {
     try {
       const host::CloudHeader h = host::read_cloud_header(path);
