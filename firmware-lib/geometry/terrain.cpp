@@ -163,6 +163,7 @@ void clear_sums(TerrainGrid& g) {
   const uint32_t cells = g.nx * g.ny;
   for (uint32_t c = 0; c < cells; ++c) {
     g.value[c] = NAN;     // lowest z
+    g.surface[c] = NAN;   // next lowest z
     g.scratch[c] = 0.0f;  // low band: sum
     g.opened[c] = 0.0f;   // low band: count
   }
@@ -175,7 +176,17 @@ bool terrain_params_valid(const TerrainParams& p) {
   return p.cell >= kMinSceneTerrainCell && p.cell <= kMaxSceneTerrainCell && p.max_window >= p.cell &&
          p.max_window <= kMaxTerrainWindow && p.slope >= 0.0f && p.slope <= kMaxTerrainSlope &&
          p.dh0 >= 0.0f && p.dh_max >= p.dh0 && p.dh_max <= kMaxTerrainDh && p.ground_height >= 0.0f &&
-         p.ground_height <= kMaxGroundHeight && p.low_band >= 0.0f && p.low_band <= kMaxTerrainDh;
+         p.ground_height <= kMaxGroundHeight && p.low_band >= 0.0f && p.low_band <= kMaxTerrainDh &&
+         p.noise_gap >= 0.0f && p.noise_gap <= kMaxTerrainDh &&
+         (p.noise_gap == 0.0f || p.noise_gap >= p.low_band) && p.noise_reach >= 0.0f &&
+         p.noise_reach <= kMaxTerrainNoiseReach;
+}
+
+uint32_t terrain_noise_reach_cells(const TerrainParams& params) {
+  if (!(params.noise_gap > 0.0f)) return 0;
+  const float cells = std::ceil(params.noise_reach / params.cell);
+  return cells >= static_cast<float>(kMaxTerrainNoiseCells) ? kMaxTerrainNoiseCells
+                                                            : static_cast<uint32_t>(cells);
 }
 
 uint32_t terrain_reach_cells(const TerrainParams& params) {
@@ -185,7 +196,8 @@ uint32_t terrain_reach_cells(const TerrainParams& params) {
     reach += 2u * r;  // erosion then dilation, each by r
   }
   const uint32_t gap = gap_cells(params);
-  return reach > gap ? reach : gap;
+  // The low-noise test's passes come first, each reaching its cells around.
+  return (reach > gap ? reach : gap) + kTerrainNoisePasses * terrain_noise_reach_cells(params);
 }
 
 void TerrainGrid::carve(Arena& arena, uint32_t cells) {
@@ -328,23 +340,83 @@ uint8_t terrain_add_part(TerrainParts& parts, float x0, float y0, uint32_t nx, u
   return static_cast<uint8_t>(parts.count++);
 }
 
-void terrain_put_cell(TerrainGrid& g, uint32_t ix, uint32_t iy, float lowest, float band_sum,
+void terrain_put_cell(TerrainGrid& g, uint32_t ix, uint32_t iy, float lowest, float next, float band_sum,
                       float band_count) {
   const uint32_t c = iy * g.nx + ix;
   g.value[c] = lowest;
+  g.surface[c] = next;
   g.scratch[c] = band_sum;
   g.opened[c] = band_count;
 }
 
-// Each part: its cells' values from their sums, the progressive filter, the
-// gaps filled.
-uint32_t terrain_finish(TerrainParts& parts, const TerrainParams& params) {
+namespace {
+
+// g.off_ground[c] = 1 where the cell's lowest (g.value) is low noise: apart
+// from its next (g.surface) and noise_gap under the floor of every cell
+// within `reach` cells that has one (a cell judged noise has its next as
+// floor), with at least one such cell (alone, nothing to judge by). Each
+// pass sees the last one's judgements, so a pit beside a deeper one falls
+// in the second. Returns the cells judged noise.
+uint32_t mark_low_noise(TerrainGrid& g, float gap, uint32_t reach) {
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c) g.off_ground[c] = 0;
+  if (reach == 0) return 0;
+  uint32_t noise = 0;
+  for (uint32_t pass = 0; pass < kTerrainNoisePasses; ++pass)
+    for (uint32_t y = 0; y < g.ny; ++y)
+      for (uint32_t x = 0; x < g.nx; ++x) {
+        const uint32_t c = y * g.nx + x;
+        if (g.off_ground[c] || !terrain_lowest_apart(g.value[c], g.surface[c], gap)) continue;
+        const float under = g.value[c] + gap;
+        const uint32_t x0 = x > reach ? x - reach : 0u, x1 = x + reach < g.nx ? x + reach : g.nx - 1u;
+        const uint32_t y0 = y > reach ? y - reach : 0u, y1 = y + reach < g.ny ? y + reach : g.ny - 1u;
+        bool judged = false, held = false;
+        for (uint32_t v = y0; v <= y1 && !held; ++v)
+          for (uint32_t u = x0; u <= x1; ++u) {
+            const uint32_t n = v * g.nx + u;
+            const float floor = g.off_ground[n] ? g.surface[n] : g.value[n];
+            if (n == c || no_data(floor)) continue;
+            judged = true;
+            if (floor < under) {
+              held = true;  // ground around as low: a dip, not noise
+              break;
+            }
+          }
+        if (judged && !held) {
+          g.off_ground[c] = 1;
+          ++noise;
+        }
+      }
+  return noise;
+}
+
+// A cell's value from its sums: the mean of its low band over the band's
+// base (terrain_band_base); a lowest apart from its next alone when kept,
+// left out when noise (NaN: nothing else in the cell).
+void cell_values(TerrainGrid& g, float gap) {
+  const uint32_t cells = g.nx * g.ny;
+  for (uint32_t c = 0; c < cells; ++c) {
+    const float lowest = g.value[c], next = g.surface[c];
+    const float band = g.opened[c] > 0.0f ? g.scratch[c] / g.opened[c] : 0.0f;
+    if (!terrain_lowest_apart(lowest, next, gap))
+      g.value[c] = lowest + band;
+    else if (g.off_ground[c])
+      g.value[c] = no_data(next) ? NAN : next + band;
+  }
+}
+
+}  // namespace
+
+// Each part: its cells' values from their sums (low noise left out), the
+// progressive filter, the gaps filled.
+uint32_t terrain_finish(TerrainParts& parts, const TerrainParams& params, uint32_t* noise_cells) {
   uint32_t windows = 0;
+  const uint32_t reach = terrain_noise_reach_cells(params);
   for (uint32_t k = 0; k < parts.count; ++k) {
     TerrainGrid& g = parts.part[k];
-    const uint32_t cells = g.nx * g.ny;
-    for (uint32_t c = 0; c < cells; ++c)
-      if (g.opened[c] > 0.0f) g.value[c] += g.scratch[c] / g.opened[c];
+    const uint32_t noise = mark_low_noise(g, params.noise_gap, reach);
+    if (noise_cells != nullptr) *noise_cells += noise;
+    cell_values(g, params.noise_gap);
     windows = progressive_filter(g, params);
     fill_terrain_surface(g, gap_cells(params));
   }

@@ -30,18 +30,22 @@ struct TerrainParams {
   float dh_max = 2.5f;          // m: dh_max, the cap of the height tolerance
   float ground_height = 0.25f;  // m: a point at most this far above the terrain is ground
   float low_band = 0.3f;        // m: a cell's value is the mean of its points this close to its lowest
+  float noise_gap =
+      1.0f;  // m (0: off): a cell's lowest this far under its next and its surroundings is noise
+  float noise_reach = 1.0f;  // m: the surroundings of that test
 };
 
 // One dense grid of cells (a part of a strip's terrain); its buffers come
 // from an Arena, or from the TerrainParts that holds it.
 struct TerrainGrid {
   uint32_t max_cells = 0;
-  float* value = nullptr;    // per cell: low mean z (NaN: no point)
-  float* surface = nullptr;  // per cell: terrain z (NaN: no data within the largest window)
+  float* value = nullptr;    // per cell: low mean z (NaN: no point); its lowest z until terrain_finish
+  float* surface = nullptr;  // per cell: terrain z (NaN: no data within the largest window); its next
+                             // lowest z until terrain_finish
   float* scratch = nullptr;  // per cell: opening buffers
   float* opened = nullptr;
   float* line = nullptr;          // one row or column: the opening's running extremes
-  uint8_t* off_ground = nullptr;  // per cell: 1 when the filter flagged it
+  uint8_t* off_ground = nullptr;  // per cell: 1 when the filter flagged it (first: its lowest is low noise)
   uint32_t nx = 0, ny = 0;
   float x0 = 0.0f, y0 = 0.0f;  // min corner of cell (0, 0)
   float cell = 0.5f;
@@ -71,9 +75,14 @@ struct TerrainParts {
 };
 constexpr uint8_t kNoTerrainPart = 0xFFu;
 
+// Passes of the low-noise test: a pit beside a deeper one is judged in the
+// second, once the deeper one is out.
+constexpr uint32_t kTerrainNoisePasses = 2;
+// Cells each way that the low-noise test compares a cell with (0: off).
+uint32_t terrain_noise_reach_cells(const TerrainParams& params);
 // Cells within which the filter's result at a cell depends on others: the
 // openings' reach (each window erodes and dilates by its half-width) or
-// the gap fill's, whichever is larger.
+// the gap fill's, whichever is larger, after the low-noise test's passes.
 uint32_t terrain_reach_cells(const TerrainParams& params);
 
 // Begins the parts over a rectangle of bx x by blocks of `block_cells`
@@ -85,10 +94,15 @@ bool terrain_parts_begin(TerrainParts& parts, float cell, float x0, float y0, ui
 // block_part the caller sets to the index returned; kNoTerrainPart when no
 // room (cells or parts). Its cells start empty (put each with terrain_put_cell).
 uint8_t terrain_add_part(TerrainParts& parts, float x0, float y0, uint32_t nx, uint32_t ny);
-void terrain_put_cell(TerrainGrid& grid, uint32_t ix, uint32_t iy, float lowest, float band_sum,
+// A cell's sums (terrain_lowest, terrain_low_band): its lowest z, its next
+// lowest (NaN: one point) and its low band.
+void terrain_put_cell(TerrainGrid& grid, uint32_t ix, uint32_t iy, float lowest, float next, float band_sum,
                       float band_count);
-// Filters every part; returns the PMF windows run (per part: the same).
-uint32_t terrain_finish(TerrainParts& parts, const TerrainParams& params);
+// Filters every part: low noise left out of each cell's value, the
+// progressive filter, the gaps filled. Returns the PMF windows run (per
+// part: the same); `noise_cells` (if given) adds the cells whose lowest
+// was low noise.
+uint32_t terrain_finish(TerrainParts& parts, const TerrainParams& params, uint32_t* noise_cells = nullptr);
 // height[i] = z - terrain at each of the n points (local frame, within the
 // parts' blocks); ground[i] = 1 within ground_height. Returns the ground points.
 uint32_t terrain_heights(const TerrainParts& parts, const float* xyz, uint32_t n, float ground_height,
@@ -102,15 +116,31 @@ float terrain_height_at(const TerrainGrid& grid, float x, float y);
 
 bool terrain_params_valid(const TerrainParams& p);
 
-// A cell's sums, point by point: its lowest z (NaN: none yet), then, once
-// that is final, the points within `band` of it (relative to it: small
-// sums, no float drift). The cell's value is lowest + sum / count.
-inline void terrain_lowest(float& lowest, float z) {
-  if (std::isnan(lowest) || z < lowest) lowest = z;
+// A cell's sums, point by point: its lowest z and its next lowest (NaN:
+// none yet), then, once those are final, the points within `band` above
+// the band's base (relative to it: small sums, no float drift). The base is
+// the lowest, or the next where the lowest may be low noise (then the
+// lowest stands alone, since noise_gap is at least the band): the cell's
+// value is the base + sum / count, or the lowest alone when kept.
+inline void terrain_lowest(float& lowest, float& next, float z) {
+  if (std::isnan(lowest) || z < lowest) {
+    next = lowest;
+    lowest = z;
+  } else if (std::isnan(next) || z < next) {
+    next = z;
+  }
 }
-inline void terrain_low_band(float lowest, float z, float band, float& sum, float& count) {
-  if (z > lowest + band) return;
-  sum += z - lowest;
+// Whether a cell's lowest may be low noise: noise_gap under its next (or
+// alone in its cell). Its neighbours decide (terrain_finish).
+inline bool terrain_lowest_apart(float lowest, float next, float noise_gap) {
+  return noise_gap > 0.0f && !std::isnan(lowest) && (std::isnan(next) || next - lowest > noise_gap);
+}
+inline float terrain_band_base(float lowest, float next, float noise_gap) {
+  return terrain_lowest_apart(lowest, next, noise_gap) ? next : lowest;
+}
+inline void terrain_low_band(float base, float z, float band, float& sum, float& count) {
+  if (!(z >= base) || z > base + band) return;  // below: the lowest left apart; NaN base: alone
+  sum += z - base;
   count += 1.0f;
 }
 

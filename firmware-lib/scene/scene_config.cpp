@@ -53,6 +53,7 @@ bool scene_config_valid(const SceneConfig& c) noexcept {
          multiple_of(c.window_core, c.terrain_cell) && multiple_of(c.window_core, c.segment_cell) &&
          multiple_of(c.window_margin, c.terrain_cell) && objects_whole(c) &&
          c.terrain_window >= c.terrain_cell && c.terrain_dh_max >= c.terrain_dh0 &&
+         (c.terrain_noise_gap == 0.0f || c.terrain_noise_gap >= c.terrain_low_band) &&
          c.max_length >= c.min_length && c.max_width >= c.min_width && c.max_height >= c.min_height &&
          layer_gap_fits(c);
 }

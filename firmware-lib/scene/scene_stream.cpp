@@ -49,6 +49,7 @@ Status carve(Arena& arena, const StreamConfig& c, StreamBuffers& b) {
   b.window.carve(arena, c.scene);
   b.ring.carve(arena, c.max_buffered_points);
   b.cells.low_band = c.scene.terrain_low_band;
+  b.cells.noise_gap = c.scene.terrain_noise_gap;
   const double margin = static_cast<double>(c.scene.window_margin);
   b.cells.carve(arena, static_cast<double>(c.scene.terrain_cell),
                 static_cast<double>(c.scene.window_core) + 2.0 * margin,

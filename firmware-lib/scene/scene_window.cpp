@@ -232,6 +232,8 @@ TerrainParams scene_terrain_params(const SceneConfig& c) {
   p.dh_max = c.terrain_dh_max;
   p.ground_height = c.ground_height;
   p.low_band = c.terrain_low_band;
+  p.noise_gap = c.terrain_noise_gap;
+  p.noise_reach = c.terrain_noise_reach;
   return p;
 }
 
@@ -346,21 +348,24 @@ Status build_strip_terrain(const SceneConfig& c, const TerrainCells& cells, cons
 // The per-point counts of the points in the window's core: the margins
 // overlap, and a point seen by several windows is counted once, by the
 // window that owns it. Not ground and in no object: a fragment (or an
-// object past max_objects). Without labels (segmentation failed) only the
-// points and the ground.
+// object past max_objects). Ground more than noise_gap under the terrain:
+// low noise (none when the test is off). Without labels (segmentation
+// failed) only the points and the ground.
 void count_owned_points(const PointRing& ring, const WindowJob& job, uint32_t n, const WindowBuffers& b,
-                        bool labelled, SceneStats& st) {
-  uint32_t owned = 0, ground = 0, in_objects = 0;
+                        bool labelled, float noise_gap, SceneStats& st) {
+  uint32_t owned = 0, ground = 0, in_objects = 0, low_noise = 0;
   // area_holds on the steps (the core as a rectangle of the frame).
   const StepRect core(FrameRect{job.core.min[0], job.core.max[0], job.core.min[1], job.core.max[1]});
   for (uint32_t i = 0; i < n; ++i) {
     if (!core.holds(ring.steps + 3u * static_cast<size_t>(b.source[i]))) continue;
     ++owned;
     ground += b.ground[i] ? 1u : 0u;
+    low_noise += noise_gap > 0.0f && b.height[i] < -noise_gap ? 1u : 0u;
     in_objects += labelled && b.label[i] != kNoObject ? 1u : 0u;
   }
   st.points_in = saturating_add(st.points_in, owned);
   st.points_ground = saturating_add(st.points_ground, ground);
+  st.points_low_noise = saturating_add(st.points_low_noise, low_noise);
   if (!labelled) return;
   st.points_in_objects = saturating_add(st.points_in_objects, in_objects);
   st.points_fragments = saturating_add(st.points_fragments, owned - ground - in_objects);
@@ -375,7 +380,7 @@ Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& f
   SegmentStats ss;
   const Status seg = segment_objects(b.local, b.height, b.ground, n, sp, b.segments, b.shapes, b.label, &ss);
   const bool labelled = seg == Status::kOk || seg == Status::kTooManyObjects;
-  count_owned_points(ring, job, n, b, labelled, st);
+  count_owned_points(ring, job, n, b, labelled, c.terrain_noise_gap, st);
   if (!labelled) return seg;
   st.segment_cells = saturating_add(st.segment_cells, ss.cells);
   st.components = saturating_add(st.components, ss.components);

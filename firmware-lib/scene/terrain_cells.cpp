@@ -21,6 +21,7 @@ void TerrainCells::carve(Arena& arena, double cell_m, double depth, double width
   across = static_cast<uint32_t>(std::ceil(width / cell_m)) + 2u;
   const size_t n = static_cast<size_t>(along) * across;
   lowest = arena.alloc<float>(n);
+  next = arena.alloc<float>(n);
   band_sum = arena.alloc<float>(n);
   band_count = arena.alloc<float>(n);
   span = arena.alloc<uint32_t>(2u * static_cast<size_t>(along));
@@ -39,6 +40,7 @@ void TerrainCells::start(double t_lo) {
     for (uint32_t it = first; it <= last && it < across; ++it) {
       const size_t c = static_cast<size_t>(r) * across + it;
       lowest[c] = NAN;
+      next[c] = NAN;
       band_sum[c] = 0.0f;
       band_count[c] = 0.0f;
     }
@@ -108,6 +110,7 @@ void TerrainCells::sum(const PointRing& ring, double from_s, double to_s) {
     for (uint32_t it = sp[0]; it <= sp[1] && it < across; ++it) {
       const uint32_t c = base + it;
       lowest[c] = NAN;
+      next[c] = NAN;
       band_sum[c] = 0.0f;
       band_count[c] = 0.0f;
     }
@@ -115,14 +118,16 @@ void TerrainCells::sum(const PointRing& ring, double from_s, double to_s) {
     sp[1] = 0;
   }
   for_cell_points(*this, ring, i0, i1, [&](uint32_t row, uint32_t it, float z) {
-    terrain_lowest(lowest[row * across + it], z);
+    const uint32_t c = row * across + it;
+    terrain_lowest(lowest[c], next[c], z);
     uint32_t* sp = span + 2u * row;
     sp[0] = it < sp[0] ? it : sp[0];
     sp[1] = it > sp[1] ? it : sp[1];
   });
   for_cell_points(*this, ring, i0, i1, [&](uint32_t row, uint32_t it, float z) {
     const uint32_t c = row * across + it;
-    terrain_low_band(lowest[c], z, low_band, band_sum[c], band_count[c]);
+    terrain_low_band(terrain_band_base(lowest[c], next[c], noise_gap), z, low_band, band_sum[c],
+                     band_count[c]);
   });
   if (!started || i1 > summed_to) summed_to = i1;
   started = true;
@@ -233,7 +238,7 @@ Status TerrainCells::fill(const FrameRect& rect, const FrameRect& needed, double
       const uint8_t p = parts.block_part[(rj / b) * bi + ri / b];
       if (p == kNoTerrainPart) continue;  // not needed
       terrain_put_cell(parts.part[p], ri - static_cast<uint32_t>(part_first_[2u * p]),
-                       rj - static_cast<uint32_t>(part_first_[2u * p + 1u]), lowest[c], band_sum[c],
+                       rj - static_cast<uint32_t>(part_first_[2u * p + 1u]), lowest[c], next[c], band_sum[c],
                        band_count[c]);
     }
   }

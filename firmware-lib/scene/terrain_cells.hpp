@@ -1,5 +1,5 @@
-// The stream's terrain cells: each buffered point's terrain sums (lowest,
-// then the low band: geometry/terrain.hpp) on the frame's fixed lattice of
+// The stream's terrain cells: each buffered point's terrain sums (lowest
+// and next lowest, then the low band: geometry/terrain.hpp) on the frame's fixed lattice of
 // terrain_cell m, kept as long as a strip of windows still needs them.
 // Summed once, when no point can still arrive in the cell (the row's
 // lookahead), so the buffer keeps points only while a window gathers them
@@ -20,14 +20,16 @@ namespace spinhash {
 
 struct TerrainCells {
   float* lowest = nullptr;  // per slot, NaN: no point
+  float* next = nullptr;    // per slot: the next lowest, NaN: at most one point
   float* band_sum = nullptr;
   float* band_count = nullptr;
   uint32_t* span = nullptr;        // per slot row: first occupied slot across, then last (first > last: none)
   uint32_t along = 0, across = 0;  // slots
   double cell = 0.5;
-  float low_band = 0.3f;  // m: TerrainParams::low_band
-  double t_min = 0.0;     // across: where cell 0 starts
-  int64_t summed_to = 0;  // cells along below this index are summed (the last `along` of them kept)
+  float low_band = 0.3f;   // m: TerrainParams::low_band
+  float noise_gap = 1.0f;  // m: TerrainParams::noise_gap (the band's base)
+  double t_min = 0.0;      // across: where cell 0 starts
+  int64_t summed_to = 0;   // cells along below this index are summed (the last `along` of them kept)
   bool started = false;
   bool cleared = false;  // every slot outside its row's span is empty (after the first start)
 

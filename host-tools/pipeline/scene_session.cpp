@@ -66,10 +66,12 @@ std::string scene_stats_text(const SceneStats& st) {
   std::string s = "points " + std::to_string(st.points_in) + ", non-finite " +
                   std::to_string(st.points_nonfinite) + ", ground " + std::to_string(st.points_ground) +
                   ", in objects " + std::to_string(st.points_in_objects) + ", fragments " +
-                  std::to_string(st.points_fragments) + "; terrain " + std::to_string(st.terrain_cells) +
-                  " cells x " + std::to_string(st.terrain_windows) + " windows; segmentation " +
-                  std::to_string(st.segment_cells) + " cells, " + std::to_string(st.components) +
-                  " components; objects:";
+                  std::to_string(st.points_fragments);
+  if (st.points_low_noise)
+    s += ", low noise " + std::to_string(st.points_low_noise) + " (under the terrain, left out of it)";
+  s += "; terrain " + std::to_string(st.terrain_cells) + " cells x " + std::to_string(st.terrain_windows) +
+       " windows; segmentation " + std::to_string(st.segment_cells) + " cells, " +
+       std::to_string(st.components) + " components; objects:";
   for (uint32_t k = 0; k < kObjectKinds; ++k)
     s += std::string(k ? ", " : " ") + object_kind_name(static_cast<ObjectKind>(k)) + " " +
          std::to_string(st.objects_by_kind[k]);

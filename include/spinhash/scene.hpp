@@ -35,7 +35,8 @@ struct SceneConfig {
   // Windows (scene_stream.hpp): square cores of window_core m tile the
   // ground. A window's terrain sees window_margin m more on every side: half
   // the longest vehicle (max_length / 2 = 6.5 m) plus the terrain filter's
-  // reach (its openings add up to 31 m at a 24 m window): 40 m. Its objects
+  // reach (its openings add up to 31 m at a 24 m window, 33 m after the
+  // low-noise test's two passes of 1 m): 40 m. Its objects
   // are segmented from object_margin m around the core: an object whose
   // centre is in the core and that the margin cuts spans at least twice the
   // margin, so at least hypot(max_length, max_width) (13.6 m) gates it out
@@ -72,6 +73,14 @@ struct SceneConfig {
   float ground_height = 0.25f;    // m above the terrain that is still ground
   float terrain_low_band = 0.3f;  // m: a cell's value is the mean of its points this close to its lowest:
                                   // unbiased on slopes (the lowest sits downhill), steadier under noise
+  // Low noise (multipath returns under the ground, unclassified): a cell's
+  // lowest point more than terrain_noise_gap under the cell's next point and
+  // under the lowest of every cell within terrain_noise_reach is left out of
+  // the terrain. Such a pit survives the openings and, where pits lie closer
+  // than the widest window, pulls the whole terrain down; a true ground point
+  // left out (under a crown) only makes its cell a bump the filter lifts.
+  float terrain_noise_gap = 1.0f;    // m (0: off): above curbs and a cell's slope, below multipath depths
+  float terrain_noise_reach = 1.0f;  // m: the ground around; holds a dozen points at 2 points per m2
 
   // Segmentation: 8-connected cells. Points up to layer_split_height above
   // the terrain form the low layer (vehicles; the empty gap between parked
@@ -152,6 +161,7 @@ struct SceneStats {
   uint32_t points_ground = 0;
   uint32_t points_in_objects = 0;
   uint32_t points_fragments = 0;  // in components below min_object_points
+  uint32_t points_low_noise = 0;  // ground more than terrain_noise_gap under the terrain: left out of it
   uint32_t terrain_cells = 0;
   uint32_t terrain_windows = 0;
   uint32_t segment_cells = 0;

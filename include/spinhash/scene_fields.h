@@ -66,6 +66,10 @@
   X(F32, ground_height, 0.0f, kMaxGroundHeight, "", "m above the terrain that is still ground")             \
   X(F32, terrain_low_band, 0.0f, kMaxTerrainDh, "",                                                         \
     "m: a terrain cell's value is the mean of its points this close to its lowest")                         \
+  X(F32, terrain_noise_gap, 0.0f, kMaxTerrainDh, "--terrain-noise-gap",                                     \
+    "m (0: off): a cell's lowest point this far under its next and under every cell around is low noise")   \
+  X(F32, terrain_noise_reach, 0.0f, kMaxTerrainNoiseReach, "",                                              \
+    "m: the cells around that a low-noise test compares with")                                              \
   X(F32, segment_cell, kMinSegmentCell, kMaxSegmentCell, "", "m: segmentation grid cell")                   \
   X(F32, layer_split_height, kSmallestPositive, kMaxSceneGate, "",                                          \
     "m above the terrain: the low layer (vehicles) below, the high layer (crowns, roofs) above")            \
@@ -115,6 +119,7 @@
   S(U32, points_ground, "points_ground")                   \
   S(U32, points_in_objects, "points_in_objects")           \
   S(U32, points_fragments, "points_fragments")             \
+  S(U32, points_low_noise, "points_low_noise")             \
   S(U32, terrain_cells, "terrain_cells")                   \
   S(U32, terrain_windows, "terrain_windows")               \
   S(U32, segment_cells, "segment_cells")                   \

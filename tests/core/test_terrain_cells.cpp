@@ -1,6 +1,7 @@
 // The stream's terrain cells (scene/terrain_cells.hpp) against the grid
-// their definition gives over a strip's own points (each cell's lowest z,
-// then the mean of the points within the low band of it): the same
+// their definition gives over a strip's own points (each cell's lowest z
+// and next lowest, then the mean of the points within the low band above
+// the band's base): the same
 // footprint, cell values, filtered surface and heights, bit for bit, on
 // sloped terrain with a bump, a curb and vehicle-sized boxes; summed in
 // rows as the stream does (each cell once, the ring's slots reused along
@@ -62,14 +63,16 @@ Tile strip_tile() {
 
 // The grid the definition gives over the points of the ring inside `rect`
 // (cells of the frame's lattice from t_min across): one part over the
-// cells that hold points, each cell's lowest z, then its points within the
-// low band of it, in the points' order; filtered. `local`: the points in
+// cells that hold points, each cell's lowest and next lowest z, then its
+// points within the low band above its base (the next where the lowest
+// lies noise_gap under it or alone, else the lowest), in the points'
+// order; filtered. `local`: the points in
 // the local frame at (s0, t0).
 void grid_from_points(const PointRing& ring, const FrameRect& rect, double t_min, double s0, double t0,
                       TerrainParts& g, std::vector<float>* local) {
   using Cell = std::pair<int64_t, int64_t>;
   struct Sums {
-    float lowest = NAN, sum = 0.0f, count = 0.0f;
+    float lowest = NAN, next = NAN, sum = 0.0f, count = 0.0f;
   };
   std::map<Cell, Sums> cells;
   std::vector<std::pair<Cell, float>> points;
@@ -84,12 +87,21 @@ void grid_from_points(const PointRing& ring, const FrameRect& rect, double t_min
                  static_cast<int64_t>(std::floor((p[1] - t_min) / kCell))};
     points.push_back({c, static_cast<float>(p[2])});
     Sums& sums = cells[c];
-    if (std::isnan(sums.lowest) || points.back().second < sums.lowest) sums.lowest = points.back().second;
+    const float z = points.back().second;
+    if (std::isnan(sums.lowest) || z < sums.lowest) {
+      sums.next = sums.lowest;
+      sums.lowest = z;
+    } else if (std::isnan(sums.next) || z < sums.next) {
+      sums.next = z;
+    }
   }
+  const TerrainParams params;
   for (const auto& [c, z] : points) {
     Sums& sums = cells[c];
-    if (z > sums.lowest + TerrainParams{}.low_band) continue;
-    sums.sum += z - sums.lowest;
+    const bool apart = std::isnan(sums.next) || sums.next - sums.lowest > params.noise_gap;
+    const float base = apart ? sums.next : sums.lowest;
+    if (!(z >= base) || z > base + params.low_band) continue;
+    sums.sum += z - base;
     sums.count += 1.0f;
   }
   int64_t lo[2] = {INT64_MAX, INT64_MAX}, hi[2] = {INT64_MIN, INT64_MIN};
@@ -106,7 +118,7 @@ void grid_from_points(const PointRing& ring, const FrameRect& rect, double t_min
   g.block_part[0] = part;
   for (const auto& [c, sums] : cells)
     terrain_put_cell(g.part[0], static_cast<uint32_t>(c.first - lo[0]),
-                     static_cast<uint32_t>(c.second - lo[1]), sums.lowest, sums.sum, sums.count);
+                     static_cast<uint32_t>(c.second - lo[1]), sums.lowest, sums.next, sums.sum, sums.count);
   terrain_finish(g, TerrainParams{});
 }
 

@@ -38,6 +38,7 @@ StreamTerrain stream_terrain(const std::vector<double>& xyz, const TerrainParams
   cells.carve(arena, cell, s1 - s0, t1 - t0);
   parts.carve(arena, max_cells);
   cells.low_band = params.low_band;
+  cells.noise_gap = params.noise_gap;
   cells.start(t0);
   for (uint32_t i = 0; i < n; ++i) ring.push(&xyz[3 * i]);
   cells.sum(ring, s0, s1);
@@ -48,7 +49,7 @@ StreamTerrain stream_terrain(const std::vector<double>& xyz, const TerrainParams
   rect.t1 = t1;
   r.status = cells.fill(rect, rect, 0.0, 0.0, terrain_reach_cells(params), parts);
   if (r.status != Status::kOk) return r;
-  r.windows = terrain_finish(parts, params);
+  r.windows = terrain_finish(parts, params, &r.noise_cells);
   r.cells = parts.cells;
   r.parts = parts.count;
   for (uint32_t i = 0; i < n; ++i) {

@@ -22,6 +22,7 @@ struct StreamTerrain {
   uint32_t cells = 0;  // in the parts, together
   uint32_t parts = 0;
   uint32_t windows = 0;                  // PMF windows run
+  uint32_t noise_cells = 0;              // cells whose lowest was left out as low noise
   std::vector<float> surface_at_points;  // the terrain under each point
 };
 

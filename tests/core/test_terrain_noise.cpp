@@ -1,0 +1,163 @@
+// Low noise in the terrain (geometry/terrain.hpp, noise_gap and
+// noise_reach), run as the scene stream runs it: unclassified points
+// metres under the ground (multipath returns) are left out of the terrain,
+// which otherwise sinks wherever they lie closer than the widest opening;
+// ground seen through a crown one point per cell, a ditch and a lone point
+// stay as they are.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/terrain.hpp"
+#include "support/scene_fixtures.hpp"
+#include "support/stream_terrain.hpp"
+
+using namespace spinhash;
+using namespace spinhash::test;
+
+namespace {
+
+// A 24 x 24 m tile on an 8 degree slope: terrain at 0.2 m spacing, a car,
+// a building and a crate (test_terrain.cpp's sample).
+Tile sample_tile() {
+  TerrainShape t;
+  t.slope_deg = 8.0;
+  Tile tile;
+  add_terrain(tile, t, 12.0, 0.2, 0.03, 7);
+  add_box(tile, t, 2.0, -2.0, 0.4, 4.5, 1.8, 1.2, 0.3, 0.1);
+  add_box(tile, t, 5.0, 6.5, 0.0, 10.0, 7.0, 5.0, 0.0, 0.2);
+  add_box(tile, t, -5.0, -4.0, 0.0, 1.0, 1.0, 0.6, 0.0, 0.1);
+  remove_occluded_ground(tile);
+  return tile;
+}
+
+// Deterministic uniform [0, 1) (splitmix64).
+double uniform(uint64_t& state) {
+  uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0);
+}
+
+// `count` copies of random ground points of the tile, each 2 to 20 m lower:
+// appended after the tile's own points.
+std::vector<double> with_low_noise(const Tile& tile, uint32_t count, uint64_t seed) {
+  std::vector<size_t> ground;
+  for (size_t i = 0; i < tile.ground.size(); ++i)
+    if (tile.ground[i]) ground.push_back(i);
+  std::vector<double> xyz = tile.xyz;
+  for (uint32_t k = 0; k < count; ++k) {
+    const size_t i = ground[static_cast<size_t>(uniform(seed) * static_cast<double>(ground.size()))];
+    xyz.insert(xyz.end(),
+               {tile.xyz[3 * i], tile.xyz[3 * i + 1], tile.xyz[3 * i + 2] - 2.0 - 18.0 * uniform(seed)});
+  }
+  return xyz;
+}
+
+struct Score {
+  double recall = 0.0, precision = 0.0;
+};
+
+// Ground recall and precision over the tile's own points (the first of
+// `c`'s), truth as test_terrain.cpp's: ground, or within ground_height of
+// the true terrain.
+Score score(const Tile& tile, const StreamTerrain& c) {
+  TerrainShape t;
+  t.slope_deg = 8.0;
+  const float limit = TerrainParams{}.ground_height;
+  uint32_t tp = 0, fp = 0, fn = 0;
+  for (size_t i = 0; i < tile.ground.size(); ++i) {
+    const double* p = &tile.xyz[3 * i];
+    const bool truth = tile.ground[i] || p[2] - terrain_z(t, p[0], p[1]) <= limit;
+    tp += truth && c.ground[i];
+    fp += !truth && c.ground[i];
+    fn += truth && !c.ground[i];
+  }
+  return {static_cast<double>(tp) / (tp + fn), static_cast<double>(tp) / (tp + fp)};
+}
+
+}  // namespace
+
+TEST_CASE("terrain noise: points metres under the ground are left out, and the ground stays ground") {
+  const Tile tile = sample_tile();
+  TerrainParams off;
+  off.noise_gap = 0.0f;
+  // One low point per 18 m2 of the tile: pits closer than the widest
+  // opening, some of them side by side.
+  const std::vector<double> noisy = with_low_noise(tile, 32, 11);
+  const StreamTerrain on = stream_terrain(noisy, TerrainParams{}), without = stream_terrain(noisy, off);
+  REQUIRE(on.status == Status::kOk);
+  REQUIRE(without.status == Status::kOk);
+  const Score kept = score(tile, on), sunk = score(tile, without);
+  CAPTURE(kept.recall);
+  CAPTURE(kept.precision);
+  CAPTURE(sunk.recall);
+  CHECK(kept.recall >= 0.98);
+  CHECK(kept.precision >= 0.98);
+  CHECK(on.noise_cells >= 30u);  // each pit in its own cell, but where two share one
+  CHECK(on.noise_cells <= 32u);
+  CHECK(sunk.recall < 0.9);  // without the test the terrain sinks to the pits
+  CHECK(without.noise_cells == 0u);
+  // The clean tile: no cell judged noise, every height as without the test.
+  const StreamTerrain clean = stream_terrain(tile.xyz, TerrainParams{}),
+                      clean_off = stream_terrain(tile.xyz, off);
+  CHECK(clean.noise_cells == 0u);
+  CHECK(clean.height == clean_off.height);
+}
+
+TEST_CASE("terrain noise: ground seen one point per cell under a crown, a ditch and a lone point stay") {
+  TerrainShape t;  // flat, with the default bump and curb
+  Tile tile;
+  add_terrain(tile, t, 12.0, 0.2, 0.03, 7);
+  // A crown 8 m across over (-4, 4): its ground seen through it only every
+  // 0.7 m (one point in most cells), the crown's points 3.5 to 8 m up.
+  // A ditch 1.5 m deep and 1 m wide across the tile at x = 6, seen along
+  // its floor every 0.7 m (one point in a cell, nothing else there): each
+  // floor point lies far under the banks, as a pit would, but along the
+  // ditch its neighbours are as low.
+  std::vector<size_t> under, ditch;
+  {
+    Tile open;
+    for (size_t i = 0; i < tile.ground.size(); ++i) {
+      const double* p = &tile.xyz[3 * i];
+      if (std::hypot(p[0] + 4.0, p[1] - 4.0) < 4.0 || std::fabs(p[0] - 6.0) < 0.5) continue;
+      open.add(p[0], p[1], p[2], true, -1);
+    }
+    for (double x = -8.0; x <= 0.0; x += 0.7)
+      for (double y = 0.0; y <= 8.0; y += 0.7)
+        if (std::hypot(x + 4.0, y - 4.0) < 4.0) {
+          open.add(x, y, terrain_z(t, x, y), true, -1);
+          under.push_back(open.ground.size() - 1u);
+        }
+    for (double y = -11.9; y <= 11.9; y += 0.7) {
+      open.add(6.1, y, terrain_z(t, 6.1, y) - 1.5, true, -1);
+      ditch.push_back(open.ground.size() - 1u);
+    }
+    add_tree(open, t, -4.0, 4.0, -4.0, 4.0, 5.75, 2.25, 0.25);
+    tile = open;
+  }
+  tile.add(40.0, 40.0, -3.0, true, -1);  // a lone point: nothing around to judge it by
+  const StreamTerrain c = stream_terrain(tile.xyz, TerrainParams{});
+  REQUIRE(c.status == Status::kOk);
+  uint32_t under_ground = 0, ditch_same = 0, crown_ground = 0, crown = 0;
+  for (size_t i : under) under_ground += c.ground[i];
+  TerrainParams off;
+  off.noise_gap = 0.0f;
+  const StreamTerrain without = stream_terrain(tile.xyz, off);
+  for (size_t i : ditch) ditch_same += c.height[i] == without.height[i];  // its floor not left out
+  for (size_t i = 0; i < tile.object.size(); ++i)
+    if (tile.object[i] >= 0 && tile.xyz[3 * i + 2] > 3.0) {
+      ++crown;
+      crown_ground += c.ground[i];
+    }
+  CAPTURE(c.noise_cells);
+  CHECK(under_ground == under.size());  // left out or not, the terrain under them is theirs
+  CHECK(ditch_same == ditch.size());
+  CHECK(crown > 100u);
+  CHECK(crown_ground == 0u);
+  CHECK(c.ground.back() == 1u);
+  CHECK(c.height.back() == doctest::Approx(0.0f));
+}
