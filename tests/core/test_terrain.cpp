@@ -21,56 +21,30 @@ StreamTerrain classify(const Tile& tile, const TerrainParams& p, uint32_t max_ce
   return stream_terrain(tile.xyz, p, max_cells);
 }
 
-// A 24 x 24 m tile: terrain at 0.2 m spacing with 3 cm noise, a car-sized
-// box (4.5 x 1.8 x 1.2 m, 0.3 m clearance), a building (10 x 7 x 5 m) and a
-// low crate (1 x 1 x 0.6 m).
-Tile sample_tile(double slope_deg) {
-  TerrainShape t;
-  t.slope_deg = slope_deg;
-  Tile tile;
-  add_terrain(tile, t, 12.0, 0.2, 0.03, 7);
-  add_box(tile, t, 2.0, -2.0, 0.4, 4.5, 1.8, 1.2, 0.3, 0.1);
-  add_box(tile, t, 5.0, 6.5, 0.0, 10.0, 7.0, 5.0, 0.0, 0.2);
-  add_box(tile, t, -5.0, -4.0, 0.0, 1.0, 1.0, 0.6, 0.0, 0.1);
-  remove_occluded_ground(tile);
-  return tile;
-}
-
 }  // namespace
 
 TEST_CASE("terrain: ground recall and precision on 0, 8 and 15 degree slopes with a bump and a curb") {
   for (double slope : {0.0, 8.0, 15.0}) {
     CAPTURE(slope);
-    const Tile tile = sample_tile(slope);
+    const Tile tile = terrain_sample_tile(slope);
     const StreamTerrain c = classify(tile, TerrainParams{});
     REQUIRE(c.status == Status::kOk);
-    // Object points within ground_height of the true terrain (the foot of a
-    // wall) are ground by definition: truth is the true height above terrain.
     TerrainShape t;
     t.slope_deg = slope;
-    const float limit = TerrainParams{}.ground_height;
-    uint32_t tp = 0, fp = 0, fn = 0;
-    for (size_t i = 0; i < tile.ground.size(); ++i) {
-      const double* p = &tile.xyz[3 * i];
-      const bool truth = tile.ground[i] || p[2] - terrain_z(t, p[0], p[1]) <= limit;
-      tp += truth && c.ground[i];
-      fp += !truth && c.ground[i];
-      fn += truth && !c.ground[i];
-    }
-    const double recall = static_cast<double>(tp) / (tp + fn),
-                 precision = static_cast<double>(tp) / (tp + fp);
+    const GroundScore s = ground_score(tile, t, c);
+    const double recall = s.recall(), precision = s.precision();
     CAPTURE(recall);
     CAPTURE(precision);
     CHECK(recall >= 0.98);
     CHECK(precision >= 0.98);
-    CHECK(c.points_ground == tp + fp);
+    CHECK(c.points_ground == s.tp + s.fp);
     CHECK(c.windows >= 3u);
     CHECK(c.parts == 1u);  // one stretch of ground
   }
 }
 
 TEST_CASE("terrain: heights above the terrain on a 15 degree slope (car roof, building roof, crate)") {
-  const Tile tile = sample_tile(15.0);
+  const Tile tile = terrain_sample_tile(15.0);
   const StreamTerrain c = classify(tile, TerrainParams{});
   REQUIRE(c.status == Status::kOk);
   float top[3] = {-1e9f, -1e9f, -1e9f};
@@ -94,7 +68,7 @@ TEST_CASE("terrain: heights above the terrain on a 15 degree slope (car roof, bu
 }
 
 TEST_CASE("terrain: a footprint needing more cells than the grid holds is kTileTooLarge") {
-  const Tile tile = sample_tile(0.0);
+  const Tile tile = terrain_sample_tile(0.0);
   // 49.2 x 49.2 cells, and up to one more each way where the grid's origin
   // snaps down to the cell lattice.
   CHECK(classify(tile, TerrainParams{}, 2000).status == Status::kTileTooLarge);
@@ -108,7 +82,7 @@ TEST_CASE("terrain: parts follow the points: far-apart patches are filtered each
   // Two patches of the sample tile 3 km apart across, and a lone point
   // between them: three parts, a few thousand cells, not the 6 million of
   // one grid over their span; each patch's heights are those it gives alone.
-  const Tile tile = sample_tile(8.0);
+  const Tile tile = terrain_sample_tile(8.0);
   std::vector<double> near = tile.xyz, far = tile.xyz, both = tile.xyz;
   for (size_t i = 1; i < far.size(); i += 3) far[i] += 3000.0;
   both.insert(both.end(), far.begin(), far.end());

@@ -136,5 +136,17 @@ std::vector<double> in_scan_order(const Tile& tile, int axis, const double offse
   return xyz;
 }
 
+Tile terrain_sample_tile(double slope_deg) {
+  TerrainShape t;
+  t.slope_deg = slope_deg;
+  Tile tile;
+  add_terrain(tile, t, 12.0, 0.2, 0.03, 7);
+  add_box(tile, t, 2.0, -2.0, 0.4, 4.5, 1.8, 1.2, 0.3, 0.1);
+  add_box(tile, t, 5.0, 6.5, 0.0, 10.0, 7.0, 5.0, 0.0, 0.2);
+  add_box(tile, t, -5.0, -4.0, 0.0, 1.0, 1.0, 0.6, 0.0, 0.1);
+  remove_occluded_ground(tile);
+  return tile;
+}
+
 }  // namespace test
 }  // namespace spinhash

@@ -58,5 +58,11 @@ int add_model(Tile& tile, const TerrainShape& t, const std::vector<double>& mode
 // in the order they were added, each shifted by `offset` (georeferencing).
 std::vector<double> in_scan_order(const Tile& tile, int axis, const double offset[3] = nullptr);
 
+// The terrain tests' 24 x 24 m tile on a slope of `slope_deg` (the default
+// bump and curb): terrain at 0.2 m spacing with 3 cm noise, a car-sized
+// box (4.5 x 1.8 x 1.2 m, 0.3 m clearance), a building (10 x 7 x 5 m) and a
+// low crate (1 x 1 x 0.6 m), no ground under them.
+Tile terrain_sample_tile(double slope_deg);
+
 }  // namespace test
 }  // namespace spinhash

@@ -66,5 +66,18 @@ StreamTerrain stream_terrain(const std::vector<double>& xyz, const TerrainParams
   return r;
 }
 
+GroundScore ground_score(const Tile& tile, const TerrainShape& t, const StreamTerrain& c) {
+  const float limit = TerrainParams{}.ground_height;
+  GroundScore s;
+  for (size_t i = 0; i < tile.ground.size(); ++i) {
+    const double* p = &tile.xyz[3 * i];
+    const bool truth = tile.ground[i] || p[2] - terrain_z(t, p[0], p[1]) <= limit;
+    s.tp += truth && c.ground[i];
+    s.fp += !truth && c.ground[i];
+    s.fn += truth && !c.ground[i];
+  }
+  return s;
+}
+
 }  // namespace test
 }  // namespace spinhash

@@ -9,6 +9,7 @@
 
 #include "geometry/terrain.hpp"
 #include "spinhash/status.hpp"
+#include "support/scene_fixtures.hpp"
 
 namespace spinhash {
 namespace test {
@@ -31,6 +32,17 @@ struct StreamTerrain {
 // (parameters out of range).
 StreamTerrain stream_terrain(const std::vector<double>& xyz, const TerrainParams& params,
                              uint32_t max_cells = 1u << 17);
+
+// Ground recall and precision of `c` over the tile's points (the first of
+// c's: points added after the tile's are not scored). Truth: ground, or
+// within ground_height of the true terrain `t` (the foot of a wall is
+// ground by definition).
+struct GroundScore {
+  uint32_t tp = 0, fp = 0, fn = 0;
+  double recall() const { return static_cast<double>(tp) / (tp + fn); }
+  double precision() const { return static_cast<double>(tp) / (tp + fp); }
+};
+GroundScore ground_score(const Tile& tile, const TerrainShape& t, const StreamTerrain& c);
 
 }  // namespace test
 }  // namespace spinhash
