@@ -4,6 +4,7 @@
 
 #include "config/field_table.hpp"
 #include "config/mode_name.hpp"
+#include "spinhash/scene_fields.h"
 
 namespace spinhash::host {
 
@@ -31,6 +32,17 @@ std::string config_text(const RecognizerConfig& c, bool with_mode) {
     }
     sep = "; ";
   }
+  return s.str();
+}
+
+std::string config_text(const SceneConfig& c) {
+  std::ostringstream s;
+  const char* sep = "";
+#define SPINHASH_SCENE_FIELD_TEXT(kind, name, lo, hi, flag, help) \
+  s << sep << #name << " " << c.name;                             \
+  sep = "; ";
+  SPINHASH_SCENE_CONFIG_FIELDS(SPINHASH_SCENE_FIELD_TEXT)
+#undef SPINHASH_SCENE_FIELD_TEXT
   return s.str();
 }
 

@@ -58,14 +58,21 @@ void remove_results(const std::string& folder) {
 // again, not kept.
 constexpr const char* kPointsRead = "without-noise-classes-7-18-and-withheld";
 
-std::string settings_key(const SurveyOptions& o) {
-  const std::string recognizer = host::config_text(o.scene.recognizer);
+std::string text_digest(const std::string& text) {
   char digest[20];
   std::snprintf(digest, sizeof digest, "%016llx",
-                static_cast<unsigned long long>(fnv1a64(recognizer.data(), recognizer.size())));
+                static_cast<unsigned long long>(fnv1a64(text.data(), text.size())));
+  return digest;
+}
+
+// Every setting a tile's answers depend on: a stored result made with
+// another scene setting (its terrain, gates, windows: every field of
+// scene_fields.h, so a field a newer binary adds too) or recognizer field
+// is run again.
+std::string settings_key(const SurveyOptions& o) {
   return "spinhash=" + std::string(pipeline::version()) + ";db=" + file_digest(o.db_path) +
-         ";top=" + std::to_string(o.scene.top_n) + ";max_objects=" + std::to_string(o.scene.max_objects) +
-         ";max_window_points=" + std::to_string(o.scene.max_tile_points) + ";recognizer=" + digest +
+         ";scene=" + text_digest(host::config_text(o.scene)) +
+         ";recognizer=" + text_digest(host::config_text(o.scene.recognizer)) +
          ";work_crs=" + escape_line(o.work.named ? o.work.crs.proj_definition() : "") +
          ";points=" + kPointsRead;
 }

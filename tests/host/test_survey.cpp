@@ -209,6 +209,19 @@ TEST_CASE("survey --resume: an interrupted run loses nothing and a re-run duplic
     CHECK(contains(s.output("crash", "survey.json"), "\"tiles_resumed\":4"));
     CHECK(s.output("crash", "detections.jsonl") == full);
   }
+  SUBCASE("a result stored with other scene settings (another terrain rule, say) is run again") {
+    std::filesystem::copy(s.dir.file("full"), s.dir.file("other"), std::filesystem::copy_options::recursive);
+    const std::string stored = s.dir.file("other") + "/tile-results/t01.result";
+    std::string text = read_bytes(stored);
+    const size_t at = text.find(";scene=");
+    REQUIRE(at != std::string::npos);
+    text.replace(at + 7, 16, "0123456789abcdef");  // the digest of every scene_fields.h setting
+    write_bytes(stored, text);
+    const CliRun r = s.run("other", "--resume");
+    REQUIRE(r.exit_code == 0);
+    CHECK(contains(s.output("other", "survey.json"), "\"tiles_resumed\":3"));
+    CHECK(s.output("other", "detections.jsonl") == full);
+  }
   SUBCASE("a run killed mid-way (SIGKILL after its first tile) is completed by --resume") {
     // Killed as soon as its first tile's result is stored: three tiles are
     // then left, whatever the machine's speed (a timer raced the run).
