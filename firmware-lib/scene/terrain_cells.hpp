@@ -1,6 +1,7 @@
 // The stream's terrain cells: each buffered point's terrain sums (lowest
-// and next lowest, then the low band: geometry/terrain.hpp) on the frame's fixed lattice of
-// terrain_cell m, kept as long as a strip of windows still needs them.
+// and next lowest, then the low band: geometry/terrain.hpp) on the frame's
+// fixed lattice of terrain_cell m, kept as long as a strip of windows still
+// needs them.
 // Summed once, when no point can still arrive in the cell (the row's
 // lookahead), so the buffer keeps points only while a window gathers them
 // (object_margin), not for the terrain filter's reach (window_margin).
