@@ -13,7 +13,7 @@ reader: tests/host/test_tile_stream.cpp holds that case.
 
   scripts/low_noise_tiles.py --spinhash build/host-tools/spinhash --db DB.shdb \
       --meshes DB_MESH_DIR --out DIR [--rates 0,180,60,18] [--seeds 1-3] [--size 60] [--vehicles 8] \
-      [--noise-gap M]
+      [--spacing M] [--noise-gap M]
 """
 import argparse, csv, json, math, os, re, subprocess, sys
 
@@ -52,6 +52,7 @@ def main():
     ap.add_argument("--seeds", default="1-3")
     ap.add_argument("--size", type=float, default=60.0)
     ap.add_argument("--vehicles", type=int, default=8)
+    ap.add_argument("--spacing", help="scan-scene's --spacing, m (default: scan-scene's)")
     ap.add_argument("--noise-gap", help="scene's --terrain-noise-gap (0: the low-noise test off; default: scene's)")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
@@ -60,8 +61,9 @@ def main():
     rows = {r: {"low": 0, "points": 0, "ground": 0, "left_out": 0, "truth": 0, "found": 0, "right": 0} for r in rates}
     for seed in range(lo, hi + 1):
         tile = os.path.join(a.out, "tile%d.ply" % seed)
+        spacing = [] if a.spacing is None else ["--spacing", a.spacing]
         run([a.spinhash, "scan-scene", a.meshes, "-o", tile, "--size", str(a.size), "--vehicles",
-             str(a.vehicles), "--trees", "4", "--seed", str(seed)])
+             str(a.vehicles), "--trees", "4", "--seed", str(seed)] + spacing)
         truth = [t for t in csv.DictReader(open(tile + ".truth.csv")) if t["kind"] == "vehicle"]
         xyz = read_ply_xyz(tile)
         rng = np.random.default_rng(seed)
