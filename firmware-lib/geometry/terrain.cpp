@@ -179,7 +179,8 @@ bool terrain_params_valid(const TerrainParams& p) {
          p.ground_height <= kMaxGroundHeight && p.low_band >= 0.0f && p.low_band <= kMaxTerrainDh &&
          p.noise_gap >= 0.0f && p.noise_gap <= kMaxTerrainDh &&
          (p.noise_gap == 0.0f || p.noise_gap >= p.low_band) && p.noise_reach >= 0.0f &&
-         p.noise_reach <= kMaxTerrainNoiseReach;
+         p.noise_reach <= kMaxTerrainNoiseReach && p.noise_support >= 1u &&
+         p.noise_support <= kMaxTerrainNoiseSupport;
 }
 
 uint32_t terrain_noise_reach_cells(const TerrainParams& params) {
@@ -351,13 +352,14 @@ void terrain_put_cell(TerrainGrid& g, uint32_t ix, uint32_t iy, float lowest, fl
 
 namespace {
 
-// g.off_ground[c] = 1 where the cell's lowest (g.value) is low noise: apart
-// from its next (g.surface) and noise_gap under the floor of every cell
-// within `reach` cells that has one (a cell judged noise has its next as
-// floor), with at least one such cell (alone, nothing to judge by). Each
-// pass sees the last one's judgements, so a pit beside a deeper one falls
-// in the second. Returns the cells judged noise.
-uint32_t mark_low_noise(TerrainGrid& g, float gap, uint32_t reach) {
+// g.off_ground[c] = 1 where the cell's lowest (g.value) is low noise:
+// apart from its next (g.surface), and fewer than `support` of the cells
+// within `reach` cells that have a floor hold it up (a floor less than
+// `gap` above it; a cell judged noise has its next as floor), unless every
+// such cell does; with none, nothing to judge by. Each pass sees the last
+// one's judgements, so a pit beside a deeper one falls in the second.
+// Returns the cells judged noise.
+uint32_t mark_low_noise(TerrainGrid& g, float gap, uint32_t reach, uint32_t support) {
   const uint32_t cells = g.nx * g.ny;
   for (uint32_t c = 0; c < cells; ++c) g.off_ground[c] = 0;
   if (reach == 0) return 0;
@@ -370,19 +372,16 @@ uint32_t mark_low_noise(TerrainGrid& g, float gap, uint32_t reach) {
         const float under = g.value[c] + gap;
         const uint32_t x0 = x > reach ? x - reach : 0u, x1 = x + reach < g.nx ? x + reach : g.nx - 1u;
         const uint32_t y0 = y > reach ? y - reach : 0u, y1 = y + reach < g.ny ? y + reach : g.ny - 1u;
-        bool judged = false, held = false;
-        for (uint32_t v = y0; v <= y1 && !held; ++v)
-          for (uint32_t u = x0; u <= x1; ++u) {
+        uint32_t around = 0, holding = 0;
+        for (uint32_t v = y0; v <= y1 && holding < support; ++v)
+          for (uint32_t u = x0; u <= x1 && holding < support; ++u) {
             const uint32_t n = v * g.nx + u;
             const float floor = g.off_ground[n] ? g.surface[n] : g.value[n];
             if (n == c || no_data(floor)) continue;
-            judged = true;
-            if (floor < under) {
-              held = true;  // ground around as low: a dip, not noise
-              break;
-            }
+            ++around;
+            holding += floor < under ? 1u : 0u;  // ground around as low: a dip, not noise
           }
-        if (judged && !held) {
+        if (around > 0 && holding < support && holding < around) {
           g.off_ground[c] = 1;
           ++noise;
         }
@@ -414,7 +413,7 @@ uint32_t terrain_finish(TerrainParts& parts, const TerrainParams& params, uint32
   const uint32_t reach = terrain_noise_reach_cells(params);
   for (uint32_t k = 0; k < parts.count; ++k) {
     TerrainGrid& g = parts.part[k];
-    const uint32_t noise = mark_low_noise(g, params.noise_gap, reach);
+    const uint32_t noise = mark_low_noise(g, params.noise_gap, reach, params.noise_support);
     if (noise_cells != nullptr) *noise_cells += noise;
     cell_values(g, params.noise_gap);
     windows = progressive_filter(g, params);

@@ -32,7 +32,8 @@ struct TerrainParams {
   float low_band = 0.3f;        // m: a cell's value is the mean of its points this close to its lowest
   float noise_gap =
       1.0f;  // m (0: off): a cell's lowest this far under its next and its surroundings is noise
-  float noise_reach = 1.0f;  // m: the surroundings of that test
+  float noise_reach = 1.0f;    // m: the surroundings of that test
+  uint32_t noise_support = 2;  // cells around within the gap that keep a lowest (or all, if fewer)
 };
 
 // One dense grid of cells (a part of a strip's terrain); its buffers come

@@ -234,6 +234,7 @@ TerrainParams scene_terrain_params(const SceneConfig& c) {
   p.low_band = c.terrain_low_band;
   p.noise_gap = c.terrain_noise_gap;
   p.noise_reach = c.terrain_noise_reach;
+  p.noise_support = c.terrain_noise_support;
   return p;
 }
 

@@ -69,6 +69,8 @@ constexpr float kMaxTerrainSlope = 10.0f;      // rise per m
 constexpr float kMaxTerrainDh = 100.0f;        // m: the terrain filter's height thresholds and low band
 constexpr float kMaxTerrainNoiseReach = 10.0f;  // m: terrain_noise_reach
 constexpr uint32_t kMaxTerrainNoiseCells = 8;  // cells each way a low-noise test looks (reach / cell, capped)
+constexpr uint32_t kMaxTerrainNoiseSupport =
+    (2u * kMaxTerrainNoiseCells + 1u) * (2u * kMaxTerrainNoiseCells + 1u) - 1u;  // every cell around
 constexpr uint32_t kMaxTerrainWindows = 8;  // the terrain filter's openings (half-widths 1, 2, 4, ... cells)
 // A strip's terrain: blocks that say which part covers a point (coarser
 // blocks where a strip is wide), kTerrainBlocksPerReach of them across the

@@ -74,13 +74,16 @@ struct SceneConfig {
   float terrain_low_band = 0.3f;  // m: a cell's value is the mean of its points this close to its lowest:
                                   // unbiased on slopes (the lowest sits downhill), steadier under noise
   // Low noise (multipath returns under the ground, unclassified): a cell's
-  // lowest point more than terrain_noise_gap under the cell's next point and
-  // under the lowest of every cell within terrain_noise_reach is left out of
-  // the terrain. Such a pit survives the openings and, where pits lie closer
-  // than the widest window, pulls the whole terrain down; a true ground point
-  // left out (under a crown) only makes its cell a bump the filter lifts.
-  float terrain_noise_gap = 1.0f;    // m (0: off): above curbs and a cell's slope, below multipath depths
-  float terrain_noise_reach = 1.0f;  // m: the ground around; holds a dozen points at 2 points per m2
+  // lowest point more than terrain_noise_gap under the cell's next point is
+  // left out of the terrain unless terrain_noise_support of the cells within
+  // terrain_noise_reach (or all of them, where fewer hold points) have a
+  // lowest less than the gap above it. Such a pit survives the openings and,
+  // where pits lie closer than the widest window, pulls the whole terrain
+  // down; a true ground point left out (under a crown) only makes its cell a
+  // bump the filter lifts.
+  float terrain_noise_gap = 1.0f;      // m (0: off): above curbs and a cell's slope, below multipath depths
+  float terrain_noise_reach = 1.0f;    // m: the ground around; holds a dozen points at 2 points per m2
+  uint32_t terrain_noise_support = 2;  // two pits at one depth are noise; a floor or a ditch has more
 
   // Segmentation: 8-connected cells. Points up to layer_split_height above
   // the terrain form the low layer (vehicles; the empty gap between parked

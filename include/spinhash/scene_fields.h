@@ -67,9 +67,11 @@
   X(F32, terrain_low_band, 0.0f, kMaxTerrainDh, "",                                                         \
     "m: a terrain cell's value is the mean of its points this close to its lowest")                         \
   X(F32, terrain_noise_gap, 0.0f, kMaxTerrainDh, "--terrain-noise-gap",                                     \
-    "m (0: off): a cell's lowest point this far under its next and under every cell around is low noise")   \
+    "m (0: off): a cell's lowest point this far under its next and under the cells around is low noise")    \
   X(F32, terrain_noise_reach, 0.0f, kMaxTerrainNoiseReach, "",                                              \
     "m: the cells around that a low-noise test compares with")                                              \
+  X(U32, terrain_noise_support, 1u, kMaxTerrainNoiseSupport, "",                                            \
+    "cells around, as low within the gap, that keep a cell's lowest (or all of them, where fewer)")         \
   X(F32, segment_cell, kMinSegmentCell, kMaxSegmentCell, "", "m: segmentation grid cell")                   \
   X(F32, layer_split_height, kSmallestPositive, kMaxSceneGate, "",                                          \
     "m above the terrain: the low layer (vehicles) below, the high layer (crowns, roofs) above")            \

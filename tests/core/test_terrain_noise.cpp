@@ -13,20 +13,12 @@
 #include "geometry/terrain.hpp"
 #include "support/scene_fixtures.hpp"
 #include "support/stream_terrain.hpp"
+#include "util/rng.hpp"
 
 using namespace spinhash;
 using namespace spinhash::test;
 
 namespace {
-
-// Deterministic uniform [0, 1) (splitmix64).
-double uniform(uint64_t& state) {
-  uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0);
-}
 
 // `count` copies of random ground points of the tile, each 2 to 20 m lower:
 // appended after the tile's own points.
@@ -35,10 +27,11 @@ std::vector<double> with_low_noise(const Tile& tile, uint32_t count, uint64_t se
   for (size_t i = 0; i < tile.ground.size(); ++i)
     if (tile.ground[i]) ground.push_back(i);
   std::vector<double> xyz = tile.xyz;
+  Pcg32 rng(seed);
   for (uint32_t k = 0; k < count; ++k) {
-    const size_t i = ground[static_cast<size_t>(uniform(seed) * static_cast<double>(ground.size()))];
+    const size_t i = ground[rng.below(static_cast<uint32_t>(ground.size()))];
     xyz.insert(xyz.end(),
-               {tile.xyz[3 * i], tile.xyz[3 * i + 1], tile.xyz[3 * i + 2] - 2.0 - 18.0 * uniform(seed)});
+               {tile.xyz[3 * i], tile.xyz[3 * i + 1], tile.xyz[3 * i + 2] - 2.0 - 18.0 * rng.uniform()});
   }
   return xyz;
 }
@@ -56,7 +49,7 @@ TEST_CASE("terrain noise: points metres under the ground are left out, and the g
   TerrainParams off;
   off.noise_gap = 0.0f;
   // One low point per 18 m2 of the tile: pits closer than the widest
-  // opening, some of them side by side.
+  // opening, among them two 0.5 m apart at one depth (-18 m).
   const std::vector<double> noisy = with_low_noise(tile, 32, 11);
   const StreamTerrain on = stream_terrain(noisy, TerrainParams{}), without = stream_terrain(noisy, off);
   REQUIRE(on.status == Status::kOk);
@@ -71,6 +64,11 @@ TEST_CASE("terrain noise: points metres under the ground are left out, and the g
   CHECK(on.noise_cells >= 30u);  // each pit in its own cell, but where two share one
   CHECK(on.noise_cells <= 32u);
   CHECK(sunk < 0.9);  // without the test the terrain sinks to the pits
+  // Kept by one cell as low, the pair would hold each other up and sink
+  // the terrain around them.
+  TerrainParams one = TerrainParams{};
+  one.noise_support = 1;
+  CHECK(score(tile, stream_terrain(noisy, one)).recall() < 0.95);
   CHECK(without.noise_cells == 0u);
   // The clean tile: no cell judged noise, every height as without the test.
   const StreamTerrain clean = stream_terrain(tile.xyz, TerrainParams{}),
@@ -86,9 +84,10 @@ TEST_CASE("terrain noise: ground seen one point per cell under a crown, a ditch 
   // A crown 8 m across over (-4, 4): its ground seen through it only every
   // 0.7 m (one point in most cells), the crown's points 3.5 to 8 m up.
   // A ditch 1.5 m deep and 1 m wide across the tile at x = 6, seen along
-  // its floor every 0.7 m (one point in a cell, nothing else there): each
+  // its floor every 0.45 m (one point in a cell, nothing else there): each
   // floor point lies far under the banks, as a pit would, but along the
-  // ditch its neighbours are as low.
+  // ditch two or more of its neighbours are as low (noise_support), even at
+  // its ends.
   std::vector<size_t> under, ditch;
   {
     Tile open;
@@ -103,7 +102,7 @@ TEST_CASE("terrain noise: ground seen one point per cell under a crown, a ditch 
           open.add(x, y, terrain_z(t, x, y), true, -1);
           under.push_back(open.ground.size() - 1u);
         }
-    for (double y = -11.9; y <= 11.9; y += 0.7) {
+    for (double y = -11.9; y <= 11.9; y += 0.45) {
       open.add(6.1, y, terrain_z(t, 6.1, y) - 1.5, true, -1);
       ditch.push_back(open.ground.size() - 1u);
     }
