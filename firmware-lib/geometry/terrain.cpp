@@ -353,12 +353,12 @@ void terrain_put_cell(TerrainGrid& g, uint32_t ix, uint32_t iy, float lowest, fl
 namespace {
 
 // g.off_ground[c] = 1 where the cell's lowest (g.value) is low noise:
-// apart from its next (g.surface), and fewer than `support` of the cells
-// within `reach` cells that have a floor hold it up (a floor less than
-// `gap` above it; a cell judged noise has its next as floor), unless every
-// such cell does; with none, nothing to judge by. Each pass sees the last
-// one's judgements, so a pit beside a deeper one falls in the second.
-// Returns the cells judged noise.
+// apart from its next (g.surface), and held up by fewer than `support` of
+// the cells within `reach` cells that have a floor, or by fewer than a
+// quarter of them where that is less (a floor less than `gap` above it
+// holds it; a cell judged noise has its next as floor); with none, nothing
+// to judge by. Each pass sees the last one's judgements, so a pit beside a
+// deeper one falls in the second. Returns the cells judged noise.
 uint32_t mark_low_noise(TerrainGrid& g, float gap, uint32_t reach, uint32_t support) {
   const uint32_t cells = g.nx * g.ny;
   for (uint32_t c = 0; c < cells; ++c) g.off_ground[c] = 0;
@@ -381,7 +381,8 @@ uint32_t mark_low_noise(TerrainGrid& g, float gap, uint32_t reach, uint32_t supp
             ++around;
             holding += floor < under ? 1u : 0u;  // ground around as low: a dip, not noise
           }
-        if (around > 0 && holding < support && holding < around) {
+        const uint32_t quarter = (around + 3u) / 4u;  // sparse ground: few cells around, each one counts
+        if (around > 0 && holding < (support < quarter ? support : quarter)) {
           g.off_ground[c] = 1;
           ++noise;
         }

@@ -33,7 +33,7 @@ struct TerrainParams {
   float noise_gap =
       1.0f;  // m (0: off): a cell's lowest this far under its next and its surroundings is noise
   float noise_reach = 1.0f;    // m: the surroundings of that test
-  uint32_t noise_support = 2;  // cells around within the gap that keep a lowest (or all, if fewer)
+  uint32_t noise_support = 2;  // cells around within the gap that keep a lowest (or a quarter, if fewer)
 };
 
 // One dense grid of cells (a part of a strip's terrain); its buffers come

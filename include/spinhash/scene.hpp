@@ -76,8 +76,8 @@ struct SceneConfig {
   // Low noise (multipath returns under the ground, unclassified): a cell's
   // lowest point more than terrain_noise_gap under the cell's next point is
   // left out of the terrain unless terrain_noise_support of the cells within
-  // terrain_noise_reach (or all of them, where fewer hold points) have a
-  // lowest less than the gap above it. Such a pit survives the openings and,
+  // terrain_noise_reach that hold points (or a quarter of them, where that
+  // is fewer) have a lowest less than the gap above it. Such a pit survives the openings and,
   // where pits lie closer than the widest window, pulls the whole terrain
   // down; a true ground point left out (under a crown) only makes its cell a
   // bump the filter lifts.

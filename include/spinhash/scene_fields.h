@@ -71,7 +71,7 @@
   X(F32, terrain_noise_reach, 0.0f, kMaxTerrainNoiseReach, "",                                              \
     "m: the cells around that a low-noise test compares with")                                              \
   X(U32, terrain_noise_support, 1u, kMaxTerrainNoiseSupport, "",                                            \
-    "cells around, as low within the gap, that keep a cell's lowest (or all of them, where fewer)")         \
+    "cells around, as low within the gap, that keep a cell's lowest (or a quarter of them, if fewer)")      \
   X(F32, segment_cell, kMinSegmentCell, kMaxSegmentCell, "", "m: segmentation grid cell")                   \
   X(F32, layer_split_height, kSmallestPositive, kMaxSceneGate, "",                                          \
     "m above the terrain: the low layer (vehicles) below, the high layer (crowns, roofs) above")            \

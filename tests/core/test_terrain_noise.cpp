@@ -131,3 +131,19 @@ TEST_CASE("terrain noise: ground seen one point per cell under a crown, a ditch 
   CHECK(c.ground.back() == 1u);
   CHECK(c.height.back() == doctest::Approx(0.0f));
 }
+
+TEST_CASE("terrain noise: sparse ground on a steep slope, one point in a cell, is never noise") {
+  // One point per m2 on a 35 degree slope: a cell has a few cells around
+  // it within the reach, some of them more than the gap above; each that
+  // is as low counts.
+  TerrainShape t;
+  t.slope_deg = 35.0;
+  Tile tile;
+  add_terrain(tile, t, 12.0, 1.0, 0.05, 5);
+  TerrainParams off;
+  off.noise_gap = 0.0f;
+  const StreamTerrain on = stream_terrain(tile.xyz, TerrainParams{}), without = stream_terrain(tile.xyz, off);
+  REQUIRE(on.status == Status::kOk);
+  CHECK(on.noise_cells == 0u);
+  CHECK(on.height == without.height);
+}
