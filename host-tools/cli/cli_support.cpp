@@ -37,6 +37,22 @@ void add_work_crs_option(CLI::App* cmd, host::WorkCrs* work) {
       ->type_name("CRS");
 }
 
+void add_drop_class_option(CLI::App* cmd, host::PointFilter* filter) {
+  cmd->add_option_function<std::vector<std::string>>(
+         "--drop-class",
+         [filter](const std::vector<std::string>& lists) {
+           for (const std::string& list : lists) {
+             std::string error;
+             if (!host::add_drop_classes(list, filter, &error))
+               throw CLI::ValidationError("--drop-class", error);
+           }
+         },
+         "LAS classes to leave out besides noise (7, 18) and withheld points, e.g. a producer's own artefact "
+         "class: N or N,N,... (LAS and LAZ)")
+      ->type_name("CLASSES")
+      ->take_all();
+}
+
 void print_error(const char* command, const std::string& message) {
   for (size_t start = 0; start <= message.size();) {
     size_t end = message.find('\n', start);

@@ -29,10 +29,11 @@ namespace {
 struct RecognizeArgs {
   std::string db_path;
   std::vector<std::string> queries;
-  uint32_t top = 0;         // 0: every model that got a score
-  std::string overlay_out;  // FILE.ply: the query and the posed model, coloured
-  std::string picture_out;  // FILE.png: the same, top-down and side-on
-  host::WorkCrs work;       // --work-crs: the CRS to work in (else each file's own)
+  uint32_t top = 0;          // 0: every model that got a score
+  std::string overlay_out;   // FILE.ply: the query and the posed model, coloured
+  std::string picture_out;   // FILE.png: the same, top-down and side-on
+  host::WorkCrs work;        // --work-crs: the CRS to work in (else each file's own)
+  host::PointFilter filter;  // --drop-class: classes left out besides noise
   RecognizerConfig config;
 };
 
@@ -40,14 +41,14 @@ struct RecognizeArgs {
 // (cloud/metric_source.hpp), which opens the file once; notes on stderr.
 std::vector<double> read_query(const RecognizeArgs& a, const std::string& path, host::Crs* crs,
                                host::AxisUnits* units) {
-  std::unique_ptr<host::MetricSource> source = host::open_metric_source(path, a.work);
+  std::unique_ptr<host::MetricSource> source = host::open_metric_source(path, a.work, a.filter);
   const host::ToMetres& to_metres = source->to_metres();
   for (const std::string& note : to_metres.notes())
     std::fprintf(stderr, "spinhash recognize: %s: %s\n", host::cloud_name(path).c_str(), note.c_str());
   *crs = to_metres.work_crs();
   *units = to_metres.units();
   std::vector<double> xyz = host::read_all_points(*source);
-  const std::string noise = host::noise_note(source->points_noise());
+  const std::string noise = host::dropped_note(source->points_noise(), a.filter);
   if (!noise.empty())
     std::fprintf(stderr, "spinhash recognize: %s: %s\n", host::cloud_name(path).c_str(), noise.c_str());
   return xyz;
@@ -146,6 +147,7 @@ void add_recognize_command(CLI::App& app, int* exit_code) {
                   "several queries: FILE-NAME.png each")
       ->check(extension_check(".png"));
   add_work_crs_option(cmd, &a->work);
+  add_drop_class_option(cmd, &a->filter);
   cmd->add_option("queries", a->queries, "point cloud files ('-': stdin)")->required();
   add_recognizer_flags(cmd, &a->config);
   cmd->callback([a, exit_code]() {

@@ -33,8 +33,9 @@ constexpr uint32_t kPicturePoints = 2000000;  // an even sample of the tile for 
 struct SceneArgs {
   std::string db_path;
   std::vector<std::string> tiles;
-  std::string picture_dir;  // a top-down PNG per tile, when given
-  host::WorkCrs work;       // --work-crs: the CRS to work in (else each file's own)
+  std::string picture_dir;   // a top-down PNG per tile, when given
+  host::WorkCrs work;        // --work-crs: the CRS to work in (else each file's own)
+  host::PointFilter filter;  // --drop-class: classes left out besides noise
   SceneConfig config;
   size_t order_memory_points = pipeline::kOrderMemoryPoints;  // --order-memory
 };
@@ -85,14 +86,14 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
   };
   pipeline::TileStreamResult r;
   try {
-    std::unique_ptr<host::MetricSource> source = host::open_metric_source(path, a.work);
+    std::unique_ptr<host::MetricSource> source = host::open_metric_source(path, a.work, a.filter);
     const host::ToMetres& to_metres = source->to_metres();
     if (to_metres.work_crs().known()) crs = to_metres.work_crs().describe();
     units = to_metres.units();
     for (const std::string& note : to_metres.notes())
       std::fprintf(stderr, "spinhash scene: %s: %s\n", name.c_str(), note.c_str());
     r = pipeline::stream_tile(file.db, *source, options, print);
-    const std::string noise = host::noise_note(source->points_noise());
+    const std::string noise = host::dropped_note(source->points_noise(), a.filter);
     if (!noise.empty()) std::fprintf(stderr, "spinhash scene: %s: %s\n", name.c_str(), noise.c_str());
   } catch (const std::exception& e) {
     std::fflush(stdout);  // the objects already reported stay; the tile's status line follows them
@@ -155,6 +156,7 @@ void add_scene_command(CLI::App& app, int* exit_code) {
                   "folder for a top-down PNG per tile: objects outlined and labelled (green: confident)")
       ->check(CLI::ExistingDirectory);
   add_work_crs_option(cmd, &a->work);
+  add_drop_class_option(cmd, &a->filter);
   add_order_memory_option(cmd, &a->order_memory_points);
   cmd->add_option("tiles", a->tiles, "point cloud files ('-': stdin)")->required();
   flags::add_recognizer_flags(cmd, &a->config.recognizer);

@@ -30,6 +30,7 @@ void add_survey_command(CLI::App& app, int* exit_code) {
   cmd->add_flag("--resume", o->resume, "keep the tiles a previous run in DIR finished (same inputs)");
   cmd->add_flag("--quiet", o->quiet, "no progress line");
   add_work_crs_option(cmd, &o->work);
+  add_drop_class_option(cmd, &o->filter);
   add_order_memory_option(cmd, &o->order_memory_points);
   flags::add_scene_flags(cmd, &o->scene, {"--top", "--max-objects"});
   flags::add_set_option(cmd, &o->scene.recognizer);  // --preset, --set STAGE.FIELD=VALUE

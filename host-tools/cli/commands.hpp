@@ -24,6 +24,11 @@ void refuse_repeated_stdin(const std::vector<std::string>& clouds);
 // CRS PROJ does not read, or one in degrees, is a usage error (exit 2).
 void add_work_crs_option(CLI::App* cmd, host::WorkCrs* work);
 
+// --drop-class N[,N...]: LAS classes the readers leave out besides noise
+// and withheld points (cloud/point_filter.hpp). A value that is not a class
+// is a usage error (exit 2). Repeatable.
+void add_drop_class_option(CLI::App* cmd, host::PointFilter* filter);
+
 // --order-memory POINTS: the points a tile's along-track order holds in
 // memory before it spills to a temporary file (pipeline/tile_stream_order.hpp).
 void add_order_memory_option(CLI::App* cmd, size_t* points);

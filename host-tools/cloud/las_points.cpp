@@ -17,8 +17,7 @@ constexpr uint8_t kLegacyClassMask = 0x1F;              // formats 0-5: 5 bits o
 constexpr size_t kLegacyClassAt = 15, kClassAt14 = 16;  // byte of a record holding the class
 constexpr size_t kReturnAt = 14;
 constexpr uint8_t kLegacyReturnMask = 0x07, kReturnMask14 = 0x0F;
-constexpr uint8_t kLowNoiseClass = 7, kHighNoiseClass = 18;  // ASPRS
-constexpr size_t kClassFlagsAt14 = 15;                       // formats 6-10: the class flags' byte
+constexpr size_t kClassFlagsAt14 = 15;  // formats 6-10: the class flags' byte
 constexpr uint8_t kLegacyWithheld = 0x80, kWithheld14 = 0x04;
 
 int32_t le_int32(const uint8_t* p) {
@@ -95,11 +94,10 @@ uint8_t las_record_class(const LasHeader& h, const uint8_t* record) {
   return record[kLegacyClassAt] & kLegacyClassMask;
 }
 
-bool las_record_noise(const LasHeader& h, const uint8_t* record) {
-  const uint8_t c = las_record_class(h, record);
+bool las_record_dropped(const LasHeader& h, const uint8_t* record, const PointFilter& filter) {
   const bool withheld = h.point_format >= kLasFirstFormat14 ? (record[kClassFlagsAt14] & kWithheld14) != 0
                                                             : (record[kLegacyClassAt] & kLegacyWithheld) != 0;
-  return withheld || c == kLowNoiseClass || c == kHighNoiseClass;
+  return withheld || filter.drops(las_record_class(h, record));
 }
 
 uint8_t las_record_return(const LasHeader& h, const uint8_t* record) {

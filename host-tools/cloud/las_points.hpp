@@ -15,6 +15,7 @@
 #include "cloud/las_header.hpp"
 #include "cloud/las_vlrs.hpp"
 #include "cloud/laz/layer_choice.hpp"
+#include "cloud/point_filter.hpp"
 
 namespace spinhash::host {
 
@@ -59,11 +60,8 @@ size_t las_batch_records(const LasHeader& h);
 void las_record_xyz(const LasHeader& h, const uint8_t* record, double* xyz);
 uint8_t las_record_class(const LasHeader& h, const uint8_t* record);   // formats 0-5: the low 5 bits
 uint8_t las_record_return(const LasHeader& h, const uint8_t* record);  // 1-based return number
-// The record is one its producer marks as not a surface: ASPRS class 7
-// (low point, noise) or 18 (high noise), or the withheld flag ("to be
-// considered deleted"). A low noise point under the ground would pull the
-// terrain down around it (the lowest points seed it), so the pipeline's
-// readers leave these out.
-bool las_record_noise(const LasHeader& h, const uint8_t* record);
+// The record is one the readers leave out (cloud/point_filter.hpp): the
+// withheld flag, or a class the filter drops (ASPRS noise, classes named).
+bool las_record_dropped(const LasHeader& h, const uint8_t* record, const PointFilter& filter);
 
 }  // namespace spinhash::host

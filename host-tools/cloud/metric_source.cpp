@@ -109,8 +109,9 @@ size_t MetricSource::read(double* xyz, size_t max_points) {
   return got;
 }
 
-std::unique_ptr<MetricSource> open_metric_source(const std::string& path, const WorkCrs& work) {
-  std::unique_ptr<PointSource> inner = open_point_source(path);
+std::unique_ptr<MetricSource> open_metric_source(const std::string& path, const WorkCrs& work,
+                                                 const PointFilter& filter) {
+  std::unique_ptr<PointSource> inner = open_point_source(path, filter);
   return std::make_unique<MetricSource>(std::move(inner), cloud_name(path), work);
 }
 

@@ -78,7 +78,8 @@ class MetricSource final : public PointSource {
   CloudHeader header_;
 };
 
-// open_point_source(path) in metres of the work CRS. Throws CloudError.
-std::unique_ptr<MetricSource> open_metric_source(const std::string& path, const WorkCrs& work = {});
+// open_point_source(path, filter) in metres of the work CRS. Throws CloudError.
+std::unique_ptr<MetricSource> open_metric_source(const std::string& path, const WorkCrs& work = {},
+                                                 const PointFilter& filter = {});
 
 }  // namespace spinhash::host

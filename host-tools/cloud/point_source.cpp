@@ -62,8 +62,8 @@ CloudHeader las_cloud_header(const LasRecordReader& r) {
 
 class LasSource final : public PointSource {
  public:
-  LasSource(std::string name, std::unique_ptr<ByteSource> src)
-      : name_(std::move(name)), reader_(named(std::move(src))) {
+  LasSource(std::string name, std::unique_ptr<ByteSource> src, const PointFilter& filter)
+      : name_(std::move(name)), reader_(named(std::move(src))), filter_(filter) {
     header_ = las_cloud_header(*reader_);
     batch_ = las_batch_records(reader_->header());
     records_.resize(batch_ * reader_->header().record_length);
@@ -77,7 +77,7 @@ class LasSource final : public PointSource {
       if (held_ == 0) break;
       for (; next_ < held_ && done < max_points; ++next_) {
         const uint8_t* record = records_.data() + next_ * h.record_length;
-        if (las_record_noise(h, record)) {
+        if (las_record_dropped(h, record, filter_)) {
           ++noise_;
           continue;
         }
@@ -108,6 +108,7 @@ class LasSource final : public PointSource {
 
   std::string name_;
   std::unique_ptr<LasRecordReader> reader_;
+  PointFilter filter_;
   CloudHeader header_;
   std::vector<uint8_t> records_;
   size_t batch_ = 1, held_ = 0, next_ = 0;
@@ -302,14 +303,14 @@ void check_named_format(const std::string& name, const std::string& path, const 
 }
 
 std::unique_ptr<PointSource> open_source(const std::string& name, const std::string& path,
-                                         std::unique_ptr<ByteSource> src) {
+                                         std::unique_ptr<ByteSource> src, const PointFilter& filter) {
   const std::string head = head_of(*src);
   const SniffedFormat sniffed = sniff_cloud_format(head);
   if (sniffed == SniffedFormat::kForeign)
     throw CloudError(name + ": not a point cloud this reader takes: " + foreign_cloud_format(head));
   check_named_format(name, path, head, sniffed);
   switch (sniffed) {
-    case SniffedFormat::kLas: return std::make_unique<LasSource>(name, std::move(src));
+    case SniffedFormat::kLas: return std::make_unique<LasSource>(name, std::move(src), filter);
     case SniffedFormat::kPly: {
       if (auto ply = PlySource::open(src)) return ply;
       return whole_ply(name, *src);
@@ -324,24 +325,19 @@ std::string cloud_name(const std::string& path) {
   return path == kStdinPath ? kStdinName : std::filesystem::path(path).stem().string();
 }
 
-std::unique_ptr<PointSource> open_point_source(const std::string& path) {
-  if (path != kStdinPath) return open_source(path, path, file_source(path));
+std::unique_ptr<PointSource> open_point_source(const std::string& path, const PointFilter& filter) {
+  if (path != kStdinPath) return open_source(path, path, file_source(path), filter);
   std::string bytes, error;
   if (!read_file(kStdinPath, kMaxCloudFileBytes, &bytes, &error)) throw CloudError(error);
-  return open_point_source_bytes(std::move(bytes), kStdinName);
+  return open_point_source_bytes(std::move(bytes), kStdinName, filter);
 }
 
-std::unique_ptr<PointSource> open_point_source_bytes(std::string bytes, const std::string& name) {
-  return open_source(name, "", owned_memory_source(std::move(bytes)));
+std::unique_ptr<PointSource> open_point_source_bytes(std::string bytes, const std::string& name,
+                                                     const PointFilter& filter) {
+  return open_source(name, "", owned_memory_source(std::move(bytes)), filter);
 }
 
 CloudHeader read_cloud_header(const std::string& path) { return open_point_source(path)->header(); }
-
-std::string noise_note(uint64_t points_noise) {
-  if (points_noise == 0) return {};
-  return std::to_string(points_noise) +
-         " points the file marks as noise (ASPRS classes 7 and 18) or withheld: left out";
-}
 
 std::vector<double> read_all_points(PointSource& source) {
   std::vector<double> xyz;

@@ -22,6 +22,7 @@
 #include "blob/file_io.hpp"  // kStdinPath
 #include "cloud/cloud_error.hpp"
 #include "cloud/crs.hpp"
+#include "cloud/point_filter.hpp"
 
 namespace spinhash::host {
 
@@ -48,8 +49,8 @@ class PointSource {
   // the end of the cloud. Throws CloudError on malformed data, including a
   // file that ends before its declared count.
   virtual size_t read(double* xyz, size_t max_points) = 0;
-  // Points read so far that the file marks as noise or withheld
-  // (las_record_noise: LAS and LAZ), left out of what read() hands out.
+  // Points read so far that the filter left out of what read() hands out
+  // (cloud/point_filter.hpp: LAS and LAZ; noise, withheld, classes named).
   virtual uint64_t points_noise() const { return 0; }
 };
 
@@ -60,18 +61,17 @@ constexpr uint64_t kMaxCloudFileBytes = 4ull << 30;
 constexpr const char* kStdinName = "stdin";
 std::string cloud_name(const std::string& path);
 
-// Opens `path` ("-": standard input) and reads its header. Throws CloudError.
-std::unique_ptr<PointSource> open_point_source(const std::string& path);
+// Opens `path` ("-": standard input) and reads its header; filter: the
+// points left out. Throws CloudError.
+std::unique_ptr<PointSource> open_point_source(const std::string& path, const PointFilter& filter = {});
 // The same over bytes in memory (fuzzing, embedded data); name in messages.
-std::unique_ptr<PointSource> open_point_source_bytes(std::string bytes, const std::string& name);
+std::unique_ptr<PointSource> open_point_source_bytes(std::string bytes, const std::string& name,
+                                                     const PointFilter& filter = {});
 
 // The header alone (LAS/LAZ: without touching the points). Throws CloudError.
 CloudHeader read_cloud_header(const std::string& path);
 
 // Every point left in the source (x y z triples). Throws CloudError.
 std::vector<double> read_all_points(PointSource& source);
-
-// What the commands say of a source's points_noise() once read (empty: none).
-std::string noise_note(uint64_t points_noise);
 
 }  // namespace spinhash::host

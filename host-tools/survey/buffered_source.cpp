@@ -26,7 +26,7 @@ bool BufferedSource::open_next() {
   current_.reset();
   if (next_ > task_.neighbours.size()) return false;
   ++next_;
-  current_ = neighbour_named([&] { return host::open_metric_source(path_now(), work_); });
+  current_ = neighbour_named([&] { return host::open_metric_source(path_now(), work_, task_.filter); });
   if (next_ == 1) header_.crs = current_->header().crs;
   return true;
 }

@@ -95,6 +95,8 @@ std::string survey_json(const Catalogue& c, const std::vector<TileResult>& done,
     refused += (refused.empty() ? "" : ",") + std::string("{\"tile\":") + json_string(f.tile) +
                ",\"path\":" + json_string(f.path) + ",\"reason\":" + json_string(f.reason) + "}";
   for (const std::string& n : c.notes) notes += (notes.empty() ? "" : ",") + json_string(n);
+  std::string dropped;
+  for (int k : rep.dropped_classes) dropped += (dropped.empty() ? "" : ",") + std::to_string(k);
   return "{\"version\":" + json_string(pipeline::version()) + ",\"database\":" + json_string(rep.database) +
          ",\"buffer_m\":" + json_number(rep.buffer) + ",\"jobs\":" + std::to_string(rep.jobs) +
          ",\"crs\":" + json_string(c.crs.describe()) + ",\"crs_units\":" + units_json(c.crs.units) +
@@ -104,10 +106,11 @@ std::string survey_json(const Catalogue& c, const std::vector<TileResult>& done,
          ",\"tiles_resumed\":" + std::to_string(rep.tiles_resumed) +
          ",\"tiles_refused\":" + std::to_string(rep.refused.size()) +
          ",\"points\":" + std::to_string(points) + ",\"buffer_points\":" + std::to_string(buffer_points) +
-         ",\"noise_points\":" + std::to_string(noise_points) + ",\"wall_s\":" + json_number(rep.wall_s, 6) +
-         ",\"stage_ms\":{\"read\":" + json_number(read_ms, 9) + ",\"stream\":" + json_number(stream_ms, 9) +
-         "},\"kinds\":" + kinds_json(kinds) + ",\"models\":" + models_json(models) + ",\"refused\":[" +
-         refused + "],\"tiles\":[" + tiles + "\n]}\n";
+         ",\"noise_points\":" + std::to_string(noise_points) + ",\"dropped_classes\":[" + dropped +
+         "],\"wall_s\":" + json_number(rep.wall_s, 6) + ",\"stage_ms\":{\"read\":" + json_number(read_ms, 9) +
+         ",\"stream\":" + json_number(stream_ms, 9) + "},\"kinds\":" + kinds_json(kinds) +
+         ",\"models\":" + models_json(models) + ",\"refused\":[" + refused + "],\"tiles\":[" + tiles +
+         "\n]}\n";
 }
 
 bool write_overview(const std::string& path, const Catalogue& c, const std::vector<TileResult>& done,

@@ -25,6 +25,7 @@ struct SurveyReport {
   std::string database;
   double buffer = 0;
   unsigned jobs = 0;
+  std::vector<int> dropped_classes;  // LAS classes the readers left out (cloud/point_filter.hpp)
   uint32_t tiles_total = 0, tiles_resumed = 0;
   double wall_s = 0;
   std::vector<Refusal> refused;  // headers not read, tiles or neighbours unreadable

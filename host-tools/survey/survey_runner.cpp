@@ -53,10 +53,11 @@ void remove_results(const std::string& folder) {
     if (e.path().extension() == ".result") fs::remove(e.path(), ec);
 }
 
-// What the readers hand out of a tile (cloud/las_points.hpp,
-// las_record_noise): a result stored by a binary that read otherwise is run
-// again, not kept.
-constexpr const char* kPointsRead = "without-noise-classes-7-18-and-withheld";
+// What the readers hand out of a tile (cloud/point_filter.hpp): a result
+// stored by a binary or a run that read otherwise is run again, not kept.
+std::string points_read(const host::PointFilter& filter) {
+  return "without-withheld-and-classes-" + host::classes_text(filter);
+}
 
 std::string text_digest(const std::string& text) {
   char digest[20];
@@ -74,7 +75,7 @@ std::string settings_key(const SurveyOptions& o) {
          ";scene=" + text_digest(host::config_text(o.scene)) +
          ";recognizer=" + text_digest(host::config_text(o.scene.recognizer)) +
          ";work_crs=" + escape_line(o.work.named ? o.work.crs.proj_definition() : "") +
-         ";points=" + kPointsRead;
+         ";points=" + points_read(o.filter);
 }
 
 // A stored result is a few lines per object: far below this.
@@ -142,6 +143,7 @@ bool prepare_survey(const SurveyOptions& options, const std::vector<std::string>
   }
   if (!options.resume) remove_results(results);
   s.tasks = plan_survey(s.catalogue, options.buffer, settings_key(options));
+  for (SurveyTask& t : s.tasks) t.filter = options.filter;
   if (!s.tasks.empty() && !s.tasks[0].crs.empty()) {
     try {
       const ToWgs84 probe(s.tasks[0].crs);  // refused now rather than on every tile
@@ -178,6 +180,7 @@ int finish_survey(const PreparedSurvey& s, const std::vector<Refusal>& failed, d
   report.database = s.options.db_path;
   report.buffer = s.options.buffer;
   report.jobs = s.options.jobs;
+  report.dropped_classes = s.options.filter.classes();
   report.tiles_total = static_cast<uint32_t>(s.catalogue.tiles.size());
   for (bool d : s.done) report.tiles_resumed += d ? 1u : 0u;
   report.wall_s = wall_s;

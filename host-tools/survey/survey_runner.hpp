@@ -20,8 +20,9 @@ struct SurveyOptions {
   unsigned jobs = 0;  // 0: every core
   double buffer = kDefaultBuffer;
   bool resume = false;
-  bool quiet = false;  // no progress line
-  host::WorkCrs work;  // --work-crs: the CRS to work in (else the tiles' shared CRS)
+  bool quiet = false;        // no progress line
+  host::WorkCrs work;        // --work-crs: the CRS to work in (else the tiles' shared CRS)
+  host::PointFilter filter;  // --drop-class: classes left out besides noise
   SceneConfig scene;
   size_t order_memory_points = pipeline::kOrderMemoryPoints;  // --order-memory: each tile's order
 };

@@ -135,6 +135,7 @@ std::string task_text(const SurveyTask& t) {
        escape_line(t.crs_name) + "\n";
   s += "units " + num(t.units.horizontal) + " " + num(t.units.vertical) + " " +
        (t.units.geographic ? "1" : "0") + "\n";
+  s += "drop_classes " + host::classes_text(t.filter) + "\n";
   return s + "key " + escape_line(t.key) + "\nend\n";
 }
 
@@ -172,7 +173,14 @@ bool parse_task_text(const std::string& text, SurveyTask* task, std::string* err
       t.crs_name = rest(ls);
     else if (word == "units")
       ls >> t.units.horizontal >> t.units.vertical >> t.units.geographic;
-    else if (word == "key")
+    else if (word == "drop_classes") {
+      std::string classes, class_error;
+      ls >> classes;
+      if (!host::add_drop_classes(classes, &t.filter, &class_error)) {
+        *error = "survey task: drop_classes: " + class_error;
+        return false;
+      }
+    } else if (word == "key")
       t.key = rest(ls);
     else if (word == "end")
       end = true;

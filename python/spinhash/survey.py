@@ -87,13 +87,15 @@ def _workers(client):
 
 def run(db_path, tiles, out_dir, client=None, *, workers=None, buffer=DEFAULT_BUFFER, resume=False,
         top_n=DEFAULT_TOP_N, max_objects=DEFAULT_MAX_OBJECTS, retries=DEFAULT_RETRIES, progress=True,
-        geodataframe=True, work_crs=None, order_memory=DEFAULT_ORDER_MEMORY):
+        geodataframe=True, work_crs=None, order_memory=DEFAULT_ORDER_MEMORY, drop_classes=()):
     """Runs the survey of `tiles` (files or folders) into `out_dir`.
 
     client: a distributed.Client (None: a local cluster of `workers` processes).
     work_crs: a projected CRS to work in ("EPSG:32610", a WKT or a PROJ
     string), as the CLI's --work-crs: tiles in other CRSs, or in degrees,
-    are reprojected into it. order_memory: points of a tile each worker holds
+    are reprojected into it. drop_classes: LAS classes every tile's reader
+    leaves out besides noise (7, 18) and withheld points, as --drop-class
+    (a producer's own artefact class). order_memory: points of a tile each worker holds
     in memory while ordering it, as --order-memory (the rest wait in a
     temporary file; the answers do not depend on it). progress: a line per
     tile on stderr.
@@ -107,7 +109,7 @@ def run(db_path, tiles, out_dir, client=None, *, workers=None, buffer=DEFAULT_BU
     out_dir = os.path.abspath(out_dir)
     os.makedirs(out_dir, exist_ok=True)
     survey = _spinhash._survey_prepare(db_path, [os.path.abspath(t) for t in tiles], out_dir, buffer, resume,
-                                       top_n, max_objects, work_crs or "")
+                                       top_n, max_objects, work_crs or "", list(drop_classes))
     if survey.kept:
         print(f"spinhash.survey: kept {len(survey.kept)} tiles a previous run finished: {', '.join(survey.kept)}",
               file=sys.stderr)
@@ -146,6 +148,17 @@ def _geodataframe(out_dir, status):
     return frame
 
 
+def _class_list(text):
+    """"65" or "65,66": LAS classes, as the CLI's --drop-class."""
+    try:
+        classes = [int(item) for item in text.split(",")]
+    except ValueError:
+        classes = [-1]
+    if any(c < 0 or c > 255 for c in classes):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a list of LAS classes (whole numbers 0 to 255)")
+    return classes
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="python3 -m spinhash.survey",
                                      description=" ".join(__doc__.split("\n\n")[0].split()))
@@ -161,6 +174,8 @@ def main(argv=None):
     parser.add_argument("--max-objects", type=int, default=DEFAULT_MAX_OBJECTS,
                         help="objects reported per window at most (256)")
     parser.add_argument("--work-crs", help="a projected CRS to work in (EPSG:n, WKT or PROJ string)")
+    parser.add_argument("--drop-class", type=_class_list, action="extend", default=[], metavar="N[,N...]",
+                        help="LAS classes to leave out besides noise (7, 18) and withheld points")
     parser.add_argument("--order-memory", type=int, default=DEFAULT_ORDER_MEMORY,
                         help=f"points of a tile each worker holds in memory while ordering it ({DEFAULT_ORDER_MEMORY})")
     parser.add_argument("--quiet", action="store_true", help="no progress line")
@@ -177,7 +192,8 @@ def main(argv=None):
             warnings.simplefilter("ignore")
             frame = run(args.db, args.tiles, args.out, client, workers=args.workers, buffer=args.buffer,
                         resume=args.resume, retries=args.retries, progress=not args.quiet, top_n=args.top,
-                        max_objects=args.max_objects, work_crs=args.work_crs, order_memory=args.order_memory)
+                        max_objects=args.max_objects, work_crs=args.work_crs, order_memory=args.order_memory,
+                        drop_classes=args.drop_class)
     except (ValueError, OSError, RuntimeError) as error:
         print(f"spinhash.survey: {error}", file=sys.stderr)
         return EXIT_ERROR

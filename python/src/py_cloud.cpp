@@ -44,16 +44,25 @@ host::WorkCrs work_crs(const py::object& text) {
   return w;
 }
 
+// The classes to leave out besides noise, as the CLI's --drop-class.
+host::PointFilter point_filter(const std::vector<int>& classes) {
+  host::PointFilter f;
+  std::string error;
+  if (!host::add_drop_classes(classes, &f, &error)) throw py::value_error("drop_classes: " + error);
+  return f;
+}
+
 // The file through the reading door: its own coordinates, or (metres, or a
 // CRS to work in) through cloud/metric_source.hpp.
 std::unique_ptr<host::PointSource> open_source(const std::filesystem::path& path, const py::object& work,
-                                               bool metres) {
+                                               bool metres, const std::vector<int>& drop_classes) {
   require_exists(path);
   const host::WorkCrs w = work_crs(work);
+  const host::PointFilter filter = point_filter(drop_classes);
   try {
     py::gil_scoped_release unlocked;
-    if (!metres && !w.named) return host::open_point_source(path.string());
-    return host::open_metric_source(path.string(), w);
+    if (!metres && !w.named) return host::open_point_source(path.string(), filter);
+    return host::open_metric_source(path.string(), w, filter);
   } catch (const host::CloudError& e) {
     throw py::value_error(e.what());
   }
@@ -67,8 +76,9 @@ void in_units(host::PointSource& source, bool metres, std::vector<double>* xyz) 
   for (size_t i = 0; i + 3 <= xyz->size(); i += 3) host::scale_to_file_units(u, xyz->data() + i);
 }
 
-py::array_t<double> read_cloud(const std::filesystem::path& path, const py::object& work, bool metres) {
-  std::unique_ptr<host::PointSource> source = open_source(path, work, metres);
+py::array_t<double> read_cloud(const std::filesystem::path& path, const py::object& work, bool metres,
+                               const std::vector<int>& drop_classes) {
+  std::unique_ptr<host::PointSource> source = open_source(path, work, metres, drop_classes);
   std::vector<double> xyz;
   try {
     py::gil_scoped_release unlocked;
@@ -114,7 +124,7 @@ py::dict header_dict(const host::CloudHeader& h) {
 }
 
 py::dict read_cloud_header(const std::filesystem::path& path) {
-  return header_dict(open_source(path, py::none(), false)->header());
+  return header_dict(open_source(path, py::none(), false, {})->header());
 }
 
 // Iterates over (n, 3) float64 arrays of at most chunk_points rows.
@@ -146,9 +156,10 @@ class ChunkIterator {
 };
 
 std::unique_ptr<ChunkIterator> iter_cloud(const std::filesystem::path& path, size_t chunk_points,
-                                          const py::object& work, bool metres) {
+                                          const py::object& work, bool metres,
+                                          const std::vector<int>& drop_classes) {
   if (chunk_points == 0) throw py::value_error("chunk_points must be at least 1");
-  return std::make_unique<ChunkIterator>(open_source(path, work, metres), chunk_points, metres);
+  return std::make_unique<ChunkIterator>(open_source(path, work, metres, drop_classes), chunk_points, metres);
 }
 
 }  // namespace
@@ -156,10 +167,11 @@ std::unique_ptr<ChunkIterator> iter_cloud(const std::filesystem::path& path, siz
 void bind_cloud(py::module_& m) {
   m.def(
       "read_cloud", &read_cloud, py::arg("path"), py::kw_only(), py::arg("work_crs") = py::none(),
-      py::arg("metres") = false,
+      py::arg("metres") = false, py::arg("drop_classes") = std::vector<int>{},
       "Reads a point cloud file (LAS 1.0-1.4, LAZ and COPC, PLY, or x y z text, as the spinhash command) "
       "into an (N, 3) float64 array, in the file's own coordinates, without the points a LAS/LAZ file marks "
-      "as noise (ASPRS classes 7 and 18) or withheld; with work_crs (\"EPSG:32610\", a WKT "
+      "as noise (ASPRS classes 7 and 18) or withheld, or of a class in drop_classes (LAS classes 0-255, "
+      "as the CLI's --drop-class: a producer's own artefact class); with work_crs (\"EPSG:32610\", a WKT "
       "or a PROJ string: a projected CRS), reprojected into it when the file is in another CRS; with "
       "metres=True, in metres (what the recognizers take: feet scaled; degrees refused unless work_crs "
       "is given). FileNotFoundError, or ValueError naming what is wrong with the file.");
@@ -176,13 +188,16 @@ void bind_cloud(py::module_& m) {
       .def_property_readonly("header", &ChunkIterator::header)
       .def_property_readonly("points_noise", &ChunkIterator::points_noise,
                              "points read so far that a LAS/LAZ file marks as noise (ASPRS classes 7 and 18) "
-                             "or withheld: left out of the chunks");
-  m.def("iter_cloud", &iter_cloud, py::arg("path"), py::arg("chunk_points") = host::kDefaultChunkPoints,
-        py::kw_only(), py::arg("work_crs") = py::none(), py::arg("metres") = false,
-        "Iterates over a cloud file's points in (n, 3) float64 arrays of at most chunk_points rows; LAS and "
-        "LAZ "
-        "are read a chunk at a time (memory does not grow with the file); work_crs and metres as read_cloud. "
-        "ValueError on a malformed file.");
+                             "or withheld, or of a class in drop_classes: left out of the chunks");
+  m.def(
+      "iter_cloud", &iter_cloud, py::arg("path"), py::arg("chunk_points") = host::kDefaultChunkPoints,
+      py::kw_only(), py::arg("work_crs") = py::none(), py::arg("metres") = false,
+      py::arg("drop_classes") = std::vector<int>{},
+      "Iterates over a cloud file's points in (n, 3) float64 arrays of at most chunk_points rows; LAS and "
+      "LAZ "
+      "are read a chunk at a time (memory does not grow with the file); work_crs, metres and drop_classes as "
+      "read_cloud. "
+      "ValueError on a malformed file.");
 }
 
 }  // namespace spinhash::python

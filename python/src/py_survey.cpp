@@ -90,7 +90,8 @@ class PySurvey {
 
 std::unique_ptr<PySurvey> prepare(const std::string& db_path, const std::vector<std::string>& tiles,
                                   const std::string& out_dir, double buffer, bool resume, uint32_t top_n,
-                                  uint32_t max_objects, const std::string& work_crs) {
+                                  uint32_t max_objects, const std::string& work_crs,
+                                  const std::vector<int>& drop_classes) {
   if (!(buffer >= survey::kMinBuffer && buffer <= survey::kMaxBuffer))
     throw py::value_error("buffer must be in [0, 1000] m");
   survey::SurveyOptions o;
@@ -104,6 +105,9 @@ std::unique_ptr<PySurvey> prepare(const std::string& db_path, const std::vector<
                             " is in degrees: name a projected CRS (metres or feet)");
     o.work.named = true;
   }
+  std::string class_error;
+  if (!host::add_drop_classes(drop_classes, &o.filter, &class_error))
+    throw py::value_error("drop_classes: " + class_error);
   pipeline::report_stale_spill_folders("survey");  // what killed workers on this machine left
   survey::PreparedSurvey s;
   std::string error;
@@ -150,7 +154,8 @@ void bind_survey(py::module_& m) {
                              "(name, path, reason) of tiles whose header failed");
   m.def("_survey_prepare", &prepare, py::arg("db_path"), py::arg("tiles"), py::arg("out_dir"),
         py::arg("buffer") = survey::kDefaultBuffer, py::arg("resume") = false, py::arg("top_n") = 5u,
-        py::arg("max_objects") = 256u, py::arg("work_crs") = "");
+        py::arg("max_objects") = 256u, py::arg("work_crs") = "",
+        py::arg("drop_classes") = std::vector<int>{});
   m.attr("_ORDER_MEMORY_POINTS") = pipeline::kOrderMemoryPoints;  // --order-memory's default
   m.def("_survey_run_task", &run_task, py::arg("db"), py::arg("task"), py::arg("top_n") = 5u,
         py::arg("max_objects") = 256u, py::arg("order_memory") = pipeline::kOrderMemoryPoints,

@@ -128,8 +128,18 @@ TEST_CASE("LAS points marked noise (classes 7 and 18) or withheld are left out a
     CHECK(read_chunked(path, chunk, &noise) == std::vector<double>{10, 20, 1, 14, 20, 1});
     CHECK(noise == 3u);
   }
-  CHECK(noise_note(0).empty());
-  CHECK(noise_note(3).find("3 points") == 0);
+  CHECK(dropped_note(0, PointFilter{}).empty());
+  CHECK(dropped_note(3, PointFilter{}) ==
+        "3 points the file marks as noise (ASPRS classes 7 and 18) or withheld: left out");
+  // A class the user names (--drop-class) goes too, and is counted.
+  PointFilter sixes;
+  REQUIRE(add_drop_classes("6", &sixes, &error));
+  auto named = open_point_source(path, sixes);
+  CHECK(read_all_points(*named) == std::vector<double>{10, 20, 1});
+  CHECK(named->points_noise() == 4u);
+  CHECK(dropped_note(4, sixes) ==
+        "4 points the file marks as noise (ASPRS classes 7 and 18), withheld or of class 6, as asked: left "
+        "out");
   std::filesystem::remove(path);
   // Format 6 (LAS 1.4): a public sample holding 25 class-7 points.
   const std::string sample =
@@ -139,6 +149,45 @@ TEST_CASE("LAS points marked noise (classes 7 and 18) or withheld are left out a
   CHECK(src->header().las_point_format == 6);
   CHECK(read_all_points(*src).size() / 3 == src->header().point_count - 25);
   CHECK(src->points_noise() == 25u);
+}
+
+TEST_CASE("classes named to be left out: parsed from the command line's lists, whole classes 0-255 only") {
+  PointFilter f;
+  std::string error;
+  REQUIRE(add_drop_classes("65,66", &f, &error));
+  REQUIRE(add_drop_classes("0", &f, &error));
+  CHECK(f.extra_classes() == std::vector<int>{0, 65, 66});
+  CHECK(f.classes() == std::vector<int>{0, 7, 18, 65, 66});
+  CHECK(classes_text(f) == "0,7,18,65,66");
+  CHECK(classes_text(PointFilter{}) == "7,18");
+  REQUIRE(add_drop_classes("7", &f, &error));  // noise already: no change
+  CHECK(f.extra_classes() == std::vector<int>{0, 65, 66});
+  CHECK(dropped_note(9, f).find("of class 0, 65 or 66, as asked") != std::string::npos);
+  for (const char* bad : {"", "256", "-1", "6x", "6,,7", "1.5", "99999999999999999999"}) {
+    CAPTURE(bad);
+    PointFilter g;
+    CHECK_FALSE(add_drop_classes(bad, &g, &error));
+    CHECK(error.find("not a LAS class") != std::string::npos);
+    CHECK(g.extra_classes().empty());  // nothing of a refused list is kept
+  }
+  CHECK_FALSE(add_drop_classes(std::vector<int>{3, 300}, &f, &error));
+  CHECK(error == "300 is not a LAS class (0 to 255)");
+  CHECK_FALSE(f.named[3]);
+}
+
+TEST_CASE("a class above 31 (LAS 1.4 formats) named to be left out goes, counted with the noise") {
+  // A public format-8 sample whose producer put 539 points in class 65.
+  const std::string sample = std::string(SPINHASH_LAZ_SAMPLES) + "/no-twin/format8-nir-extrabytes.laz";
+  if (!std::filesystem::exists(sample)) return;
+  auto plain = open_point_source(sample);
+  const size_t all = read_all_points(*plain).size() / 3;
+  PointFilter f;
+  std::string error;
+  REQUIRE(add_drop_classes("65", &f, &error));
+  auto filtered = open_point_source(sample, f);
+  CHECK(filtered->header().las_point_format == 8);
+  CHECK(read_all_points(*filtered).size() / 3 == all - 539);
+  CHECK(filtered->points_noise() == plain->points_noise() + 539);
 }
 
 TEST_CASE("a binary PLY read in chunks gives read_cloud's points; other PLY falls back to the whole reader") {

@@ -222,6 +222,16 @@ TEST_CASE("survey --resume: an interrupted run loses nothing and a re-run duplic
     CHECK(contains(s.output("other", "survey.json"), "\"tiles_resumed\":3"));
     CHECK(s.output("other", "detections.jsonl") == full);
   }
+  SUBCASE("a run that leaves out another class (--drop-class) runs every tile again") {
+    std::filesystem::copy(s.dir.file("full"), s.dir.file("classes"),
+                          std::filesystem::copy_options::recursive);
+    const CliRun r = s.run("classes", "--resume --drop-class 200");  // a class no tile holds
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    const std::string report = s.output("classes", "survey.json");
+    CHECK(contains(report, "\"tiles_resumed\":0"));
+    CHECK(contains(report, "\"dropped_classes\":[7,18,200]"));
+    CHECK(s.output("classes", "detections.jsonl") == full);
+  }
   SUBCASE("a run killed mid-way (SIGKILL after its first tile) is completed by --resume") {
     // Killed as soon as its first tile's result is stored: three tiles are
     // then left, whatever the machine's speed (a timer raced the run).
@@ -281,6 +291,11 @@ TEST_CASE("survey: bad input has a clear message and exit status") {
                               shell_quoted(s.dir.file("bad")) + " " + shell_quoted(s.tiles));
   CHECK(no_db.exit_code == 2);
   CHECK(run_spinhash(s.dir, "survey --db x --out y --jobs 0 z").exit_code == 2);
+  const CliRun no_class =
+      run_spinhash(s.dir, "survey --db " + shell_quoted(s.db) + " --out " + shell_quoted(s.dir.file("bad")) +
+                              " --drop-class 65,x " + shell_quoted(s.tiles));
+  CHECK(no_class.exit_code == 2);
+  CHECK(contains(no_class.err, "\"x\" is not a LAS class"));
   // A fresh run clears only its own stored results: --out over the folder
   // that holds the input tiles (DIR/tiles) leaves them alone.
   const CliRun here =
@@ -314,7 +329,9 @@ TEST_CASE("survey plan: ownership by half-open core, thin gaps to the nearest ti
   t.crs = "PROJCS[\"x\",\n\tUNIT[\"m\",1]]\\";
   t.key = "k";
   t.units.horizontal = t.units.vertical = 1200.0 / 3937.0;  // US survey feet reach the workers
+  t.filter.named[65] = true;                                // --drop-class 65 reaches them too
   REQUIRE(survey::parse_task_text(survey::task_text(t), &back, &error));
+  CHECK(back.filter.classes() == std::vector<int>{7, 18, 65});
   CHECK(back.units.horizontal == t.units.horizontal);
   CHECK(back.units.vertical == t.units.vertical);
   CHECK_FALSE(back.units.geographic);

@@ -102,7 +102,39 @@ TEST_CASE("points a file marks as noise are left out and said so by scene, recog
   CHECK(v.exit_code == 0);
   const std::string report = read_bytes(dir.file("out/survey.json"));
   CHECK(contains(report, "\"points\":25383,\"buffer_points\":0,\"noise_points\":25,"));  // the tile's line
-  CHECK(contains(report, "\"buffer_points\":0,\"noise_points\":25,\"wall_s\""));         // the survey's total
+  CHECK(contains(report, "\"buffer_points\":0,\"noise_points\":25,\"dropped_classes\":[7,18],\"wall_s\""));
+}
+
+TEST_CASE("a class the user names (--drop-class) is left out by scene, recognize and survey, and said so") {
+  if (!samples()) return;
+  const Fixture& f = fx();
+  TempDir dir("drop-class");
+  // A public format-8 sample whose producer put 539 low artefacts in class 65.
+  const std::string tile = kLaz + "/no-twin/format8-nir-extrabytes.laz";
+  const std::string said =
+      "539 points the file marks as noise (ASPRS classes 7 and 18), withheld or of class 65, as asked: left "
+      "out";
+  const CliRun plain = f.run("scene --db " + q(f.db) + " " + q(tile));
+  const CliRun s = f.run("scene --db " + q(f.db) + " --drop-class 65 " + q(tile));
+  const CliRun r = f.run("recognize --db " + q(f.db) + " --drop-class 65 " + q(tile));
+  CHECK(plain.exit_code == 0);
+  CHECK_FALSE(contains(plain.err, "left out:"));
+  CHECK(s.exit_code == 0);
+  CHECK(contains(s.err, said));
+  CHECK(contains(r.err, said));  // read as one query (a whole tile: no vehicle answer, exit 3)
+  CHECK(contains(plain.err, "points 37805,"));
+  CHECK(contains(s.err, "points 37266,"));
+  const CliRun v = f.run("survey --quiet --jobs 1 --db " + q(f.db) + " --out " + q(dir.file("out")) +
+                         " --drop-class 65 " + q(tile));
+  CHECK(v.exit_code == 0);
+  const std::string report = read_bytes(dir.file("out/survey.json"));
+  CHECK(contains(report, "\"noise_points\":539,"));
+  CHECK(contains(report, "\"dropped_classes\":[7,18,65]"));
+  for (const char* bad : {"--drop-class 256", "--drop-class x", "--drop-class=-1"}) {
+    const CliRun b = f.run(std::string("scene --db ") + q(f.db) + " " + bad + " " + q(tile));
+    CHECK(b.exit_code == 2);
+    CHECK(contains(b.err, "is not a LAS class"));
+  }
 }
 
 TEST_CASE("scene and recognize write the same unreadable line for a file they cannot read") {

@@ -61,6 +61,18 @@ def test_points_the_file_marks_as_noise_are_left_out_and_counted():
     np.testing.assert_array_equal(points, spinhash.read_cloud(path))
 
 
+def test_classes_named_in_drop_classes_are_left_out_and_counted_with_the_noise():
+    path = LAZ / "no-twin" / "format8-nir-extrabytes.laz"  # its producer put 539 low artefacts in class 65
+    everything = spinhash.read_cloud(path)
+    chunks = spinhash.iter_cloud(path, chunk_points=4096, drop_classes=[65])
+    kept = np.concatenate(list(chunks))
+    assert len(kept) == len(everything) - 539 and chunks.points_noise == 539
+    np.testing.assert_array_equal(kept, spinhash.read_cloud(path, drop_classes=[65]))
+    np.testing.assert_array_equal(spinhash.read_cloud(path, drop_classes=[200]), everything)  # no such point
+    with pytest.raises(ValueError, match="256 is not a LAS class"):
+        spinhash.read_cloud(path, drop_classes=[65, 256])
+
+
 def test_broken_laz_raises_naming_the_problem():
     with pytest.raises(ValueError, match="compressor 16"):
         spinhash.read_cloud(LAZ / "broken" / "broken_compressor.laz")

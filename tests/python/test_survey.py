@@ -155,6 +155,17 @@ def test_bad_input_is_refused_with_a_clear_error(fleet, tmp_path):
     assert survey.main(["--db", str(fleet.db), "--out", str(tmp_path / "o"), str(tmp_path / "missing.las")]) == 1
     with pytest.raises(SystemExit):
         survey.main(["--db", "x", "--out", "y", "--workers", "2", "--scheduler", "tcp://127.0.0.1:1", "t.las"])
+    with pytest.raises(SystemExit):
+        survey.main(["--db", "x", "--out", "y", "--drop-class", "65,x", "t.las"])
+    with pytest.raises(ValueError, match="drop_classes: 300 is not a LAS class"):
+        survey.run(str(fleet.db), [str(tmp_path)], str(tmp_path / "out"), client=object(), drop_classes=[300])
+
+
+def test_classes_to_leave_out_reach_every_worker_in_its_task(fleet, tiles, tmp_path):
+    prepared = survey._spinhash._survey_prepare(str(fleet.db), [str(tiles)], str(tmp_path / "out"),
+                                                drop_classes=[65, 66])
+    for name, path, task in prepared.pending():
+        assert "drop_classes 7,18,65,66" in task.splitlines()
 
 
 def test_a_worker_s_order_memory_moves_no_answer_and_is_bounded(fleet, tiles, tmp_path):
@@ -221,6 +232,6 @@ def test_the_command_line_matches_the_cli_s_options_and_help_is_plain_text(capsy
         survey.main(["--help"])
     text = capsys.readouterr().out
     assert "``" not in text
-    for option in ("--top", "--max-objects", "--work-crs", "--order-memory", "--quiet"):
+    for option in ("--top", "--max-objects", "--work-crs", "--drop-class", "--order-memory", "--quiet"):
         assert option in text
 
