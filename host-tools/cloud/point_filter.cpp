@@ -63,8 +63,7 @@ std::string dropped_note(uint64_t points, const PointFilter& filter) {
   for (size_t i = 0; i < extra.size(); ++i)
     named += (i == 0 ? "" : i + 1 == extra.size() ? " or " : ", ") + std::to_string(extra[i]);
   return std::to_string(points) + " points the file marks as noise (ASPRS classes 7 and 18)" +
-         (named.empty() ? " or withheld" : ", withheld or of class " + named + ", as asked") +
-         ": left out";
+         (named.empty() ? " or withheld" : ", withheld or of class " + named + ", as asked") + ": left out";
 }
 
 }  // namespace spinhash::host
