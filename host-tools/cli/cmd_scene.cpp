@@ -108,12 +108,12 @@ int run_tile(const SceneArgs& a, const DatabaseFile& file, const std::string& pa
                                            : crs + " (" + units.short_text() + ")";
   std::fprintf(
       stderr,
-      "spinhash scene: %s: %s; CRS %s; %s; %llu windows in %u bands, workspace %.1f MB; read %.1f ms, "
-      "stream %.1f ms%s%s\n",
+      "spinhash scene: %s: %s; CRS %s; %s; %.1f points per m2, segmentation cell %.2f m; %llu windows in %u "
+      "bands, workspace %.1f MB; read %.1f ms, stream %.1f ms%s%s\n",
       name.c_str(), status_name(r.status), crs_text.c_str(),
-      pipeline::scene_stats_text(r.stats.scene).c_str(), static_cast<unsigned long long>(r.stats.windows),
-      r.bands, r.workspace_bytes / 1e6, r.read_ms, r.stream_ms,
-      lost.empty() ? "" : "; not answered: ", lost.c_str());
+      pipeline::scene_stats_text(r.stats.scene).c_str(), r.density, static_cast<double>(r.segment_cell),
+      static_cast<unsigned long long>(r.stats.windows), r.bands, r.workspace_bytes / 1e6, r.read_ms,
+      r.stream_ms, lost.empty() ? "" : "; not answered: ", lost.c_str());
   int exit_code = r.status == Status::kOk ? kExitOk : kExitCheckFailed;
   std::string error;
   if (!a.picture_dir.empty() && !write_picture(a, name, r.picture_xyz, boxes, confident, &error)) {

@@ -8,6 +8,7 @@
 
 #include "cloud/metric_source.hpp"
 #include "pipeline/object_units.hpp"
+#include "pipeline/segment_cell.hpp"
 #include "spinhash/limits.hpp"
 #include "spinhash/scene_tile.hpp"
 
@@ -133,6 +134,12 @@ TileStreamResult TileStreamer::finish(const Database& db, const ObjectCallback& 
     return res;
   }
   SceneConfig scene = options_.scene;
+  const double* lo = order_.min();
+  const double* hi = order_.max();
+  res.density = tile_density(order_.points(), (hi[0] - lo[0]) * (hi[1] - lo[1]));
+  if (options_.segment_cell_from_density)
+    scene.segment_cell = segment_cell_for_density(scene.segment_cell, res.density, scene.window_core);
+  res.segment_cell = scene.segment_cell;
   fit_tile_grids(&scene);
   uint32_t buffered = 0;
   size_from_density(order_, options_, &scene, &buffered);

@@ -35,6 +35,9 @@ struct TileStreamOptions {
   // (12 B each); the answers do not depend on it.
   size_t order_memory_points = kOrderMemoryPoints;
   uint32_t picture_points = 0;  // keep an even sample of about this many points for a picture (0: none)
+  // scene.segment_cell is the finest cell, grown to the tile's point spacing
+  // (segment_cell.hpp); false: used as it is (a survey decides it once).
+  bool segment_cell_from_density = true;
   // A survey's tile among its neighbours (in the file's units): an object is
   // reported only when owner_of(owners, its centre, owner_tolerance) is
   // `self`; the others are counted. Empty: every object is the tile's.
@@ -52,6 +55,8 @@ struct TileStreamResult {
   StreamStats stats;  // summed over the bands (points_pushed: the points read, once)
   uint64_t points_read = 0;
   size_t workspace_bytes = 0;
+  double density = 0.0;            // points per m2 of what the tile covers (segment_cell.hpp)
+  float segment_cell = 0.0f;       // m: the segmentation cell the tile was streamed with
   uint32_t bands = 0;              // bands streamed: those whose windows gather points
   uint64_t objects_not_owned = 0;  // centres a neighbour owns
   uint64_t objects_in_holes = 0;   // centres no tile owns

@@ -107,7 +107,8 @@ std::string survey_json(const Catalogue& c, const std::vector<TileResult>& done,
          ",\"tiles_refused\":" + std::to_string(rep.refused.size()) +
          ",\"points\":" + std::to_string(points) + ",\"buffer_points\":" + std::to_string(buffer_points) +
          ",\"noise_points\":" + std::to_string(noise_points) + ",\"dropped_classes\":[" + dropped +
-         "],\"wall_s\":" + json_number(rep.wall_s, 6) + ",\"stage_ms\":{\"read\":" + json_number(read_ms, 9) +
+         "],\"segment_cell_m\":" + json_number(rep.segment_cell) +
+         ",\"wall_s\":" + json_number(rep.wall_s, 6) + ",\"stage_ms\":{\"read\":" + json_number(read_ms, 9) +
          ",\"stream\":" + json_number(stream_ms, 9) + "},\"kinds\":" + kinds_json(kinds) +
          ",\"models\":" + models_json(models) + ",\"refused\":[" + refused + "],\"tiles\":[" + tiles +
          "\n]}\n";

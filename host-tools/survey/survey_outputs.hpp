@@ -26,6 +26,7 @@ struct SurveyReport {
   double buffer = 0;
   unsigned jobs = 0;
   std::vector<int> dropped_classes;  // LAS classes the readers left out (cloud/point_filter.hpp)
+  float segment_cell = 0.0f;         // m: every tile's segmentation cell (pipeline/segment_cell.hpp)
   uint32_t tiles_total = 0, tiles_resumed = 0;
   double wall_s = 0;
   std::vector<Refusal> refused;  // headers not read, tiles or neighbours unreadable

@@ -14,6 +14,7 @@
 #include "pipeline/database_file.hpp"
 #include "pipeline/exit_codes.hpp"
 #include "pipeline/json_line.hpp"
+#include "pipeline/segment_cell.hpp"
 #include "pipeline/spill_folder.hpp"
 #include "pipeline/version.hpp"
 #include "spinhash/internal/fnv1a.hpp"
@@ -124,6 +125,23 @@ bool store_result(const std::string& out_dir, const TileResult& result, std::str
   return host::write_file_atomically(result_path(out_dir, result.name), text.data(), text.size(), error);
 }
 
+namespace {
+// One segmentation cell for every tile (pipeline/segment_cell.hpp), from
+// the points and bounding boxes of all the tiles' headers: neighbours then
+// segment a vehicle they share alike, and each finds it once.
+float survey_segment_cell(const Catalogue& catalogue, const SceneConfig& scene) {
+  uint64_t points = 0;
+  double area = 0.0;
+  for (const CatalogueTile& t : catalogue.tiles) {
+    if (!t.error.empty() || !t.header.count_known || !t.header.bounds_known) continue;
+    points += t.header.point_count;
+    area += (t.header.max[0] - t.header.min[0]) * (t.header.max[1] - t.header.min[1]);
+  }
+  return pipeline::segment_cell_for_density(scene.segment_cell, pipeline::tile_density(points, area),
+                                            scene.window_core);
+}
+}  // namespace
+
 bool prepare_survey(const SurveyOptions& options, const std::vector<std::string>& args, PreparedSurvey* out,
                     std::string* error) {
   PreparedSurvey s;
@@ -142,8 +160,12 @@ bool prepare_survey(const SurveyOptions& options, const std::vector<std::string>
     return false;
   }
   if (!options.resume) remove_results(results);
-  s.tasks = plan_survey(s.catalogue, options.buffer, settings_key(options));
-  for (SurveyTask& t : s.tasks) t.filter = options.filter;
+  s.options.scene.segment_cell = survey_segment_cell(s.catalogue, options.scene);
+  s.tasks = plan_survey(s.catalogue, options.buffer, settings_key(s.options));
+  for (SurveyTask& t : s.tasks) {
+    t.filter = options.filter;
+    t.segment_cell = s.options.scene.segment_cell;
+  }
   if (!s.tasks.empty() && !s.tasks[0].crs.empty()) {
     try {
       const ToWgs84 probe(s.tasks[0].crs);  // refused now rather than on every tile
@@ -181,6 +203,7 @@ int finish_survey(const PreparedSurvey& s, const std::vector<Refusal>& failed, d
   report.buffer = s.options.buffer;
   report.jobs = s.options.jobs;
   report.dropped_classes = s.options.filter.classes();
+  report.segment_cell = s.options.scene.segment_cell;
   report.tiles_total = static_cast<uint32_t>(s.catalogue.tiles.size());
   for (bool d : s.done) report.tiles_resumed += d ? 1u : 0u;
   report.wall_s = wall_s;

@@ -136,6 +136,7 @@ std::string task_text(const SurveyTask& t) {
   s += "units " + num(t.units.horizontal) + " " + num(t.units.vertical) + " " +
        (t.units.geographic ? "1" : "0") + "\n";
   s += "drop_classes " + host::classes_text(t.filter) + "\n";
+  s += "segment_cell " + num(t.segment_cell) + "\n";
   return s + "key " + escape_line(t.key) + "\nend\n";
 }
 
@@ -180,7 +181,9 @@ bool parse_task_text(const std::string& text, SurveyTask* task, std::string* err
         *error = "survey task: drop_classes: " + class_error;
         return false;
       }
-    } else if (word == "key")
+    } else if (word == "segment_cell")
+      ls >> t.segment_cell;
+    else if (word == "key")
       t.key = rest(ls);
     else if (word == "end")
       end = true;

@@ -53,9 +53,10 @@ struct SurveyTask {
   std::string crs;                   // the survey CRS's PROJ definition ("": unknown)
   bool crs_named = false;            // the user named it: tiles in other CRSs are reprojected into it
   std::string crs_name;              // "EPSG:25832", "unknown"
-  host::AxisUnits units;     // of the survey CRS: outputs go back to them (name and notes not carried)
-  host::PointFilter filter;  // the points every tile's reader leaves out
-  std::string key;           // the inputs the result depends on (resume reuses equal keys only)
+  host::AxisUnits units;      // of the survey CRS: outputs go back to them (name and notes not carried)
+  host::PointFilter filter;   // the points every tile's reader leaves out
+  float segment_cell = 0.0f;  // m: the survey's segmentation cell (0: the scene setting's, grown per tile)
+  std::string key;            // the inputs the result depends on (resume reuses equal keys only)
 
   // The survey's CRS as the reading door takes it (resolved through PROJ).
   host::WorkCrs work() const;

@@ -108,6 +108,10 @@ TileResult run_task(const Database& db, const SurveyTask& task, const SceneConfi
   BufferedSource source(task);
   pipeline::TileStreamOptions options;
   options.scene = scene;
+  if (task.segment_cell > 0.0f) {  // the survey's, the same for every tile
+    options.scene.segment_cell = task.segment_cell;
+    options.segment_cell_from_density = false;
+  }
   options.order_memory_points = order_memory_points;
   options.owners = owner_areas(task, &options.self);  // metres, as the door hands the points
   options.owner_tolerance = kGapTolerance;

@@ -72,7 +72,8 @@
     "m: the cells around that a low-noise test compares with")                                              \
   X(U32, terrain_noise_support, 1u, kMaxTerrainNoiseSupport, "",                                            \
     "cells around, as low within the gap, that keep a cell's lowest (or a quarter of them, if fewer)")      \
-  X(F32, segment_cell, kMinSegmentCell, kMaxSegmentCell, "", "m: segmentation grid cell")                   \
+  X(F32, segment_cell, kMinSegmentCell, kMaxSegmentCell, "--segment-cell",                                  \
+    "m: segmentation grid cell (the tile path doubles it up to a tile's point spacing, twice at most)")     \
   X(F32, layer_split_height, kSmallestPositive, kMaxSceneGate, "",                                          \
     "m above the terrain: the low layer (vehicles) below, the high layer (crowns, roofs) above")            \
   X(U32, min_object_points, 1u, 0xFFFFFFFFu, "", "smaller components are fragments, not objects")           \

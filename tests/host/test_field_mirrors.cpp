@@ -326,7 +326,7 @@ TEST_CASE(
   }
   SPINHASH_SCENE_CONFIG_FIELDS(SPINHASH_SCENE_FLAG)
 #undef SPINHASH_SCENE_FLAG
-  CHECK(flags == 8);
+  CHECK(flags == 9);
   for (const char* flag : {"--top", "--max-objects"}) {
     INFO("survey flag ", std::string(flag));
     CHECK(survey.out.find(flag) != std::string::npos);

@@ -165,6 +165,42 @@ TEST_CASE("survey: 2 x 2 tiles give the whole scene's vehicles, each once, the s
   CHECK(contains(s.output("full", "survey.json"), "\"tiles_done\":4"));
 }
 
+TEST_CASE(
+    "a sparse tile (5 points per m2): vehicles found whole at a coarser cell, the same by scene and survey") {
+  const Survey& s = generated();
+  const std::string sparse = s.dir.file("sparse.las"), tiles = s.dir.file("sparse-tiles");
+  const CliRun made =
+      run_spinhash(s.dir, "scan-scene " + shell_quoted(s.dir.file("fleet")) + " -o " + shell_quoted(sparse) +
+                              " --size 80 --vehicles 16 --trees 4 --seed 3 --spacing 0.45");
+  REQUIRE_MESSAGE(made.exit_code == 0, made.err);
+  write_tiles(sparse, tiles);
+  const CliRun whole = run_spinhash(s.dir, "scene --db " + shell_quoted(s.db) + " " + shell_quoted(sparse));
+  REQUIRE_MESSAGE(whole.exit_code == 0, whole.err);
+  CHECK(contains(whole.err, "segmentation cell 0.50 m"));
+  const std::vector<Detection> found = vehicles(whole.out);
+  CHECK(found.size() >= 8);  // of 16
+  // From a finer cell two doublings reach 0.25 m only: a vehicle's points
+  // then lie in cells that do not touch, and most vehicles fall apart.
+  const CliRun fine = run_spinhash(
+      s.dir, "scene --db " + shell_quoted(s.db) + " --segment-cell 0.0625 " + shell_quoted(sparse));
+  REQUIRE_MESSAGE(fine.exit_code == 0, fine.err);
+  CHECK(contains(fine.err, "segmentation cell 0.25 m"));
+  CHECK(vehicles(fine.out).size() < found.size() / 2);
+  const CliRun cut =
+      run_spinhash(s.dir, "survey --quiet --jobs 2 --db " + shell_quoted(s.db) + " --out " +
+                              shell_quoted(s.dir.file("sparse-out")) + " " + shell_quoted(tiles));
+  REQUIRE_MESSAGE(cut.exit_code == 0, cut.err);
+  CHECK(contains(read_bytes(s.dir.file("sparse-out") + "/survey.json"), "\"segment_cell_m\":0.5,"));
+  const std::vector<Detection> tiled = vehicles(read_bytes(s.dir.file("sparse-out") + "/detections.jsonl"));
+  CHECK(tiled.size() == found.size());
+  for (const Detection& w : found) {
+    int matches = 0;
+    for (const Detection& c : tiled)
+      matches += std::hypot(c.x - w.x, c.y - w.y) < kSameCentre && c.model == w.model;
+    CHECK_MESSAGE(matches == 1, w.model << " at " << w.x << " " << w.y);
+  }
+}
+
 TEST_CASE("survey: the GeoJSON parses as a FeatureCollection, the GeoPackage opens, the overview is a PNG") {
   const Survey& s = generated();
   const std::string geo = s.dir.file("full") + "/detections.geojson";
@@ -330,8 +366,10 @@ TEST_CASE("survey plan: ownership by half-open core, thin gaps to the nearest ti
   t.key = "k";
   t.units.horizontal = t.units.vertical = 1200.0 / 3937.0;  // US survey feet reach the workers
   t.filter.named[65] = true;                                // --drop-class 65 reaches them too
+  t.segment_cell = 0.5f;                                    // and the survey's segmentation cell
   REQUIRE(survey::parse_task_text(survey::task_text(t), &back, &error));
   CHECK(back.filter.classes() == std::vector<int>{7, 18, 65});
+  CHECK(back.segment_cell == 0.5f);
   CHECK(back.units.horizontal == t.units.horizontal);
   CHECK(back.units.vertical == t.units.vertical);
   CHECK_FALSE(back.units.geographic);

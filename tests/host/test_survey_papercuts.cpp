@@ -102,7 +102,8 @@ TEST_CASE("points a file marks as noise are left out and said so by scene, recog
   CHECK(v.exit_code == 0);
   const std::string report = read_bytes(dir.file("out/survey.json"));
   CHECK(contains(report, "\"points\":25383,\"buffer_points\":0,\"noise_points\":25,"));  // the tile's line
-  CHECK(contains(report, "\"buffer_points\":0,\"noise_points\":25,\"dropped_classes\":[7,18],\"wall_s\""));
+  CHECK(contains(report,
+                 "\"buffer_points\":0,\"noise_points\":25,\"dropped_classes\":[7,18],\"segment_cell_m\":"));
 }
 
 TEST_CASE("a class the user names (--drop-class) is left out by scene, recognize and survey, and said so") {
