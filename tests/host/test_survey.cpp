@@ -76,6 +76,18 @@ std::vector<Detection> vehicles(const std::string& jsonl) {
   return v;
 }
 
+// The survey's vehicles are the whole scene's, each once: the same model
+// at the same centre.
+void check_each_once(const std::vector<Detection>& whole, const std::vector<Detection>& cut) {
+  CHECK(cut.size() == whole.size());
+  for (const Detection& w : whole) {
+    int matches = 0;
+    for (const Detection& c : cut)
+      matches += std::hypot(c.x - w.x, c.y - w.y) < kSameCentre && c.model == w.model;
+    CHECK_MESSAGE(matches == 1, w.model << " at " << w.x << " " << w.y);
+  }
+}
+
 // Truth vehicles whose footprint a cut crosses.
 int vehicles_across_cuts(const std::string& truth_csv) {
   const spinhash::host::test::CsvColumns truth(read_bytes(truth_csv));
@@ -151,13 +163,7 @@ TEST_CASE("survey: 2 x 2 tiles give the whole scene's vehicles, each once, the s
   const std::vector<Detection> whole = vehicles(s.whole),
                                cut = vehicles(s.output("full", "detections.jsonl"));
   REQUIRE(whole.size() >= 12);
-  CHECK(cut.size() == whole.size());
-  for (const Detection& w : whole) {
-    int matches = 0;
-    for (const Detection& c : cut)
-      matches += std::hypot(c.x - w.x, c.y - w.y) < kSameCentre && c.model == w.model;
-    CHECK_MESSAGE(matches == 1, w.model << " at " << w.x << " " << w.y);
-  }
+  check_each_once(whole, cut);
   const CliRun one = s.run("jobs1", "--jobs 1");
   REQUIRE(one.exit_code == 0);
   for (const char* f : {"detections.jsonl", "detections.geojson"})
@@ -192,13 +198,7 @@ TEST_CASE(
   REQUIRE_MESSAGE(cut.exit_code == 0, cut.err);
   CHECK(contains(read_bytes(s.dir.file("sparse-out") + "/survey.json"), "\"segment_cell_m\":0.5,"));
   const std::vector<Detection> tiled = vehicles(read_bytes(s.dir.file("sparse-out") + "/detections.jsonl"));
-  CHECK(tiled.size() == found.size());
-  for (const Detection& w : found) {
-    int matches = 0;
-    for (const Detection& c : tiled)
-      matches += std::hypot(c.x - w.x, c.y - w.y) < kSameCentre && c.model == w.model;
-    CHECK_MESSAGE(matches == 1, w.model << " at " << w.x << " " << w.y);
-  }
+  check_each_once(found, tiled);
 }
 
 TEST_CASE("survey: the GeoJSON parses as a FeatureCollection, the GeoPackage opens, the overview is a PNG") {
