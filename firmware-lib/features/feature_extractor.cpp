@@ -159,7 +159,8 @@ Status FeatureExtractor::drop_ground(const GroundParams& params, FeatureSet* out
 }
 
 Status FeatureExtractor::describe(const OrientationHint& hint, const ExtractParams& params,
-                                  uint32_t max_features, FeatureSet* out, ExtractStats* stats) noexcept {
+                                  uint32_t max_features, FeatureSet* out, ExtractStats* stats,
+                                  uint32_t max_equalised) noexcept {
   if (impl_ == nullptr || out == nullptr || stats == nullptr) return Status::kNotOpen;
   Impl& m = *impl_;
   const uint32_t n = m.loaded;
@@ -171,6 +172,11 @@ Status FeatureExtractor::describe(const OrientationHint& hint, const ExtractPara
   m.voxel_grid.build(m.points, n, cloud_voxel);
   uint32_t ne = equalise_density(m.voxel_grid, m.points, m.equalised);
   stats->points_equalised = ne;
+  if (ne > max_equalised) {
+    m.loaded = 0;  // the load is spent either way
+    out->count = 0;
+    return Status::kWorkCapReached;
+  }
 
   // The voxel grid is free until basis selection; the spin images' output
   // holds the normals' gathered neighbourhoods.

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "recognize/sparse_search.hpp"
+#include "recognize/work_meter.hpp"
 
 namespace spinhash {
 namespace {
@@ -17,28 +18,38 @@ bool candidates_spread(const SearchContext& ctx) {
          static_cast<float>(ctx.stats.candidates.salient_features);
 }
 
-// Candidates and saliency weights of every query feature (BRAN).
+// The bucket entries scanned so far counted; true when they reach the
+// query's cap (the features after this one then get no candidates).
+bool scan_capped(SearchContext& ctx, const SearchStats& ss) {
+  ctx.stats.candidates.bucket_entries = ss.entries_scanned;
+  ctx.stats.candidates.bucket_scan_truncated = ss.truncated;
+  return work_capped(ctx);
+}
+
+// Candidates and saliency weights of every query feature (BRAN), up to the cap.
 void gather_candidates(SearchContext& ctx, uint32_t w) {
   RecognizerBuffers& b = ctx.buf;
   CandidatesStats& st = ctx.stats.candidates;
   SearchStats ss;
   float running = 0.0f;
+  bool capped = false;
   for (uint32_t l = 0; l < ctx.query.count; ++l) {
-    Candidate* list = ctx.candidates_of(l);
-    uint32_t n =
-        b.searcher.search(ctx.db, ctx.query.spins + static_cast<size_t>(l) * ctx.query.dims, w, list, &ss);
+    uint32_t n = 0;
+    if (!capped) {
+      Candidate* list = ctx.candidates_of(l);
+      n = b.searcher.search(ctx.db, ctx.query.spins + static_cast<size_t>(l) * ctx.query.dims, w, list, &ss);
+      // exp(-H) = 1 / perplexity: a feature whose candidates name one model is
+      // drawn as often as one spread evenly over e.g. 20 models, 20 times.
+      if (n > 0) {
+        running += std::exp(-candidate_entropy(ctx.db, list, n));
+        ++st.salient_features;
+      }
+      capped = scan_capped(ctx, ss);
+    }
     b.candidate_count[l] = n;
     st.kept += n;
-    // exp(-H) = 1 / perplexity: a feature whose candidates name one model is
-    // drawn as often as one spread evenly over e.g. 20 models, 20 times.
-    if (n > 0) {
-      running += std::exp(-candidate_entropy(ctx.db, list, n));
-      ++st.salient_features;
-    }
     b.cumulative[l] = running;
   }
-  st.bucket_entries = ss.entries_scanned;
-  st.bucket_scan_truncated = ss.truncated;
 }
 
 // Spin-image indexing without geometry, the paper's SIND baseline: each
@@ -56,9 +67,8 @@ void vote(SearchContext& ctx) {
       best.score = best.has_score ? best.score + 1.0f : 1.0f;
       best.has_score = true;
     }
+    if (scan_capped(ctx, ss)) break;  // the votes so far answer
   }
-  st.bucket_entries = ss.entries_scanned;
-  st.bucket_scan_truncated = ss.truncated;
 }
 
 }  // namespace

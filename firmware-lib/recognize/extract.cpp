@@ -1,6 +1,7 @@
 #include "recognize/extract.hpp"
 
 #include "descriptor/spin_image.hpp"
+#include "recognize/work_meter.hpp"
 
 namespace spinhash {
 namespace {
@@ -20,8 +21,13 @@ void reset(ModelBest& best) {
 Status extract_stage(SearchContext& ctx) {
   RecognizerBuffers& b = ctx.buf;
   FeatureSet& fs = ctx.features;
-  const Status s =
-      b.extractor.describe(ctx.hint, ctx.params.extract, ctx.max_features, &fs, &ctx.stats.extract);
+  const Status s = b.extractor.describe(ctx.hint, ctx.params.extract, ctx.max_features, &fs,
+                                        &ctx.stats.extract, extraction_room(ctx));
+  if (s == Status::kWorkCapReached) {  // charged, not run: the answering stages see no features
+    for (uint32_t m = 0; m < ctx.db.model_count(); ++m) reset(b.best[m]);
+    ctx.query = QueryFeatures{};
+    return Status::kOk;
+  }
   if (s != Status::kOk) return s;
   if (ctx.terrain.top >= 0.0f) {  // the caller's terrain stands for the object ground removal's
     fs.top_above_terrain = ctx.terrain.top;

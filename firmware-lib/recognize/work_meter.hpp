@@ -4,9 +4,12 @@
 // cap stops a query at the same point on every target. The weights are the
 // instructions of each counted step over an LSH entry's (docs/budgets.md
 // gives the instructions per unit as measured). The cap is checked between
-// stages and before each candidate pair, so a query may pass it by one
-// stage's uninterruptible work: the extraction (up to max_points points)
-// or the candidates (up to max_features x max_bucket_scan entries).
+// stages, before each candidate pair and after each query feature's bucket
+// scan, and the extraction's charge (kWorkPerPoint a point equalised) is
+// known before its normals and spin images: a pass that would reach the cap
+// there is charged it and stops, so a query passes the cap by at most one
+// feature's bucket scan, one pair or one pose, and the uncounted
+// equalisation of its cloud.
 #pragma once
 #include <cstdint>
 
@@ -32,6 +35,16 @@ inline uint64_t pass_work(const RecognitionStats& s, const RecognizerConfig& pas
 // The query has spent its cap (the earlier passes' work and this one's).
 inline bool work_capped(const SearchContext& ctx) {
   return ctx.work_before + pass_work(ctx.stats, ctx.params) >= ctx.work_cap;
+}
+
+// The most points the extraction may equalise and still leave the query
+// under its cap (before it, no pose is scored: its charge is the points').
+inline uint32_t extraction_room(const SearchContext& ctx) {
+  const uint64_t spent = ctx.work_before + pass_work(ctx.stats, ctx.params);
+  if (spent >= ctx.work_cap) return 0;
+  const uint64_t room =
+      (ctx.work_cap - spent - 1u) / kWorkPerPoint;  // n points: n x kWorkPerPoint < the rest
+  return room < UINT32_MAX ? static_cast<uint32_t>(room) : UINT32_MAX;
 }
 
 }  // namespace spinhash

@@ -87,9 +87,12 @@ class FeatureExtractor {
   Status drop_ground(const GroundParams& params, FeatureSet* out, uint32_t* dropped) noexcept;
   // The loaded points' features, by `params` (ExtractParams' query_* fields
   // override the database's voxel and spacing), at most `max_features` of
-  // them (and at most the capacity's).
+  // them (and at most the capacity's). When the equalised cloud holds more
+  // than `max_equalised` points it stops before their normals and spin
+  // images (most of the work): kWorkCapReached, no features,
+  // stats->points_equalised set (a work cap's bound, recognize/work_meter.hpp).
   Status describe(const OrientationHint& hint, const ExtractParams& params, uint32_t max_features,
-                  FeatureSet* out, ExtractStats* stats) noexcept;
+                  FeatureSet* out, ExtractStats* stats, uint32_t max_equalised = UINT32_MAX) noexcept;
 
  private:
   struct Impl;  // buffers, placed in the arena by init()

@@ -146,15 +146,17 @@ TEST_CASE("cascade: the work cap ends a query with its best answer so far, never
   for (uint32_t l = 0; l < kCalibratedLevels; ++l) CHECK_FALSE(capped.result.levels[l].confident);
   CHECK(capped.result.level == AnswerLevel::kNone);
   REQUIRE(capped.result.ranking_count >= 1);  // the best answer so far
-  // An escalated query whose full pass reaches the cap before its draws
-  // still verifies the first pass's poses on the full pass's features and
-  // answers with them.
+  // An escalated query whose full pass reaches the cap after its
+  // extraction, before its draws, still verifies the first pass's poses on
+  // the full pass's features and answers with them.
   {
     RecognizerConfig cascade;
     cascade.carry.enabled = true;
     const Run side = recognize_toy(toy, cascade, 2u);
     REQUIRE(side.result.stats.cascade.passes == 2u);
-    cascade.max_work = side.result.stats.cascade.first_work + 1u;
+    REQUIRE(side.result.stats.cascade.answered_by == 1u);  // the stage blocks are the full pass's
+    const uint64_t extraction = kWorkPerPoint * side.result.stats.extract.points_equalised;
+    cascade.max_work = side.result.stats.cascade.first_work + extraction + 1u;
     const Run early = recognize_toy(toy, cascade, 2u);
     CHECK(early.result.status == Status::kWorkCapReached);
     CHECK(early.result.stats.cascade.passes == 2u);
@@ -373,4 +375,62 @@ TEST_CASE(
   REQUIRE(whole.ranking_count >= 1u);
   CHECK(again.ranking[0].model == whole.ranking[0].model);
   CHECK(again.ranking[0].score == whole.ranking[0].score);
+}
+
+// The cap bounds a query by its configuration, not by its cloud: the
+// extraction's charge is known before its normals and spin images, and the
+// candidates stop after the feature whose bucket scan reaches the cap.
+TEST_CASE("cascade: the work cap stops the extraction and the candidates before they pass it") {
+  const test::ToyDatabase& toy = test::shared_toy_database();
+  const uint32_t m = 4;
+  RecognizerConfig full = preset_config(Preset::kFull);
+  const Run whole = recognize_toy(toy, full, m, true);
+  REQUIRE(whole.result.status == Status::kOk);
+  const ExtractStats& e = whole.result.stats.extract;
+  const uint64_t extraction = kWorkPerPoint * e.points_equalised;
+  const uint64_t entries = whole.result.stats.candidates.bucket_entries;
+  REQUIRE(e.features > 2u);
+  REQUIRE(entries > 0u);
+
+  SUBCASE("a cap the extraction would reach: charged, not run") {
+    full.max_work = extraction;  // exactly its charge
+    const Run capped = recognize_toy(toy, full, m, true);
+    CHECK(capped.result.status == Status::kWorkCapReached);
+    CHECK(capped.result.stats.extract.points_equalised == e.points_equalised);  // equalised, then stopped
+    CHECK(capped.result.stats.extract.points_oriented == 0u);
+    CHECK(capped.result.stats.extract.features == 0u);
+    CHECK(capped.result.stats.candidates.bucket_entries == 0u);
+    CHECK(capped.result.stats.cascade.work == extraction);
+    CHECK(capped.result.ranking_count == 0u);  // nothing was posed
+    CHECK_FALSE(capped.result.confident);
+    CHECK(capped.result.level == AnswerLevel::kNone);
+  }
+  SUBCASE("one unit more: the extraction runs, the candidates stop at once") {
+    full.max_work = extraction + 1u;
+    const Run capped = recognize_toy(toy, full, m, true);
+    CHECK(capped.result.status == Status::kWorkCapReached);
+    CHECK(capped.result.stats.extract.features == e.features);
+    const uint64_t scanned = capped.result.stats.candidates.bucket_entries;
+    CHECK(scanned > 0u);
+    CHECK(scanned < entries);
+    CHECK(capped.result.stats.candidates.salient_features <= 1u);  // the first feature's scan alone
+    CHECK(capped.result.stats.draws.trials == 0u);
+    CHECK(capped.result.ranking_count == 0u);
+  }
+  SUBCASE("a cap halfway through the candidates: passed by at most one feature's scan") {
+    full.max_work = extraction + entries / 2u;
+    const Run capped = recognize_toy(toy, full, m, true);
+    CHECK(capped.result.status == Status::kWorkCapReached);
+    const uint64_t scanned = capped.result.stats.candidates.bucket_entries;
+    CHECK(scanned >= entries / 2u);
+    CHECK(scanned < entries);
+    CHECK(capped.result.stats.candidates.salient_features < whole.result.stats.candidates.salient_features);
+    CHECK(capped.result.stats.draws.trials == 0u);
+    // The scan stops after the feature that reaches the cap: a cap at what
+    // it scanned stops there again, one entry more takes one feature more.
+    full.max_work = extraction + scanned;
+    CHECK(recognize_toy(toy, full, m, true).result.stats.candidates.bucket_entries == scanned);
+    full.max_work = extraction + scanned + 1u;
+    CHECK(recognize_toy(toy, full, m, true).result.stats.candidates.bucket_entries > scanned);
+  }
 }
