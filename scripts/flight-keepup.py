@@ -3,7 +3,7 @@
 
   scripts/flight-keepup.py ROWS.csv [--speed 30] [--swath 100] [--density 100]
       [--window-core 32] [--windows-per-row 4] [--max-lag 16] [--hz 1.2e9] [--ipc 1.0]
-      [--per-point 1245] [--per-unit 110] [--window-max-work 0] [--max-points 32768]
+      [--per-point 1245] [--per-unit 110] [--window-max-work 0] [--fixed-per-point 520]
 
 ROWS.csv is what `tests/worst_case/stream_runner run DIR` writes (columns
 row, points, objects, recognition_work): per row of windows along track, its
@@ -18,18 +18,19 @@ waits while the rows before it run: the line keeps up when no row waits
 longer than the aircraft takes to fly --max-lag m (the stream's lag).
 
 The configured bound: with --window-max-work W a window's recognitions
-spend at most W units plus one query's uninterruptible extraction (150
-units a point, --max-points points), so a row of --windows-per-row windows
-at --density points per m2 costs at most per-point x density x core x swath
-+ per-unit x windows x (W + 150 x max-points). Prints the measured rows,
-the bound, and whether each keeps up; exit status 0 when the measured line
-keeps up, 1 when it does not, 2 on bad input.
+spend at most W units (a query passes its cap by one LSH scan, one pair or
+one pose at most) plus what the units do not count, each query's loading,
+ground removal and equalising of its cloud in both passes (--fixed-per-point
+instructions a point of it; its points are the row's at most), so a row of
+--windows-per-row windows at --density points per m2 costs at most
+(per-point + fixed-per-point) x density x core x swath + per-unit x windows
+x W. Prints the measured rows, the bound, and whether each keeps up; exit
+status 0 when the measured line keeps up, 1 when it does not, 2 on bad
+input.
 """
 import argparse
 import csv
 import sys
-
-EXTRACTION_UNITS_PER_POINT = 150  # kWorkPerPoint (firmware-lib/recognize/work_meter.hpp)
 
 
 def main():
@@ -46,7 +47,8 @@ def main():
     p.add_argument("--per-point", type=float, default=1245.0, help="instructions per input point, recognition aside")
     p.add_argument("--per-unit", type=float, default=110.0, help="instructions per recognition work unit")
     p.add_argument("--window-max-work", type=int, default=0, help="the run's window budget (0: none)")
-    p.add_argument("--max-points", type=int, default=32768, help="RecognizerConfig::max_points")
+    p.add_argument("--fixed-per-point", type=float, default=520.0,
+                   help="instructions a query point costs that no work unit counts (aarch64, both passes)")
     a = p.parse_args()
     try:
         with open(a.rows, newline="") as f:
@@ -79,12 +81,13 @@ def main():
           f"{worst_wait * a.speed:.1f} m of flight against --max-lag {a.max_lag:g} m: "
           f"{'keeps up' if keeps_up else 'falls behind'}")
     if a.window_max_work > 0:
-        per_window = a.window_max_work + EXTRACTION_UNITS_PER_POINT * a.max_points
-        bound = (a.per_point * a.density * a.window_core * a.swath +
-                 a.per_unit * a.windows_per_row * per_window)
-        print(f"bound: at most {a.per_unit * per_window / 1e9:.2f} G instructions of recognition a window "
-              f"(window_max_work {a.window_max_work} + one extraction), {bound / 1e9:.2f} G a row at "
-              f"{a.density:g} points/m2: {'keeps up' if bound <= rate * period else 'may fall behind'} "
+        row_points = a.density * a.window_core * a.swath
+        budget = a.per_unit * a.windows_per_row * a.window_max_work
+        bound = (a.per_point + a.fixed_per_point) * row_points + budget
+        print(f"bound: at most {bound / 1e9:.2f} G instructions a row at {a.density:g} points/m2 "
+              f"(the stream {a.per_point * row_points / 1e9:.2f} G, the queries' loading and equalising "
+              f"{a.fixed_per_point * row_points / 1e9:.2f} G, window_max_work {a.window_max_work} a window "
+              f"{budget / 1e9:.2f} G): {'keeps up' if bound <= rate * period else 'may fall behind'} "
               f"whatever the row holds")
     return 0 if keeps_up else 1
 

@@ -269,7 +269,7 @@ TEST_CASE(
   CHECK(fit_models == models);
 
   // A budget of one unit: the first candidate's recognition is capped at
-  // once (its extraction is uninterruptible), the other two are not run.
+  // once (charged its first extraction, which it skips), the other two are not run.
   cfg.window_max_work = 1u;
   SceneRun tight_run(&toy.db, cfg);
   REQUIRE(tight_run.init == Status::kOk);
