@@ -18,8 +18,9 @@ waits while the rows before it run: the line keeps up when no row waits
 longer than the aircraft takes to fly --max-lag m (the stream's lag).
 
 The configured bound: with --window-max-work W a window's recognitions
-spend at most W units (a query passes its cap by one LSH scan, one pair or
-one pose at most) plus what the units do not count, each query's loading,
+spend at most W units, and what the last query passes its cap by (one LSH
+scan, one pair, or the look-alike lending or refinement it has begun: not
+in the bound), plus what the units do not count, each query's loading,
 ground removal and equalising of its cloud in both passes (--fixed-per-point
 instructions a point of it; its points are the row's at most), so a row of
 --windows-per-row windows at --density points per m2 costs at most
@@ -88,7 +89,7 @@ def main():
               f"(the stream {a.per_point * row_points / 1e9:.2f} G, the queries' loading and equalising "
               f"{a.fixed_per_point * row_points / 1e9:.2f} G, window_max_work {a.window_max_work} a window "
               f"{budget / 1e9:.2f} G): {'keeps up' if bound <= rate * period else 'may fall behind'} "
-              f"whatever the row holds")
+              f"whatever the row holds, short of what its windows' last queries pass their caps by")
     return 0 if keeps_up else 1
 
 

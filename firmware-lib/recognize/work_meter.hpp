@@ -8,8 +8,9 @@
 // scan, and the extraction's charge (kWorkPerPoint a point equalised) is
 // known before its normals and spin images: a pass that would reach the cap
 // there is charged it and stops, so a query passes the cap by at most one
-// feature's bucket scan, one pair or one pose, and the uncounted
-// equalisation of its cloud.
+// feature's bucket scan, one pair, or the transfer or refine stage it has
+// begun (each bounded by its settings), and the uncounted equalisation of
+// its cloud.
 #pragma once
 #include <cstdint>
 
