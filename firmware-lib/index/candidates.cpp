@@ -159,7 +159,8 @@ uint32_t LshSearcher::search(const Database& db, const uint8_t* spin, uint32_t w
     for (uint32_t e = 0; e < take; ++e)
       consider(entries[whole ? e : static_cast<uint32_t>(static_cast<uint64_t>(e) * size / take)]);
   }
-  heap_sort(out, count, before);
+  // A lambda, not the function: the sort then inlines the comparison.
+  heap_sort(out, count, [](const Candidate& x, const Candidate& y) { return before(x, y); });
   return count;
 }
 

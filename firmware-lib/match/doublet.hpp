@@ -4,6 +4,7 @@
 // mirror image, so the cascade adds the handedness t = (n1 x n2) . u, which a
 // reflection negates. Checks run cheapest first and stop at the first failure.
 #pragma once
+#include <cmath>
 #include <cstdint>
 
 #include "match/oriented_point.hpp"
@@ -38,5 +39,18 @@ inline bool is_stable(const DoubletShape& s, float d_min, float theta_min) {
 // the first constraint that fails, or kPass.
 CascadeStage check_doublet(const DoubletShape& query, const OrientedPoint& m1, const OrientedPoint& m2,
                            const DoubletTolerance& tol);
+
+// The cascade's first constraint reads the model points' separation d alone,
+// so a caller can reject most pairs before it decodes their normals.
+inline bool separation_agrees(const DoubletShape& query, float d, const DoubletTolerance& tol) {
+  return !(std::fabs(d - query.d) > tol.distance);
+}
+
+// The rest of the cascade, for model points whose separation agrees:
+// normals n1 and n2, delta = p2 - p1 and d = |delta|. check_doublet is
+// separation_agrees, then this.
+CascadeStage check_doublet_normals(const DoubletShape& query, const Eigen::Vector3f& n1,
+                                   const Eigen::Vector3f& n2, const Eigen::Vector3f& delta, float d,
+                                   const DoubletTolerance& tol);
 
 }  // namespace spinhash

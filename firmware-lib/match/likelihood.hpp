@@ -34,13 +34,18 @@ struct QueryFeatures {
 // to this many model-grid cells (a larger Delta_max is searched only this far).
 constexpr uint32_t kMaxGridReach = 4;
 
-// Model feature f of the blob: its position and decoded unit normal.
-inline OrientedPoint model_feature_point(const Database& db, uint32_t f) {
+// Model feature f of the blob: its position, its decoded unit normal, both.
+inline Eigen::Vector3f model_feature_position(const Database& db, uint32_t f) {
   const float* p = db.positions() + 3u * f;
+  return Eigen::Vector3f(p[0], p[1], p[2]);
+}
+inline Eigen::Vector3f model_feature_normal(const Database& db, uint32_t f) {
   const int16_t* n = db.normals() + 3u * f;
-  return OrientedPoint{Eigen::Vector3f(p[0], p[1], p[2]),
-                       Eigen::Vector3f(decode_normal_component(n[0]), decode_normal_component(n[1]),
-                                       decode_normal_component(n[2]))};
+  return Eigen::Vector3f(decode_normal_component(n[0]), decode_normal_component(n[1]),
+                         decode_normal_component(n[2]));
+}
+inline OrientedPoint model_feature_point(const Database& db, uint32_t f) {
+  return OrientedPoint{model_feature_position(db, f), model_feature_normal(db, f)};
 }
 
 constexpr float kPointToPoint = -1.0f;  // LikelihoodParams::surface_patch_radius: the paper's r

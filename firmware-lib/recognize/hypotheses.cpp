@@ -2,6 +2,7 @@
 
 #include "recognize/work_meter.hpp"
 
+#include "match/likelihood.hpp"
 #include "match/pose_from_doublet.hpp"
 #include "recognize/evidence_stop.hpp"
 #include "spinhash/limits.hpp"
@@ -90,8 +91,14 @@ PairOutcome evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32
   }
   ++st.pair_checks;
   if (fu == fv) return PairOutcome::kRejected;
-  OrientedPoint mu = ctx.model_point(fu), mv = ctx.model_point(fv);
-  if (check_doublet(shape, mu, mv, ctx.tolerance) != CascadeStage::kPass) return PairOutcome::kRejected;
+  // The separation needs no normals: a pair it rejects never decodes them.
+  const Eigen::Vector3f pu = model_feature_position(ctx.db, fu), pv = model_feature_position(ctx.db, fv);
+  const Eigen::Vector3f delta = pv - pu;
+  const float d = delta.norm();
+  if (!separation_agrees(shape, d, ctx.tolerance)) return PairOutcome::kRejected;
+  const OrientedPoint mu{pu, model_feature_normal(ctx.db, fu)}, mv{pv, model_feature_normal(ctx.db, fv)};
+  if (check_doublet_normals(shape, mu.n, mv.n, delta, d, ctx.tolerance) != CascadeStage::kPass)
+    return PairOutcome::kRejected;
   ++st.doublets_passed;
   RigidPose pose;
   if (!pose_from_doublet(ctx.query_point(k), ctx.query_point(l), mu, mv, &pose,
