@@ -1,4 +1,4 @@
-// The work a pass has done, in units of about one LSH entry scanned (70-110
+// The work a pass has done, in units of about one LSH entry scanned (60-115
 // instructions on x86-64 and aarch64), from the counts its stages keep: what
 // RecognizerConfig::max_work caps. Deterministic (counts, not time), so the
 // cap stops a query at the same point on every target. The weights are the
@@ -9,8 +9,8 @@
 // known before its normals and spin images: a pass that would reach the cap
 // there is charged it and stops, so a query passes the cap by at most one
 // feature's bucket scan, one pair, or the transfer or refine stage it has
-// begun (each bounded by its settings), and the uncounted equalisation of
-// its cloud.
+// begun (their poses bounded by their settings, their instructions measured
+// in docs/budgets.md), and the uncounted equalisation of its cloud.
 #pragma once
 #include <cstdint>
 
