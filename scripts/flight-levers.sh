@@ -36,6 +36,7 @@
 # queries (every set both ran). DIR defaults to out/flight-levers (ignored by git).
 set -euo pipefail
 source "$(dirname "$0")/lib/fleet_db.sh"
+source "$(dirname "$0")/lib/ply_body.sh"
 
 usage() { sed -n '2,36p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
@@ -76,9 +77,7 @@ for s in "${spacings[@]}"; do
   for q in 0 1 2; do
     ply="$out/q$q-$s.ply"
     [[ -f "$ply" ]] || "$spinhash" scan "${first[$q]}" -o "$ply" --noise 0.05 --spacing "$s" --random-pose --seed $((q + 1)) 2>/dev/null
-    # The runner reads the PLY body: little-endian float64 xyz.
-    [[ -f "${ply%.ply}.f64" ]] || python3 -c 'import sys; b = open(sys.argv[1], "rb").read(); e = b"end_header\n"
-open(sys.argv[2], "wb").write(b[b.index(e) + len(e):])' "$ply" "${ply%.ply}.f64"
+    [[ -f "${ply%.ply}.f64" ]] || ply_body "$ply" "${ply%.ply}.f64"
   done
 done
 IFS=, read -r -a size_list <<< "$sizes"

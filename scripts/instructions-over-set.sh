@@ -19,6 +19,7 @@
 # the queries the cascade's first pass answered alone and the right first
 # answers.
 set -euo pipefail
+source "$(dirname "$0")/lib/ply_body.sh"
 
 usage() { sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
@@ -70,9 +71,7 @@ for obj in "$out/members"/*.obj; do
       name="${model}__${s}__${seed}"
       ply="$out/scans/$name.ply" raw="$out/scans/$name.f64"
       [[ -f "$ply" ]] || "$spinhash" scan "$obj" -o "$ply" --spacing "$s" --seed "$seed" --random-pose >/dev/null 2>&1
-      # The runner reads the PLY body: little-endian float64 xyz.
-      [[ -f "$raw" ]] || python3 -c 'import sys; b = open(sys.argv[1], "rb").read(); e = b"end_header\n"
-open(sys.argv[2], "wb").write(b[b.index(e) + len(e):])' "$ply" "$raw"
+      [[ -f "$raw" ]] || ply_body "$ply" "$raw"
       line=$("${qemu[@]}" "$runner" query "$db" "$raw" bran "${settings[@]}" 2>&1) ||
         { echo "instructions-over-set: $name: $line" >&2; exit 1; }
       top=$(sed -n 's/.*top=\([^ ]*\).*/\1/p' <<< "$line")

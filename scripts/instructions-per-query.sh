@@ -21,6 +21,7 @@
 # (DIR: out/instructions unless given; git ignores out/) and prints a Markdown table of the means.
 set -euo pipefail
 source "$(dirname "$0")/lib/fleet_db.sh"
+source "$(dirname "$0")/lib/ply_body.sh"
 
 usage() { sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
@@ -45,9 +46,8 @@ while [[ $# -gt 0 ]]; do
     *) usage ;;
   esac
 done
-if [[ -z "$spinhash" ]]; then
-  for b in "$root"/build*/host-tools/spinhash; do [[ -x "$b" ]] && spinhash="$b" && break; done
-fi
+# The Release build scripts/test.sh makes (a sanitizer build counts its own instrumentation).
+[[ -n "$spinhash" ]] || spinhash="$root/build/host-tools/spinhash"
 [[ -x "$spinhash" ]] || { echo "instructions-per-query: no spinhash binary (--spinhash BIN)" >&2; exit 1; }
 command -v valgrind >/dev/null || { echo "instructions-per-query: valgrind not installed" >&2; exit 1; }
 mkdir -p "$out"
@@ -58,9 +58,7 @@ echo "models,features,mode,query,instructions,native_ms,hypotheses,top_model,tru
 target_count() {  # DB PLY MODE TOP HYPOTHESES
   [[ -n "$target" ]] || return 0
   local raw="${2%.ply}.f64"
-  # The PLY body is little-endian float64 xyz, what the runner reads.
-  python3 -c 'import sys; b = open(sys.argv[1], "rb").read(); e = b"end_header\n"
-open(sys.argv[2], "wb").write(b[b.index(e) + len(e):])' "$2" "$raw"
+  ply_body "$2" "$raw"
   local line
   line=$("${qemu[@]}" "$runner" query "$1" "$raw" "$3" "preset=$preset" 2>&1)
   # The target must rank the same model first. Its hypothesis count may

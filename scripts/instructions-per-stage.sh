@@ -38,9 +38,8 @@ while [[ $# -gt 0 ]]; do
     *) usage ;;
   esac
 done
-if [[ -z "$spinhash" ]]; then
-  for b in "$root"/build*/host-tools/spinhash; do [[ -x "$b" ]] && spinhash="$b" && break; done
-fi
+# The Release build scripts/test.sh makes (a sanitizer build counts its own instrumentation).
+[[ -n "$spinhash" ]] || spinhash="$root/build/host-tools/spinhash"
 [[ -x "$spinhash" ]] || { echo "instructions-per-stage: no spinhash binary (--spinhash BIN)" >&2; exit 1; }
 command -v valgrind >/dev/null || { echo "instructions-per-stage: valgrind not installed" >&2; exit 1; }
 mkdir -p "$out"
