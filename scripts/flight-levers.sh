@@ -37,6 +37,7 @@
 set -euo pipefail
 source "$(dirname "$0")/lib/fleet_db.sh"
 source "$(dirname "$0")/lib/ply_body.sh"
+source "$(dirname "$0")/lib/qemu_count.sh"
 
 usage() { sed -n '2,36p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
@@ -63,9 +64,7 @@ runner="$target_build/tests/worst_case_runner"
 for b in "$spinhash" "$experiment" "$runner"; do
   [[ -x "$b" ]] || { echo "flight-levers: missing $b" >&2; exit 1; }
 done
-mkdir -p "$out"
-gcc -shared -fPIC -O2 -o "$out/insn_count.so" "$root/scripts/qemu/insn_count.c"
-qemu=(qemu-aarch64 -plugin "$out/insn_count.so" -d plugin -L /usr/aarch64-linux-gnu)
+qemu_count_setup flight-levers aarch64 "$out"
 
 # The benchmark's queries and databases (instructions-per-stage.sh's).
 spacings=(0.05 0.10)

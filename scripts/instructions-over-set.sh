@@ -20,6 +20,7 @@
 # answers.
 set -euo pipefail
 source "$(dirname "$0")/lib/ply_body.sh"
+source "$(dirname "$0")/lib/qemu_count.sh"
 
 usage() { sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
@@ -41,18 +42,12 @@ while [[ $# -gt 0 ]]; do
     *) usage ;;
   esac
 done
-case "$target" in
-  aarch64) triple=aarch64-linux-gnu ;;
-  arm) triple=arm-linux-gnueabihf ;;
-  *) usage ;;
-esac
 runner="$target_build/tests/worst_case_runner"
 for b in "$spinhash" "$runner"; do
   [[ -x "$b" ]] || { echo "instructions-over-set: missing $b" >&2; exit 1; }
 done
 mkdir -p "$out/members" "$out/scans"
-gcc -shared -fPIC -O2 -o "$out/insn_count.so" "$root/scripts/qemu/insn_count.c"
-qemu=("qemu-$target" -plugin "$out/insn_count.so" -d plugin -L "/usr/$triple")
+qemu_count_setup instructions-over-set "$target" "$out"
 
 [[ -n "$(ls "$out/members")" ]] || "$spinhash" generate -o "$out/members" --count "$models" 2>/dev/null
 if [[ -z "$db" ]]; then

@@ -18,6 +18,7 @@
 # default). Writes DIR/instructions-per-point.csv (DIR: out/instructions-per-point
 # unless given; git ignores out/) and prints a Markdown table.
 set -euo pipefail
+source "$(dirname "$0")/lib/qemu_count.sh"
 
 usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
@@ -75,15 +76,12 @@ host[rest_objects]=$(( run_window - host[heights] - host[segmentation] - host[re
 declare -A tgt
 target_line=""
 if [[ -n "$target" ]]; then
-  declare -A triples=([aarch64]=aarch64-linux-gnu [arm]=arm-linux-gnueabihf)
-  triple=${triples[$target]:-}
   target_runner="$target_build/tests/stream_runner"
-  [[ -n "$triple" && -x "$target_runner" ]] ||
+  [[ -x "$target_runner" ]] ||
     { echo "instructions-per-point: --target aarch64|arm needs --target-build DIR with tests/stream_runner" >&2; exit 1; }
-  gcc -shared -fPIC -O2 -o "$out/insn_count.so" "$root/scripts/qemu/insn_count.c"
+  qemu_count_setup instructions-per-point "$target" "$out" "${stages[@]/#/stage=}"
   echo "instructions-per-point: $target (qemu-$target, insn_count.so)" >&2
-  plugin="$out/insn_count.so$(printf ',stage=%s' "${stages[@]}")"
-  raw=$("qemu-$target" -plugin "$plugin" -d plugin -L "/usr/$triple" "$target_runner" run "$out" "$preset" 2>&1)
+  raw=$("${qemu[@]}" "$target_runner" run "$out" "$preset" 2>&1)
   target_line=$(grep -o 'points=.*status=[a-z_]*' <<< "$raw")
   tgt[total]=$(sed -n 's/.*insns \([0-9]*\).*/\1/p' <<< "$raw")
   for s in "${stages[@]}"; do tgt[$s]=$(sed -n "s/.*insns\.$s \([0-9]*\).*/\1/p" <<< "$raw"); done

@@ -22,6 +22,7 @@
 set -euo pipefail
 source "$(dirname "$0")/lib/fleet_db.sh"
 source "$(dirname "$0")/lib/ply_body.sh"
+source "$(dirname "$0")/lib/qemu_count.sh"
 
 usage() { sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 
@@ -71,13 +72,10 @@ target_count() {  # DB PLY MODE TOP HYPOTHESES
   sed -n 's/.*insns \([0-9]*\).*/\1/p' <<< "$line"
 }
 if [[ -n "$target" ]]; then
-  declare -A triples=([aarch64]=aarch64-linux-gnu [arm]=arm-linux-gnueabihf)
-  triple=${triples[$target]:-}
   runner="$target_build/tests/worst_case_runner"
-  [[ -n "$triple" && -x "$runner" ]] ||
+  [[ -x "$runner" ]] ||
     { echo "instructions-per-query: --target aarch64|arm needs --target-build DIR with tests/worst_case_runner" >&2; exit 1; }
-  gcc -shared -fPIC -O2 -o "$out/insn_count.so" "$root/scripts/qemu/insn_count.c"
-  qemu=("qemu-$target" -plugin "$out/insn_count.so" -d plugin -L "/usr/$triple")
+  qemu_count_setup instructions-per-query "$target" "$out"
 fi
 
 IFS=, read -r -a size_list <<< "$sizes"
