@@ -28,17 +28,31 @@ namespace {
 namespace fs = std::filesystem;
 
 struct CarEntry {
-  const char* name;   // the source's folder and stem
-  const char* klass;  // vehicle class folder (include/spinhash/vehicle_classes.h)
+  const char* name;        // the source's folder and stem
+  const char* klass;       // vehicle class folder (include/spinhash/vehicle_classes.h)
+  const char* group = "";  // the car's group where its class has none ("": its class's)
 };
 
 // TORCS 1.3.7: touring, stock and GT cars are sedans (saloon or coupe
-// bodies); the buggies and the open-wheel racer are "other".
+// bodies); the buggies and the open-wheel racer are "other", each a car of
+// well under a tonne, so a light vehicle.
 constexpr CarEntry kTorcsCars[] = {
-    {"155-DTM", "sedan"},   {"acura-nsx-sz", "sedan"}, {"baja-bug", "other"},    {"buggy", "other"},
-    {"car1-ow1", "other"},  {"car1-stock1", "sedan"},  {"car1-stock2", "sedan"}, {"car1-trb1", "sedan"},
-    {"car1-trb3", "sedan"}, {"car2-trb1", "sedan"},    {"car3-trb1", "sedan"},   {"car4-trb1", "sedan"},
-    {"car5-trb1", "sedan"}, {"car6-trb1", "sedan"},    {"car7-trb1", "sedan"},   {"car8-trb1", "sedan"},
+    {"155-DTM", "sedan"},
+    {"acura-nsx-sz", "sedan"},
+    {"baja-bug", "other", "light"},
+    {"buggy", "other", "light"},
+    {"car1-ow1", "other", "light"},
+    {"car1-stock1", "sedan"},
+    {"car1-stock2", "sedan"},
+    {"car1-trb1", "sedan"},
+    {"car1-trb3", "sedan"},
+    {"car2-trb1", "sedan"},
+    {"car3-trb1", "sedan"},
+    {"car4-trb1", "sedan"},
+    {"car5-trb1", "sedan"},
+    {"car6-trb1", "sedan"},
+    {"car7-trb1", "sedan"},
+    {"car8-trb1", "sedan"},
     {"p406", "sedan"},
 };
 // Trigger Rally 0.6.6: rally hatchbacks; kitcar and super500 share the wrc's geometry.
@@ -147,7 +161,7 @@ bool write_one(const std::string& out, const CarEntry& c, const std::string& sou
                CsvTable* catalog, std::string* error) {
   settle(m);
   m->name = c.name;
-  return write_in_class_folder(out, c.klass, source, *m, catalog, error);
+  return write_in_class_folder(out, c.klass, source, *m, catalog, error, c.group);
 }
 
 int run_prepare(const PrepareArgs& a) {

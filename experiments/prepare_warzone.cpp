@@ -57,10 +57,10 @@ bool load_parts(const std::string& base, const std::vector<std::string>& parts, 
 }
 
 bool write_one(const std::string& dir, const std::string& klass, const std::string& kind, host::Mesh& m,
-               CsvTable* catalog, std::string* error) {
+               CsvTable* catalog, std::string* error, const std::string& group = "") {
   const std::string path = (fs::path(dir) / (m.name + ".obj")).string();
   if (!host::write_obj(path, m, error)) return false;
-  catalog->add(catalog_row(m, klass, "warzone-" + kind));
+  catalog->add(catalog_row(m, klass, "warzone-" + kind, group));
   return true;
 }
 
@@ -72,7 +72,7 @@ bool prepare_vehicles(const PrepareArgs& a, CsvTable* catalog, Tally* tally, std
     host::Mesh m;
     if (!load_parts(a.base, v.parts, &m, error)) return false;
     m.name = v.name;
-    if (!write_one(out, v.klass, "vehicle", m, catalog, error)) return false;
+    if (!write_one(out, v.klass, "vehicle", m, catalog, error, v.group)) return false;
     manifest += v.name + " " + v.klass + "\n";
     ++tally->written;
   }

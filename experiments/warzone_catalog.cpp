@@ -26,10 +26,17 @@ constexpr const char* kBody7Hover = "prmhov2";
 struct OnePiece {
   const char* stem;
   const char* klass;
+  const char* group = "";  // where its class has none ("": its class's)
 };
-// One-piece vehicles of the scavenger faction.
-const OnePiece kOnePiece[] = {{"exjeep", "suv"},    {"exjeeprk", "suv"},  {"exbuggy", "other"},
-                              {"exbugrk", "other"}, {"extrike", "other"}, {"exschool", "bus"},
+// One-piece vehicles of the scavenger faction: the buggies and the trike
+// are unarmoured runabouts of a jeep's size, so light vehicles. (The
+// hover bodies above stay in no group: a hovercraft is none of them.)
+const OnePiece kOnePiece[] = {{"exjeep", "suv"},
+                              {"exjeeprk", "suv"},
+                              {"exbuggy", "other", "light"},
+                              {"exbugrk", "other", "light"},
+                              {"extrike", "other", "light"},
+                              {"exschool", "bus"},
                               {"exfire", "truck"}};
 
 std::string pie(const char* dir, const std::string& stem) { return std::string(dir) + stem + ".pie"; }
@@ -52,10 +59,11 @@ std::vector<WarzoneVehicle> warzone_vehicles() {
       for (const Propulsion& p : props)
         out.push_back({"wz-" + std::string(body) + "-" + p.name,
                        {pie(kBodyDir, body), pie(kPropDir, p.part)},
-                       p.klass});
+                       p.klass,
+                       ""});
     }
   for (const OnePiece& v : kOnePiece)
-    out.push_back({"wz-" + std::string(v.stem), {pie(kBodyDir, v.stem)}, v.klass});
+    out.push_back({"wz-" + std::string(v.stem), {pie(kBodyDir, v.stem)}, v.klass, v.group});
   return out;
 }
 

@@ -13,6 +13,7 @@ struct WarzoneVehicle {
   std::string name;                // e.g. "wz-drlbod01-tracks"
   std::vector<std::string> parts;  // paths under the base.wz root
   std::string klass;               // vehicle class (include/spinhash/vehicle_classes.h)
+  std::string group;               // its group where its class has none ("": its class's)
 };
 
 // Droid bodies x ground propulsion (wheels, half-tracks, tracks, hover),

@@ -59,8 +59,10 @@ uint32_t WorldSet::world_index(const std::string& world) const {
 void add_fleet_world(uint32_t count, uint64_t fleet_seed, WorldSet* set) {
   if (count == 0) return;
   add_world("fleet", set);
-  for (pipeline::ModelMesh& m : generated_models(count, fleet_seed))
-    set->vehicles.push_back(WorldVehicle{"fleet", std::move(m)});
+  for (pipeline::ModelMesh& m : generated_models(count, fleet_seed)) {
+    const VehicleGroup group = vehicle_group_of(m.vehicle_class);
+    set->vehicles.push_back(WorldVehicle{"fleet", std::move(m), group});
+  }
 }
 
 bool add_catalog(const std::string& path, const std::vector<std::string>& clutter_sources, WorldSet* set,
@@ -69,6 +71,7 @@ bool add_catalog(const std::string& path, const std::vector<std::string>& clutte
   CsvReader catalog;
   if (!catalog.read(csv.string(), error)) return false;
   const int name = catalog.column("name"), klass = catalog.column("class"), source = catalog.column("source");
+  const int group_column = catalog.column("group");  // optional: the class's group where absent or empty
   if (name < 0 || klass < 0 || source < 0) {
     *error = csv.string() + ": needs the columns name, class and source";
     return false;
@@ -86,6 +89,12 @@ bool add_catalog(const std::string& path, const std::vector<std::string>& clutte
       *error = csv.string() + ": " + n + ": '" + k + "' is not a vehicle class";
       return false;
     }
+    VehicleGroup group = vehicle_group_of(c);
+    const std::string g = group_column < 0 || clutter ? std::string() : catalog.cell(r, group_column);
+    if (!g.empty() && !parse_vehicle_group(g.c_str(), &group)) {
+      *error = csv.string() + ": " + n + ": '" + g + "' is not a vehicle group";
+      return false;
+    }
     const auto file = files.find(n);
     host::Mesh mesh;
     if (file == files.end()) {
@@ -99,7 +108,8 @@ bool add_catalog(const std::string& path, const std::vector<std::string>& clutte
       continue;
     }
     add_world(world_of_source(s), set);
-    set->vehicles.push_back(WorldVehicle{world_of_source(s), pipeline::ModelMesh{n, std::move(mesh), c}});
+    set->vehicles.push_back(
+        WorldVehicle{world_of_source(s), pipeline::ModelMesh{n, std::move(mesh), c}, group});
   }
   return true;
 }

@@ -8,12 +8,16 @@
 
 #include "mesh/mesh.hpp"
 #include "pipeline/model_sources.hpp"
+#include "spinhash/vehicle_class.hpp"
 
 namespace spinhash::experiment {
 
 struct WorldVehicle {
   std::string world;
   pipeline::ModelMesh model;  // name, mesh (x forward, z up, resting at z = 0), class
+  // The vehicle's own group, what a group answer is judged against: its
+  // class's, or the catalog's where the class spans the groups (other).
+  VehicleGroup group = VehicleGroup::kNone;
 };
 
 // Something that is no vehicle, standing on level ground at height ground_z
@@ -39,7 +43,8 @@ struct WorldSet {
 void add_fleet_world(uint32_t count, uint64_t fleet_seed, WorldSet* set);
 
 // The meshes a catalog.csv lists (scripts/prepare-*.sh: columns name,
-// class, source), found by file stem anywhere under the catalog's folder.
+// class, source, and group where a vehicle's is not its class's), found by
+// file stem anywhere under the catalog's folder.
 // A row with a class is a vehicle of the world its source's first word
 // names ("torcs", "sweethome3d-Scopia": "sweethome3d", "warzone-vehicle":
 // "warzone"); a row without a class is clutter of kind `source` when

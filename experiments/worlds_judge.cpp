@@ -10,8 +10,10 @@ const char* worlds_database_name(WorldsDatabase d) {
 WorldsJudgement judge(const WorldsRun& run, const WorldsRecord& r) {
   WorldsJudgement j;
   if (r.clutter) return j;
-  j.true_class = static_cast<uint32_t>(run.set->vehicles[r.object].model.vehicle_class);
-  j.true_group = static_cast<uint32_t>(vehicle_group_of(j.true_class));
+  const WorldVehicle& v = run.set->vehicles[r.object];
+  j.true_class = static_cast<uint32_t>(v.model.vehicle_class);
+  j.true_group =
+      static_cast<uint32_t>(v.group);  // the vehicle's own: a buggy is light, though "other" is not
   if (!r.answer.ranked) return j;
   j.model_right = r.first == static_cast<int32_t>(r.object);
   j.class_right = r.answer.vehicle_class == j.true_class;

@@ -4,8 +4,9 @@
 # trigger-rally-data (119 MB: 3 distinct Trigger Rally bodies, OBJ) with
 # apt-get download (game content under the GPL and other free licences:
 # never commit it), unpacks only the cars and converts them to OBJ meshes in
-# class folders (spinhash-experiment prepare-cars): 20 cars, 16 sedans and
-# 4 "other" (two buggies, an open-wheel racer, a Baja Bug). Not run by CI
+# class folders (spinhash-experiment prepare-cars): 20 cars, 17 sedans and
+# 3 "other" in the light group (a buggy, an open-wheel racer, a Baja Bug).
+# Not run by CI
 # (450 MB of downloads). With the packages installed (scripts/install-deps.sh
 # --cars) their files are read in place and nothing is downloaded.
 #

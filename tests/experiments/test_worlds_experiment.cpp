@@ -21,7 +21,8 @@ using spinhash::host::test::read_bytes;
 using spinhash::host::test::TempDir;
 using spinhash::host::test::write_bytes;
 
-constexpr int kFamilies = 8;  // the procedural fleet's: two members of each make 16 vehicles
+constexpr int kFamilies = 8;                 // the procedural fleet's: two members of each make 16 vehicles
+const std::string kOtherLight = "sedan-01";  // catalogued as class other, group light
 
 // A unit box standing on z = 0 (a crate-sized non-vehicle).
 const char* kBoxObj =
@@ -32,21 +33,26 @@ const char* kBoxObj =
 
 // Generates 16 fleet members into DIR/meshes and catalogs them: the -00
 // members as world "north", the -01 members as "south", plus the box as
-// clutter of source "mini-structure".
+// clutter of source "mini-structure". One saloon is catalogued as class
+// "other" in group "light" (a class that spans the groups, with the
+// vehicle's own group given); the others' group cells are empty (their
+// class's).
 void make_mini_worlds(const TempDir& dir) {
   const std::string meshes = dir.file("meshes");
   const std::string gen =
       "'" SPINHASH_TEST_BINARY "' generate --count 16 -o '" + meshes + "' 2> '" + dir.file("gen.txt") + "'";
   REQUIRE(std::system(gen.c_str()) == 0);
   write_bytes(meshes + "/box-a.obj", kBoxObj);
-  std::string catalog = "name,class,source\n";
+  std::string catalog = "name,class,group,source\n";
   for (const auto& f : std::filesystem::directory_iterator(meshes)) {
     const std::string stem = f.path().stem().string();
     if (f.path().extension() != ".obj" || stem == "box-a") continue;
     const std::string family = stem.substr(0, stem.find('-'));
-    catalog += stem + "," + family + "," + (stem.back() == '0' ? "north" : "south") + "\n";
+    const bool other = stem == kOtherLight;
+    catalog += stem + "," + (other ? "other" : family) + "," + (other ? "light" : "") + "," +
+               (stem.back() == '0' ? "north" : "south") + "\n";
   }
-  catalog += "box-a,,mini-structure\n";
+  catalog += "box-a,,,mini-structure\n";
   write_bytes(meshes + "/catalog.csv", catalog);
 }
 
@@ -94,6 +100,9 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
   // 16 vehicles x 4 conditions x 2 databases, then 4 scene pieces, 4 vehicle-sized ones and the box
   // once (sparse).
   REQUIRE(csv.rows() == 2u * kFamilies * 4u * 2u + 9u);
+  const std::map<std::string, std::string> family_group = {
+      {"sedan", "light"}, {"suv", "light"}, {"van", "light"},        {"pickup", "light"},
+      {"truck", "heavy"}, {"bus", "heavy"}, {"tracked", "armoured"}, {"apc", "armoured"}};
   std::map<std::string, int> per_condition;
   std::set<std::string> clutter_kinds;
   int vehicle_rows = 0, known_right = 0, with_evidence = 0;
@@ -116,6 +125,18 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
     }
     ++vehicle_rows;
     ++per_condition[condition];
+    // The truth a group answer is judged against is the vehicle's own group.
+    const std::string object = csv.cell(i, "object");
+    if (object == kOtherLight) {
+      CHECK(csv.cell(i, "true_class") == "other");
+      CHECK(csv.cell(i, "true_group") == "light");
+    } else {
+      const std::string family = object.substr(0, object.find('-'));
+      CHECK(csv.cell(i, "true_class") == family);
+      CHECK(csv.cell(i, "true_group") == family_group.at(family));
+    }
+    if (csv.cell(i, "group_confident") == "1")
+      CHECK((csv.cell(i, "group_right") == "1") == (csv.cell(i, "first_group") == csv.cell(i, "true_group")));
     const std::string world = csv.cell(i, "world");
     CHECK((world == "north" || world == "south"));
     const std::string database = csv.cell(i, "database");
@@ -161,7 +182,7 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
   }
 }
 
-TEST_CASE("experiment worlds refuses a single world and a catalog with an unknown class") {
+TEST_CASE("experiment worlds refuses a single world and a catalog with an unknown class or group") {
   TempDir dir("experiment-worlds-errors");
   make_mini_worlds(dir);
   std::string catalog = read_bytes(dir.file("meshes/catalog.csv"));
@@ -177,5 +198,11 @@ TEST_CASE("experiment worlds refuses a single world and a catalog with an unknow
   write_bytes(dir.file("meshes/catalog.csv"), bad);
   CHECK(run_worlds(dir, "--catalog '" + dir.file("meshes") + "' --scene-clutter 0") != 0);
   CHECK(read_bytes(dir.file("stderr.txt")).find("'saloon' is not a vehicle class") != std::string::npos);
+  // A group that is not in the group list.
+  std::string bad_group = catalog;
+  bad_group.replace(bad_group.find(",other,light,"), 13, ",other,medium,");
+  write_bytes(dir.file("meshes/catalog.csv"), bad_group);
+  CHECK(run_worlds(dir, "--catalog '" + dir.file("meshes") + "' --scene-clutter 0") != 0);
+  CHECK(read_bytes(dir.file("stderr.txt")).find("'medium' is not a vehicle group") != std::string::npos);
   CHECK(!std::filesystem::exists(dir.file("out/summary.md")));
 }
