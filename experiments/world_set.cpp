@@ -95,6 +95,12 @@ bool add_catalog(const std::string& path, const std::vector<std::string>& clutte
       *error = csv.string() + ": " + n + ": '" + g + "' is not a vehicle group";
       return false;
     }
+    if (!clutter && vehicle_group_of(c) != VehicleGroup::kNone && group != vehicle_group_of(c)) {
+      *error = csv.string() + ": " + n + ": group '" + g + "', but class '" + k + "' is in group '" +
+               vehicle_group_name(vehicle_group_of(c)) +
+               "' (only a class in no group takes a group of its vehicle's)";
+      return false;
+    }
     const auto file = files.find(n);
     host::Mesh mesh;
     if (file == files.end()) {

@@ -43,8 +43,8 @@ struct WorldSet {
 void add_fleet_world(uint32_t count, uint64_t fleet_seed, WorldSet* set);
 
 // The meshes a catalog.csv lists (scripts/prepare-*.sh: columns name,
-// class, source, and group where a vehicle's is not its class's), found by
-// file stem anywhere under the catalog's folder.
+// class, source, and group where a vehicle's class has none: a class in a
+// group keeps it), found by file stem anywhere under the catalog's folder.
 // A row with a class is a vehicle of the world its source's first word
 // names ("torcs", "sweethome3d-Scopia": "sweethome3d", "warzone-vehicle":
 // "warzone"); a row without a class is clutter of kind `source` when

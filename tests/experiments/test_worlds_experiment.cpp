@@ -204,5 +204,11 @@ TEST_CASE("experiment worlds refuses a single world and a catalog with an unknow
   write_bytes(dir.file("meshes/catalog.csv"), bad_group);
   CHECK(run_worlds(dir, "--catalog '" + dir.file("meshes") + "' --scene-clutter 0") != 0);
   CHECK(read_bytes(dir.file("stderr.txt")).find("'medium' is not a vehicle group") != std::string::npos);
+  // A group that contradicts the class's own.
+  std::string contradicting = catalog;
+  contradicting.replace(contradicting.find(",sedan,,"), 8, ",sedan,heavy,");
+  write_bytes(dir.file("meshes/catalog.csv"), contradicting);
+  CHECK(run_worlds(dir, "--catalog '" + dir.file("meshes") + "' --scene-clutter 0") != 0);
+  CHECK(read_bytes(dir.file("stderr.txt")).find("class 'sedan' is in group 'light'") != std::string::npos);
   CHECK(!std::filesystem::exists(dir.file("out/summary.md")));
 }
