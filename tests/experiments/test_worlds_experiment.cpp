@@ -185,30 +185,28 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
 TEST_CASE("experiment worlds refuses a single world and a catalog with an unknown class or group") {
   TempDir dir("experiment-worlds-errors");
   make_mini_worlds(dir);
-  std::string catalog = read_bytes(dir.file("meshes/catalog.csv"));
+  const std::string catalog = read_bytes(dir.file("meshes/catalog.csv"));
+  // Runs the experiment on `edited` (the catalog with one edit) and
+  // expects it refused with `message` on stderr.
+  const auto refused = [&](const std::string& edited, const char* message) {
+    write_bytes(dir.file("meshes/catalog.csv"), edited);
+    CHECK(run_worlds(dir, "--catalog '" + dir.file("meshes") + "' --scene-clutter 0") != 0);
+    CHECK_MESSAGE(read_bytes(dir.file("stderr.txt")).find(message) != std::string::npos, message);
+  };
+  const auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string edited = catalog;
+    edited.replace(edited.find(from), from.size(), to);
+    return edited;
+  };
   // Every vehicle in one world: nothing to leave out.
   std::string one = catalog;
   for (size_t p; (p = one.find(",south")) != std::string::npos;) one.replace(p, 6, ",north");
-  write_bytes(dir.file("meshes/catalog.csv"), one);
-  CHECK(run_worlds(dir, "--catalog '" + dir.file("meshes") + "' --scene-clutter 0") != 0);
-  CHECK(read_bytes(dir.file("stderr.txt")).find("at least two worlds") != std::string::npos);
+  refused(one, "at least two worlds");
   // A class that is not in the class list.
-  std::string bad = catalog;
-  bad.replace(bad.find(",sedan,"), 7, ",saloon,");
-  write_bytes(dir.file("meshes/catalog.csv"), bad);
-  CHECK(run_worlds(dir, "--catalog '" + dir.file("meshes") + "' --scene-clutter 0") != 0);
-  CHECK(read_bytes(dir.file("stderr.txt")).find("'saloon' is not a vehicle class") != std::string::npos);
+  refused(replaced(",sedan,", ",saloon,"), "'saloon' is not a vehicle class");
   // A group that is not in the group list.
-  std::string bad_group = catalog;
-  bad_group.replace(bad_group.find(",other,light,"), 13, ",other,medium,");
-  write_bytes(dir.file("meshes/catalog.csv"), bad_group);
-  CHECK(run_worlds(dir, "--catalog '" + dir.file("meshes") + "' --scene-clutter 0") != 0);
-  CHECK(read_bytes(dir.file("stderr.txt")).find("'medium' is not a vehicle group") != std::string::npos);
+  refused(replaced(",other,light,", ",other,medium,"), "'medium' is not a vehicle group");
   // A group that contradicts the class's own.
-  std::string contradicting = catalog;
-  contradicting.replace(contradicting.find(",sedan,,"), 8, ",sedan,heavy,");
-  write_bytes(dir.file("meshes/catalog.csv"), contradicting);
-  CHECK(run_worlds(dir, "--catalog '" + dir.file("meshes") + "' --scene-clutter 0") != 0);
-  CHECK(read_bytes(dir.file("stderr.txt")).find("class 'sedan' is in group 'light'") != std::string::npos);
+  refused(replaced(",sedan,,", ",sedan,heavy,"), "class 'sedan' is in group 'light'");
   CHECK(!std::filesystem::exists(dir.file("out/summary.md")));
 }
