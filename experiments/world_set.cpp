@@ -89,15 +89,16 @@ bool add_catalog(const std::string& path, const std::vector<std::string>& clutte
       *error = csv.string() + ": " + n + ": '" + k + "' is not a vehicle class";
       return false;
     }
-    VehicleGroup group = vehicle_group_of(c);
+    const VehicleGroup class_group = vehicle_group_of(c);
+    VehicleGroup group = class_group;
     const std::string g = group_column < 0 || clutter ? std::string() : catalog.cell(r, group_column);
     if (!g.empty() && !parse_vehicle_group(g.c_str(), &group)) {
       *error = csv.string() + ": " + n + ": '" + g + "' is not a vehicle group";
       return false;
     }
-    if (!clutter && vehicle_group_of(c) != VehicleGroup::kNone && group != vehicle_group_of(c)) {
+    if (class_group != VehicleGroup::kNone && group != class_group) {
       *error = csv.string() + ": " + n + ": group '" + g + "', but class '" + k + "' is in group '" +
-               vehicle_group_name(vehicle_group_of(c)) +
+               vehicle_group_name(class_group) +
                "' (only a class in no group takes a group of its vehicle's)";
       return false;
     }

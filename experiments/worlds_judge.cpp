@@ -12,8 +12,8 @@ WorldsJudgement judge(const WorldsRun& run, const WorldsRecord& r) {
   if (r.clutter) return j;
   const WorldVehicle& v = run.set->vehicles[r.object];
   j.true_class = static_cast<uint32_t>(v.model.vehicle_class);
-  j.true_group =
-      static_cast<uint32_t>(v.group);  // the vehicle's own: a buggy is light, though "other" is not
+  // The vehicle's own group: a buggy is light, though its class (other) is in none.
+  j.true_group = static_cast<uint32_t>(v.group);
   if (!r.answer.ranked) return j;
   j.model_right = r.first == static_cast<int32_t>(r.object);
   j.class_right = r.answer.vehicle_class == j.true_class;
