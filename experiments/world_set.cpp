@@ -60,8 +60,7 @@ void add_fleet_world(uint32_t count, uint64_t fleet_seed, WorldSet* set) {
   if (count == 0) return;
   add_world("fleet", set);
   for (pipeline::ModelMesh& m : generated_models(count, fleet_seed)) {
-    const VehicleGroup group = vehicle_group_of(m.vehicle_class);
-    set->vehicles.push_back(WorldVehicle{"fleet", std::move(m), group});
+    set->vehicles.push_back(WorldVehicle{"fleet", std::move(m)});
   }
 }
 
@@ -102,6 +101,8 @@ bool add_catalog(const std::string& path, const std::vector<std::string>& clutte
                "' (only a class in no group takes a group of its vehicle's)";
       return false;
     }
+    // Only a class in no group carries a group of its own; 0: its class's.
+    const VehicleGroup own_group = class_group == VehicleGroup::kNone ? group : VehicleGroup::kNone;
     const auto file = files.find(n);
     host::Mesh mesh;
     if (file == files.end()) {
@@ -116,7 +117,7 @@ bool add_catalog(const std::string& path, const std::vector<std::string>& clutte
     }
     add_world(world_of_source(s), set);
     set->vehicles.push_back(
-        WorldVehicle{world_of_source(s), pipeline::ModelMesh{n, std::move(mesh), c}, group});
+        WorldVehicle{world_of_source(s), pipeline::ModelMesh{n, std::move(mesh), c, own_group}});
   }
   return true;
 }

@@ -14,10 +14,15 @@ namespace spinhash::experiment {
 
 struct WorldVehicle {
   std::string world;
-  pipeline::ModelMesh model;  // name, mesh (x forward, z up, resting at z = 0), class
-  // The vehicle's own group, what a group answer is judged against: its
-  // class's, or the catalog's where the class spans the groups (other).
-  VehicleGroup group = VehicleGroup::kNone;
+  // Name, mesh (x forward, z up, resting at z = 0), class, and the catalog's
+  // group where the class spans the groups (other): built into the model's
+  // record, as `spinhash build --classes` does.
+  pipeline::ModelMesh model;
+  // The vehicle's own group, what a group answer is judged against.
+  VehicleGroup group() const {
+    return vehicle_group_of(static_cast<uint32_t>(model.vehicle_class),
+                            static_cast<uint32_t>(model.vehicle_group));
+  }
 };
 
 // Something that is no vehicle, standing on level ground at height ground_z

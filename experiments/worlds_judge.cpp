@@ -13,7 +13,7 @@ WorldsJudgement judge(const WorldsRun& run, const WorldsRecord& r) {
   const WorldVehicle& v = run.set->vehicles[r.object];
   j.true_class = static_cast<uint32_t>(v.model.vehicle_class);
   // The vehicle's own group: a buggy is light, though its class (other) is in none.
-  j.true_group = static_cast<uint32_t>(v.group);
+  j.true_group = static_cast<uint32_t>(v.group());
   if (!r.answer.ranked) return j;
   j.model_right = r.first == static_cast<int32_t>(r.object);
   j.class_right = r.answer.vehicle_class == j.true_class;

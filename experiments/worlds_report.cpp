@@ -177,7 +177,7 @@ std::string sparse_section(const WorldsRun& run, Cells* cells) {
     uint32_t vehicles = 0;
     for (uint32_t v = 0; v < set.vehicles.size(); ++v)
       vehicles += (w < 0 || set.vehicles[v].world == set.worlds[static_cast<size_t>(w)]) &&
-                          set.vehicles[v].group == VehicleGroup::kLight
+                          set.vehicles[v].group() == VehicleGroup::kLight
                       ? 1u
                       : 0u;
     for (const WorldsRecord& r : run.records) {

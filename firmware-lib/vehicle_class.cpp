@@ -69,6 +69,16 @@ VehicleGroup vehicle_group_of(uint32_t class_id) noexcept {
   return class_id < kVehicleClassCount ? kClassGroups[class_id] : VehicleGroup::kNone;
 }
 
+VehicleGroup vehicle_group_of(uint32_t class_id, uint32_t own_group) noexcept {
+  return model_group_allowed(class_id, own_group) && own_group != 0u ? static_cast<VehicleGroup>(own_group)
+                                                                     : vehicle_group_of(class_id);
+}
+
+bool model_group_allowed(uint32_t class_id, uint32_t own_group) noexcept {
+  return own_group == 0u || (own_group < kVehicleGroupCount && class_id < kVehicleClassCount &&
+                             vehicle_group_of(class_id) == VehicleGroup::kNone);
+}
+
 VehicleGroup vehicle_group_of(VehicleClass vehicle_class) noexcept {
   return vehicle_group_of(static_cast<uint32_t>(vehicle_class));
 }

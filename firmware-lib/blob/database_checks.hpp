@@ -36,7 +36,8 @@ static_assert(offsetof(blob::ModelRecord, first_feature) == 48 &&
                   offsetof(blob::ModelRecord, bbox_max) == 96 &&
                   offsetof(blob::ModelRecord, field_dims) == 108 &&
                   offsetof(blob::ModelRecord, vehicle_class) == 124 &&
-                  offsetof(blob::ModelRecord, reserved) == 125,
+                  offsetof(blob::ModelRecord, vehicle_group) == 125 &&
+                  offsetof(blob::ModelRecord, reserved) == 126,
               "model record layout");
 
 constexpr uint32_t kSlotCount = blob::kSectionIdCount + 1;  // indexed by SectionId; slot 0 unused

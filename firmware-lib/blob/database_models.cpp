@@ -98,7 +98,9 @@ bool field_of_model_ok(const blob::ModelRecord& m, TableWalk* w) {
 
 // One record; the walk advances past what it owns.
 bool model_ok(const blob::ModelRecord& m, TableWalk* w) {
-  if (!name_ok(m.name) || !geometry_ok(m) || m.vehicle_class >= kVehicleClassCount) return false;
+  if (!name_ok(m.name) || !geometry_ok(m) || m.vehicle_class >= kVehicleClassCount ||
+      !model_group_allowed(m.vehicle_class, m.vehicle_group))
+    return false;
   if (m.first_feature != w->next_feature || m.feature_count == 0u) return false;
   const uint64_t cells = grid_cells(m);
   if (cells == 0u || m.grid_offset_base < w->next_grid) return false;

@@ -130,6 +130,13 @@ uint32_t spinhash_database_model_class(const spinhash_database* db, uint32_t ind
   return d->model(index).vehicle_class;  // < SPINHASH_CLASS_COUNT: checked by Database::open
 }
 
+uint32_t spinhash_database_model_group(const spinhash_database* db, uint32_t index) SPINHASH_NOEXCEPT {
+  const Database* d = view(db);
+  if (d == nullptr || index >= d->model_count()) return SPINHASH_GROUP_COUNT;
+  const blob::ModelRecord& r = d->model(index);
+  return static_cast<uint32_t>(vehicle_group_of(r.vehicle_class, r.vehicle_group));
+}
+
 const char* spinhash_class_name(uint32_t vehicle_class) SPINHASH_NOEXCEPT {
   return vehicle_class_name(vehicle_class);
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "spinhash/vehicle_class.hpp"
 #include "util/far.hpp"
 
 namespace spinhash {
@@ -41,13 +42,13 @@ bool height_measured(const ScanShape& scan, const ClassesParams& p) {
 
 float span(float lo, float hi) { return hi > lo ? hi - lo : 0.0f; }
 
-}  // namespace
-
-ClassEnvelope class_envelope(const Database& db, uint32_t vehicle_class) {
+// The envelope of the models `member` takes.
+template <typename Member>
+ClassEnvelope envelope_of_models(const Database& db, Member&& member) {
   ClassEnvelope e;
   for (uint32_t m = 0; m < db.model_count(); ++m) {
     const blob::ModelRecord& r = db.model(m);
-    if (r.vehicle_class != vehicle_class) continue;
+    if (!member(r)) continue;
     const float dx = span(r.bbox_min[0], r.bbox_max[0]), dy = span(r.bbox_min[1], r.bbox_max[1]);
     const float length = dx > dy ? dx : dy, width = dx > dy ? dy : dx;
     const float height = span(r.bbox_min[2], r.bbox_max[2]);
@@ -62,6 +63,21 @@ ClassEnvelope class_envelope(const Database& db, uint32_t vehicle_class) {
     ++e.members;
   }
   return e;
+}
+
+}  // namespace
+
+ClassEnvelope class_envelope(const Database& db, uint32_t vehicle_class) {
+  return envelope_of_models(
+      db, [vehicle_class](const blob::ModelRecord& r) { return r.vehicle_class == vehicle_class; });
+}
+
+ClassEnvelope group_envelope(const Database& db, uint32_t group) {
+  return envelope_of_models(db, [group](const blob::ModelRecord& r) { return model_group(r) == group; });
+}
+
+uint32_t model_group(const blob::ModelRecord& r) {
+  return static_cast<uint32_t>(vehicle_group_of(r.vehicle_class, r.vehicle_group));
 }
 
 ScanShape measure_scan(const QueryFeatures& query, const blob::ModelRecord& leader, const RigidPose& pose,

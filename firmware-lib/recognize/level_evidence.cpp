@@ -28,10 +28,6 @@ float shape_factor(const Result& r, const RecognizerConfig& cfg) {
   return confident_margin(unit, c);
 }
 
-uint32_t group_of_class(uint32_t vehicle_class) {
-  return static_cast<uint32_t>(vehicle_group_of(vehicle_class));
-}
-
 float lead_per_feature(float first, float second, uint32_t features) {
   return (first - second) / std::sqrt(static_cast<float>(features));
 }
@@ -58,27 +54,8 @@ float class_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t feat
 }
 
 uint32_t rank_groups(const Database& db, const Result& r, RankedGroup* out) {
-  const auto group_of = [&db](uint32_t model) { return group_of_class(db.model(model).vehicle_class); };
+  const auto group_of = [&db](uint32_t model) { return model_group(db.model(model)); };
   return rank_by_first_model(r, group_of, &RankedGroup::group, kVehicleGroupCount, out);
-}
-
-ClassEnvelope group_envelope(const Database& db, uint32_t group) {
-  ClassEnvelope e;
-  for (uint32_t c = 0; c < kVehicleClassCount; ++c) {
-    if (group_of_class(c) != group) continue;
-    const ClassEnvelope k = class_envelope(db, c);
-    if (k.members == 0u) continue;
-    if (e.members == 0u) {
-      e = k;
-      continue;
-    }
-    e.length_max = k.length_max > e.length_max ? k.length_max : e.length_max;
-    e.width_max = k.width_max > e.width_max ? k.width_max : e.width_max;
-    e.height_min = k.height_min < e.height_min ? k.height_min : e.height_min;
-    e.height_max = k.height_max > e.height_max ? k.height_max : e.height_max;
-    e.members += k.members;
-  }
-  return e;
 }
 
 MemberFit member_fit(const SearchContext& ctx, uint32_t model) {
@@ -105,7 +82,7 @@ float group_evidence(const SearchContext& ctx, uint32_t known_rank, const Member
   uint32_t tried = 0;
   for (uint32_t i = 0; i < r.ranking_count && tried < cfg.classes.group_fit_models; ++i) {
     const RankedModel& m = r.ranking[i];
-    if (!m.has_pose || group_of_class(db.model(m.model).vehicle_class) != group) continue;
+    if (!m.has_pose || model_group(db.model(m.model)) != group) continue;
     ++tried;
     const MemberFit member = i == known_rank ? known : member_fit(ctx, m.model);
     if (!model_explains_scan(r, cfg, n, m, member.fit, member.density) ||
@@ -149,12 +126,22 @@ bool level_confident(const Database& db, AnswerPass pass, AnswerLevel level, flo
                         : prior_confident(level, evidence, density, cfg);
 }
 
+namespace {
+
+// The group a ranked class answers in: its own, or for a class in no group,
+// its best model's own group.
+uint32_t class_group_in(const Database& db, const RankedClass& c) {
+  return static_cast<uint32_t>(vehicle_group_of(c.vehicle_class, db.model(c.model).vehicle_group));
+}
+
+}  // namespace
+
 AnswerLevel answer_level(const Database& db, const LevelAnswer* levels, const AnswerLeaders& first) {
   const auto confident = [levels](AnswerLevel l) { return levels[level_index(l)].confident; };
   if (!confident(AnswerLevel::kVehicle)) return AnswerLevel::kNone;
   if (!confident(AnswerLevel::kGroup) || first.group == nullptr) return AnswerLevel::kVehicle;
   if (!confident(AnswerLevel::kClass) || first.vehicle_class == nullptr ||
-      group_of_class(first.vehicle_class->vehicle_class) != first.group->group)
+      class_group_in(db, *first.vehicle_class) != first.group->group)
     return AnswerLevel::kGroup;
   if (!confident(AnswerLevel::kModel) || first.model == nullptr ||
       db.model(first.model->model).vehicle_class != first.vehicle_class->vehicle_class)

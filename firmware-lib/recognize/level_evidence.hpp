@@ -38,13 +38,10 @@ float model_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t feat
 float class_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t features, const ExtentFit& fit,
                      float density, bool within_envelope);
 
-// The groups of r's ranking (vehicle_group_of() of each model's class), each
+// The groups of r's ranking (model_group() of each model), each
 // scored by its first model in the ranking, best first (ties by group id);
 // returns how many (at most kVehicleGroupCount).
 uint32_t rank_groups(const Database& db, const Result& r, RankedGroup* out);
-// The range of the boxes of the database's models of `group` (as
-// class_envelope() for a class).
-ClassEnvelope group_envelope(const Database& db, uint32_t group);
 
 // What the class and group levels measure of a posed model: the scan's
 // extent fit to its box, the scan's density under that fit, and the scan's
@@ -112,7 +109,8 @@ struct AnswerLeaders {
 
 // The most specific confident level (`levels`, kCalibratedLevels of them)
 // whose coarser levels are all confident and consistent: the first model is
-// of the first class, which is of the first group. A scene, which adds its
+// of the first class, whose best model is of the first group (for a class
+// in no group, that model's own group). A scene, which adds its
 // own size tests to the model and class flags, asks it again with them.
 AnswerLevel answer_level(const Database& db, const LevelAnswer* levels, const AnswerLeaders& first);
 AnswerLevel answer_level(const Database& db, const Result& r);

@@ -51,9 +51,9 @@ host::CalibrationRun evidence_of(AnswerPass pass, host::RunKind kind, const Resu
 }
 
 host::CalibrationRun record(AnswerPass pass, host::RunKind kind, const Result& r, int64_t model,
-                            uint32_t vehicle_class) {
+                            uint32_t vehicle_class, uint32_t group) {
   host::CalibrationRun run = evidence_of(pass, kind, r);
-  judge(r, kind == host::RunKind::kClutter, model, vehicle_class, run.right);
+  judge(r, kind == host::RunKind::kClutter, model, vehicle_class, group, run.right);
   return run;
 }
 
@@ -71,12 +71,12 @@ struct PassSessions {
   }
   // Both passes' records of one scan, and the agree record of the pair.
   void recognize(host::RunKind kind, const std::vector<double>& xyz, int64_t model, uint32_t vehicle_class,
-                 std::vector<host::CalibrationRun>* out) {
+                 uint32_t group, std::vector<host::CalibrationRun>* out) {
     const Result full_result = full.recognize(xyz);
     const Result first_result = first.recognize(xyz);
-    out->push_back(record(AnswerPass::kFull, kind, full_result, model, vehicle_class));
-    out->push_back(record(AnswerPass::kFirst, kind, first_result, model, vehicle_class));
-    out->push_back(agree_record(kind, first_result, full_result, model, vehicle_class));
+    out->push_back(record(AnswerPass::kFull, kind, full_result, model, vehicle_class, group));
+    out->push_back(record(AnswerPass::kFirst, kind, first_result, model, vehicle_class, group));
+    out->push_back(agree_record(kind, first_result, full_result, model, vehicle_class, group));
   }
 };
 
@@ -94,13 +94,15 @@ bool run_model(Shared& sh, PassSessions& known, uint32_t m, std::vector<host::Ca
       return false;
     }
   }
-  const uint32_t vehicle_class = sh.full.models[m].vehicle_class;
+  const blob::ModelRecord& truth = sh.full.models[m];  // its group: its own, else its class's
+  const uint32_t vehicle_class = truth.vehicle_class,
+                 group = static_cast<uint32_t>(vehicle_group_of(truth.vehicle_class, truth.vehicle_group));
   std::vector<double> xyz;
   const uint32_t scans = sh.leave_out[m] ? sh.left_out_scans : sh.scans;
   for (uint32_t s = 0; s < scans; ++s) {
     if (!scan_vehicle(*sh.meshes[m], draw_scan(sh.settings.seed, m, s), &xyz, error)) return false;
-    if (s < sh.scans) known.recognize(host::RunKind::kKnown, xyz, m, vehicle_class, out);
-    if (sh.leave_out[m]) unknown.recognize(host::RunKind::kUnknown, xyz, -1, vehicle_class, out);
+    if (s < sh.scans) known.recognize(host::RunKind::kKnown, xyz, m, vehicle_class, group, out);
+    if (sh.leave_out[m]) unknown.recognize(host::RunKind::kUnknown, xyz, -1, vehicle_class, group, out);
   }
   return true;
 }
@@ -112,7 +114,7 @@ bool run_clutter(Shared& sh, PassSessions& known, uint32_t c, std::vector<host::
   const uint32_t kinds = clutter_kinds_scanned(sh.settings.clutter);
   if (!scan_clutter(static_cast<ClutterKind>(c % kinds), draw_scan(sh.settings.seed, object, 0), &xyz, error))
     return false;
-  known.recognize(host::RunKind::kClutter, xyz, -1, 0u, out);
+  known.recognize(host::RunKind::kClutter, xyz, -1, 0u, 0u, out);
   return true;
 }
 
@@ -196,15 +198,13 @@ std::vector<uint32_t> left_out_models(const std::vector<blob::ModelRecord>& mode
   return out;
 }
 
-void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class,
+void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class, uint32_t group,
            bool right[kCalibratedLevels]) {
   for (uint32_t l = 0; l < kCalibratedLevels; ++l) right[l] = false;
   if (clutter) return;
   right[level_index(AnswerLevel::kVehicle)] = true;
   if (r.status != Status::kOk) return;
-  if (r.group_ranking_count > 0u)
-    right[level_index(AnswerLevel::kGroup)] =
-        r.group_ranking[0].group == static_cast<uint32_t>(vehicle_group_of(vehicle_class));
+  if (r.group_ranking_count > 0u) right[level_index(AnswerLevel::kGroup)] = r.group_ranking[0].group == group;
   if (r.class_ranking_count > 0u)
     right[level_index(AnswerLevel::kClass)] = r.class_ranking[0].vehicle_class == vehicle_class;
   if (r.ranking_count > 0u && model >= 0)
@@ -212,12 +212,12 @@ void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class,
 }
 
 host::CalibrationRun agree_record(host::RunKind kind, const Result& first, const Result& full, int64_t model,
-                                  uint32_t vehicle_class) {
+                                  uint32_t vehicle_class, uint32_t group) {
   host::CalibrationRun run = evidence_of(AnswerPass::kAgree, kind, first);
   const bool clutter = kind == host::RunKind::kClutter;
   bool first_right[kCalibratedLevels], full_right[kCalibratedLevels];
-  judge(first, clutter, model, vehicle_class, first_right);
-  judge(full, clutter, model, vehicle_class, full_right);
+  judge(first, clutter, model, vehicle_class, group, first_right);
+  judge(full, clutter, model, vehicle_class, group, full_right);
   for (uint32_t l = 0; l < kCalibratedLevels; ++l) run.right[l] = first_right[l] || !full_right[l];
   return run;
 }

@@ -64,9 +64,10 @@ uint32_t default_clutter_scans(uint32_t unknown_runs);
 std::vector<uint32_t> left_out_models(const std::vector<blob::ModelRecord>& models, uint32_t max);
 
 // Which levels of `r` name the truth: a vehicle (every vehicle scan), its
-// group, its class, its model (`model` < 0: not in the database).
-// `clutter`: nothing is right.
-void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class,
+// group (the model's own where it has one: vehicle_group_of(class, own)),
+// its class, its model (`model` < 0: not in the database). `clutter`:
+// nothing is right.
+void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class, uint32_t group,
            bool right[kCalibratedLevels]);
 
 // The agree pass's record of one scan: the first pass's density and
@@ -75,7 +76,7 @@ void judge(const Result& r, bool clutter, int64_t model, uint32_t vehicle_class,
 // first pass does not. Where both are right, both wrong, or only the first
 // is right, the stop loses nothing.
 host::CalibrationRun agree_record(host::RunKind kind, const Result& first, const Result& full, int64_t model,
-                                  uint32_t vehicle_class);
+                                  uint32_t vehicle_class, uint32_t group);
 
 struct RunSummary {
   host::FitProvenance drawn;  // scans per model, models left out, ..., seed

@@ -35,6 +35,7 @@ blob::ModelRecord make_record(const ModelCloud& model, uint32_t first, uint32_t 
   std::memset(&r, 0, sizeof r);
   std::memcpy(r.name, model.name.data(), model.name.size());
   r.vehicle_class = static_cast<uint8_t>(model.vehicle_class);
+  r.vehicle_group = static_cast<uint8_t>(model.vehicle_group);
   r.first_feature = first;
   r.feature_count = count;
   r.grid_offset_base = grid_base;
@@ -115,6 +116,13 @@ bool check_inputs(const std::vector<ModelCloud>& models, const BuildOptions& opt
     }
     if (static_cast<uint32_t>(m.vehicle_class) >= kVehicleClassCount) {
       *error = "model '" + m.name + "': no such vehicle class";
+      return false;
+    }
+    if (!model_group_allowed(static_cast<uint32_t>(m.vehicle_class),
+                             static_cast<uint32_t>(m.vehicle_group))) {
+      *error = "model '" + m.name + "': group '" + vehicle_group_name(m.vehicle_group) + "', but class '" +
+               vehicle_class_name(static_cast<uint32_t>(m.vehicle_class)) +
+               "' has its own group: only a model of a class in no group takes a group of its own";
       return false;
     }
   }

@@ -18,6 +18,8 @@ struct ModelCloud {
   std::string name;         // <= kMaxModelNameBytes - 1 bytes
   std::vector<double> xyz;  // model frame, metres
   VehicleClass vehicle_class = VehicleClass::kUnclassified;
+  // Its own group, only for a class in no group (model_group_allowed); kNone: the class's.
+  VehicleGroup vehicle_group = VehicleGroup::kNone;
 };
 
 struct BuildOptions {

@@ -106,7 +106,8 @@ void add_build_flags(CLI::App* cmd, pipeline::BuildSettings* s) {
       ->transform(CLI::CheckedTransformer(orders, CLI::ignore_case));
   cmd->add_option(
          "--classes", s->class_manifest,
-         "manifest of 'MODEL_NAME CLASS' lines; without it a model's class is its folder's name or "
+         "manifest of 'MODEL_NAME CLASS [GROUP]' lines (GROUP only for a class in no group: "
+         "'buggy other light'); without it a model's class is its folder's name or "
          "its name's first word when that is a class (pickup/x.obj, sedan-03.obj), else unclassified")
       ->check(CLI::ExistingFile);
   add_calibration_flags(cmd, &s->calibration);

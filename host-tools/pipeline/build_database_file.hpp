@@ -24,7 +24,7 @@ struct BuildSettings {
   CalibrationSettings calibration;
   double scan_spacing = 0.05;  // m between model-scan rays at the object
   host::ByteOrder byte_order = host::ByteOrder::kNative;
-  std::string class_manifest;  // "MODEL_NAME CLASS" lines (model_classes.hpp); "": folders and names
+  std::string class_manifest;  // "MODEL_NAME CLASS [GROUP]" lines (model_classes.hpp); "": folders and names
   bool quiet = false;
 };
 

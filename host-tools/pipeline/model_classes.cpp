@@ -20,16 +20,33 @@ std::string class_list() {
   return s;
 }
 
-// One manifest line into `name` and `cls`; false with *why when it is not "NAME CLASS".
-bool parse_line(const std::string& line, std::string* name, VehicleClass* cls, std::string* why) {
+std::string group_list() {
+  std::string s;
+  for (uint32_t id = 0; id < kVehicleGroupCount; ++id)
+    s += (id ? ", " : "") + std::string(vehicle_group_name(id));
+  return s;
+}
+
+// One manifest line into `name`, `cls` and `group` (kNone without a third
+// word); false for a blank line or a comment, *why set when the line is
+// not "NAME CLASS [GROUP]" with a known class and a group its class allows.
+bool parse_line(const std::string& line, std::string* name, VehicleClass* cls, VehicleGroup* group,
+                std::string* why) {
   std::istringstream in(line.substr(0, line.find('#')));
-  std::string word, extra;
+  std::string word, group_word, extra;
   if (!(in >> *name)) return false;  // blank or comment
-  if (!(in >> word) || (in >> extra)) {
-    *why = "expected 'MODEL_NAME CLASS'";
+  if (!(in >> word) || ((in >> group_word) && (in >> extra))) {
+    *why = "expected 'MODEL_NAME CLASS [GROUP]'";
     return true;
   }
-  if (!class_named(word, cls)) *why = "unknown class '" + word + "' (classes: " + class_list() + ")";
+  if (!class_named(word, cls)) {
+    *why = "unknown class '" + word + "' (classes: " + class_list() + ")";
+  } else if (!group_word.empty() && !parse_vehicle_group(group_word.c_str(), group)) {
+    *why = "unknown group '" + group_word + "' (groups: " + group_list() + ")";
+  } else if (!model_group_allowed(static_cast<uint32_t>(*cls), static_cast<uint32_t>(*group))) {
+    *why = "class '" + word + "' is in group '" + vehicle_group_name(vehicle_group_of(*cls)) +
+           "': only a class in no group takes a group per model";
+  }
   return true;
 }
 
@@ -62,7 +79,8 @@ bool apply_class_manifest(const std::string& path, std::vector<host::ModelCloud>
   for (uint32_t n = 1; std::getline(in, line); ++n) {
     std::string name, why;
     VehicleClass cls = VehicleClass::kUnclassified;
-    if (!parse_line(line, &name, &cls, &why)) continue;
+    VehicleGroup group = VehicleGroup::kNone;
+    if (!parse_line(line, &name, &cls, &group, &why)) continue;
     if (why.empty() && by_name.count(name) == 0) why = "no model named '" + name + "'";
     if (why.empty() && !seen.insert(name).second) why = "model '" + name + "' named twice";
     if (!why.empty()) {
@@ -70,6 +88,7 @@ bool apply_class_manifest(const std::string& path, std::vector<host::ModelCloud>
       continue;
     }
     by_name[name]->vehicle_class = cls;
+    by_name[name]->vehicle_group = group;
   }
   if (problems.empty()) return true;
   *error = problems.substr(0, problems.size() - 1);

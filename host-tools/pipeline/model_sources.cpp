@@ -60,7 +60,7 @@ bool scan_models(const std::vector<ModelMesh>& meshes, double spacing, std::vect
       *error = m.name + ": scan failed: " + (scan.ok() ? std::string("no points") : scan.error);
       return false;
     }
-    out->push_back(host::ModelCloud{m.name, std::move(scan.xyz), m.vehicle_class});
+    out->push_back(host::ModelCloud{m.name, std::move(scan.xyz), m.vehicle_class, m.vehicle_group});
     progress.tick(static_cast<uint32_t>(out->size()));
   }
   return true;

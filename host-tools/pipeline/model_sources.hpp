@@ -14,6 +14,7 @@ struct ModelMesh {
   std::string name;  // file stem
   host::Mesh mesh;
   VehicleClass vehicle_class = VehicleClass::kUnclassified;  // model_classes.hpp
+  VehicleGroup vehicle_group = VehicleGroup::kNone;          // its own: host::ModelCloud
 };
 
 // Files and directories (their mesh files) to loaded meshes, each with the

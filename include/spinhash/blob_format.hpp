@@ -98,7 +98,9 @@ struct ModelRecord {
   uint32_t field_dims[3];  // voxels along x, y, z of the nearest-feature field (0 when none)
   uint32_t field_base;     // index into kNearestField of voxel (0,0,0)'s first slot
   uint8_t vehicle_class;   // < kVehicleClassCount (vehicle_classes.h; 0: unclassified)
-  uint8_t reserved[3];     // zero (pads the record to 128 bytes)
+  uint8_t vehicle_group;   // 0: the class's group; else the model's own (< kVehicleGroupCount),
+                           // only for a class in no group (vehicle_group_of(class, own))
+  uint8_t reserved[2];     // zero (pads the record to 128 bytes)
 };
 static_assert(sizeof(ModelRecord) == 128, "model record is 128 bytes");
 

@@ -189,6 +189,10 @@ const char* spinhash_database_model_name(const spinhash_database* db, uint32_t i
 /* Vehicle class id of model `index` (vehicle_classes.h), or
  * SPINHASH_CLASS_COUNT when out of range / not open. */
 uint32_t spinhash_database_model_class(const spinhash_database* db, uint32_t index) SPINHASH_NOEXCEPT;
+/* Group id of model `index` (SPINHASH_VEHICLE_GROUPS): its class's, or its
+ * own where its class is in no group and the build gave it one (an "other"
+ * buggy in "light"); SPINHASH_GROUP_COUNT when out of range / not open. */
+uint32_t spinhash_database_model_group(const spinhash_database* db, uint32_t index) SPINHASH_NOEXCEPT;
 /* Name of class id `vehicle_class` ("sedan", ...); "unknown" outside the list. */
 const char* spinhash_class_name(uint32_t vehicle_class) SPINHASH_NOEXCEPT;
 /* Group id (SPINHASH_VEHICLE_GROUPS, vehicle_classes.h) of class id

@@ -31,6 +31,14 @@ bool parse_vehicle_class(const char* name, VehicleClass* out) noexcept;
 // VehicleGroup::kNone for an id outside the list.
 VehicleGroup vehicle_group_of(VehicleClass vehicle_class) noexcept;
 VehicleGroup vehicle_group_of(uint32_t class_id) noexcept;
+// A model's group (blob::ModelRecord::vehicle_group): `own_group` where it
+// names one and the class is in no group (an "other" buggy is a light
+// vehicle, a tractor a heavy one), else the class's.
+VehicleGroup vehicle_group_of(uint32_t class_id, uint32_t own_group) noexcept;
+// Whether a model of class `class_id` may carry `own_group`: 0 (none of
+// its own), or a group id when the class is in no group. A class in a
+// group fixes its models' group: one answer per model, whatever the byte.
+bool model_group_allowed(uint32_t class_id, uint32_t own_group) noexcept;
 // "light", ...; "unknown" for an id outside the list.
 const char* vehicle_group_name(uint32_t id) noexcept;
 inline const char* vehicle_group_name(VehicleGroup group) noexcept {

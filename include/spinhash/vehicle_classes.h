@@ -10,15 +10,17 @@
  * spinhash.CLASS_GROUPS and spinhash.GROUP_NAMES.
  *
  * The hierarchy of an answer: vehicle, then group, then class, then model.
- * A group id is stored nowhere: the group of a model is its class's, a
- * function of the class, so regrouping a class needs no new blob.
+ * The group of a model is its class's, a function of the class, so
+ * regrouping a class needs no new blob. Only a model of a class in no group
+ * may carry a group of its own (ModelRecord::vehicle_group, the build
+ * manifest's third word): an "other" buggy is a light vehicle.
  *
  * Groups: G(id, Name, "name", "what it covers"). Classes: C(id, Name,
  * "name", Group, "what it covers"), Group the Name of a group.
  * "other" is in no group: it gathers vehicles of every size (a buggy of
  * half a tonne, a farm tractor, a semi-trailer, a forklift), so no group
- * is true of all its members, and an "other" answer goes from vehicle
- * straight to class.
+ * is true of all its members, and an "other" answer without a group of its
+ * model goes from vehicle straight to class.
  *
  * Compiles as C99: no // comments inside the lists. */
 #ifndef SPINHASH_VEHICLE_CLASSES_H

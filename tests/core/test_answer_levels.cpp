@@ -159,3 +159,35 @@ TEST_CASE("a fitted table replaces the priors") {
   CHECK_FALSE(
       spinhash::level_confident(priors.db, AnswerPass::kFull, AnswerLevel::kModel, 0.3f, 150.0f, cfg));
 }
+
+TEST_CASE("a model of a class in no group ranks, and answers, in its own group") {
+  // Tiny model kTruck becomes an "other" vehicle: in no group, and then with
+  // its own group, light (a buggy).
+  host::BlobContent content = six_models();
+  content.models[kTruck].vehicle_class = static_cast<uint8_t>(spinhash::VehicleClass::kOther);
+  const auto light = static_cast<uint32_t>(spinhash::VehicleGroup::kLight),
+             none = static_cast<uint32_t>(spinhash::VehicleGroup::kNone);
+  {
+    Opened o(content);
+    Ranked a(o.db, {kTruck, kSedan}, {true, true, true, true});
+    REQUIRE(a.r.group_ranking_count == 2u);
+    CHECK(a.r.group_ranking[0].group == none);
+    CHECK(spinhash::group_envelope(o.db, light).members == 3u);  // sedan, van, pickup
+  }
+  content.models[kTruck].vehicle_group = static_cast<uint8_t>(light);
+  Opened o(content);
+  Ranked a(o.db, {kTruck, kTracked, kSedan}, {true, true, true, true});
+  REQUIRE(a.r.group_ranking_count == 2u);
+  CHECK(a.r.group_ranking[0].group == light);
+  CHECK(a.r.group_ranking[0].model == kTruck);
+  CHECK(spinhash::model_group(o.db.model(kTruck)) == light);
+  CHECK(spinhash::group_envelope(o.db, light).members == 4u);
+  // The class "other" is in no group: its answer climbs through its best
+  // model's group, so every level holds.
+  CHECK(a.r.class_ranking[0].vehicle_class == static_cast<uint32_t>(spinhash::VehicleClass::kOther));
+  CHECK(spinhash::answer_level(o.db, a.r) == AnswerLevel::kModel);
+  // Its model's group not first: the class does not follow the group.
+  Ranked b(o.db, {kTruck, kTracked, kSedan}, {true, true, true, true});
+  b.groups[0].group = static_cast<uint32_t>(spinhash::VehicleGroup::kArmoured);
+  CHECK(spinhash::answer_level(o.db, b.r) == AnswerLevel::kGroup);
+}

@@ -105,6 +105,8 @@ TEST_CASE("C API: the golden blob opens, recognises in float and double, and nam
   CHECK(spinhash_database_model_class(&db, 0) == 1u);
   CHECK(std::strcmp(spinhash_class_name(spinhash_database_model_class(&db, 0)), "sedan") == 0);
   CHECK(spinhash_database_model_class(&db, 6) == SPINHASH_CLASS_COUNT);
+  CHECK(spinhash_database_model_group(&db, 0) == 1u);  // a sedan's: light
+  CHECK(spinhash_database_model_group(&db, 6) == SPINHASH_GROUP_COUNT);
   CHECK(std::strcmp(spinhash_class_name(SPINHASH_CLASS_COUNT), "unknown") == 0);
   CHECK(std::strcmp(spinhash_group_name(spinhash_class_group(1u)), "light") == 0);     // a sedan
   CHECK(std::strcmp(spinhash_group_name(spinhash_class_group(6u)), "armoured") == 0);  // tracked

@@ -440,6 +440,41 @@ TEST_CASE("every model's vehicle class is read back; a class outside the list is
   CHECK(last.open() == Status::kOk);
 }
 
+TEST_CASE("a model's own group: only for a class in no group, a group of the list") {
+  const auto with = [](uint32_t cls, uint32_t group) {
+    BlobPatch b = fresh();
+    b.model(1).vehicle_class = static_cast<uint8_t>(cls);
+    b.model(1).vehicle_group = static_cast<uint8_t>(group);
+    b.reseal();
+    return b;
+  };
+  const auto other = static_cast<uint32_t>(VehicleClass::kOther),
+             sedan = static_cast<uint32_t>(VehicleClass::kSedan),
+             light = static_cast<uint32_t>(VehicleGroup::kLight),
+             heavy = static_cast<uint32_t>(VehicleGroup::kHeavy);
+  {
+    BlobPatch b = with(other, light);  // an "other" buggy, a light vehicle
+    Database db;
+    REQUIRE(b.open(&db) == Status::kOk);
+    CHECK(vehicle_group_of(db.model(1).vehicle_class, db.model(1).vehicle_group) == VehicleGroup::kLight);
+  }
+  CHECK(with(static_cast<uint32_t>(VehicleClass::kUnclassified), heavy).open() == Status::kOk);
+  CHECK(with(sedan, 0u).open() == Status::kOk);  // 0: the class's group
+  // A class in a group fixes its models' group, even to the same group: one
+  // way to say it. A group outside the list is no group.
+  CHECK(with(sedan, light).open() == Status::kBlobBadModelTable);
+  CHECK(with(sedan, heavy).open() == Status::kBlobBadModelTable);
+  CHECK(with(other, kVehicleGroupCount).open() == Status::kBlobBadModelTable);
+  CHECK(with(other, 0xFFu).open() == Status::kBlobBadModelTable);
+  // The group an answer climbs through: the model's own, else its class's.
+  CHECK(vehicle_group_of(other, light) == VehicleGroup::kLight);
+  CHECK(vehicle_group_of(other, 0u) == VehicleGroup::kNone);
+  CHECK(vehicle_group_of(sedan, 0u) == VehicleGroup::kLight);
+  CHECK(vehicle_group_of(sedan, heavy) == VehicleGroup::kLight);  // not allowed: the class's
+  CHECK_FALSE(spinhash::model_group_allowed(sedan, heavy));
+  CHECK(spinhash::model_group_allowed(other, heavy));
+}
+
 TEST_CASE("class names: every id has a name that parses back to it; others do not parse") {
   for (uint32_t id = 0; id < kVehicleClassCount; ++id) {
     VehicleClass c = VehicleClass::kOther;
@@ -857,7 +892,7 @@ TEST_CASE("non-zero reserved fields and name tails are kBlobNotZeroed, even re-s
       {"table entry reserved2", [](BlobPatch& b) { b.entry(10).reserved2 = 0x80000000u; }},
       {"params reserved", [](BlobPatch& b) { b.params().reserved[47] = 2; }},
       {"model reserved", [](BlobPatch& b) { b.model(2).reserved[0] = 3; }},
-      {"model reserved, last byte", [](BlobPatch& b) { b.model(0).reserved[2] = 0x40; }},
+      {"model reserved, last byte", [](BlobPatch& b) { b.model(0).reserved[1] = 0x40; }},
       {"a name's tail", [](BlobPatch& b) { b.model(1).name[spinhash::kMaxModelNameBytes - 1u] = 'x'; }},
       {"padding after the feature models (120 bytes)",
        [](BlobPatch& b) {

@@ -103,7 +103,7 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
   REQUIRE(csv.rows() == 2u * kFamilies * 4u * 2u + 9u);
   std::map<std::string, int> per_condition;
   std::set<std::string> clutter_kinds;
-  int vehicle_rows = 0, known_right = 0, with_evidence = 0;
+  int vehicle_rows = 0, known_right = 0, with_evidence = 0, other_light_first = 0;
   for (size_t i = 0; i < csv.rows(); ++i) {
     // The recognizer's answer level: a chain of flags from the vehicle level down.
     const std::string level = csv.cell(i, "level");
@@ -150,6 +150,12 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
       REQUIRE(database == "all");
       known_right += csv.cell(i, "model_right") == "1" ? 1 : 0;
     }
+    // The catalog's group is built into the model: ranked first, the
+    // "other" vehicle puts the light group first.
+    if (csv.cell(i, "first_model") == kOtherLight) {
+      ++other_light_first;
+      CHECK(csv.cell(i, "first_group") == "light");
+    }
     // A survey's density in the sparse condition; 0.10 m (212 points per m^2) elsewhere.
     const double density = csv.number(i, "density");
     if (condition == "sparse")
@@ -166,6 +172,7 @@ TEST_CASE("experiment worlds leaves each of two mini-worlds out") {
                                                "bush", "heap", "mini-structure"});
   // With its model in the database, most clean and ground-free scans name the vehicle first.
   CHECK(known_right > kFamilies * 2);
+  CHECK(other_light_first > 0);
   const std::string summary = read_bytes(dir.file("out/summary.md"));
   for (const char* heading :
        {"# Leave one world out", "## Targets", "## north", "## south", "## All worlds pooled",

@@ -60,7 +60,7 @@ TEST_CASE(
   const Answer first(3, kSedan, kLight, 4.5f, 80.0f);
   const Answer full(3, kSedan, kLight, 9.0f, 120.0f);
   const host::CalibrationRun r =
-      calib::agree_record(host::RunKind::kKnown, first.result, full.result, 3, kSedan);
+      calib::agree_record(host::RunKind::kKnown, first.result, full.result, 3, kSedan, kLight);
   CHECK(r.pass == AnswerPass::kAgree);
   CHECK(r.kind == host::RunKind::kKnown);
   CHECK(r.density == 80.0f);  // the first pass's: the stop decides on it
@@ -75,17 +75,18 @@ TEST_CASE(
   // full pass the sedan. Stopping loses the model.
   const Answer look_alike(5, kSedan, kLight, 4.5f, 80.0f);
   const Answer right(3, kSedan, kLight, 9.0f, 80.0f);
-  check_right(calib::agree_record(host::RunKind::kKnown, look_alike.result, right.result, 3, kSedan), true,
-              true, true, false);
+  check_right(calib::agree_record(host::RunKind::kKnown, look_alike.result, right.result, 3, kSedan, kLight),
+              true, true, true, false);
   // The other way round the stop gains the model: nothing lost.
-  check_right(calib::agree_record(host::RunKind::kKnown, right.result, look_alike.result, 3, kSedan), true,
-              true, true, true);
+  check_right(calib::agree_record(host::RunKind::kKnown, right.result, look_alike.result, 3, kSedan, kLight),
+              true, true, true, true);
   // Both wrong, even differently (a vehicle left out of the database, or
   // clutter): nothing to lose.
   const Answer truck(7, kTruck, kHeavy, 9.0f, 80.0f);
-  check_right(calib::agree_record(host::RunKind::kUnknown, look_alike.result, truck.result, -1, kSedan), true,
-              true, true, true);
-  check_right(calib::agree_record(host::RunKind::kClutter, look_alike.result, truck.result, -1, 0u), true,
+  check_right(
+      calib::agree_record(host::RunKind::kUnknown, look_alike.result, truck.result, -1, kSedan, kLight), true,
+      true, true, true);
+  check_right(calib::agree_record(host::RunKind::kClutter, look_alike.result, truck.result, -1, 0u, 0u), true,
               true, true, true);
 }
 
@@ -96,8 +97,28 @@ TEST_CASE(
   failed.result.status = Status::kWorkCapReached;
   const Answer full(3, kSedan, kLight, 9.0f, 80.0f);
   const host::CalibrationRun r =
-      calib::agree_record(host::RunKind::kKnown, failed.result, full.result, 3, kSedan);
+      calib::agree_record(host::RunKind::kKnown, failed.result, full.result, 3, kSedan, kLight);
   for (uint32_t l = 0; l < kCalibratedLevels; ++l)
     CHECK(r.evidence[l] == -std::numeric_limits<float>::infinity());
   check_right(r, true, false, false, false);
+}
+
+TEST_CASE("judge: a vehicle of a class in no group is judged by its model's own group") {
+  // An "other" buggy whose model carries the light group: a light answer is
+  // right at the group level, a heavy one wrong, and with no group of its
+  // own (group none) no group answer is right.
+  const uint32_t other = static_cast<uint32_t>(VehicleClass::kOther);
+  const uint32_t none = static_cast<uint32_t>(VehicleGroup::kNone);
+  REQUIRE(static_cast<uint32_t>(vehicle_group_of(other, kLight)) == kLight);
+  const Answer light(5, other, kLight, 3.0f, 80.0f), heavy(5, other, kHeavy, 3.0f, 80.0f);
+  bool right[kCalibratedLevels];
+  calib::judge(light.result, false, 5, other, kLight, right);
+  CHECK(right[level_index(AnswerLevel::kGroup)]);
+  CHECK(right[level_index(AnswerLevel::kClass)]);
+  CHECK(right[level_index(AnswerLevel::kModel)]);
+  calib::judge(heavy.result, false, 5, other, kLight, right);
+  CHECK_FALSE(right[level_index(AnswerLevel::kGroup)]);
+  CHECK(right[level_index(AnswerLevel::kClass)]);
+  calib::judge(light.result, false, 5, other, none, right);
+  CHECK_FALSE(right[level_index(AnswerLevel::kGroup)]);
 }

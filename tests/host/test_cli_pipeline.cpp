@@ -161,7 +161,8 @@ TEST_CASE("scene finds the scanned vehicle on sloped ground, with a georeference
 }
 
 TEST_CASE(
-    "build gives each model its class: a manifest, then the folder's name, then the name's first word") {
+    "build gives each model its class: a manifest, then the folder's name, then the name's first word; "
+    "a manifest may give a model of a class in no group its own group") {
   TempDir dir("cli-classes");
   const std::string gen = dir.file("gen");
   REQUIRE(run_spinhash(dir, "generate --count 3 -o " + shell_quoted(gen)).exit_code ==
@@ -170,22 +171,31 @@ TEST_CASE(
   std::filesystem::create_directories(folder);
   std::filesystem::rename(gen + "/van-00.obj", folder + "/hilux.obj");
   const std::string db = dir.file("c.shdb"), manifest = dir.file("classes.txt");
-  write_bytes(manifest, "# model class\ntruck-00 bus  # a manifest overrides the name\n");
+  write_bytes(manifest,
+              "# model class [group]\ntruck-00 bus  # a manifest overrides the name\n"
+              "sedan-00 other light  # an \"other\" vehicle, a light one\n");
   CliRun b = run_spinhash(dir, "build --quiet --no-calibration --classes " + shell_quoted(manifest) + " -o " +
                                    shell_quoted(db) + " " + shell_quoted(gen) + " " + shell_quoted(folder));
   INFO(b.err);
   REQUIRE(b.exit_code == 0);
   CliRun info = run_spinhash(dir, "info --format json " + shell_quoted(db));
-  CHECK(contains(info.out, "{\"name\":\"sedan-00\",\"class\":\"sedan\""));
-  CHECK(contains(info.out, "{\"name\":\"truck-00\",\"class\":\"bus\""));
-  CHECK(contains(info.out, "{\"name\":\"hilux\",\"class\":\"pickup\""));
-  write_bytes(manifest, "truck-00 lorry\nnobody sedan\nsedan-00\n");
+  CHECK(contains(info.out, "{\"name\":\"sedan-00\",\"class\":\"other\",\"group\":\"light\""));
+  CHECK(contains(info.out, "{\"name\":\"truck-00\",\"class\":\"bus\",\"group\":\"heavy\""));
+  CHECK(contains(info.out, "{\"name\":\"hilux\",\"class\":\"pickup\",\"group\":\"light\""));
+  write_bytes(manifest,
+              "truck-00 lorry\nnobody sedan\nsedan-00\nhilux pickup heavy\nsedan-00 other big\n"
+              "truck-00 other heavy extra\n");
   CliRun bad = run_spinhash(dir, "build --quiet --no-calibration --classes " + shell_quoted(manifest) +
                                      " -o " + shell_quoted(dir.file("bad.shdb")) + " " + shell_quoted(gen));
   CHECK(bad.exit_code == 1);
   CHECK(contains(bad.err, "classes.txt:1: unknown class 'lorry'"));
   CHECK(contains(bad.err, "classes.txt:2: no model named 'nobody'"));
-  CHECK(contains(bad.err, "classes.txt:3: expected 'MODEL_NAME CLASS'"));
+  CHECK(contains(bad.err, "classes.txt:3: expected 'MODEL_NAME CLASS [GROUP]'"));
+  CHECK(contains(bad.err,
+                 "classes.txt:4: class 'pickup' is in group 'light': only a class in no group takes a group "
+                 "per model"));
+  CHECK(contains(bad.err, "classes.txt:5: unknown group 'big' (groups: none, light, heavy, armoured)"));
+  CHECK(contains(bad.err, "classes.txt:6: expected 'MODEL_NAME CLASS [GROUP]'"));
 }
 
 TEST_CASE("recognize answers with a class ranking; a sparse scan names a class, never a model, confidently") {

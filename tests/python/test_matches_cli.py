@@ -1,5 +1,7 @@
 """The module gives the CLI's answer on the same query: same ranking (names,
 order, scores), pose within 1e-6, same confidence, status and statistics."""
+import json
+
 import numpy as np
 import pytest
 
@@ -116,3 +118,18 @@ def test_database_describes_itself_as_info_does(fleet):
     field = f"nearest field {db.info['field_cell']:g} m voxels, reach {db.info['field_reach']:g} m, "
     assert field + f"{db.info['field_slots']} slots, {db.info['field_entry_count']} entries" in text
     assert db.info["format_version"] == 5 and db.info["field_entry_count"] > 0
+
+
+def test_database_gives_a_model_its_own_group_as_info_does(fleet, tmp_path):
+    """A model of a class in no group ("other") may carry a group of its own
+    (the build manifest's third word); the module and `info` both read it."""
+    manifest = tmp_path / "classes.txt"
+    manifest.write_text("sedan-00 other light\ntruck-00 other\n")
+    db_path = tmp_path / "grouped.shdb"
+    run_cli("build", "--quiet", "--no-calibration", "--classes", manifest, "-o", db_path, fleet.meshes)
+    models = {m["name"]: m for m in spinhash.Database(db_path).models}
+    assert (models["sedan-00"]["class"], models["sedan-00"]["group"]) == ("other", "light")
+    assert (models["truck-00"]["class"], models["truck-00"]["group"]) == ("other", "none")
+    info = {m["name"]: m for m in json.loads(run_cli("info", "--format", "json", db_path))["model_list"]}
+    for name, model in models.items():
+        assert (info[name]["class"], info[name]["group"]) == (model["class"], model["group"])
