@@ -67,13 +67,13 @@ bool write_one(const std::string& dir, const std::string& klass, const std::stri
 bool prepare_vehicles(const PrepareArgs& a, CsvTable* catalog, Tally* tally, std::string* error) {
   const std::string out = a.out + "/vehicles";
   if (!make_output_dir(out, error)) return false;
-  std::string manifest = "# MODEL_NAME CLASS: spinhash build --classes (Warzone 2100 vehicles)\n";
+  std::string manifest = "# MODEL_NAME CLASS [GROUP]: spinhash build --classes (Warzone 2100 vehicles)\n";
   for (const WarzoneVehicle& v : warzone_vehicles()) {
     host::Mesh m;
     if (!load_parts(a.base, v.parts, &m, error)) return false;
     m.name = v.name;
     if (!write_one(out, v.klass, "vehicle", m, catalog, error, v.group)) return false;
-    manifest += v.name + " " + v.klass + "\n";
+    manifest += v.name + " " + v.klass + (v.group.empty() ? "" : " " + v.group) + "\n";
     ++tally->written;
   }
   return write_text(a.out + "/vehicle-classes.txt", manifest, error);

@@ -39,7 +39,7 @@ constexpr const char* kEntries = "entries";
 constexpr const char* kModelList = "model_list";  // [{name, class, group, features, extent}]
 constexpr const char* kName = "name";
 constexpr const char* kClass = "class";  // the model's vehicle class (vehicle_classes.h)
-constexpr const char* kGroup = "group";  // its class's group (vehicle_classes.h)
+constexpr const char* kGroup = "group";  // its group: its class's, or its own (vehicle_classes.h)
 constexpr const char* kExtent = "extent";
 // object: target_precision, scans_per_model, models_left_out, clutter_scans, clutter, seed, bands, passes
 constexpr const char* kCalibration = "calibration";

@@ -27,9 +27,11 @@ std::string group_list() {
   return s;
 }
 
-// One manifest line into `name`, `cls` and `group` (kNone without a third
-// word); false for a blank line or a comment, *why set when the line is
-// not "NAME CLASS [GROUP]" with a known class and a group its class allows.
+// One manifest line into `name`, `cls` and `group`, the model's own group
+// (kNone without a third word, or where it repeats the class's: the blob
+// stores one way to say it); false for a blank line or a comment, *why set
+// when the line is not "NAME CLASS [GROUP]" with a known class and a group
+// its class allows.
 bool parse_line(const std::string& line, std::string* name, VehicleClass* cls, VehicleGroup* group,
                 std::string* why) {
   std::istringstream in(line.substr(0, line.find('#')));
@@ -43,9 +45,11 @@ bool parse_line(const std::string& line, std::string* name, VehicleClass* cls, V
     *why = "unknown class '" + word + "' (classes: " + class_list() + ")";
   } else if (!group_word.empty() && !parse_vehicle_group(group_word.c_str(), group)) {
     *why = "unknown group '" + group_word + "' (groups: " + group_list() + ")";
-  } else if (!model_group_allowed(static_cast<uint32_t>(*cls), static_cast<uint32_t>(*group))) {
-    *why = "class '" + word + "' is in group '" + vehicle_group_name(vehicle_group_of(*cls)) +
-           "': only a class in no group takes a group per model";
+  } else if (vehicle_group_of(*cls) != VehicleGroup::kNone) {
+    if (!group_word.empty() && *group != vehicle_group_of(*cls))
+      *why = "class '" + word + "' is in group '" + vehicle_group_name(vehicle_group_of(*cls)) +
+             "': only a class in no group takes a group per model";
+    *group = VehicleGroup::kNone;
   }
   return true;
 }

@@ -19,10 +19,11 @@ VehicleClass class_of_file(const std::string& path);
 
 // Reads a manifest, one "MODEL_NAME CLASS [GROUP]" a line ('#' starts a
 // comment), and sets the class of each model it names, and its own group
-// (only for a class in no group: an "other" buggy is "light"). False, with
-// one line per problem in *error, for an unknown class or group, a group
-// the class does not allow, a model not among `models`, a model named
-// twice or a line that is not two or three words.
+// (only for a class in no group: an "other" buggy is "light"; a class in a
+// group may repeat its own). False, with one line per problem in *error,
+// for an unknown class or group, a group the class contradicts, a model
+// not among `models`, a model named twice or a line that is not two or
+// three words.
 bool apply_class_manifest(const std::string& path, std::vector<host::ModelCloud>* models, std::string* error);
 
 }  // namespace spinhash::pipeline

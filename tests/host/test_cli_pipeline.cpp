@@ -173,7 +173,8 @@ TEST_CASE(
   const std::string db = dir.file("c.shdb"), manifest = dir.file("classes.txt");
   write_bytes(manifest,
               "# model class [group]\ntruck-00 bus  # a manifest overrides the name\n"
-              "sedan-00 other light  # an \"other\" vehicle, a light one\n");
+              "sedan-00 other light  # an \"other\" vehicle, a light one\n"
+              "hilux pickup light  # a class's own group, repeated\n");
   CliRun b = run_spinhash(dir, "build --quiet --no-calibration --classes " + shell_quoted(manifest) + " -o " +
                                    shell_quoted(db) + " " + shell_quoted(gen) + " " + shell_quoted(folder));
   INFO(b.err);
