@@ -41,7 +41,7 @@ struct RankedClass {
   uint32_t best_rank = 0;      // that model's place in Result::ranking
 };
 
-// One vehicle group of the database (vehicle_group_of() of its classes),
+// One vehicle group of the database (its models' groups: vehicle_group_of()),
 // scored by its best model: what a scan too sparse or too unlike every model
 // for a class still tells (a light vehicle, not a bus).
 struct RankedGroup {
