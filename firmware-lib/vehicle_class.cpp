@@ -1,5 +1,7 @@
 #include "spinhash/vehicle_class.hpp"
 
+#include "spinhash/blob_format.hpp"
+
 namespace spinhash {
 namespace {
 
@@ -77,6 +79,10 @@ VehicleGroup vehicle_group_of(uint32_t class_id, uint32_t own_group) noexcept {
 bool model_group_allowed(uint32_t class_id, uint32_t own_group) noexcept {
   return own_group == 0u || (own_group < kVehicleGroupCount && class_id < kVehicleClassCount &&
                              vehicle_group_of(class_id) == VehicleGroup::kNone);
+}
+
+VehicleGroup model_group(const blob::ModelRecord& model) noexcept {
+  return vehicle_group_of(model.vehicle_class, model.vehicle_group);
 }
 
 VehicleGroup vehicle_group_of(VehicleClass vehicle_class) noexcept {

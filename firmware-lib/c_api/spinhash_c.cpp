@@ -133,8 +133,7 @@ uint32_t spinhash_database_model_class(const spinhash_database* db, uint32_t ind
 uint32_t spinhash_database_model_group(const spinhash_database* db, uint32_t index) SPINHASH_NOEXCEPT {
   const Database* d = view(db);
   if (d == nullptr || index >= d->model_count()) return SPINHASH_GROUP_COUNT;
-  const blob::ModelRecord& r = d->model(index);
-  return static_cast<uint32_t>(vehicle_group_of(r.vehicle_class, r.vehicle_group));
+  return static_cast<uint32_t>(model_group(d->model(index)));
 }
 
 const char* spinhash_class_name(uint32_t vehicle_class) SPINHASH_NOEXCEPT {

@@ -73,11 +73,8 @@ ClassEnvelope class_envelope(const Database& db, uint32_t vehicle_class) {
 }
 
 ClassEnvelope group_envelope(const Database& db, uint32_t group) {
-  return envelope_of_models(db, [group](const blob::ModelRecord& r) { return model_group(r) == group; });
-}
-
-uint32_t model_group(const blob::ModelRecord& r) {
-  return static_cast<uint32_t>(vehicle_group_of(r.vehicle_class, r.vehicle_group));
+  return envelope_of_models(
+      db, [group](const blob::ModelRecord& r) { return static_cast<uint32_t>(model_group(r)) == group; });
 }
 
 ScanShape measure_scan(const QueryFeatures& query, const blob::ModelRecord& leader, const RigidPose& pose,

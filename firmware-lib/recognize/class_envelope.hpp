@@ -30,11 +30,8 @@ struct ClassEnvelope {
 // The envelope of the database's models of `vehicle_class` (O(models), no
 // state: the blob holds every box). members == 0 when the class has none.
 ClassEnvelope class_envelope(const Database& db, uint32_t vehicle_class);
-// The same over the database's models of `group` (model_group()).
+// The same over the database's models of `group` (model_group(), vehicle_class.hpp).
 ClassEnvelope group_envelope(const Database& db, uint32_t group);
-// A model's group: its own where its class is in no group and it carries
-// one, else its class's (vehicle_group_of(class, own)).
-uint32_t model_group(const blob::ModelRecord& r);
 
 // The scan's shape as an airborne scan measures it, under the class
 // leader's pose. Length and width are the query features' spans along the

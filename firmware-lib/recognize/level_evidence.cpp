@@ -54,7 +54,7 @@ float class_evidence(const Result& r, const RecognizerConfig& cfg, uint32_t feat
 }
 
 uint32_t rank_groups(const Database& db, const Result& r, RankedGroup* out) {
-  const auto group_of = [&db](uint32_t model) { return model_group(db.model(model)); };
+  const auto group_of = [&db](uint32_t model) { return static_cast<uint32_t>(model_group(db.model(model))); };
   return rank_by_first_model(r, group_of, &RankedGroup::group, kVehicleGroupCount, out);
 }
 
@@ -82,7 +82,7 @@ float group_evidence(const SearchContext& ctx, uint32_t known_rank, const Member
   uint32_t tried = 0;
   for (uint32_t i = 0; i < r.ranking_count && tried < cfg.classes.group_fit_models; ++i) {
     const RankedModel& m = r.ranking[i];
-    if (!m.has_pose || model_group(db.model(m.model)) != group) continue;
+    if (!m.has_pose || static_cast<uint32_t>(model_group(db.model(m.model))) != group) continue;
     ++tried;
     const MemberFit member = i == known_rank ? known : member_fit(ctx, m.model);
     if (!model_explains_scan(r, cfg, n, m, member.fit, member.density) ||

@@ -94,9 +94,8 @@ bool run_model(Shared& sh, PassSessions& known, uint32_t m, std::vector<host::Ca
       return false;
     }
   }
-  const blob::ModelRecord& truth = sh.full.models[m];  // its group: its own, else its class's
-  const uint32_t vehicle_class = truth.vehicle_class,
-                 group = static_cast<uint32_t>(vehicle_group_of(truth.vehicle_class, truth.vehicle_group));
+  const blob::ModelRecord& truth = sh.full.models[m];
+  const uint32_t vehicle_class = truth.vehicle_class, group = static_cast<uint32_t>(model_group(truth));
   std::vector<double> xyz;
   const uint32_t scans = sh.leave_out[m] ? sh.left_out_scans : sh.scans;
   for (uint32_t s = 0; s < scans; ++s) {

@@ -61,8 +61,7 @@ void print_text(const Database& db, uint64_t bytes) {
   for (uint32_t m = 0; m < db.model_count(); ++m) {
     const blob::ModelRecord& r = db.model(m);
     std::printf("%-24s %-12s %-9s %8u  %.2f %.2f %.2f\n", model_name(db, m).c_str(),
-                vehicle_class_name(r.vehicle_class),
-                vehicle_group_name(vehicle_group_of(r.vehicle_class, r.vehicle_group)), r.feature_count,
+                vehicle_class_name(r.vehicle_class), vehicle_group_name(model_group(r)), r.feature_count,
                 static_cast<double>(r.bbox_max[0] - r.bbox_min[0]),
                 static_cast<double>(r.bbox_max[1] - r.bbox_min[1]),
                 static_cast<double>(r.bbox_max[2] - r.bbox_min[2]));
@@ -82,8 +81,7 @@ std::string model_list_json(const Database& db) {
     models.push_back(json_object(
         {json_member(k::kName, json_string(model_name(db, m))),
          json_member(k::kClass, json_string(vehicle_class_name(r.vehicle_class))),
-         json_member(k::kGroup,
-                     json_string(vehicle_group_name(vehicle_group_of(r.vehicle_class, r.vehicle_group)))),
+         json_member(k::kGroup, json_string(vehicle_group_name(model_group(r)))),
          json_member(k::kFeatures, num(r.feature_count)),
          json_member(k::kExtent, json_array(std::vector<std::string>{num(r.bbox_max[0] - r.bbox_min[0]),
                                                                      num(r.bbox_max[1] - r.bbox_min[1]),

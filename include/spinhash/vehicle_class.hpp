@@ -7,6 +7,9 @@
 #include "spinhash/vehicle_classes.h"
 
 namespace spinhash {
+namespace blob {
+struct ModelRecord;
+}
 
 enum class VehicleClass : uint8_t {
 #define SPINHASH_CLASS_ENUM(id, Name, name, group, help) k##Name = id,
@@ -39,6 +42,8 @@ VehicleGroup vehicle_group_of(uint32_t class_id, uint32_t own_group) noexcept;
 // its own), or a group id when the class is in no group. A class in a
 // group fixes its models' group: one answer per model, whatever the byte.
 bool model_group_allowed(uint32_t class_id, uint32_t own_group) noexcept;
+// A database model's group: vehicle_group_of(its class, its own group).
+VehicleGroup model_group(const blob::ModelRecord& model) noexcept;
 // "light", ...; "unknown" for an id outside the list.
 const char* vehicle_group_name(uint32_t id) noexcept;
 inline const char* vehicle_group_name(VehicleGroup group) noexcept {

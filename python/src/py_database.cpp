@@ -57,7 +57,7 @@ py::list models(const PyDatabase& d) {
     py::dict model;
     model["name"] = pipeline::model_name(d.file.db, m);
     model["class"] = vehicle_class_name(r.vehicle_class);
-    model["group"] = vehicle_group_name(vehicle_group_of(r.vehicle_class, r.vehicle_group));
+    model["group"] = vehicle_group_name(model_group(r));
     model["features"] = r.feature_count;
     model["extent"] = py::make_tuple(static_cast<double>(r.bbox_max[0] - r.bbox_min[0]),
                                      static_cast<double>(r.bbox_max[1] - r.bbox_min[1]),

@@ -180,7 +180,7 @@ TEST_CASE("a model of a class in no group ranks, and answers, in its own group")
   REQUIRE(a.r.group_ranking_count == 2u);
   CHECK(a.r.group_ranking[0].group == light);
   CHECK(a.r.group_ranking[0].model == kTruck);
-  CHECK(spinhash::model_group(o.db.model(kTruck)) == light);
+  CHECK(static_cast<uint32_t>(spinhash::model_group(o.db.model(kTruck))) == light);
   CHECK(spinhash::group_envelope(o.db, light).members == 4u);
   // The class "other" is in no group: its answer climbs through its best
   // model's group, so every level holds.

@@ -456,7 +456,7 @@ TEST_CASE("a model's own group: only for a class in no group, a group of the lis
     BlobPatch b = with(other, light);  // an "other" buggy, a light vehicle
     Database db;
     REQUIRE(b.open(&db) == Status::kOk);
-    CHECK(vehicle_group_of(db.model(1).vehicle_class, db.model(1).vehicle_group) == VehicleGroup::kLight);
+    CHECK(spinhash::model_group(db.model(1)) == VehicleGroup::kLight);
   }
   CHECK(with(static_cast<uint32_t>(VehicleClass::kUnclassified), heavy).open() == Status::kOk);
   CHECK(with(sedan, 0u).open() == Status::kOk);  // 0: the class's group
