@@ -8,19 +8,22 @@
 //   scene-throughput sparse-tiles DIR T N SIDE T such tiles side by side (a
 //                                               square of them), DIR/tNN.laz
 //   scene-throughput decode TILE.laz           the tile's LAZ decoding alone
-//   scene-throughput run DB.shdb TILE.laz...   per tile: LAZ decoding alone,
-//                                               then the tile through
+//   scene-throughput run DB.shdb TILE.laz...   per tile: the tile through
 //                                               `spinhash scene`'s path
 //                                               (pipeline/tile_stream.hpp),
-//                                               its time split by stage
+//                                               decoded once, its time split
+//                                               by stage
 // The stages are timed by wrapping their calls at link time
 // (experiments/CMakeLists.txt, -Wl,--wrap, as tests/worst_case/
-// stream_runner.cpp counts their instructions): terrain (each row's cell
-// sums, each strip's grid, each window's heights), segmentation,
+// stream_runner.cpp counts their instructions): LAZ decoding (the reader's
+// records, LasRecordReader::read, which also counts them), terrain (each
+// row's cell sums, each strip's grid, each window's heights), segmentation,
 // recognition, the along-track order (its spill and replay); the rest of
-// the stream (its buffer, the windows' gathering, the objects' boxes,
-// ownership, gates) is the stream's time less the stages. scripts/
-// scene-throughput.sh makes the tiles and prints the table.
+// the stream (the records' x y z, its buffer, the windows' gathering, the
+// objects' boxes, ownership, gates) is the stream's time less the stages.
+// Each row carries the records the reader decoded for its tile: the tile's
+// records when it is decoded once. scripts/scene-throughput.sh makes the
+// tiles and prints the table.
 #include <time.h>
 
 #include <cinttypes>
@@ -53,8 +56,9 @@ double thread_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-enum Stage { kTerrain, kSegmentation, kRecognition, kOrder, kStages };
+enum Stage { kDecoding, kTerrain, kSegmentation, kRecognition, kOrder, kStages };
 double g_seconds[kStages] = {};
+uint64_t g_records = 0;  // records the LAS/LAZ reader handed out
 
 struct Timed {
   Stage stage;
@@ -76,6 +80,7 @@ struct Timed {
 #define SPINHASH_RECOGNIZE _ZN8spinhash10Recognizer9recognizeEPKfjRKNS_13ObjectTerrainE
 #define SPINHASH_ORDER_ADD _ZN8spinhash8pipeline15AlongTrackOrder3addEPKdm
 #define SPINHASH_ORDER_READ _ZN8spinhash8pipeline15AlongTrackOrder6Cursor4readEPdm
+#define SPINHASH_RECORDS _ZN8spinhash4host15LasRecordReader4readEPhm
 #define SPINHASH_JOIN(a, b) a##b
 #define SPINHASH_WRAP(sym) SPINHASH_JOIN(__wrap_, sym)
 #define SPINHASH_REAL(sym) SPINHASH_JOIN(__real_, sym)
@@ -95,6 +100,7 @@ Result SPINHASH_REAL(SPINHASH_RECOGNIZE)(Recognizer* self, const float* xyz, uin
                                          const ObjectTerrain& terrain);
 void SPINHASH_REAL(SPINHASH_ORDER_ADD)(void* self, const double* xyz, size_t n);
 size_t SPINHASH_REAL(SPINHASH_ORDER_READ)(void* self, double* xyz, size_t n);
+size_t SPINHASH_REAL(SPINHASH_RECORDS)(void* self, uint8_t* out, size_t max);
 
 void SPINHASH_WRAP(SPINHASH_CELLS)(void* self, const void* ring, double from_s, double to_s) {
   const Timed t(kTerrain);
@@ -128,6 +134,12 @@ void SPINHASH_WRAP(SPINHASH_ORDER_ADD)(void* self, const double* xyz, size_t n) 
 size_t SPINHASH_WRAP(SPINHASH_ORDER_READ)(void* self, double* xyz, size_t n) {
   const Timed t(kOrder);
   return SPINHASH_REAL(SPINHASH_ORDER_READ)(self, xyz, n);
+}
+size_t SPINHASH_WRAP(SPINHASH_RECORDS)(void* self, uint8_t* out, size_t max) {
+  const Timed t(kDecoding);
+  const size_t got = SPINHASH_REAL(SPINHASH_RECORDS)(self, out, max);
+  g_records += got;
+  return got;
 }
 }
 
@@ -225,9 +237,9 @@ double decode_seconds(const std::string& path, uint64_t* points) {
   return thread_seconds() - t0;
 }
 
-void row(const char* tile, const char* stage, double seconds, uint64_t points) {
-  std::printf("%s,%s,%.4f,%.0f\n", tile, stage, seconds,
-              seconds > 0.0 ? static_cast<double>(points) / seconds : 0.0);
+void row(const char* tile, const char* stage, double seconds, uint64_t points, uint64_t records) {
+  std::printf("%s,%s,%.4f,%.0f,%" PRIu64 "\n", tile, stage, seconds,
+              seconds > 0.0 ? static_cast<double>(points) / seconds : 0.0, records);
 }
 
 int run(const char* db_path, int files, char** paths) {
@@ -237,12 +249,11 @@ int run(const char* db_path, int files, char** paths) {
     std::fprintf(stderr, "scene-throughput: %s\n", error.c_str());
     return 1;
   }
-  std::printf("tile,stage,cpu_s,points_per_s\n");
+  std::printf("tile,stage,cpu_s,points_per_s,records_decoded\n");
   for (int f = 0; f < files; ++f) {
     const std::string path = paths[f];
-    uint64_t points = 0;
-    const double decode = decode_seconds(path, &points);
     for (double& s : g_seconds) s = 0.0;
+    g_records = 0;
     pipeline::TileStreamOptions options;
     options.scene.max_tile_points = 0;                        // sized from the density, as `spinhash scene`
     options.scene.recognizer.ground.ground_clearance = 0.0f;  // the terrain takes the ground
@@ -255,21 +266,24 @@ int run(const char* db_path, int files, char** paths) {
           vehicles += o.kind == ObjectKind::kVehicleCandidate ? 1u : 0u;
         });
     const double total = thread_seconds() - t0;
-    const double rest = total - decode - g_seconds[kTerrain] - g_seconds[kSegmentation] -
-                        g_seconds[kRecognition] - g_seconds[kOrder];
+    double rest = total;
+    for (const double s : g_seconds) rest -= s;
+    const uint64_t points = r.points_read, records = g_records;
     const std::string name = std::filesystem::path(path).filename().string();
     std::fprintf(stderr,
-                 "scene-throughput: %s: %s, %" PRIu64 " points, %" PRIu64 " objects (%" PRIu64
-                 " vehicle candidates), %" PRIu64 " windows in %u bands\n",
-                 name.c_str(), status_name(r.status), points, objects, vehicles, r.stats.windows, r.bands);
-    row(name.c_str(), "laz_decoding", decode, points);
-    row(name.c_str(), "along_track_order", g_seconds[kOrder], points);
-    row(name.c_str(), "terrain", g_seconds[kTerrain], points);
-    row(name.c_str(), "segmentation", g_seconds[kSegmentation], points);
-    row(name.c_str(), "stream_rest", rest, points);
-    row(name.c_str(), "recognition", g_seconds[kRecognition], points);
-    row(name.c_str(), "all_but_recognition", total - g_seconds[kRecognition], points);
-    row(name.c_str(), "total", total, points);
+                 "scene-throughput: %s: %s, %" PRIu64 " points (%" PRIu64 " records decoded), %" PRIu64
+                 " objects (%" PRIu64 " vehicle candidates), %" PRIu64 " windows in %u bands\n",
+                 name.c_str(), status_name(r.status), points, records, objects, vehicles, r.stats.windows,
+                 r.bands);
+    const char* n = name.c_str();
+    row(n, "laz_decoding", g_seconds[kDecoding], points, records);
+    row(n, "along_track_order", g_seconds[kOrder], points, records);
+    row(n, "terrain", g_seconds[kTerrain], points, records);
+    row(n, "segmentation", g_seconds[kSegmentation], points, records);
+    row(n, "stream_rest", rest, points, records);
+    row(n, "recognition", g_seconds[kRecognition], points, records);
+    row(n, "all_but_recognition", total - g_seconds[kRecognition], points, records);
+    row(n, "total", total, points, records);
   }
   return 0;
 }
