@@ -25,9 +25,10 @@
 //   hypothesis loop's features is finalised when it comes within
 //   lend_end_aligned_window of the first there.
 //
-// Bounded: lend_rounds x look-alikes x (kEndAlignedPoses screens (one when
-// spread) on the hypothesis loop's features + 2 + refine_iterations full
-// verifications). Off with the transfer stage (TransferParams::enabled) or
+// Bounded: lend_rounds x (a screen of the first's own pose + look-alikes x
+// (kEndAlignedPoses screens (one when spread) on the hypothesis loop's
+// features + 1 + refine_iterations full verifications)), all counted
+// (RefineStats). Off with the transfer stage (TransferParams::enabled) or
 // transfer_models 0, which also caps the look-alikes.
 #include "recognize/final_lending.hpp"
 
@@ -50,7 +51,6 @@ void finalise_lent(SearchContext& ctx, uint32_t model, const RigidPose& pose, co
   b.pose = pose;
   b.has_score = true;
   ++b.hypotheses;
-  ++ctx.stats.transfer.transferred;
   rescore_model(ctx, model, all, exact);
   if (refine) refine_model(ctx, model, all, exact, true);
   b.score += upward_surface(ctx, model, b.pose).log_likelihood;
@@ -67,6 +67,7 @@ bool best_end_aligned(SearchContext& ctx, uint32_t source, uint32_t target, floa
     if (!end_aligned_pose(ctx.buf.best[source].pose, ctx.db.model(source), ctx.db.model(target), i, &pose,
                           ctx.params.refine.lend_min_end_shift))
       continue;
+    ++ctx.stats.refine.screens;
     const Verification v =
         verify_pose(ctx.db, target, pose, ctx.query, ctx.likelihood, best_score, kNoScoreToBeat);
     if (!v.complete || v.log_likelihood < best_score || (found && v.log_likelihood == best_score)) continue;
@@ -79,7 +80,8 @@ bool best_end_aligned(SearchContext& ctx, uint32_t source, uint32_t target, floa
 
 // The floor a lent pose must reach on the hypothesis loop's features:
 // `window` per feature below the source's own pose there.
-float screen_floor(const SearchContext& ctx, uint32_t source, float window) {
+float screen_floor(SearchContext& ctx, uint32_t source, float window) {
+  ++ctx.stats.refine.screens;
   const float source_score = verify_pose(ctx.db, source, ctx.buf.best[source].pose, ctx.query, ctx.likelihood,
                                          kNoScoreToBeat, kNoScoreToBeat)
                                  .log_likelihood;
@@ -91,6 +93,7 @@ void lend_as_is(SearchContext& ctx, uint32_t source, const QueryFeatures& all, c
   const RigidPose pose = ctx.buf.best[source].pose;  // no target is the source
   const float floor = screen_floor(ctx, source, ctx.params.refine.lend_spread_window);
   for (uint32_t t = 0; t < n; ++t) {
+    ++ctx.stats.refine.screens;
     const Verification v =
         verify_pose(ctx.db, targets[t], pose, ctx.query, ctx.likelihood, floor, kNoScoreToBeat);
     if (v.complete && v.log_likelihood >= floor) finalise_lent(ctx, targets[t], pose, all, exact, refine);

@@ -26,6 +26,7 @@ uint32_t leading_models(const SearchContext& ctx, uint32_t* out) {
 // subset): a near-symmetric vehicle; otherwise its two ends differ plainly
 // and the turn is not worth a refinement.
 bool turn_worth_refining(SearchContext& ctx, uint32_t model, const RigidPose& pose, const RigidPose& turned) {
+  ctx.stats.refine.screens += 2u;
   const float as_found =
       verify_pose(ctx.db, model, pose, ctx.query, ctx.likelihood, kNoScoreToBeat, kNoScoreToBeat)
           .log_likelihood;
@@ -58,6 +59,7 @@ void refine_both_ways(SearchContext& ctx, uint32_t model, const QueryFeatures& a
 
 void rescore_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, const LikelihoodParams& lp) {
   ModelBest& best = ctx.buf.best[model];
+  ++ctx.stats.refine.rescores;
   Verification full =
       verify_pose(ctx.db, model, best.pose, all, lp, kNoScoreToBeat, kNoScoreToBeat, ctx.buf.matches);
   best.score = full.log_likelihood;

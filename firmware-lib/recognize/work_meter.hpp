@@ -3,7 +3,10 @@
 // RecognizerConfig::max_work caps. Deterministic (counts, not time), so the
 // cap stops a query at the same point on every target. The weights are the
 // instructions of each counted step over an LSH entry's (docs/budgets.md
-// gives the instructions per unit as measured). The cap is checked between
+// gives the instructions per unit as measured). Every pose scored counts,
+// on the hypothesis loop's features, V = min(verify_features, F) of the
+// query's F (hypotheses, transferred, carried and screened poses), or on
+// all F (rescored poses and refinements). The cap is checked between
 // stages, before each candidate pair and after each query feature's bucket
 // scan, and the extraction's charge (kWorkPerPoint a point equalised) is
 // known before its normals and spin images: a pass that would reach the cap
@@ -26,11 +29,12 @@ constexpr uint64_t kWorkPerPoint = 150;          // a point equalised: its norma
 // The pass's work so far (its statistics and its settings).
 inline uint64_t pass_work(const RecognitionStats& s, const RecognizerConfig& pass) {
   const uint64_t verify = pass.draws.verify_features, features = s.extract.features;
-  const uint64_t poses = static_cast<uint64_t>(s.draws.hypotheses) + s.transfer.transferred + s.carry.carried;
+  const uint64_t on_subset =
+      static_cast<uint64_t>(s.draws.hypotheses) + s.transfer.transferred + s.carry.carried + s.refine.screens;
+  const uint64_t on_all = static_cast<uint64_t>(s.refine.rescores) + s.refine.refinements;
   return kWorkPerPoint * s.extract.points_equalised + kWorkPerBucketEntry * s.candidates.bucket_entries +
          kWorkPerPairCheck * s.draws.pair_checks +
-         kWorkPerVerifiedFeature *
-             (poses * (verify < features ? verify : features) + s.refine.refinements * features);
+         kWorkPerVerifiedFeature * (on_subset * (verify < features ? verify : features) + on_all * features);
 }
 
 // The query has spent its cap (the earlier passes' work and this one's).
