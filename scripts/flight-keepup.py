@@ -4,7 +4,7 @@
   scripts/flight-keepup.py ROWS.csv [--speed 30] [--swath 100] [--density 100]
       [--window-core 32] [--windows-per-row 4] [--max-lag 16] [--hz 1.2e9] [--ipc 1.0]
       [--per-point 1245] [--per-unit 110] [--window-max-work 0] [--fixed-per-point 520]
-      [--overshoot 40e6]
+      [--overshoot 10e6]
 
 ROWS.csv is what `tests/worst_case/stream_runner run DIR` writes (columns
 row, points, objects, recognition_work): per row of windows along track, its
@@ -20,8 +20,9 @@ longer than the aircraft takes to fly --max-lag m (the stream's lag).
 
 The configured bound: with --window-max-work W a window's recognitions
 spend at most W units, plus what its last query passes its cap by (one LSH
-scan, one pair, or the look-alike lending or refinement it has begun: at
-most --overshoot instructions, docs/budgets.md), plus what the units do
+scan, one pair or lent pose, or one step of the refine stage and the upward
+surface of the leaders finalised after it: at most --overshoot
+instructions, docs/budgets.md), plus what the units do
 not count, each query's loading, ground removal and equalising of its
 cloud in both passes (--fixed-per-point instructions a point of it; its
 points are the row's at most), so a row of --windows-per-row windows at
@@ -51,8 +52,8 @@ def main():
     p.add_argument("--window-max-work", type=int, default=0, help="the run's window budget (0: none)")
     p.add_argument("--fixed-per-point", type=float, default=520.0,
                    help="instructions a query point costs that no work unit counts (aarch64, both passes)")
-    p.add_argument("--overshoot", type=float, default=40e6,
-                   help="instructions a window's last query may pass its cap by (the refinement it has begun)")
+    p.add_argument("--overshoot", type=float, default=10e6,
+                   help="instructions a window's last query may pass its cap by (one step of the refine stage)")
     a = p.parse_args()
     try:
         with open(a.rows, newline="") as f:

@@ -4,6 +4,7 @@
 #include "recognize/evidence_stop.hpp"
 #include "recognize/hypotheses.hpp"
 #include "recognize/model_groups.hpp"
+#include "recognize/work_meter.hpp"
 #include "spinhash/limits.hpp"
 
 namespace spinhash {
@@ -99,8 +100,9 @@ void draw_sran(SearchContext& ctx) {
   const HypothesisCaps caps{0xFFFFFFFFu, d.max_hypotheses};
   for (uint32_t model = 0; model < ctx.db.model_count(); ++model) {
     for (uint32_t l = 0; l < ctx.query.count; ++l) gather_model_candidates(ctx, model, l);
-    draw_for_model(ctx, model, d.sran_trials, caps);               // a model's own cap ends its draws only
-    if (ctx.stats.draws.pair_checks >= d.max_pair_checks) return;  // global budget spent
+    draw_for_model(ctx, model, d.sran_trials, caps);  // a model's own cap ends its draws only
+    // The global budget or the query's work cap spent: no further model is searched.
+    if (ctx.stats.draws.pair_checks >= d.max_pair_checks || work_capped(ctx)) return;
   }
 }
 

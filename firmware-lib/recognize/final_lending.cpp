@@ -25,16 +25,20 @@
 //   hypothesis loop's features is finalised when it comes within
 //   lend_end_aligned_window of the first there.
 //
-// Bounded: lend_rounds x look-alikes x (kEndAlignedPoses screens (one when
-// spread) on the hypothesis loop's features + 2 + refine_iterations full
-// verifications). Off with the transfer stage (TransferParams::enabled) or
-// transfer_models 0, which also caps the look-alikes.
+// Bounded: lend_rounds x (a screen of the first's own pose + look-alikes x
+// (kEndAlignedPoses screens (one when spread) on the hypothesis loop's
+// features + 1 + refine_iterations full verifications)), all counted
+// (RefineStats); no round and no look-alike's screens begin once the query
+// has spent its work cap (work_meter.hpp). Off with the transfer stage
+// (TransferParams::enabled) or transfer_models 0, which also caps the
+// look-alikes.
 #include "recognize/final_lending.hpp"
 
 #include "match/refine_pose.hpp"
 #include "recognize/box_distance.hpp"
 #include "recognize/refinement.hpp"
 #include "recognize/visible_surface.hpp"
+#include "recognize/work_meter.hpp"
 #include "spinhash/limits.hpp"
 
 namespace spinhash {
@@ -50,7 +54,6 @@ void finalise_lent(SearchContext& ctx, uint32_t model, const RigidPose& pose, co
   b.pose = pose;
   b.has_score = true;
   ++b.hypotheses;
-  ++ctx.stats.transfer.transferred;
   rescore_model(ctx, model, all, exact);
   if (refine) refine_model(ctx, model, all, exact, true);
   b.score += upward_surface(ctx, model, b.pose).log_likelihood;
@@ -67,6 +70,7 @@ bool best_end_aligned(SearchContext& ctx, uint32_t source, uint32_t target, floa
     if (!end_aligned_pose(ctx.buf.best[source].pose, ctx.db.model(source), ctx.db.model(target), i, &pose,
                           ctx.params.refine.lend_min_end_shift))
       continue;
+    ++ctx.stats.refine.screens;
     const Verification v =
         verify_pose(ctx.db, target, pose, ctx.query, ctx.likelihood, best_score, kNoScoreToBeat);
     if (!v.complete || v.log_likelihood < best_score || (found && v.log_likelihood == best_score)) continue;
@@ -79,7 +83,8 @@ bool best_end_aligned(SearchContext& ctx, uint32_t source, uint32_t target, floa
 
 // The floor a lent pose must reach on the hypothesis loop's features:
 // `window` per feature below the source's own pose there.
-float screen_floor(const SearchContext& ctx, uint32_t source, float window) {
+float screen_floor(SearchContext& ctx, uint32_t source, float window) {
+  ++ctx.stats.refine.screens;
   const float source_score = verify_pose(ctx.db, source, ctx.buf.best[source].pose, ctx.query, ctx.likelihood,
                                          kNoScoreToBeat, kNoScoreToBeat)
                                  .log_likelihood;
@@ -90,7 +95,8 @@ void lend_as_is(SearchContext& ctx, uint32_t source, const QueryFeatures& all, c
                 bool refine, const uint32_t* targets, uint32_t n) {
   const RigidPose pose = ctx.buf.best[source].pose;  // no target is the source
   const float floor = screen_floor(ctx, source, ctx.params.refine.lend_spread_window);
-  for (uint32_t t = 0; t < n; ++t) {
+  for (uint32_t t = 0; t < n && !work_capped(ctx); ++t) {
+    ++ctx.stats.refine.screens;
     const Verification v =
         verify_pose(ctx.db, targets[t], pose, ctx.query, ctx.likelihood, floor, kNoScoreToBeat);
     if (v.complete && v.log_likelihood >= floor) finalise_lent(ctx, targets[t], pose, all, exact, refine);
@@ -100,7 +106,7 @@ void lend_as_is(SearchContext& ctx, uint32_t source, const QueryFeatures& all, c
 void lend_end_aligned(SearchContext& ctx, uint32_t source, const QueryFeatures& all,
                       const LikelihoodParams& exact, bool refine, const uint32_t* targets, uint32_t n) {
   const float floor = screen_floor(ctx, source, ctx.params.refine.lend_end_aligned_window);
-  for (uint32_t t = 0; t < n; ++t) {
+  for (uint32_t t = 0; t < n && !work_capped(ctx); ++t) {
     RigidPose best;
     if (best_end_aligned(ctx, source, targets[t], floor, &best))
       finalise_lent(ctx, targets[t], best, all, exact, refine);
@@ -118,7 +124,7 @@ void lend_final_pose(SearchContext& ctx, const QueryFeatures& all, const Likelih
   const uint32_t wanted = !t.enabled ? 0u : (t.transfer_models < cap ? t.transfer_models : cap);
   if (wanted == 0u) return;                   // the transfer off: the paper's BRAN
   uint32_t lent_from = ctx.db.model_count();  // none yet
-  for (uint32_t round = 0; round < p.lend_rounds; ++round) {
+  for (uint32_t round = 0; round < p.lend_rounds && !work_capped(ctx); ++round) {
     uint32_t first = 0;
     if (!final_first(ctx, &first) || first == lent_from) return;
     uint32_t targets[kMaxLendModels];

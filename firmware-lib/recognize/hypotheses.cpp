@@ -82,10 +82,15 @@ bool draw_for_model(SearchContext& ctx, uint32_t model, uint32_t trials, const H
   return true;
 }
 
-PairOutcome evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k, uint32_t l,
-                          const DoubletShape& shape, uint32_t fu, uint32_t fv, const HypothesisCaps& caps) {
+// Out of line: one copy for its callers here and in the draws keeps the
+// code small.
+__attribute__((noinline)) PairOutcome evaluate_pair(SearchContext& ctx, uint32_t model, uint32_t k,
+                                                    uint32_t l, const DoubletShape& shape, uint32_t fu,
+                                                    uint32_t fv, const HypothesisCaps& caps) {
   DrawsStats& st = ctx.stats.draws;
-  if (st.pair_checks >= ctx.params.draws.max_pair_checks || work_capped(ctx)) {
+  // The cap's sum inline (work_capped calls it): this runs for every pair.
+  if (st.pair_checks >= ctx.params.draws.max_pair_checks ||
+      ctx.work_before + pass_work(ctx.stats, ctx.params) >= ctx.work_cap) {
     st.budget_exhausted = true;
     return PairOutcome::kBudgetSpent;
   }

@@ -2,6 +2,7 @@
 
 #include "recognize/box_distance.hpp"
 #include "recognize/hypotheses.hpp"
+#include "recognize/work_meter.hpp"
 #include "spinhash/limits.hpp"
 #include "util/top_n.hpp"
 
@@ -26,7 +27,7 @@ Status transfer_stage(SearchContext& ctx) {
   for (uint32_t i = 0; i < n_sources; ++i) {
     const uint32_t n =
         nearest_by_box(ctx.db, sources[i], wanted, targets, [&](uint32_t m) { return m != sources[i]; });
-    for (uint32_t t = 0; t < n; ++t) {
+    for (uint32_t t = 0; t < n && !work_capped(ctx); ++t) {
       ++ctx.stats.transfer.transferred;
       consider_pose(ctx, targets[t], poses[i], scores[i]);
     }

@@ -11,7 +11,8 @@
 // dozen features when clearly worse than the pose's source (the preemptive
 // checks of verify_pose). Bounded: kMaxTransferPoses x kMaxTransferModels
 // extra verifications, after the hypothesis budget (counted in
-// TransferStats::transferred).
+// TransferStats::transferred); none begins once the query has spent its
+// work cap (work_meter.hpp).
 #pragma once
 #include "recognize/search_context.hpp"
 

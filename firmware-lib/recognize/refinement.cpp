@@ -3,6 +3,7 @@
 #include "match/refine_pose.hpp"
 #include "recognize/final_lending.hpp"
 #include "recognize/visible_surface.hpp"
+#include "recognize/work_meter.hpp"
 #include "spinhash/limits.hpp"
 #include "util/top_n.hpp"
 
@@ -26,6 +27,7 @@ uint32_t leading_models(const SearchContext& ctx, uint32_t* out) {
 // subset): a near-symmetric vehicle; otherwise its two ends differ plainly
 // and the turn is not worth a refinement.
 bool turn_worth_refining(SearchContext& ctx, uint32_t model, const RigidPose& pose, const RigidPose& turned) {
+  ctx.stats.refine.screens += 2u;
   const float as_found =
       verify_pose(ctx.db, model, pose, ctx.query, ctx.likelihood, kNoScoreToBeat, kNoScoreToBeat)
           .log_likelihood;
@@ -39,12 +41,14 @@ bool turn_worth_refining(SearchContext& ctx, uint32_t model, const RigidPose& po
 }
 
 // Refines the model's pose, and its turn end to end when the turn is close
-// (turn_worth_refining); keeps whichever scores higher.
+// (turn_worth_refining); keeps whichever scores higher. The turn is a
+// refinement of its own: not begun once the query has spent its cap.
 void refine_both_ways(SearchContext& ctx, uint32_t model, const QueryFeatures& all,
                       const LikelihoodParams& lp) {
   ModelBest& best = ctx.buf.best[model];
   const ModelBest as_found = best;
   refine_model(ctx, model, all, lp, false);  // the matches are another model's (all are rescored first)
+  if (work_capped(ctx)) return;
   const RigidPose turned = turned_end_to_end(as_found.pose, ctx.db.model(model));
   if (!turn_worth_refining(ctx, model, as_found.pose, turned)) return;
   const ModelBest refined = best;
@@ -58,6 +62,7 @@ void refine_both_ways(SearchContext& ctx, uint32_t model, const QueryFeatures& a
 
 void rescore_model(SearchContext& ctx, uint32_t model, const QueryFeatures& all, const LikelihoodParams& lp) {
   ModelBest& best = ctx.buf.best[model];
+  ++ctx.stats.refine.rescores;
   Verification full =
       verify_pose(ctx.db, model, best.pose, all, lp, kNoScoreToBeat, kNoScoreToBeat, ctx.buf.matches);
   best.score = full.log_likelihood;
@@ -103,14 +108,18 @@ Status refine_stage(SearchContext& ctx) {
   const RefineParams& p = ctx.params.refine;
   const bool refine = p.refine_poses;
   uint32_t models[kMaxRescoredModels];
-  const uint32_t n = leading_models(ctx, models);
+  const uint32_t leaders = leading_models(ctx, models);
   QueryFeatures all = ctx.query;
   all.verify_count = all.count;
   const LikelihoodParams exact = make_surface_params(ctx.params, ctx.db);
   float leading = kNoScoreToBeat;
-  for (uint32_t i = 0; i < n; ++i) {
-    rescore_model(ctx, models[i], all, exact);
-    leading = ctx.buf.best[models[i]].score > leading ? ctx.buf.best[models[i]].score : leading;
+  // Once the query has spent its cap, no further leader is rescored: the
+  // first n are finalised, the rest keep their subset scores, below them,
+  // as the models outside the leading set do.
+  uint32_t n = 0;  // the leaders rescored
+  for (; n < leaders && !work_capped(ctx); ++n) {
+    rescore_model(ctx, models[n], all, exact);
+    leading = ctx.buf.best[models[n]].score > leading ? ctx.buf.best[models[n]].score : leading;
   }
   // A rescored model refine_window per feature below the best is not
   // refined: the least squares cost most of the stage, and a pose this much
@@ -120,7 +129,9 @@ Status refine_stage(SearchContext& ctx) {
   float lowest_final = 0.0f;
   for (uint32_t i = 0; i < n; ++i) {
     ModelBest& b = ctx.buf.best[models[i]];
-    if (refine && b.score >= refine_from) refine_both_ways(ctx, models[i], all, exact);
+    // Capped, a rescored leader is finalised unrefined (its upward surface
+    // charged like the others', so the finalised scores stay comparable).
+    if (refine && b.score >= refine_from && !work_capped(ctx)) refine_both_ways(ctx, models[i], all, exact);
     if (ctx.mode == Mode::kBran) b.score += upward_surface(ctx, models[i], b.pose).log_likelihood;
     lowest_final = i == 0 || b.score < lowest_final ? b.score : lowest_final;
   }

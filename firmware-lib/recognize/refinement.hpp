@@ -16,8 +16,12 @@
 // (visible_surface.hpp) and lends the first model's refined pose to its
 // look-alikes (final_lending.hpp); every other model's subset score is
 // extrapolated to all features, below the rescored ones. Bounded:
-// rescored_models x (2 + 2 refine_iterations) full verifications, and the
-// lending's own bound.
+// rescored_models x (2 + 2 refine_iterations) full verifications and 2
+// screens on the hypothesis loop's features, and the lending's own bound,
+// all counted (RefineStats). The work cap (work_meter.hpp) is checked before
+// each leader's rescoring and each refinement (the turned pose's its own):
+// once spent, the leaders rescored so far are finalised as they stand and
+// the others keep their subset scores, below them.
 #pragma once
 #include <cstdint>
 

@@ -390,8 +390,8 @@ Status run_window(const Database& db, const SceneConfig& c, const StreamFrame& f
   gather_objects(ring, n, ss.objects, frame, b);
   // The window's work budget, shared in the order of its objects (none when
   // window_max_work is 0): a query may pass its cap by one feature's scan,
-  // one pair or the stage it has begun (recognize/work_meter.hpp), so what
-  // is left never goes below 0.
+  // one pair or pose, or one step of the refine stage
+  // (recognize/work_meter.hpp), so what is left never goes below 0.
   uint64_t work_left = c.window_max_work > 0u ? c.window_max_work : Recognizer::kNoWorkCap;
   for (uint32_t k = 0; k < ss.objects; ++k) {
     const double* box = b.box + 4u * k;

@@ -65,7 +65,7 @@ constexpr uint32_t kFlightMaxTrials = 700;       // BRAN's draws: the median que
 // confident answer ends the query, so it must be right as often as the full
 // pass's on fewer, coarser features.
 constexpr float kFirstPassMinMargin = 1.2f;
-// Work units a query may spend (work_meter.hpp; 68-109 aarch64
+// Work units a query may spend (work_meter.hpp; 63-99 aarch64
 // instructions a unit): a bound on the worst query that no query of the
 // fleet's accuracy sets reaches. 4 000 000 holds the instruction
 // benchmark's worst query under 300 M aarch64 instructions but caps dense

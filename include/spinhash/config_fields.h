@@ -83,6 +83,8 @@
   S(U32, hypotheses, draws.hypotheses, "hypotheses")                                        \
   S(U32, transferred, transfer.transferred, "transferred")                                  \
   S(U32, refinements, refine.refinements, "refinements")                                    \
+  S(U32, rescores, refine.rescores, "rescores")                                             \
+  S(U32, screens, refine.screens, "screens")                                                \
   S(BOOL, budget_exhausted, draws.budget_exhausted, "budget_exhausted")                     \
   S(BOOL, stopped_on_evidence, draws.stopped_on_evidence, "stopped_on_evidence")            \
   S(BOOL, candidates_spread, candidates.spread, "candidates_spread")                        \

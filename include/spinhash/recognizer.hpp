@@ -87,10 +87,15 @@ struct DrawsStats {
   uint64_t poses_found() const { return hypotheses + poses_tilted; }
 };
 struct TransferStats {
-  uint32_t transferred = 0;  // look-alike pose transfers verified (here and by the final lending)
+  uint32_t transferred = 0;  // look-alike pose transfers verified
 };
+// The refine stage's (its final lending's included).
 struct RefineStats {
   uint32_t refinements = 0;  // least-squares pose refinements verified
+  uint32_t rescores = 0;     // poses scored on every query feature: leaders', turned, lent
+  // Poses scored on the hypothesis loop's features to choose what to refine
+  // and lend: the turn screen, the lending's floor and its lent poses.
+  uint32_t screens = 0;
 };
 struct ConfidenceStats {
   // The share of the first model's upward-facing surface (under its pose)

@@ -434,3 +434,114 @@ TEST_CASE("cascade: the work cap stops the extraction and the candidates before 
     CHECK(recognize_toy(toy, full, m, true).result.stats.candidates.bucket_entries > scanned);
   }
 }
+
+// The refine stage checks the cap before each leader's rescoring and each
+// refinement, and its lending before each round and each look-alike: a query
+// capped there passes its cap by at most one such step, which its settings
+// and features bound (work_meter.hpp), its rescorings and screens counted.
+TEST_CASE("cascade: the work cap stops the refine stage within one model's rescoring or refinement") {
+  const test::ToyDatabase& toy = test::shared_toy_database();
+  for (const uint32_t m : {2u, 4u}) {
+    INFO("toy model " << m);
+    RecognizerConfig full = preset_config(Preset::kFull);
+    const Run whole = recognize_toy(toy, full, m, true);
+    REQUIRE(whole.result.status == Status::kOk);
+    const RecognitionStats& s = whole.result.stats;
+    const uint64_t features = s.extract.features;
+    const uint64_t subset = full.draws.verify_features < features ? full.draws.verify_features : features;
+    // The step between two checks can count at most one look-alike's
+    // lending: its end-aligned screens, its rescoring and its refinement.
+    const uint64_t bound = kWorkPerVerifiedFeature *
+                           ((1u + full.refine.refine_iterations) * features + kEndAlignedPoses * subset);
+    CHECK(refine_step_work(features, full) == bound);
+    // What the refine stage counts: its rescorings and screens too.
+    REQUIRE(s.refine.rescores > 0u);
+    REQUIRE(s.refine.refinements > 0u);
+    REQUIRE(s.refine.screens > 0u);
+    const uint64_t refine_work =
+        kWorkPerVerifiedFeature * ((uint64_t{s.refine.rescores} + s.refine.refinements) * features +
+                                   uint64_t{s.refine.screens} * subset);
+    REQUIRE(refine_work < s.cascade.work);
+    const uint64_t before_refine = s.cascade.work - refine_work;
+    REQUIRE(refine_work > 2u * bound);  // a cap inside the stage cuts it short
+
+    // One unit into the stage: the first leader alone is rescored, counted,
+    // and finalised above the others; nothing is refined or lent.
+    full.max_work = before_refine + 1u;
+    const Run first = recognize_toy(toy, full, m, true);
+    CHECK(first.result.status == Status::kWorkCapReached);
+    CHECK(first.result.stats.refine.rescores == 1u);
+    CHECK(first.result.stats.refine.refinements == 0u);
+    CHECK(first.result.stats.refine.screens == 0u);
+    CHECK(first.result.stats.cascade.work == before_refine + kWorkPerVerifiedFeature * features);
+    CHECK(first.result.ranking_count == whole.result.ranking_count);
+    REQUIRE(first.scores.size() >= 2u);
+    CHECK(first.scores[0] > first.scores[1]);
+    CHECK_FALSE(first.result.confident);
+
+    // Caps across the stage: each passed by less than one step.
+    for (uint64_t k = 1; k < 8; ++k) {
+      full.max_work = before_refine + refine_work * k / 8u;
+      INFO("cap " << full.max_work);
+      const Run capped = recognize_toy(toy, full, m, true);
+      CHECK(capped.result.status == Status::kWorkCapReached);
+      CHECK(capped.result.stats.cascade.work >= full.max_work);
+      CHECK(capped.result.stats.cascade.work < full.max_work + bound);
+      CHECK(capped.result.ranking_count == whole.result.ranking_count);
+    }
+
+    // A cap the query reaches with its last step: every check passes before
+    // it, so the answer is the uncapped one, only its status capped; one
+    // unit more and it is the uncapped answer itself.
+    full.max_work = s.cascade.work;
+    const Run at_end = recognize_toy(toy, full, m, true);
+    CHECK(at_end.result.status == Status::kWorkCapReached);
+    CHECK(at_end.result.stats.cascade.work == s.cascade.work);
+    CHECK(at_end.models == whole.models);
+    CHECK(at_end.scores == whole.scores);
+    full.max_work = s.cascade.work + 1u;
+    const Run past_end = recognize_toy(toy, full, m, true);
+    CHECK(past_end.result.status == Status::kOk);
+    CHECK(past_end.result.stats.cascade.work == s.cascade.work);
+    CHECK(past_end.models == whole.models);
+    CHECK(past_end.scores == whole.scores);
+    CHECK(past_end.result.confident == whole.result.confident);
+  }
+}
+
+// The transfer stage checks the cap before each pose it lends: a query
+// capped there passes its cap by at most one pose's verification.
+TEST_CASE("cascade: the work cap stops the transfer stage within one lent pose") {
+  const test::ToyDatabase& toy = test::shared_toy_database();
+  const uint32_t m = 4;
+  RecognizerConfig full = preset_config(Preset::kFull);
+  const Run whole = recognize_toy(toy, full, m, true);
+  REQUIRE(whole.result.status == Status::kOk);
+  const RecognitionStats& s = whole.result.stats;
+  const uint64_t features = s.extract.features;
+  const uint64_t subset = full.draws.verify_features < features ? full.draws.verify_features : features;
+  const uint64_t pose = kWorkPerVerifiedFeature * subset;
+  REQUIRE(s.transfer.transferred > 4u);
+  // The stages after the transfer (the refine stage; the focused search
+  // does not run on this clear view) count what the refine stage keeps.
+  const uint64_t after_transfer =
+      kWorkPerVerifiedFeature *
+      ((uint64_t{s.refine.rescores} + s.refine.refinements) * features + uint64_t{s.refine.screens} * subset);
+  const uint64_t before_transfer = s.cascade.work - after_transfer - pose * s.transfer.transferred;
+  full.max_work = before_transfer + 1u;  // the first lent pose reaches it
+  const Run first = recognize_toy(toy, full, m, true);
+  CHECK(first.result.status == Status::kWorkCapReached);
+  CHECK(first.result.stats.transfer.transferred == 1u);
+  CHECK(first.result.stats.refine.rescores == 0u);
+  CHECK(first.result.stats.cascade.work == before_transfer + pose);
+  CHECK(first.result.ranking_count >= 1u);
+  for (uint64_t k = 1; k < 4; ++k) {
+    full.max_work = before_transfer + pose * s.transfer.transferred * k / 4u;
+    INFO("cap " << full.max_work);
+    const Run capped = recognize_toy(toy, full, m, true);
+    CHECK(capped.result.status == Status::kWorkCapReached);
+    CHECK(capped.result.stats.cascade.work >= full.max_work);
+    CHECK(capped.result.stats.cascade.work < full.max_work + pose);
+    CHECK(capped.result.stats.transfer.transferred < s.transfer.transferred);
+  }
+}
