@@ -59,15 +59,20 @@ void SymbolModel::update() {
     for (uint32_t& c : symbol_count_) total_count_ += (c = (c + 1) >> 1);
   }
   const uint32_t scale = 0x80000000u / total_count_;
+  // Members in locals: the stores below could alias them.
+  const uint32_t symbols = symbols_, shift = table_shift_, table_size = table_size_;
+  uint32_t* dist = distribution_.data();
+  const uint32_t* counts = symbol_count_.data();
+  uint16_t* table = decoder_table_.data();
   uint32_t sum = 0, s = 0;
-  for (uint32_t k = 0; k < symbols_; ++k) {
-    distribution_[k] = (scale * sum) >> (31 - kSymbolLengthShift);
-    sum += symbol_count_[k];
-    const uint32_t w = distribution_[k] >> table_shift_;
-    while (s < w) decoder_table_[++s] = static_cast<uint16_t>(k - 1);
+  for (uint32_t k = 0; k < symbols; ++k) {
+    dist[k] = (scale * sum) >> (31 - kSymbolLengthShift);
+    sum += counts[k];
+    const uint32_t w = dist[k] >> shift;
+    while (s < w) table[++s] = static_cast<uint16_t>(k - 1);
   }
-  decoder_table_[0] = 0;
-  while (s <= table_size_) decoder_table_[++s] = static_cast<uint16_t>(symbols_ - 1);
+  table[0] = 0;
+  while (s <= table_size) table[++s] = static_cast<uint16_t>(symbols - 1);
   update_cycle_ = (5 * update_cycle_) >> 2;
   const uint32_t max_cycle = (symbols_ + 6) << 3;
   if (update_cycle_ > max_cycle) update_cycle_ = max_cycle;
