@@ -22,7 +22,8 @@ constexpr uint32_t kSymbolMaxCount = 1u << kSymbolLengthShift;
 constexpr uint32_t kMaxModelSymbols = 1u << 11;  // LASzip's largest alphabet
 // Every symbol model has a decoder table, at least this many entries a
 // symbol (up to kTableMaxBits): most lookups then land on a single symbol
-// and skip the search.
+// and skip the search. The search is exact, so the sizes change only the
+// work (docs/decisions/023).
 constexpr uint32_t kTableEntriesPerSymbol = 4;
 constexpr uint32_t kTableMinBits = 3, kTableMaxBits = 10;
 constexpr uint32_t kBitModelMaxCycle = 64;
