@@ -9,23 +9,17 @@
 namespace spinhash::host::laz {
 namespace {
 
-// Alphabets above this size get a lookup table that narrows the search.
-constexpr uint32_t kTableMinSymbols = 16;
-constexpr uint32_t kTableFirstBits = 3;
-constexpr uint32_t kReadBitsDirect = 19;  // wider reads are split in two
 constexpr uint32_t kShortBits = 16;
 
 }  // namespace
 
 SymbolModel::SymbolModel(uint32_t symbols)
     : symbols_(std::clamp(symbols, 2u, kMaxModelSymbols)), last_symbol_(symbols_ - 1) {
-  if (symbols_ > kTableMinSymbols) {
-    uint32_t table_bits = kTableFirstBits;
-    while (symbols_ > (1u << (table_bits + 2))) ++table_bits;
-    table_size_ = 1u << table_bits;
-    table_shift_ = kSymbolLengthShift - table_bits;
-    decoder_table_.assign(table_size_ + 2, 0);
-  }
+  uint32_t table_bits = kTableMinBits;
+  while (table_bits < kTableMaxBits && (1u << table_bits) < kTableEntriesPerSymbol * symbols_) ++table_bits;
+  table_size_ = 1u << table_bits;
+  table_shift_ = kSymbolLengthShift - table_bits;
+  decoder_table_.assign(table_size_ + 2, 0);
   distribution_.assign(symbols_, 0);
   symbol_count_.assign(symbols_, 0);
   // The starts by alphabet size, shared by all models (and threads) and never freed.
@@ -65,18 +59,20 @@ void SymbolModel::update() {
     for (uint32_t& c : symbol_count_) total_count_ += (c = (c + 1) >> 1);
   }
   const uint32_t scale = 0x80000000u / total_count_;
+  // Members in locals: the stores below could alias them.
+  const uint32_t symbols = symbols_, shift = table_shift_, table_size = table_size_;
+  uint32_t* dist = distribution_.data();
+  const uint32_t* counts = symbol_count_.data();
+  uint16_t* table = decoder_table_.data();
   uint32_t sum = 0, s = 0;
-  for (uint32_t k = 0; k < symbols_; ++k) {
-    distribution_[k] = (scale * sum) >> (31 - kSymbolLengthShift);
-    sum += symbol_count_[k];
-    if (table_size_ == 0) continue;
-    const uint32_t w = distribution_[k] >> table_shift_;
-    while (s < w) decoder_table_[++s] = k - 1;
+  for (uint32_t k = 0; k < symbols; ++k) {
+    dist[k] = (scale * sum) >> (31 - kSymbolLengthShift);
+    sum += counts[k];
+    const uint32_t w = dist[k] >> shift;
+    while (s < w) table[++s] = static_cast<uint16_t>(k - 1);
   }
-  if (table_size_ != 0) {
-    decoder_table_[0] = 0;
-    while (s <= table_size_) decoder_table_[++s] = symbols_ - 1;
-  }
+  table[0] = 0;
+  while (s <= table_size) table[++s] = static_cast<uint16_t>(symbols - 1);
   update_cycle_ = (5 * update_cycle_) >> 2;
   const uint32_t max_cycle = (symbols_ + 6) << 3;
   if (update_cycle_ > max_cycle) update_cycle_ = max_cycle;
@@ -139,16 +135,10 @@ uint8_t ArithmeticDecoder::next_byte_slow() {
   return 0;
 }
 
-uint32_t ArithmeticDecoder::read_bits(uint32_t bits) {
-  if (bits > kReadBitsDirect) {
-    const uint32_t low = read_bits(kShortBits);
-    const uint32_t high = read_bits(bits - kShortBits);
-    return (high << kShortBits) | low;
-  }
-  const uint32_t sym = value_ / (length_ >>= bits);
-  value_ -= length_ * sym;
-  if (length_ < kAcMinLength) renormalise();
-  return sym;
+uint32_t ArithmeticDecoder::read_bits_split(uint32_t bits) {
+  const uint32_t low = read_bits(kShortBits);
+  const uint32_t high = read_bits(bits - kShortBits);
+  return (high << kShortBits) | low;
 }
 
 uint32_t ArithmeticDecoder::read_int() {

@@ -20,7 +20,14 @@ constexpr uint32_t kBitMaxCount = 1u << kBitLengthShift;
 constexpr uint32_t kSymbolLengthShift = 15;  // symbol-model precision
 constexpr uint32_t kSymbolMaxCount = 1u << kSymbolLengthShift;
 constexpr uint32_t kMaxModelSymbols = 1u << 11;  // LASzip's largest alphabet
+// Every symbol model has a decoder table, at least this many entries a
+// symbol (up to kTableMaxBits): most lookups then land on a single symbol
+// and skip the search. The search is exact, so the sizes change only the
+// work (docs/decisions/023).
+constexpr uint32_t kTableEntriesPerSymbol = 4;
+constexpr uint32_t kTableMinBits = 3, kTableMaxBits = 10;
 constexpr uint32_t kBitModelMaxCycle = 64;
+constexpr uint32_t kReadBitsDirect = 19;  // wider raw reads are split in two
 
 // An adaptive model of `symbols` symbols (2 .. kMaxModelSymbols).
 class SymbolModel {
@@ -33,14 +40,18 @@ class SymbolModel {
   // reset(): every chunk of a LAZ file resets every model it uses.
   struct Start {
     uint32_t total_count = 0;
-    std::vector<uint32_t> distribution, decoder_table;
+    std::vector<uint32_t> distribution;
+    std::vector<uint16_t> decoder_table;
   };
 
   uint32_t symbols_;
   uint32_t last_symbol_;
   uint32_t table_size_ = 0, table_shift_ = 0;
   uint32_t total_count_ = 0, update_cycle_ = 0, symbols_until_update_ = 0;
-  std::vector<uint32_t> distribution_, symbol_count_, decoder_table_;
+  std::vector<uint32_t> distribution_, symbol_count_;
+  // [t]: the last symbol whose distribution lies below t << table_shift_;
+  // table_size_ + 2 entries.
+  std::vector<uint16_t> decoder_table_;
   const Start* start_ = nullptr;
 
  private:
@@ -70,7 +81,15 @@ class ArithmeticDecoder {
   void init(const uint8_t* begin, const uint8_t* end, ByteFeed* feed = nullptr);
   uint32_t decode_symbol(SymbolModel& m);
   uint32_t decode_bit(BitModel& m);
-  uint32_t read_bits(uint32_t bits);  // 1 .. 32 raw bits
+  uint32_t read_bits(uint32_t bits) {  // 1 .. 32 raw bits
+    if (bits > kReadBitsDirect) return read_bits_split(bits);
+    const uint32_t length = length_ >> bits;
+    const uint32_t sym = value_ / length;
+    value_ -= length * sym;
+    length_ = length;
+    if (length_ < kAcMinLength) renormalise();
+    return sym;
+  }
   uint32_t read_short() { return read_bits(16); }
   uint32_t read_int();
   uint64_t read_int64();
@@ -86,6 +105,7 @@ class ArithmeticDecoder {
  private:
   uint8_t next_byte() { return p_ < end_ ? *p_++ : next_byte_slow(); }
   uint8_t next_byte_slow();
+  uint32_t read_bits_split(uint32_t bits);
   void renormalise() {
     do {
       value_ = (value_ << 8) | next_byte();
@@ -101,38 +121,24 @@ class ArithmeticDecoder {
 
 // The hot paths, inline: a point decodes a dozen symbols or more.
 inline uint32_t ArithmeticDecoder::decode_symbol(SymbolModel& m) {
-  uint32_t sym, x, y = length_;
-  if (m.table_size_ != 0) {
-    const uint32_t dv = value_ / (length_ >>= kSymbolLengthShift);
-    // A corrupt stream can put the value past the interval: clamp the index.
-    const uint32_t t = std::min(dv >> m.table_shift_, m.table_size_);
-    const uint32_t* dist = m.distribution_.data();
-    sym = m.decoder_table_[t];
-    uint32_t n = m.decoder_table_[t + 1] + 1;
-    while (n > sym + 1) {  // binary search in the table's bracket (masks, not branches)
-      const uint32_t k = (sym + n) >> 1;
-      const uint32_t above = 0u - static_cast<uint32_t>(dist[k] > dv);
-      n = (k & above) | (n & ~above);
-      sym = (sym & above) | (k & ~above);
-    }
-    x = dist[sym] * length_;
-    if (sym != m.last_symbol_) y = dist[sym + 1] * length_;
-  } else {
-    x = sym = 0;
-    const uint32_t* dist = m.distribution_.data();
-    const uint32_t length = length_ >>= kSymbolLengthShift, value = value_;
-    uint32_t n = m.symbols_;
-    uint32_t k = n >> 1;
-    do {  // masks, not branches: the symbols come in no predictable order
-      const uint32_t z = length * dist[k];
-      const uint32_t above = 0u - static_cast<uint32_t>(z > value);
-      n = (k & above) | (n & ~above);
-      y = (z & above) | (y & ~above);
-      sym = (sym & above) | (k & ~above);
-      x = (x & above) | (z & ~above);
-    } while ((k = (sym + n) >> 1) != sym);
+  // The state in locals: the count stores below could alias the members.
+  const uint32_t length = length_ >> kSymbolLengthShift, value = value_;
+  const uint32_t dv = value / length;
+  // A corrupt stream can put the value past the interval: clamp the index.
+  const uint32_t t = std::min(dv >> m.table_shift_, m.table_size_);
+  const uint32_t* dist = m.distribution_.data();
+  const uint16_t* table = m.decoder_table_.data();
+  uint32_t sym = table[t];
+  uint32_t n = table[t + 1] + 1u;
+  while (n > sym + 1) {  // binary search in the table's bracket (masks, not branches)
+    const uint32_t k = (sym + n) >> 1;
+    const uint32_t above = 0u - static_cast<uint32_t>(dist[k] > dv);
+    n = (k & above) | (n & ~above);
+    sym = (sym & above) | (k & ~above);
   }
-  value_ -= x;
+  const uint32_t x = dist[sym] * length;
+  const uint32_t y = sym != m.last_symbol_ ? dist[sym + 1] * length : length_;
+  value_ = value - x;
   length_ = y - x;
   if (length_ < kAcMinLength) renormalise();
   ++m.symbol_count_[sym];

@@ -20,7 +20,19 @@ class IntegerDecompressor {
  public:
   IntegerDecompressor(uint32_t bits, uint32_t contexts, uint32_t bits_high = kCorrectorBitsHigh);
   void reset();  // the models back to their start (a new chunk)
-  int32_t decompress(ArithmeticDecoder& dec, int32_t pred, uint32_t context = 0);
+  // Inline: x y z of every point call it.
+  int32_t decompress(ArithmeticDecoder& dec, int32_t pred, uint32_t context = 0) {
+    const int32_t corr = read_corrector(dec, bits_model(context));
+    // Wrap-around arithmetic in the corrector's range (two's complement).
+    int64_t real = static_cast<int64_t>(pred) + corr;
+    if (corr_range_ != 0) {
+      if (real < 0)
+        real += corr_range_;
+      else if (real >= static_cast<int64_t>(corr_range_))
+        real -= corr_range_;
+    }
+    return static_cast<int32_t>(static_cast<uint32_t>(static_cast<uint64_t>(real)));
+  }
   uint32_t k() const { return k_; }
 
  private:
@@ -49,5 +61,20 @@ class IntegerDecompressor {
   BitModel corrector0_;                                   // k == 0: the correction is 0 or 1
   std::vector<std::unique_ptr<SymbolModel>> correctors_;  // [k - 1]: the value's high bits
 };
+
+inline int32_t IntegerDecompressor::read_corrector(ArithmeticDecoder& dec, SymbolModel& bits_model) {
+  const uint32_t k = k_ = dec.decode_symbol(bits_model);
+  if (k == 0) return static_cast<int32_t>(dec.decode_bit(corrector0_));
+  if (k >= kMaxCorrectorBits) return corr_min_;
+  int64_t c = dec.decode_symbol(corrector(k));
+  if (k > bits_high_) {
+    const uint32_t low_bits = k - bits_high_;
+    c = (c << low_bits) | dec.read_bits(low_bits);
+  }
+  // The k-bit value maps onto [-(2^k - 1), -2^(k-1)] and [2^(k-1), 2^k].
+  const int64_t half = int64_t{1} << (k - 1);
+  c = c >= half ? c + 1 : c - ((int64_t{1} << k) - 1);
+  return static_cast<int32_t>(c);
+}
 
 }  // namespace spinhash::host::laz

@@ -54,6 +54,7 @@ LazDecoder::LazDecoder(ByteSource& src, uint64_t points_offset, uint64_t point_c
     else
       pointwise_.push_back(make_pointwise_item(item));
   }
+  for (const auto& item : pointwise_) pointwise_items_.push_back(item.get());
 }
 
 // The chunk table is read with the first point: a header alone never needs it.
@@ -79,13 +80,17 @@ size_t LazDecoder::read(uint8_t* out, size_t max) {
   if (!located_ && remaining_ > 0 && max > 0) locate_chunks();
   while (n < max && remaining_ > 0) {
     uint8_t* record = out + n * record_length_;
-    if (left_in_chunk_ == 0)
+    size_t run = 1;
+    if (left_in_chunk_ == 0) {
       start_chunk(record);
-    else
-      decode_next(record);
-    --left_in_chunk_;
-    --remaining_;
-    ++n;
+    } else {
+      // The chunk's points in one run: the counts move once a run.
+      run = static_cast<size_t>(std::min<uint64_t>(std::min<uint64_t>(max - n, left_in_chunk_), remaining_));
+      decode_run(record, run);
+    }
+    left_in_chunk_ -= run;
+    remaining_ -= run;
+    n += run;
   }
   return n;
 }
@@ -154,18 +159,32 @@ void LazDecoder::start_layered(uint8_t* first) {
   }
 }
 
-void LazDecoder::decode_next(uint8_t* out) {
-  if (!vlr_.layered()) {
-    for (size_t i = 0; i < pointwise_.size(); ++i) pointwise_[i]->decode(dec_, out + item_offsets_[i]);
-    if (dec_.overrun() > kOverrunSlack)
-      fail("the compressed data ends before the chunk's points (truncated?)");
-    return;
-  }
-  for (size_t i = 0; i < layered_.size(); ++i) {
-    layered_[i]->decode(out + item_offsets_[i], &context_);
-    if (layered_[i]->overrun() > kOverrunSlack)
-      fail("a layer of item " + item_name(vlr_.items[i].type) +
-           " ends before the chunk's points (truncated?)");
+void LazDecoder::decode_run(uint8_t* out, size_t count) {
+  size_t done = 0;
+  try {
+    if (!vlr_.layered()) {
+      PointwiseItem* const* items = pointwise_items_.data();
+      const size_t* offsets = item_offsets_.data();
+      const size_t item_count = pointwise_items_.size();
+      for (; done < count; ++done, out += record_length_) {
+        for (size_t i = 0; i < item_count; ++i) items[i]->decode(dec_, out + offsets[i]);
+        if (dec_.overrun() > kOverrunSlack)
+          fail("the compressed data ends before the chunk's points (truncated?)");
+      }
+      return;
+    }
+    for (; done < count; ++done, out += record_length_)
+      for (size_t i = 0; i < layered_.size(); ++i) {
+        layered_[i]->decode(out + item_offsets_[i], &context_);
+        if (layered_[i]->overrun() > kOverrunSlack)
+          fail("a layer of item " + item_name(vlr_.items[i].type) +
+               " ends before the chunk's points (truncated?)");
+      }
+  } catch (...) {
+    // The points decoded before the failure count as handed out.
+    left_in_chunk_ -= done;
+    remaining_ -= done;
+    throw;
   }
 }
 

@@ -47,7 +47,8 @@ class LazDecoder {
   void start_chunk(uint8_t* first);
   void start_pointwise(uint8_t* first);
   void start_layered(uint8_t* first);
-  void decode_next(uint8_t* out);
+  // `count` points of the current chunk, one record after another.
+  void decode_run(uint8_t* out, size_t count);
   [[noreturn]] void fail(const std::string& why) const;
 
   ByteSource& src_;
@@ -63,6 +64,7 @@ class LazDecoder {
   uint64_t left_in_chunk_ = 0;
   std::vector<size_t> item_offsets_;
   std::vector<std::unique_ptr<PointwiseItem>> pointwise_;
+  std::vector<PointwiseItem*> pointwise_items_;  // pointwise_'s, for the point loop
   std::vector<std::unique_ptr<LayeredItem>> layered_;
   ArithmeticDecoder dec_;
   std::unique_ptr<Feed> feed_;
